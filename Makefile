@@ -1,0 +1,115 @@
+# arcaded build. `make run` and `make test` are the two entry points (README).
+#
+# Variables: BUILD (output folder), CC, OPT (optimisation flags), SAN
+# (sanitizer flags). Several builds live side by side: build/ (default),
+# build/asan (sanitizers), build/O0, build/clang ...
+
+BUILD ?= build
+CC ?= cc
+OPT ?= -O2 -g
+SAN ?=
+PKGS := libevdev inih libpng libsystemd
+TEST_PKGS := cmocka
+
+WARN := -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes
+CPPFLAGS += -I. -D_GNU_SOURCE
+CFLAGS += -std=c11 $(OPT) $(SAN) $(WARN) -fno-strict-aliasing
+PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
+PKG_LIBS = $(shell pkg-config --libs $(PKGS))
+TEST_CFLAGS = $(shell pkg-config --cflags $(TEST_PKGS))
+TEST_LIBS = $(shell pkg-config --libs $(TEST_PKGS))
+LDLIBS += $(PKG_LIBS) -lpthread -lm
+
+# Every .c of the layers is part of the library the daemon and tests link.
+LIB_SRC := $(sort $(wildcard engine/*.c input/*.c display/*.c config/*.c systemd/*.c))
+APP_SRC := $(sort $(wildcard app/*.c))
+APP_MAIN := app/main.c
+APP_LIB_SRC := $(filter-out $(APP_MAIN),$(APP_SRC))
+TEST_SRC := $(sort $(wildcard tests/unit/test_*.c))
+TOOL_SRC := $(sort $(wildcard tools/*.c))
+
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/%.o) $(APP_LIB_SRC:%.c=$(BUILD)/%.o)
+LIB := $(BUILD)/libarcaded.a
+BIN := $(BUILD)/arcaded
+TEST_BIN := $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/%)
+TOOL_BIN := $(TOOL_SRC:tools/%.c=$(BUILD)/tools/%)
+
+PREFIX ?= /usr/local
+DESTDIR ?=
+SYSTEMD_UNITDIR ?= /lib/systemd/system
+UDEV_RULESDIR ?= /lib/udev/rules.d
+SYSUSERSDIR ?= /usr/lib/sysusers.d
+TMPFILESDIR ?= /usr/lib/tmpfiles.d
+
+.PHONY: all setup run test test-unit test-asan test-script test-replay test-clang \
+	check-layers check-tables check-systemd bench install clean tests tools
+
+all: $(BIN) tools
+
+setup:
+	@scripts/setup.sh
+
+run: setup
+	@$(MAKE) --no-print-directory all
+	./$(BIN) $(RUN_ARGS)
+
+test: setup
+	@tests/run_all.sh
+
+$(BUILD)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -MMD -MP -c $< -o $@
+
+$(LIB): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+$(BIN): $(BUILD)/$(APP_MAIN:.c=.o) $(LIB)
+	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+
+$(BUILD)/tests/%: tests/unit/%.c $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) $(TEST_CFLAGS) -MMD -MP -o $@ $< $(LIB) \
+		$(LDLIBS) $(TEST_LIBS)
+
+$(BUILD)/tools/%: tools/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< -lm
+
+tests: $(TEST_BIN)
+tools: $(TOOL_BIN)
+
+# Unit tests of this build; prints cmocka's summaries.
+test-unit: $(TEST_BIN)
+	@tests/run_unit.sh $(TEST_BIN)
+
+check-tables: $(BUILD)/tools/gentab
+	@$(BUILD)/tools/gentab > $(BUILD)/tab_data.c.new
+	@cmp -s $(BUILD)/tab_data.c.new engine/tab_data.c || \
+		{ echo "engine/tab_data.c differs from tools/gentab output"; exit 1; }
+	@echo "check-tables: engine/tab_data.c matches tools/gentab"
+
+check-layers:
+	@tests/check_layers.sh
+
+check-systemd:
+	@tests/check_systemd.sh
+
+bench: all
+	@tests/bench.sh $(BIN)
+
+install: $(BIN)
+	install -D -m 0755 $(BIN) $(DESTDIR)$(PREFIX)/bin/arcaded
+	install -D -m 0644 systemd/arcaded.service $(DESTDIR)$(SYSTEMD_UNITDIR)/arcaded.service
+	sed -i 's|@BINDIR@|$(PREFIX)/bin|g' $(DESTDIR)$(SYSTEMD_UNITDIR)/arcaded.service
+	install -D -m 0644 systemd/70-arcaded.rules $(DESTDIR)$(UDEV_RULESDIR)/70-arcaded.rules
+	install -D -m 0644 systemd/arcaded.sysusers $(DESTDIR)$(SYSUSERSDIR)/arcaded.conf
+	install -D -m 0644 systemd/arcaded.tmpfiles $(DESTDIR)$(TMPFILESDIR)/arcaded.conf
+	install -D -m 0644 config/arcaded.ini $(DESTDIR)/etc/arcaded/arcaded.ini
+	install -D -m 0644 config/bindings.ini $(DESTDIR)/etc/arcaded/bindings.ini
+
+clean:
+	rm -rf build
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -1,0 +1,66 @@
+/*
+ * cfg: the daemon's settings, layered: built-in defaults < /etc/arcaded/
+ * *.ini (in name order) < the state directory's settings.ini < command line
+ * (--set section.key=value). INI read with inih.
+ *
+ * A bad line, key or value is reported through the error callback with
+ * file:line and a reason; that entry keeps its previous value and loading
+ * goes on, so a cabinet always boots.
+ */
+#ifndef ARCADED_CONFIG_CFG_H
+#define ARCADED_CONFIG_CFG_H
+
+#include <stddef.h>
+
+#define CFG_PATH_MAX 256
+
+struct cfg {
+	struct {
+		char backend[16];            /* auto fbdev file term null */
+		char device[CFG_PATH_MAX];   /* /dev/fb0 */
+		char tty[CFG_PATH_MAX];      /* /dev/tty0; "" leaves the console alone */
+		char file[CFG_PATH_MAX];     /* file framebuffer path */
+		int file_width, file_height; /* 640x480 */
+		int file_stride;             /* 0 = packed */
+		char file_format[16];        /* xrgb8888 */
+		int rotate;                  /* 0 90 180 270 */
+		int fill;                    /* scale = integer (0) | fill (1) */
+	} display;
+	struct {
+		int render_width, render_height; /* 320x240 */
+		int coins_per_credit;        /* 1 */
+		int freeplay;                /* 0 */
+		int start_in_play;           /* 0 */
+		int level;                   /* built-in level, 1-based */
+	} game;
+	struct {
+		char evdev[CFG_PATH_MAX];    /* auto | none | /dev/input/eventN */
+		char bindings[CFG_PATH_MAX]; /* extra bindings file, "" none */
+	} input;
+	struct {
+		char state_dir[CFG_PATH_MAX]; /* $STATE_DIRECTORY or /var/lib/arcaded */
+	} paths;
+};
+
+/* Reports one problem: file may be "--set" for the command line; line 0
+ * when there is no line. */
+typedef void (*cfg_err_fn)(void *user, const char *file, int line, const char *msg);
+
+void cfg_defaults(struct cfg *c);
+
+/* Applies one INI file. Returns the number of rejected entries (>= 0), or
+ * -errno if the file cannot be read (-ENOENT is not reported through fn). */
+int cfg_load_file(struct cfg *c, const char *path, cfg_err_fn fn, void *user);
+
+/* Applies every *.ini in dir in name order; a missing dir is not an error.
+ * Returns the total number of rejected entries. */
+int cfg_load_dir(struct cfg *c, const char *dir, cfg_err_fn fn, void *user);
+
+/* Applies "section.key=value"; 0 or -EINVAL (reported through fn). */
+int cfg_set(struct cfg *c, const char *assignment, cfg_err_fn fn, void *user);
+
+/* Writes every key with its current value as INI text to buf (for
+ * --print-config and the docs); returns the length needed. */
+size_t cfg_format(const struct cfg *c, char *buf, size_t len);
+
+#endif

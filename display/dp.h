@@ -1,0 +1,65 @@
+/*
+ * dp: displays. Every backend is one file (dp_fbdev.c, dp_file.c,
+ * dp_term.c, dp_null.c) implementing struct dp_backend; dp.c holds the
+ * ordered list and the automatic choice. Only backend files include Linux
+ * headers.
+ *
+ * A display takes 8-bit palette-indexed frames of the game's render size,
+ * converts them to the panel's pixel format through one 256-entry table
+ * (px.h), scales (integer with letterbox, or fill) and rotates (0/90/180/
+ * 270) in one pass, and shows them (page flip by panning where possible).
+ */
+#ifndef ARCADED_DISPLAY_DP_H
+#define ARCADED_DISPLAY_DP_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+struct dp;
+
+enum dp_scale {
+	DP_SCALE_INTEGER,  /* largest integer factor, centred, black letterbox */
+	DP_SCALE_FILL,     /* stretch to the whole panel (nearest neighbour) */
+};
+
+struct dp_config {
+	const char *backend;     /* "auto" or NULL, "fbdev", "file", "term", "null" */
+	const char *device;      /* fbdev: device path, default /dev/fb0 */
+	const char *tty;         /* fbdev: console put in graphics mode, default /dev/tty0; "" none */
+	const char *file;        /* file: path of the framebuffer file */
+	int file_w, file_h;      /* file: geometry in pixels */
+	int file_stride;         /* file: bytes per line; 0 = packed */
+	const char *file_format; /* file: "rgb565", "bgr565", "xrgb8888", "xbgr8888", "rgb888" */
+	int rotate;              /* 0, 90, 180, 270 degrees clockwise */
+	enum dp_scale scale;
+	int render_w, render_h;  /* size of the frames that will be presented */
+};
+
+struct dp_backend {
+	const char *name;
+	/* Opens the display; 0 or -errno, with a reason in why. */
+	int (*open)(const struct dp_config *cfg, struct dp **out, char *why, size_t whylen);
+	/* Sets the palette used by the next presents (rebuilds the table). */
+	void (*set_palette)(struct dp *d, const uint8_t rgb[256][3]);
+	/* Converts, scales, rotates and shows one frame; 0 or -errno. */
+	int (*present)(struct dp *d, const uint8_t *px, int w, int h, int pitch);
+	/* NULL-safe; restores whatever open changed (console mode, terminal). */
+	void (*close)(struct dp *d);
+	/* One line describing the output ("fbdev /dev/fb0 1280x800 xrgb8888 ..."). */
+	const char *(*describe)(struct dp *d);
+};
+
+extern const struct dp_backend dp_fbdev, dp_file, dp_term, dp_null;
+
+/* Opens the backend named by cfg->backend, or with "auto"/NULL the first of
+ * fbdev (if the device opens), term (if stdout is a terminal), file (if
+ * cfg->file is set), null. On success *be is the backend used. */
+int dp_open(const struct dp_config *cfg, const struct dp_backend **be, struct dp **out,
+	    char *why, size_t whylen);
+
+/* Async-signal-safe: puts any console this process switched to graphics
+ * mode back in text mode and restores the terminal. For fatal-signal
+ * handlers; normal exits use close. */
+void dp_emergency_restore(void);
+
+#endif

@@ -1,0 +1,29 @@
+/*
+ * act: the logical actions controls are bound to.
+ */
+#ifndef ARCADED_INPUT_ACT_H
+#define ARCADED_INPUT_ACT_H
+
+enum act {
+	ACT_FORWARD,
+	ACT_BACK,
+	ACT_TURN_LEFT,
+	ACT_TURN_RIGHT,
+	ACT_STRAFE_LEFT,
+	ACT_STRAFE_RIGHT,
+	ACT_FIRE,
+	ACT_USE,
+	ACT_START,
+	ACT_COIN,
+	ACT_SERVICE,
+	ACT_COUNT
+};
+
+/* "forward", "back", "turn_left", "turn_right", "strafe_left",
+ * "strafe_right", "fire", "use", "start", "coin", "service"; NULL if out of
+ * range. */
+const char *act_name(int a);
+/* Action by name (case-insensitive), or -1. */
+int act_from_name(const char *name);
+
+#endif

@@ -1,0 +1,58 @@
+/*
+ * in: input devices. Every backend is one file (in_evdev.c, in_tty.c, ...)
+ * implementing struct in_backend; backends deliver raw events, which the
+ * bindings (config/bind.h) turn into actions.
+ *
+ * Control codes for keys are the Linux input event codes (KEY_*): a stable
+ * kernel ABI, so a terminal key and an evdev key bind the same way. Only
+ * backend files include Linux headers; in_keys.c names the codes.
+ */
+#ifndef ARCADED_INPUT_IN_H
+#define ARCADED_INPUT_IN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+enum in_type {
+	IN_KEY = 1,              /* code: KEY_* / BTN_*; value 1 press, 0 release */
+	IN_ABS = 3,              /* code: ABS_*; value: axis position */
+};
+
+struct in_event {
+	uint64_t time_ns;        /* CLOCK_MONOTONIC time the kernel stamped the event */
+	uint16_t type;           /* enum in_type */
+	uint16_t code;
+	int32_t value;
+};
+
+struct in_dev;
+
+struct in_backend {
+	const char *name;
+	/* Opens the device at path (NULL: auto-detect). 0 or -errno with a
+	 * reason in why; -ENODEV when nothing suitable exists. */
+	int (*open)(const char *path, struct in_dev **out, char *why, size_t whylen);
+	/* File descriptor to poll for readability, or -1. */
+	int (*fd)(struct in_dev *d);
+	/* Non-blocking: stores up to max events, returns how many (0: none),
+	 * or -ENODEV when the device went away (the caller releases every
+	 * control of it and may reopen later). */
+	int (*read)(struct in_dev *d, struct in_event *ev, int max);
+	/* NULL-safe; releases grabs and restores what open changed. */
+	void (*close)(struct in_dev *d);
+	/* Human-readable name ("AT Translated Set 2 keyboard (/dev/input/event3)"). */
+	const char *(*describe)(struct in_dev *d);
+};
+
+extern const struct in_backend in_evdev, in_tty;
+
+/* Key code by name: "KEY_UP", "up", "w", "space", "enter", "BTN_SOUTH", ...
+ * (case-insensitive; a bare letter or digit is that key). -1 if unknown. */
+int in_key_from_name(const char *name);
+/* Canonical name ("KEY_UP") of a code, or NULL. */
+const char *in_key_name(int code);
+
+/* CLOCK_MONOTONIC now, ns (for backends whose source has no timestamp). */
+uint64_t in_now_ns(void);
+
+#endif

@@ -1,0 +1,59 @@
+/*
+ * scr: the test-script format that drives the daemon headless.
+ *
+ * One step per line; '#' starts a comment; blank lines are ignored.
+ *   TICK press ACTION          action held from TICK on
+ *   TICK release ACTION        released at TICK
+ *   TICK hold ACTION N         pressed at TICK, released at TICK+N
+ *   TICK tap ACTION            pressed at TICK, released at TICK+1
+ *   TICK expect FIELD OP VALUE check after TICK's tick ran
+ *   TICK snapshot              print the frame hash of TICK
+ *   TICK screenshot FILE       write TICK's frame as PNG
+ *   TICK end                   stop after TICK
+ * FIELD: x y z (map units, decimals allowed), angle (degrees, integer),
+ * sector, credits, coins, tick, mode (attract|play). OP: == != < <= > >=.
+ * Steps run in tick order; steps of one tick in file order. A run without
+ * `end` stops after the last step's tick.
+ */
+#ifndef ARCADED_INPUT_SCR_H
+#define ARCADED_INPUT_SCR_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+enum scr_op { SCR_PRESS, SCR_RELEASE, SCR_EXPECT, SCR_SNAPSHOT, SCR_SCREENSHOT, SCR_END };
+enum scr_field { SCR_F_X, SCR_F_Y, SCR_F_Z, SCR_F_ANGLE, SCR_F_SECTOR, SCR_F_CREDITS,
+		 SCR_F_COINS, SCR_F_TICK, SCR_F_MODE };
+enum scr_cmp { SCR_EQ, SCR_NE, SCR_LT, SCR_LE, SCR_GT, SCR_GE };
+
+struct scr_step {
+	uint32_t tick;
+	uint32_t line;           /* source line, for messages */
+	enum scr_op op;
+	int action;              /* press/release: enum act */
+	enum scr_field field;    /* expect */
+	enum scr_cmp cmp;        /* expect */
+	int64_t value;           /* expect: x/y/z in 16.16, angle in degrees, mode as enum sim_mode, else integer */
+	char *path;              /* screenshot: owned by the script */
+};
+
+struct scr {
+	struct scr_step *steps;  /* sorted by tick, stable */
+	size_t n;
+	uint32_t end_tick;       /* last tick to run */
+};
+
+/* Parses text (len bytes, need not be NUL-terminated). On error returns
+ * -EINVAL with "NAME:LINE: reason" in err; -ENOMEM. */
+int scr_parse(const char *text, size_t len, const char *name, struct scr **out, char *err,
+	      size_t errlen);
+/* Reads and parses a file; -errno with "PATH: reason" in err. */
+int scr_load(const char *path, struct scr **out, char *err, size_t errlen);
+void scr_free(struct scr *s);
+
+/* Evaluates a comparison: returns 1 if (actual OP expected) holds. */
+int scr_compare(int64_t actual, enum scr_cmp cmp, int64_t expected);
+const char *scr_field_name(enum scr_field f);
+const char *scr_cmp_name(enum scr_cmp c);
+
+#endif
