@@ -1,13 +1,16 @@
 /*
  * bind: which controls trigger which actions.
  *
- * File format (INI, read with inih):
+ * File format (INI, read by config/cini.c):
  *   [keyboard]
  *   forward = up, w          # key names as in_key_from_name accepts
  *   fire = leftctrl, space
- * An action may name up to BIND_MAX keys. A bad key name or action gives
- * file:line and a reason through the callback, and that action keeps its
- * default binding.
+ *   use =                    # empty: the action has no key
+ * An action may name up to BIND_MAX keys; a line replaces that action's
+ * whole list. A bad key name or action, too many keys, another section or
+ * a malformed line gives file:line and a reason through the callback, and
+ * the action concerned keeps the binding it had. One key may trigger
+ * several actions.
  */
 #ifndef ARCADED_CONFIG_BIND_H
 #define ARCADED_CONFIG_BIND_H
@@ -21,12 +24,20 @@ struct bind_table {
 	int key[ACT_COUNT][BIND_MAX];    /* key codes, -1 for unused slots */
 };
 
-/* Built-in defaults: arrows and WASD move (A/D strafe... see bind.c),
- * ctrl/space fire, 1 start, 5 coin, 9/F2 service, e use. */
+/* Built-in defaults: forward up/w, back down/s, turn left/right arrows,
+ * strafe a/comma and d/dot, fire leftctrl/space, use e, start 1/enter,
+ * coin 5, service 9/F2 (1/5/9 as in MAME). */
 void bind_defaults(struct bind_table *b);
 
-/* Applies a bindings file on top of b. Returns the number of rejected
- * entries (>= 0) or -errno when the file cannot be read. */
+/* Applies bindings text (len bytes, need not be NUL-terminated) named name
+ * in messages on top of b. Returns the number of problems reported through
+ * fn (which may be NULL). */
+int bind_load_text(struct bind_table *b, const char *text, size_t len, const char *name,
+		   cfg_err_fn fn, void *user);
+
+/* Applies a bindings file on top of b. Returns the number of problems
+ * reported (>= 0) or -errno when the file cannot be read (-ENOENT is not
+ * reported through fn, other errors are, with line 0). */
 int bind_load(struct bind_table *b, const char *path, cfg_err_fn fn, void *user);
 
 /* Stores in acts up to max actions bound to key code; returns how many. */

@@ -1,7 +1,8 @@
 /*
  * cfg: the daemon's settings, layered: built-in defaults < /etc/arcaded/
  * *.ini (in name order) < the state directory's settings.ini < command line
- * (--set section.key=value). INI read with inih.
+ * (--set section.key=value). INI read by config/cini.c (see there why not
+ * inih).
  *
  * A bad line, key or value is reported through the error callback with
  * file:line and a reason; that entry keeps its previous value and loading
@@ -43,24 +44,37 @@ struct cfg {
 };
 
 /* Reports one problem: file may be "--set" for the command line; line 0
- * when there is no line. */
+ * when there is no line (a file that cannot be read, a --set). msg is valid
+ * during the call only. */
 typedef void (*cfg_err_fn)(void *user, const char *file, int line, const char *msg);
 
+/* Built-in defaults (listed in docs/config.md). paths.state_dir is the first
+ * directory of $STATE_DIRECTORY when set, else /var/lib/arcaded. */
 void cfg_defaults(struct cfg *c);
 
-/* Applies one INI file. Returns the number of rejected entries (>= 0), or
- * -errno if the file cannot be read (-ENOENT is not reported through fn). */
+/* Applies INI text (len bytes, any bytes, need not be NUL-terminated) named
+ * name in messages. Returns the number of problems reported through fn (fn
+ * may be NULL); every rejected entry keeps its previous value. */
+int cfg_load_text(struct cfg *c, const char *text, size_t len, const char *name,
+		  cfg_err_fn fn, void *user);
+
+/* Applies one INI file. Returns the number of problems reported (>= 0), or
+ * -errno if the file cannot be read (-ENOENT is not reported through fn;
+ * other errors are, with line 0; files above 1 MiB give -EFBIG). */
 int cfg_load_file(struct cfg *c, const char *path, cfg_err_fn fn, void *user);
 
-/* Applies every *.ini in dir in name order; a missing dir is not an error.
- * Returns the total number of rejected entries. */
+/* Applies every *.ini in dir (not starting with '.') in byte order of their
+ * names; a missing dir is not an error. Returns the total number of
+ * problems reported, a file that cannot be read counting as one. */
 int cfg_load_dir(struct cfg *c, const char *dir, cfg_err_fn fn, void *user);
 
-/* Applies "section.key=value"; 0 or -EINVAL (reported through fn). */
+/* Applies "section.key=value" (blanks around the parts ignored); 0, or
+ * -EINVAL reported through fn with file "--set", line 0. */
 int cfg_set(struct cfg *c, const char *assignment, cfg_err_fn fn, void *user);
 
 /* Writes every key with its current value as INI text to buf (for
- * --print-config and the docs); returns the length needed. */
+ * --print-config and the docs); returns the length needed, excluding the
+ * NUL, like snprintf (output truncated when len is too small). */
 size_t cfg_format(const struct cfg *c, char *buf, size_t len);
 
 #endif

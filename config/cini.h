@@ -1,0 +1,58 @@
+/*
+ * cini: the small INI reader shared by cfg and bind.
+ *
+ * Why not inih: Debian 12 ships inih r55 built without INI_HANDLER_LINENO,
+ * so its handler never learns the line number; it reports only the first
+ * malformed line (as a return value, not through the handler), never shows
+ * a section that has no keys, splits lines longer than 200 bytes into
+ * separate "lines", and treats an indented line as a continuation of the
+ * previous value. arcaded must name file:line for every problem and go on,
+ * so it parses the few INI rules it uses itself:
+ *
+ *   - one entry per line; lines end at '\n' ("\r\n" works too);
+ *   - a line whose first non-blank character is ';' or '#' is a comment;
+ *   - ';' or '#' preceded by a blank starts a comment anywhere else;
+ *   - "[name]" starts a section (blanks inside the brackets are trimmed);
+ *   - "key = value": blanks around key and value are trimmed; the value may
+ *     be empty; there are no quotes, escapes or continuation lines;
+ *   - a UTF-8 byte order mark before the first line is skipped.
+ * Anything else (including a NUL byte, an over-long key or value, text
+ * after "]") is reported as an error for that line and parsing goes on.
+ */
+#ifndef ARCADED_CONFIG_CINI_H
+#define ARCADED_CONFIG_CINI_H
+
+#include <stddef.h>
+
+#define CINI_NAME_MAX 64       /* section and key: at most 63 bytes */
+#define CINI_VALUE_MAX 1024    /* value: at most 1023 bytes */
+#define CINI_FILE_MAX (1 << 20) /* cini_read_file refuses larger files */
+
+enum cini_kind {
+	CINI_SECTION,          /* section set; key and value are NULL */
+	CINI_ENTRY,            /* key = value inside section ("" before any [section]) */
+	CINI_ERROR,            /* malformed line; msg says why */
+};
+
+struct cini_ev {
+	enum cini_kind kind;
+	int line;              /* 1-based */
+	const char *section;
+	const char *key;
+	const char *value;
+	const char *msg;
+};
+
+/* Called once per section header, entry and malformed line, in file order.
+ * Every string is valid only during the call. */
+typedef void (*cini_fn)(void *user, const struct cini_ev *ev);
+
+/* Parses len bytes of text (need not be NUL-terminated; may hold any bytes).
+ * Returns the number of CINI_ERROR events. Never fails otherwise. */
+int cini_parse(const char *text, size_t len, cini_fn fn, void *user);
+
+/* Reads a whole file (opened O_CLOEXEC) into a malloc'd buffer that the
+ * caller frees. 0, or -errno: -EFBIG above CINI_FILE_MAX bytes. */
+int cini_read_file(const char *path, char **text, size_t *len);
+
+#endif
