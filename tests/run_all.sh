@@ -1,0 +1,74 @@
+#!/bin/sh
+# The whole suite, as `make test` runs it after set-up. Prints each step,
+# cmocka's summaries, and last one line "N passed, N failed" counting unit
+# test cases plus every other check. Exit status 0 only if nothing failed.
+set -u
+cd "$(dirname "$0")/.."
+JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+LOG=build/test-logs
+mkdir -p "$LOG"
+passed=0
+failed=0
+failures=""
+
+count_unit() { # $1: log of run_unit.sh
+	line=$(grep -E '^unit: [0-9]+ passed, [0-9]+ failed$' "$1" | tail -n 1)
+	if [ -z "$line" ]; then
+		failed=$((failed + 1)); failures="$failures $2"; return
+	fi
+	p=$(echo "$line" | sed 's/unit: \([0-9]*\) passed.*/\1/')
+	f=$(echo "$line" | sed 's/.* \([0-9]*\) failed/\1/')
+	passed=$((passed + p)); failed=$((failed + f))
+	[ "$f" -eq 0 ] || failures="$failures $2"
+}
+
+step() { # $1: name; rest: command. Counts as one check.
+	name=$1; shift
+	echo "=== $name"
+	if "$@" > "$LOG/$name.log" 2>&1; then
+		tail -n 3 "$LOG/$name.log"
+		echo "PASS $name"; passed=$((passed + 1))
+	else
+		tail -n 40 "$LOG/$name.log"
+		echo "FAIL $name (log: $LOG/$name.log)"; failed=$((failed + 1)); failures="$failures $name"
+	fi
+}
+
+unit() { # $1: name, $2: build dir, rest: make variables
+	name=$1; dir=$2; shift 2
+	echo "=== $name"
+	if ! make --no-print-directory -j"$JOBS" BUILD="$dir" "$@" tests > "$LOG/$name-build.log" 2>&1; then
+		tail -n 40 "$LOG/$name-build.log"
+		echo "FAIL $name: build"; failed=$((failed + 1)); failures="$failures $name-build"
+		return
+	fi
+	tests/run_unit.sh "$dir"/tests/test_* > "$LOG/$name.log" 2>&1
+	grep -E '^\[  (PASSED|FAILED|SKIPPED)  \]|^\[  FAILED  \]|^unit:|exited with' "$LOG/$name.log" | tail -n 60
+	count_unit "$LOG/$name.log" "$name"
+}
+
+echo "=== build (gcc, -O2)"
+if ! make --no-print-directory -j"$JOBS" all tests > "$LOG/build.log" 2>&1; then
+	tail -n 60 "$LOG/build.log"
+	echo "FAIL build"
+	echo "0 passed, 1 failed"
+	exit 1
+fi
+passed=$((passed + 1))
+
+step check-layers make --no-print-directory check-layers
+step check-tables make --no-print-directory check-tables
+step check-systemd make --no-print-directory check-systemd
+unit unit-gcc build
+unit unit-asan-ubsan build/asan OPT="-O1 -g -fno-omit-frame-pointer" \
+	SAN="-fsanitize=address,undefined -fno-sanitize-recover=all"
+unit unit-clang build/clang CC=clang
+step build-O0 make --no-print-directory -j"$JOBS" BUILD=build/O0 OPT="-O0 -g" all
+step script-tests tests/script/run.sh build/arcaded
+step replay-tests tests/replay/run.sh build/arcaded build/O0/arcaded
+step terminal-preview tests/term/run.sh build/arcaded
+
+echo
+[ -n "$failures" ] && echo "failed:$failures"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
