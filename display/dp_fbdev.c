@@ -1,0 +1,347 @@
+/*
+ * dp_fbdev: the Linux framebuffer (/dev/fb*).
+ *
+ * The pixel format comes from fb_var_screeninfo (bits per pixel and the
+ * red/green/blue offsets and lengths), the line length from
+ * fb_fix_screeninfo; the whole framebuffer memory is mmapped and frames
+ * are drawn by px_panel_draw, the same path as the file framebuffer.
+ *
+ * Double buffering: when yres_virtual holds two pages and the driver pans,
+ * a frame is drawn into the hidden page and FBIOPAN_DISPLAY shows it. The
+ * first failing pan switches to single buffering (drawing into the shown
+ * page) for good, and describe says so. Drivers apply a pan at the next
+ * vertical blank or at once; we do not wait for vblank (FBIO_WAITFORVSYNC
+ * is not universal and the main loop paces itself).
+ *
+ * Console: the tty (default /dev/tty0, the foreground virtual terminal) is
+ * put in KD_GRAPHICS so fbcon stops drawing text and the cursor over the
+ * game, and its keyboard in K_OFF so key presses meant for the game (read
+ * through evdev) do not reach the shell or the kernel's console handling.
+ * Both are restored on close, and by dp_emergency_restore from a fatal
+ * signal handler; for that the fd and the old modes also live in the
+ * file-scope state below, the one place a signal handler can find them.
+ */
+#include "display/dp.h"
+#include "display/dp_int.h"
+#include "display/px.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <linux/fb.h>
+#include <linux/kd.h>
+#include <signal.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/ioctl.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+/* The console this process switched, for the signal handler. Written only
+ * outside signal handlers, before/after fbdev_con_active is raised/cleared;
+ * one console at a time (a second fbdev display leaves the console alone). */
+static volatile sig_atomic_t fbdev_con_active;
+static volatile sig_atomic_t fbdev_con_fd = -1;
+static volatile sig_atomic_t fbdev_con_kd;      /* mode before KD_GRAPHICS */
+static volatile sig_atomic_t fbdev_con_kb = -1; /* keyboard mode before K_OFF; -1 kept */
+
+struct dp {
+	int fd;
+	uint8_t *mem;
+	size_t maplen;
+	struct fb_var_screeninfo var;   /* current (yoffset follows the pans) */
+	uint32_t yoffset0;              /* shown at open; restored at close */
+	size_t line_length;
+	size_t xbytes;                  /* xoffset in bytes */
+	int pages;                      /* 2 double-buffered, 1 single */
+	int shown;                      /* page on screen (double) */
+	int con;                        /* this display holds the console state */
+	struct px_panel panel;
+	char device[128];
+	char con_note[160];             /* console outcome, for describe */
+	char pan_note[96];              /* why single-buffered, for describe */
+	char desc[512];
+};
+
+static void fbdev_close(struct dp *d);
+
+static void fbdev_describe_update(struct dp *d)
+{
+	snprintf(d->desc, sizeof(d->desc), "fbdev %s %ux%u %s line %zu %s%s rotate %d %s; %s",
+		 d->device, d->var.xres, d->var.yres, px_format_name(&d->panel.fmt),
+		 d->line_length, d->pages == 2 ? "double-buffered" : "single-buffered",
+		 d->pan_note, d->panel.layout.rotate, d->panel.layout.fill ? "fill" : "integer",
+		 d->con_note);
+}
+
+/* Console to graphics mode, keyboard off. Failures are not errors: the
+ * game runs, the note says what was left as it was. */
+static void fbdev_console_enter(struct dp *d, const char *tty)
+{
+	int fd, kd, kb;
+
+	if (!tty[0]) {
+		snprintf(d->con_note, sizeof(d->con_note), "console left alone");
+		return;
+	}
+	if (fbdev_con_active) {
+		snprintf(d->con_note, sizeof(d->con_note),
+			 "console left alone (held by another display)");
+		return;
+	}
+	fd = open(tty, O_RDWR | O_CLOEXEC | O_NOCTTY);
+	if (fd < 0) {
+		snprintf(d->con_note, sizeof(d->con_note), "console %s: %s (left alone)", tty,
+			 strerror(errno));
+		return;
+	}
+	if (ioctl(fd, KDGETMODE, &kd) < 0 || ioctl(fd, KDGKBMODE, &kb) < 0 ||
+	    ioctl(fd, KDSETMODE, (unsigned long)KD_GRAPHICS) < 0) {
+		snprintf(d->con_note, sizeof(d->con_note), "console %s: %s (left alone)", tty,
+			 strerror(errno));
+		close(fd);
+		return;
+	}
+	fbdev_con_fd = fd;
+	fbdev_con_kd = kd;
+	fbdev_con_kb = -1;
+	if (ioctl(fd, KDSKBMODE, (unsigned long)K_OFF) == 0) {
+		fbdev_con_kb = kb;
+		snprintf(d->con_note, sizeof(d->con_note), "console %s graphics, keyboard off",
+			 tty);
+	} else {
+		snprintf(d->con_note, sizeof(d->con_note),
+			 "console %s graphics, keyboard left on (%s)", tty, strerror(errno));
+	}
+	d->con = 1;
+	fbdev_con_active = 1;
+}
+
+/* Async-signal-safe: ioctl only. */
+static void fbdev_console_restore(void)
+{
+	if (fbdev_con_kb >= 0)
+		ioctl(fbdev_con_fd, KDSKBMODE, (unsigned long)fbdev_con_kb);
+	ioctl(fbdev_con_fd, KDSETMODE, (unsigned long)fbdev_con_kd);
+}
+
+void dp_fbdev_emergency(void)
+{
+	if (fbdev_con_active)
+		fbdev_console_restore();
+}
+
+static void fbdev_console_leave(struct dp *d)
+{
+	if (!d->con)
+		return;
+	fbdev_con_active = 0;
+	fbdev_console_restore();
+	close(fbdev_con_fd);
+	fbdev_con_fd = -1;
+	fbdev_con_kb = -1;
+	d->con = 0;
+}
+
+/* The panel format from the screen info; 0 or -EOPNOTSUPP. */
+static int fbdev_format(const struct fb_var_screeninfo *v, const struct fb_fix_screeninfo *x,
+			struct px_format *f)
+{
+	if (x->type != FB_TYPE_PACKED_PIXELS ||
+	    (x->visual != FB_VISUAL_TRUECOLOR && x->visual != FB_VISUAL_DIRECTCOLOR))
+		return -EOPNOTSUPP;
+	if (v->red.msb_right || v->green.msb_right || v->blue.msb_right)
+		return -EOPNOTSUPP;
+	f->bpp = (int)v->bits_per_pixel;
+	f->r_off = (int)v->red.offset;
+	f->r_len = (int)v->red.length;
+	f->g_off = (int)v->green.offset;
+	f->g_len = (int)v->green.length;
+	f->b_off = (int)v->blue.offset;
+	f->b_len = (int)v->blue.length;
+	return px_format_check(f) < 0 ? -EOPNOTSUPP : 0;
+}
+
+/* Page p's top-left visible pixel (single-buffered: the shown area). */
+static uint8_t *fbdev_page(struct dp *d, int p)
+{
+	size_t y = d->pages == 2 ? (size_t)p * d->var.yres : d->var.yoffset;
+
+	return d->mem + y * d->line_length + d->xbytes;
+}
+
+static int fbdev_pan(struct dp *d, uint32_t yoffset)
+{
+	struct fb_var_screeninfo v = d->var;
+
+	v.yoffset = yoffset;
+	if (ioctl(d->fd, FBIOPAN_DISPLAY, &v) < 0)
+		return -errno;
+	d->var.yoffset = yoffset;
+	return 0;
+}
+
+/* Two pages when the virtual height, the mapping and the driver's pan
+ * step allow it and a pan to page 0 works; else one. */
+static void fbdev_buffering(struct dp *d, const struct fb_fix_screeninfo *x)
+{
+	int rc;
+
+	d->pages = 1;
+	if (d->var.yres_virtual < 2 * d->var.yres) {
+		snprintf(d->pan_note, sizeof(d->pan_note), " (yres_virtual %u < 2 pages)",
+			 d->var.yres_virtual);
+		return;
+	}
+	if (x->ypanstep == 0 || d->var.yres % x->ypanstep != 0) {
+		snprintf(d->pan_note, sizeof(d->pan_note), " (driver pan step %u)", x->ypanstep);
+		return;
+	}
+	if ((2 * (size_t)d->var.yres - 1) * d->line_length + d->xbytes +
+	    (size_t)d->var.xres * (size_t)(d->panel.fmt.bpp / 8) > d->maplen) {
+		snprintf(d->pan_note, sizeof(d->pan_note), " (memory holds one page)");
+		return;
+	}
+	rc = fbdev_pan(d, 0);
+	if (rc < 0) {
+		snprintf(d->pan_note, sizeof(d->pan_note), " (pan: %s)", strerror(-rc));
+		return;
+	}
+	d->pages = 2;
+	d->shown = 0;
+}
+
+static int fbdev_open(const struct dp_config *cfg, struct dp **out, char *why, size_t whylen)
+{
+	const char *dev = cfg->device && cfg->device[0] ? cfg->device : "/dev/fb0";
+	struct fb_fix_screeninfo fix;
+	struct px_format f;
+	struct dp *d;
+	size_t bytes, need;
+	int rc;
+
+	*out = NULL;
+	d = calloc(1, sizeof(*d));
+	if (!d) {
+		snprintf(why, whylen, "%s", strerror(ENOMEM));
+		return -ENOMEM;
+	}
+	d->mem = MAP_FAILED;
+	snprintf(d->device, sizeof(d->device), "%s", dev);
+	d->fd = open(dev, O_RDWR | O_CLOEXEC);
+	if (d->fd < 0) {
+		rc = -errno;
+		snprintf(why, whylen, "%s: %s", dev, strerror(-rc));
+		goto fail;
+	}
+	if (ioctl(d->fd, FBIOGET_VSCREENINFO, &d->var) < 0 ||
+	    ioctl(d->fd, FBIOGET_FSCREENINFO, &fix) < 0) {
+		rc = -errno;
+		snprintf(why, whylen, "%s: screen info: %s", dev, strerror(-rc));
+		goto fail;
+	}
+	rc = fbdev_format(&d->var, &fix, &f);
+	if (rc < 0) {
+		snprintf(why, whylen,
+			 "%s: unsupported pixels (type %u visual %u, %u bpp, r %u/%u g %u/%u b %u/%u)",
+			 dev, fix.type, fix.visual, d->var.bits_per_pixel, d->var.red.offset,
+			 d->var.red.length, d->var.green.offset, d->var.green.length,
+			 d->var.blue.offset, d->var.blue.length);
+		goto fail;
+	}
+	bytes = (size_t)f.bpp / 8;
+	d->line_length = fix.line_length ? fix.line_length : d->var.xres_virtual * bytes;
+	d->xbytes = (size_t)d->var.xoffset * bytes;
+	d->maplen = fix.smem_len ? fix.smem_len : d->line_length * d->var.yres_virtual;
+	d->yoffset0 = d->var.yoffset;
+	need = ((size_t)d->var.yoffset + d->var.yres - 1) * d->line_length + d->xbytes +
+	       (size_t)d->var.xres * bytes;
+	if (d->var.xres == 0 || d->var.yres == 0 || need > d->maplen ||
+	    d->xbytes + d->var.xres * bytes > d->line_length) {
+		rc = -EINVAL;
+		snprintf(why, whylen, "%s: visible area %ux%u+%u+%u outside memory %zu (line %zu)",
+			 dev, d->var.xres, d->var.yres, d->var.xoffset, d->var.yoffset, d->maplen,
+			 d->line_length);
+		goto fail;
+	}
+	rc = px_panel_init(&d->panel, &f, (int)d->var.xres, (int)d->var.yres, d->line_length,
+			   cfg->rotate, cfg->scale == DP_SCALE_FILL, cfg->render_w, cfg->render_h);
+	if (rc < 0) {
+		snprintf(why, whylen, "%s: %ux%u panel, rotation %d, render size %dx%d refused",
+			 dev, d->var.xres, d->var.yres, cfg->rotate, cfg->render_w,
+			 cfg->render_h);
+		goto fail;
+	}
+	d->mem = mmap(NULL, d->maplen, PROT_READ | PROT_WRITE, MAP_SHARED, d->fd, 0);
+	if (d->mem == MAP_FAILED) {
+		rc = -errno;
+		snprintf(why, whylen, "%s: mmap %zu bytes: %s", dev, d->maplen, strerror(-rc));
+		goto fail;
+	}
+	memset(d->mem, 0, d->maplen);
+	fbdev_buffering(d, &fix);
+	fbdev_console_enter(d, cfg->tty ? cfg->tty : "/dev/tty0");
+	fbdev_describe_update(d);
+	*out = d;
+	return 0;
+fail:
+	fbdev_close(d);
+	return rc;
+}
+
+static void fbdev_set_palette(struct dp *d, const uint8_t rgb[256][3])
+{
+	px_panel_palette(&d->panel, rgb);
+}
+
+static int fbdev_present(struct dp *d, const uint8_t *px, int w, int h, int pitch)
+{
+	int back, rc;
+
+	if (d->pages == 1)
+		return px_panel_draw(&d->panel, fbdev_page(d, 0), px, w, h, pitch);
+	back = 1 - d->shown;
+	rc = px_panel_draw(&d->panel, fbdev_page(d, back), px, w, h, pitch);
+	if (rc < 0)
+		return rc;
+	rc = fbdev_pan(d, (uint32_t)back * d->var.yres);
+	if (rc == 0) {
+		d->shown = back;
+		return 0;
+	}
+	/* Panning stopped working: draw into the shown page from now on. */
+	snprintf(d->pan_note, sizeof(d->pan_note), " (pan failed: %s)", strerror(-rc));
+	d->pages = 1;
+	d->var.yoffset = (uint32_t)d->shown * d->var.yres;
+	fbdev_describe_update(d);
+	return px_panel_draw(&d->panel, fbdev_page(d, 0), px, w, h, pitch);
+}
+
+static void fbdev_close(struct dp *d)
+{
+	if (!d)
+		return;
+	fbdev_console_leave(d);
+	if (d->pages == 2 && d->var.yoffset != d->yoffset0)
+		fbdev_pan(d, d->yoffset0);
+	if (d->mem != MAP_FAILED)
+		munmap(d->mem, d->maplen);
+	if (d->fd >= 0)
+		close(d->fd);
+	free(d);
+}
+
+static const char *fbdev_describe(struct dp *d)
+{
+	return d->desc;
+}
+
+const struct dp_backend dp_fbdev = {
+	.name = "fbdev",
+	.open = fbdev_open,
+	.set_palette = fbdev_set_palette,
+	.present = fbdev_present,
+	.close = fbdev_close,
+	.describe = fbdev_describe,
+};
