@@ -14,6 +14,16 @@
  * sector, credits, coins, tick, mode (attract|play). OP: == != < <= > >=.
  * Steps run in tick order; steps of one tick in file order. A run without
  * `end` stops after the last step's tick.
+ *
+ * Details: TICK is a decimal 0..4294967295; words are separated by blanks
+ * and are case-sensitive; hold needs N >= 1 and becomes a press and a
+ * release step (tap: N = 1). x/y/z take up to 12 fraction digits and are
+ * rounded to the nearest 1/65536 (halves away from zero), range
+ * -32768..32767.99998; angle is an int32; sector/credits/coins/tick are
+ * 0..4294967295; mode takes == and != only. FILE is the rest of the line,
+ * blanks trimmed ('#' still starts a comment). A second `end`, and a
+ * press/expect/snapshot/screenshot after `end`, are errors (they would
+ * never run); releases after it are allowed.
  */
 #ifndef ARCADED_INPUT_SCR_H
 #define ARCADED_INPUT_SCR_H
@@ -43,12 +53,17 @@ struct scr {
 	uint32_t end_tick;       /* last tick to run */
 };
 
-/* Parses text (len bytes, need not be NUL-terminated). On error returns
- * -EINVAL with "NAME:LINE: reason" in err; -ENOMEM. */
+/* Parses text (len bytes, need not be NUL-terminated, any bytes). Stops at
+ * the first error: -EINVAL with "NAME:LINE: reason" in err ("unknown action
+ * 'jump'", "expected a tick number, got 'x'", "unknown field 'hp'", "bad
+ * value 'abc' for x", ...); -ENOMEM. On success *out is the caller's, freed
+ * with scr_free. */
 int scr_parse(const char *text, size_t len, const char *name, struct scr **out, char *err,
 	      size_t errlen);
-/* Reads and parses a file; -errno with "PATH: reason" in err. */
+/* Reads (at most 1 MiB, else -EFBIG) and parses a file; -errno with
+ * "PATH: reason" in err, or scr_parse's errors with NAME = path. */
 int scr_load(const char *path, struct scr **out, char *err, size_t errlen);
+/* NULL-safe. */
 void scr_free(struct scr *s);
 
 /* Evaluates a comparison: returns 1 if (actual OP expected) holds. */

@@ -1,0 +1,442 @@
+/*
+ * rec: recordings. Every multi-byte field is put together and taken apart
+ * by shifts, so the file is the same on any CPU and never depends on a
+ * struct's layout or padding.
+ */
+#include "input/rec.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <inttypes.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
+
+/* Header sizes above this are refused as garbage rather than skipped. */
+#define REC_HEADER_SIZE_MAX 65536u
+/* Commands buffered by the writer: 680 * 6 = 4080 bytes, so every flush
+ * ends on a command boundary. */
+#define REC_WBUF_CMDS 680
+
+static void rec_put16(uint8_t *p, uint16_t v)
+{
+	p[0] = (uint8_t)v;
+	p[1] = (uint8_t)(v >> 8);
+}
+
+static void rec_put32(uint8_t *p, uint32_t v)
+{
+	for (int i = 0; i < 4; i++)
+		p[i] = (uint8_t)(v >> (8 * i));
+}
+
+static void rec_put64(uint8_t *p, uint64_t v)
+{
+	for (int i = 0; i < 8; i++)
+		p[i] = (uint8_t)(v >> (8 * i));
+}
+
+static uint16_t rec_get16(const uint8_t *p)
+{
+	return (uint16_t)(p[0] | (unsigned)p[1] << 8);
+}
+
+static uint32_t rec_get32(const uint8_t *p)
+{
+	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+static uint64_t rec_get64(const uint8_t *p)
+{
+	return (uint64_t)rec_get32(p) | (uint64_t)rec_get32(p + 4) << 32;
+}
+
+__attribute__((format(printf, 3, 4)))
+static void rec_msg(char *err, size_t errlen, const char *fmt, ...)
+{
+	va_list ap;
+
+	if (!err || !errlen)
+		return;
+	va_start(ap, fmt);
+	vsnprintf(err, errlen, fmt, ap);
+	va_end(ap);
+}
+
+void rec_header_encode(uint8_t out[REC_HEADER_SIZE], const struct rec_header *h)
+{
+	memset(out, 0, REC_HEADER_SIZE);
+	memcpy(out, rec_magic, sizeof(rec_magic));
+	rec_put16(out + 8, h->version);
+	rec_put16(out + 10, h->tick_rate);
+	rec_put32(out + 12, REC_HEADER_SIZE);
+	rec_put64(out + 16, h->map_hash);
+	rec_put32(out + 24, h->engine_version);
+	out[28] = h->set.coins_per_credit;
+	out[29] = h->set.freeplay;
+	out[30] = h->set.start_in_play;
+	rec_put32(out + 32, h->count);
+}
+
+int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char *err,
+		      size_t errlen)
+{
+	struct rec_header d;
+
+	if (len < REC_HEADER_SIZE) {
+		rec_msg(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
+			REC_HEADER_SIZE);
+		return -EINVAL;
+	}
+	if (memcmp(buf, rec_magic, sizeof(rec_magic)) != 0) {
+		rec_msg(err, errlen, "bad magic (not an arcaded recording)");
+		return -EINVAL;
+	}
+	memset(&d, 0, sizeof(d));
+	d.version = rec_get16(buf + 8);
+	d.tick_rate = rec_get16(buf + 10);
+	d.header_size = rec_get32(buf + 12);
+	d.map_hash = rec_get64(buf + 16);
+	d.engine_version = rec_get32(buf + 24);
+	d.set.coins_per_credit = buf[28];
+	d.set.freeplay = buf[29];
+	d.set.start_in_play = buf[30];
+	d.count = rec_get32(buf + 32);
+	if (d.version == 0) {
+		rec_msg(err, errlen, "version 0 is not a valid version");
+		return -EINVAL;
+	}
+	if (d.version > REC_VERSION) {
+		rec_msg(err, errlen, "version %u is newer than this build (%d)", d.version,
+			REC_VERSION);
+		return -EINVAL;
+	}
+	if (d.header_size < REC_HEADER_SIZE) {
+		rec_msg(err, errlen, "header size %" PRIu32 " is smaller than %d", d.header_size,
+			REC_HEADER_SIZE);
+		return -EINVAL;
+	}
+	if (d.header_size > REC_HEADER_SIZE_MAX) {
+		rec_msg(err, errlen, "header size %" PRIu32 " is larger than %u", d.header_size,
+			REC_HEADER_SIZE_MAX);
+		return -EINVAL;
+	}
+	if (d.tick_rate != SIM_TICRATE) {
+		rec_msg(err, errlen, "tick rate %u is not %d", d.tick_rate, SIM_TICRATE);
+		return -EINVAL;
+	}
+	if (d.set.coins_per_credit < 1 || d.set.coins_per_credit > 9) {
+		rec_msg(err, errlen, "coins_per_credit %u out of range 1..9",
+			d.set.coins_per_credit);
+		return -EINVAL;
+	}
+	if (d.set.freeplay > 1 || d.set.start_in_play > 1) {
+		rec_msg(err, errlen, "freeplay %u / start_in_play %u is not 0 or 1",
+			d.set.freeplay, d.set.start_in_play);
+		return -EINVAL;
+	}
+	*h = d;
+	return 0;
+}
+
+void rec_cmd_encode(uint8_t out[REC_CMD_SIZE], const struct sim_cmd *c)
+{
+	/* Two's complement by conversion to the unsigned type: defined in C. */
+	out[0] = (uint8_t)c->forward;
+	out[1] = (uint8_t)c->side;
+	rec_put16(out + 2, (uint16_t)c->turn);
+	out[4] = c->buttons;
+	out[5] = c->coins;
+}
+
+/* The unsigned-to-signed conversion is done by arithmetic, so it does not
+ * rest on implementation-defined behaviour. */
+static int8_t rec_s8(uint8_t v)
+{
+	return (int8_t)(v < 128 ? (int)v : (int)v - 256);
+}
+
+static int16_t rec_s16(uint16_t v)
+{
+	return (int16_t)(v < 32768 ? (int32_t)v : (int32_t)v - 65536);
+}
+
+void rec_cmd_decode(const uint8_t in[REC_CMD_SIZE], struct sim_cmd *c)
+{
+	c->forward = rec_s8(in[0]);
+	c->side = rec_s8(in[1]);
+	c->turn = rec_s16(rec_get16(in + 2));
+	c->buttons = in[4];
+	c->coins = in[5];
+}
+
+static int rec_write_all(int fd, const uint8_t *p, size_t n)
+{
+	while (n) {
+		ssize_t w = write(fd, p, n);
+
+		if (w < 0) {
+			if (errno == EINTR)
+				continue;
+			return -errno;
+		}
+		p += w;
+		n -= (size_t)w;
+	}
+	return 0;
+}
+
+/* Reads up to n bytes, fewer only at end of file. Returns the count or -errno. */
+static ssize_t rec_read_all(int fd, uint8_t *p, size_t n)
+{
+	size_t got = 0;
+
+	while (got < n) {
+		ssize_t r = read(fd, p + got, n - got);
+
+		if (r < 0) {
+			if (errno == EINTR)
+				continue;
+			return -errno;
+		}
+		if (r == 0)
+			break;
+		got += (size_t)r;
+	}
+	return (ssize_t)got;
+}
+
+struct rec_writer {
+	int fd;
+	int err;                 /* first failure, returned from then on */
+	uint32_t count;
+	size_t n;                /* bytes pending in buf */
+	uint8_t buf[REC_WBUF_CMDS * REC_CMD_SIZE];
+};
+
+int rec_writer_open(const char *path, const struct rec_header *h, struct rec_writer **out)
+{
+	uint8_t hdr[REC_HEADER_SIZE];
+	struct rec_header hh = *h;
+	struct rec_writer *w;
+	int ret;
+
+	w = calloc(1, sizeof(*w));
+	if (!w)
+		return -ENOMEM;
+	w->fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+	if (w->fd < 0) {
+		ret = -errno;
+		goto fail_free;
+	}
+	hh.count = REC_COUNT_UNKNOWN;
+	rec_header_encode(hdr, &hh);
+	ret = rec_write_all(w->fd, hdr, sizeof(hdr));
+	if (ret < 0)
+		goto fail_close;
+	*out = w;
+	return 0;
+fail_close:
+	close(w->fd);
+fail_free:
+	free(w);
+	return ret;
+}
+
+int rec_writer_flush(struct rec_writer *w)
+{
+	if (w->err)
+		return w->err;
+	w->err = rec_write_all(w->fd, w->buf, w->n);
+	w->n = 0;
+	return w->err;
+}
+
+int rec_writer_put(struct rec_writer *w, const struct sim_cmd *c)
+{
+	if (w->err)
+		return w->err;
+	/* The count must never reach the "unknown" marker. */
+	if (w->count >= REC_COUNT_UNKNOWN - 1)
+		return -EFBIG;
+	if (w->n + REC_CMD_SIZE > sizeof(w->buf) && rec_writer_flush(w) < 0)
+		return w->err;
+	rec_cmd_encode(w->buf + w->n, c);
+	w->n += REC_CMD_SIZE;
+	w->count++;
+	return 0;
+}
+
+int rec_writer_close(struct rec_writer *w)
+{
+	uint8_t cnt[4];
+	int ret;
+
+	if (!w)
+		return 0;
+	ret = rec_writer_flush(w);
+	if (ret == 0) {
+		ssize_t pw;
+
+		rec_put32(cnt, w->count);
+		pw = pwrite(w->fd, cnt, sizeof(cnt), 32);
+		if (pw < 0)
+			ret = -errno;
+		else if (pw != (ssize_t)sizeof(cnt))
+			ret = -EIO;
+	}
+	if (ret == 0 && fsync(w->fd) < 0)
+		ret = -errno;
+	if (close(w->fd) < 0 && ret == 0 && errno != EINTR)
+		ret = -errno;
+	free(w);
+	return ret;
+}
+
+struct rec_reader {
+	int fd;
+	struct rec_header h;
+	uint32_t total;          /* commands next returns in all */
+	uint32_t pos;            /* commands returned so far */
+	bool damaged;            /* finished, yet shorter than its count */
+	size_t bn, bi;           /* bytes in buf, next byte */
+	uint8_t buf[REC_WBUF_CMDS * REC_CMD_SIZE];
+};
+
+int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t errlen)
+{
+	uint8_t hdr[REC_HEADER_SIZE];
+	char why[160];
+	struct rec_reader *r;
+	struct stat sb;
+	uint64_t whole;
+	ssize_t got;
+	int ret;
+
+	r = calloc(1, sizeof(*r));
+	if (!r) {
+		rec_msg(err, errlen, "%s: out of memory", path);
+		return -ENOMEM;
+	}
+	r->fd = open(path, O_RDONLY | O_CLOEXEC);
+	if (r->fd < 0) {
+		ret = -errno;
+		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		goto fail_free;
+	}
+	if (fstat(r->fd, &sb) < 0) {
+		ret = -errno;
+		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		goto fail_close;
+	}
+	got = rec_read_all(r->fd, hdr, sizeof(hdr));
+	if (got < 0) {
+		ret = (int)got;
+		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		goto fail_close;
+	}
+	ret = rec_header_decode(hdr, (size_t)got, &r->h, why, sizeof(why));
+	if (ret < 0) {
+		rec_msg(err, errlen, "%s: %s", path, why);
+		goto fail_close;
+	}
+	if ((uint64_t)sb.st_size < r->h.header_size) {
+		ret = -EINVAL;
+		rec_msg(err, errlen, "%s: file too short (%jd bytes, the header says %" PRIu32 ")",
+			path, (intmax_t)sb.st_size, r->h.header_size);
+		goto fail_close;
+	}
+	if (lseek(r->fd, r->h.header_size, SEEK_SET) < 0) {
+		ret = -errno;
+		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		goto fail_close;
+	}
+	whole = ((uint64_t)sb.st_size - r->h.header_size) / REC_CMD_SIZE;
+	if (r->h.count == REC_COUNT_UNKNOWN) {
+		/* Cut short while recording: everything whole replays. */
+		r->total = whole < REC_COUNT_UNKNOWN ? (uint32_t)whole : REC_COUNT_UNKNOWN - 1;
+	} else if (whole < r->h.count) {
+		r->total = (uint32_t)whole;
+		r->damaged = true;
+	} else {
+		r->total = r->h.count;
+	}
+	*out = r;
+	return 0;
+fail_close:
+	close(r->fd);
+fail_free:
+	free(r);
+	return ret;
+}
+
+const struct rec_header *rec_reader_header(const struct rec_reader *r)
+{
+	return &r->h;
+}
+
+uint32_t rec_reader_count(const struct rec_reader *r)
+{
+	return r->total;
+}
+
+int rec_reader_next(struct rec_reader *r, struct sim_cmd *c)
+{
+	if (r->pos == r->total)
+		return r->damaged ? -EIO : 0;
+	if (r->bn - r->bi < REC_CMD_SIZE) {
+		/* Refill, keeping a partial command's bytes at the front. */
+		size_t keep = r->bn - r->bi;
+		ssize_t got;
+
+		memmove(r->buf, r->buf + r->bi, keep);
+		r->bn = keep;
+		r->bi = 0;
+		got = rec_read_all(r->fd, r->buf + keep, sizeof(r->buf) - keep);
+		if (got < 0)
+			return (int)got;
+		r->bn += (size_t)got;
+		/* The file shrank since open. */
+		if (r->bn < REC_CMD_SIZE)
+			return -EIO;
+	}
+	rec_cmd_decode(r->buf + r->bi, c);
+	r->bi += REC_CMD_SIZE;
+	r->pos++;
+	return 1;
+}
+
+void rec_reader_close(struct rec_reader *r)
+{
+	if (!r)
+		return;
+	close(r->fd);
+	free(r);
+}
+
+int rec_check(const struct rec_header *h, uint64_t map_hash, char *err, size_t errlen)
+{
+	char buf[256];
+	size_t n = 0;
+
+	buf[0] = '\0';
+	if (h->map_hash != map_hash)
+		n += (size_t)snprintf(buf + n, sizeof(buf) - n,
+				      "map content differs: recording 0x%016" PRIx64
+				      ", loaded 0x%016" PRIx64,
+				      h->map_hash, map_hash);
+	if (h->engine_version != REC_ENGINE_VERSION)
+		snprintf(buf + n, sizeof(buf) - n,
+			 "%sengine version differs: recording %" PRIu32 ", this build %d",
+			 n ? "; " : "", h->engine_version, REC_ENGINE_VERSION);
+	if (buf[0] == '\0')
+		return 0;
+	rec_msg(err, errlen, "%s", buf);
+	return -EINVAL;
+}
