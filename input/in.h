@@ -46,6 +46,11 @@ struct in_backend {
 
 extern const struct in_backend in_evdev, in_tty;
 
+/* in_evdev's auto-detection over DIR/event* instead of /dev/input/event*
+ * (in_evdev.open with a NULL path is this with "/dev/input"); for tests.
+ * The rule is in in_evdev.c and docs/input.md. */
+int in_evdev_open_dir(const char *dir, struct in_dev **out, char *why, size_t whylen);
+
 /* Key code by name: "KEY_UP", "up", "w", "space", "enter", "BTN_SOUTH", ...
  * (case-insensitive; a bare letter or digit is that key). -1 if unknown. */
 int in_key_from_name(const char *name);

@@ -1,0 +1,323 @@
+/*
+ * in_evdev: keys and axes from a Linux input device (/dev/input/eventN)
+ * through libevdev.
+ *
+ * Auto-detection (open with a NULL path) takes the first of
+ * /dev/input/event0, event1, ... (numeric order) that opens and looks like
+ * one of:
+ *   - a keyboard: EV_KEY with every key KEY_A..KEY_Z, and KEY_ENTER or
+ *     KEY_SPACE;
+ *   - a keyboard-style arcade encoder: KEY_UP, KEY_DOWN, KEY_LEFT and
+ *     KEY_RIGHT, and one of KEY_LEFTCTRL, KEY_1, KEY_5 (the MAME layout
+ *     those encoders ship with: ctrl fires, 1 starts, 5 adds a coin).
+ * Power buttons, lid switches, mice and touchpads match neither.
+ *
+ * The device is grabbed (EVIOCGRAB) so its keys do not also reach the
+ * console or another program; a failed grab is not fatal and shows in
+ * describe. The kernel is asked to stamp events with CLOCK_MONOTONIC
+ * (EVIOCSCLOCKID), the clock of in_now_ns; if it refuses, events are
+ * stamped with in_now_ns at the read.
+ */
+#include "input/in.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <libevdev/libevdev.h>
+
+struct in_dev {
+	struct libevdev *ev;
+	int fd;
+	int grab_err;            /* 0: grabbed; else the errno of the failed grab */
+	int stamp_now;           /* the kernel keeps another clock: stamp at the read */
+	int syncing;             /* draining the sync events after a SYN_DROPPED */
+	char desc[320];
+};
+
+/* Appends printf output to buf (NUL-terminated, size len), truncating. */
+static void append(char *buf, size_t len, const char *fmt, ...)
+{
+	size_t used = strnlen(buf, len);
+	va_list ap;
+
+	if (used + 1 >= len)
+		return;
+	va_start(ap, fmt);
+	vsnprintf(buf + used, len - used, fmt, ap);
+	va_end(ap);
+}
+
+static int has_key(const struct libevdev *ev, unsigned code)
+{
+	return libevdev_has_event_code(ev, EV_KEY, code);
+}
+
+/* The auto-detection rule (file comment). */
+static int looks_like_keyboard(const struct libevdev *ev)
+{
+	static const unsigned letters[26] = {
+		KEY_A, KEY_B, KEY_C, KEY_D, KEY_E, KEY_F, KEY_G, KEY_H, KEY_I,
+		KEY_J, KEY_K, KEY_L, KEY_M, KEY_N, KEY_O, KEY_P, KEY_Q, KEY_R,
+		KEY_S, KEY_T, KEY_U, KEY_V, KEY_W, KEY_X, KEY_Y, KEY_Z,
+	};
+	int all_letters = 1;
+
+	if (!libevdev_has_event_type(ev, EV_KEY))
+		return 0;
+	for (size_t i = 0; i < sizeof(letters) / sizeof(letters[0]); i++)
+		all_letters = all_letters && has_key(ev, letters[i]);
+	if (all_letters && (has_key(ev, KEY_ENTER) || has_key(ev, KEY_SPACE)))
+		return 1;
+	return has_key(ev, KEY_UP) && has_key(ev, KEY_DOWN) && has_key(ev, KEY_LEFT) &&
+	       has_key(ev, KEY_RIGHT) &&
+	       (has_key(ev, KEY_LEFTCTRL) || has_key(ev, KEY_1) || has_key(ev, KEY_5));
+}
+
+/* Opens path as an evdev device into a new d (not yet grabbed). On failure
+ * returns -errno with "PATH: reason" appended to why. */
+static int probe(const char *path, struct in_dev **out, char *why, size_t whylen)
+{
+	struct in_dev *d;
+	int rc;
+
+	d = calloc(1, sizeof(*d));
+	if (!d) {
+		append(why, whylen, "%s: out of memory", path);
+		return -ENOMEM;
+	}
+	d->fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+	if (d->fd < 0) {
+		rc = -errno;
+		append(why, whylen, "%s: %s", path, strerror(-rc));
+		goto fail;
+	}
+	rc = libevdev_new_from_fd(d->fd, &d->ev);
+	if (rc < 0) {
+		append(why, whylen, "%s: not an input event device (%s)", path, strerror(-rc));
+		goto fail_fd;
+	}
+	*out = d;
+	return 0;
+
+fail_fd:
+	close(d->fd);
+fail:
+	free(d);
+	return rc;
+}
+
+static void evdev_close(struct in_dev *d)
+{
+	if (!d)
+		return;
+	if (d->ev) {
+		if (d->grab_err == 0)
+			libevdev_grab(d->ev, LIBEVDEV_UNGRAB);
+		libevdev_free(d->ev);
+	}
+	close(d->fd);
+	free(d);
+}
+
+/* Grabs d and switches its clock; fills describe. */
+static void take_over(struct in_dev *d, const char *path)
+{
+	const char *name = libevdev_get_name(d->ev);
+	int rc;
+
+	d->stamp_now = libevdev_set_clock_id(d->ev, CLOCK_MONOTONIC) != 0;
+	rc = libevdev_grab(d->ev, LIBEVDEV_GRAB);
+	d->grab_err = rc < 0 ? -rc : 0;
+	snprintf(d->desc, sizeof(d->desc), "%s (%s)", name ? name : "unnamed", path);
+	if (d->grab_err)
+		append(d->desc, sizeof(d->desc), ", not grabbed: %s", strerror(d->grab_err));
+	if (d->stamp_now)
+		append(d->desc, sizeof(d->desc), ", stamped at read");
+}
+
+static int cmp_uint(const void *a, const void *b)
+{
+	unsigned x = *(const unsigned *)a, y = *(const unsigned *)b;
+
+	return (x > y) - (x < y);
+}
+
+/* Numbers N of the DIR/eventN entries, sorted; -errno on failure. */
+static int list_events(const char *dir, unsigned **nums, size_t *count)
+{
+	DIR *dh;
+	struct dirent *de;
+	unsigned *v = NULL, *nv;
+	size_t n = 0, cap = 0;
+
+	dh = opendir(dir);
+	if (!dh)
+		return -errno;
+	while ((de = readdir(dh)) != NULL) {
+		const char *p = de->d_name;
+		char *end;
+		unsigned long num;
+
+		if (strncmp(p, "event", 5) != 0 || p[5] < '0' || p[5] > '9')
+			continue;
+		errno = 0;
+		num = strtoul(p + 5, &end, 10);
+		if (*end != '\0' || errno || num > 1000000)
+			continue;
+		if (n == cap) {
+			cap = cap ? cap * 2 : 16;
+			nv = realloc(v, cap * sizeof(*v));
+			if (!nv) {
+				free(v);
+				closedir(dh);
+				return -ENOMEM;
+			}
+			v = nv;
+		}
+		v[n++] = (unsigned)num;
+	}
+	closedir(dh);
+	if (n > 1)
+		qsort(v, n, sizeof(*v), cmp_uint);
+	*nums = v;
+	*count = n;
+	return 0;
+}
+
+int in_evdev_open_dir(const char *dir, struct in_dev **out, char *why, size_t whylen)
+{
+	unsigned *nums = NULL;
+	size_t n = 0;
+	char path[PATH_MAX];
+	int rc;
+
+	*out = NULL;
+	if (whylen)
+		why[0] = '\0';
+	rc = list_events(dir, &nums, &n);
+	if (rc < 0) {
+		append(why, whylen, "%s: %s", dir, strerror(-rc));
+		return rc == -ENOMEM ? rc : -ENODEV;
+	}
+	if (n == 0) {
+		append(why, whylen, "no %s/event* devices", dir);
+		free(nums);
+		return -ENODEV;
+	}
+	append(why, whylen, "no keyboard among %s/event*: ", dir);
+	for (size_t i = 0; i < n; i++) {
+		struct in_dev *d;
+
+		snprintf(path, sizeof(path), "%s/event%u", dir, nums[i]);
+		if (i > 0)
+			append(why, whylen, "; ");
+		if (probe(path, &d, why, whylen) < 0)
+			continue;
+		if (!looks_like_keyboard(d->ev)) {
+			const char *name = libevdev_get_name(d->ev);
+
+			append(why, whylen, "%s (%s): not a keyboard", path, name ? name : "unnamed");
+			evdev_close(d);
+			continue;
+		}
+		take_over(d, path);
+		free(nums);
+		if (whylen)
+			why[0] = '\0';
+		*out = d;
+		return 0;
+	}
+	free(nums);
+	return -ENODEV;
+}
+
+static int evdev_open(const char *path, struct in_dev **out, char *why, size_t whylen)
+{
+	struct in_dev *d;
+	int rc;
+
+	if (!path)
+		return in_evdev_open_dir("/dev/input", out, why, whylen);
+	*out = NULL;
+	if (whylen)
+		why[0] = '\0';
+	rc = probe(path, &d, why, whylen);
+	if (rc < 0)
+		return rc;
+	take_over(d, path);
+	*out = d;
+	return 0;
+}
+
+static int evdev_fd(struct in_dev *d)
+{
+	return d->fd;
+}
+
+static int evdev_read(struct in_dev *d, struct in_event *out, int max)
+{
+	struct input_event e;
+	int n = 0, rc;
+
+	while (n < max) {
+		rc = libevdev_next_event(d->ev, d->syncing ? LIBEVDEV_READ_FLAG_SYNC
+							     : LIBEVDEV_READ_FLAG_NORMAL, &e);
+		if (rc == -EAGAIN) {
+			if (!d->syncing)
+				break;
+			/* Sync done: back to the event stream. */
+			d->syncing = 0;
+			continue;
+		}
+		if (rc == -EINTR)
+			break;
+		if (rc < 0)
+			return rc;   /* -ENODEV: unplugged */
+		if (rc == LIBEVDEV_READ_STATUS_SYNC && !d->syncing) {
+			/* This is the SYN_DROPPED itself: events were lost. The
+			 * sync events that follow give the true state of every
+			 * key and axis that changed meanwhile. */
+			d->syncing = 1;
+			continue;
+		}
+		if (e.type == EV_KEY) {
+			/* 2 is autorepeat: the sim wants presses and releases. */
+			if (e.value != 0 && e.value != 1)
+				continue;
+			out[n].type = IN_KEY;
+		} else if (e.type == EV_ABS) {
+			out[n].type = IN_ABS;
+		} else {
+			continue;
+		}
+		out[n].code = e.code;
+		out[n].value = e.value;
+		out[n].time_ns = d->stamp_now ? in_now_ns()
+					      : (uint64_t)e.input_event_sec * 1000000000u +
+						(uint64_t)e.input_event_usec * 1000u;
+		n++;
+	}
+	return n;
+}
+
+static const char *evdev_describe(struct in_dev *d)
+{
+	return d->desc;
+}
+
+const struct in_backend in_evdev = {
+	.name = "evdev",
+	.open = evdev_open,
+	.fd = evdev_fd,
+	.read = evdev_read,
+	.close = evdev_close,
+	.describe = evdev_describe,
+};
