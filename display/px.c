@@ -230,32 +230,21 @@ static void px_row24(uint8_t *d, const uint8_t *s, const int32_t *col, int n, co
 }
 
 /* Unrotated integer scale k: n consecutive frame pixels, each stored k
- * times; no table lookup for the column. */
-static void px_row32_k(uint8_t *d, const uint8_t *s, int n, int k, const uint32_t *t)
+ * times; no table lookup for the column. px_row*_k call the repeat loops
+ * with constant k for the usual factors so the compiler unrolls them. */
+static inline void px_rep32(uint8_t *d, const uint8_t *s, int n, int k, const uint32_t *t)
 {
 	int i, j;
 
-	if (k == 1) {
-		for (i = 0; i < n; i++, d += 4)
-			px_st32(d, t[s[i]]);
-	} else if (k == 2) {
-		for (i = 0; i < n; i++, d += 8) {
-			uint32_t v = t[s[i]];
+	for (i = 0; i < n; i++) {
+		uint32_t v = t[s[i]];
 
+		for (j = 0; j < k; j++, d += 4)
 			px_st32(d, v);
-			px_st32(d + 4, v);
-		}
-	} else {
-		for (i = 0; i < n; i++) {
-			uint32_t v = t[s[i]];
-
-			for (j = 0; j < k; j++, d += 4)
-				px_st32(d, v);
-		}
 	}
 }
 
-static void px_row16_k(uint8_t *d, const uint8_t *s, int n, int k, const uint32_t *t)
+static inline void px_rep16(uint8_t *d, const uint8_t *s, int n, int k, const uint32_t *t)
 {
 	int i, j;
 
@@ -264,6 +253,28 @@ static void px_row16_k(uint8_t *d, const uint8_t *s, int n, int k, const uint32_
 
 		for (j = 0; j < k; j++, d += 2)
 			px_st16(d, v);
+	}
+}
+
+static void px_row32_k(uint8_t *d, const uint8_t *s, int n, int k, const uint32_t *t)
+{
+	switch (k) {
+	case 1: px_rep32(d, s, n, 1, t); break;
+	case 2: px_rep32(d, s, n, 2, t); break;
+	case 3: px_rep32(d, s, n, 3, t); break;
+	case 4: px_rep32(d, s, n, 4, t); break;
+	default: px_rep32(d, s, n, k, t); break;
+	}
+}
+
+static void px_row16_k(uint8_t *d, const uint8_t *s, int n, int k, const uint32_t *t)
+{
+	switch (k) {
+	case 1: px_rep16(d, s, n, 1, t); break;
+	case 2: px_rep16(d, s, n, 2, t); break;
+	case 3: px_rep16(d, s, n, 3, t); break;
+	case 4: px_rep16(d, s, n, 4, t); break;
+	default: px_rep16(d, s, n, k, t); break;
 	}
 }
 
