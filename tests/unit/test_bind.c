@@ -190,6 +190,28 @@ static void test_load_file_missing_silent_present_applied(void **state)
 	rmdir(dir);
 }
 
+/* config/bindings.ini (installed to /etc/arcaded) writes out exactly the
+ * built-in defaults. Run from the repository root, as make does. */
+static void test_shipped_bindings_ini_equals_defaults(void **state)
+{
+	struct bind_table b, d;
+	struct errs e;
+	int n;
+
+	(void)state;
+	bind_defaults(&d);
+	memset(&b, 0x7f, sizeof(b));
+	for (int a = 0; a < ACT_COUNT; a++)
+		for (int i = 0; i < BIND_MAX; i++)
+			b.key[a][i] = -1;
+	memset(&e, 0, sizeof(e));
+	n = bind_load(&b, "config/bindings.ini", on_err, &e);
+	if (n == -ENOENT)
+		fail_msg("config/bindings.ini: not found (run from the repository root)");
+	assert_int_equal(n, 0);
+	assert_memory_equal(&b, &d, sizeof(b));
+}
+
 static void test_random_bytes_never_crash(void **state)
 {
 	uint32_t seed = 7;
@@ -228,6 +250,7 @@ int main(void)
 		cmocka_unit_test(test_four_keys_fit),
 		cmocka_unit_test(test_lookup_returns_every_action_of_a_key),
 		cmocka_unit_test(test_load_file_missing_silent_present_applied),
+		cmocka_unit_test(test_shipped_bindings_ini_equals_defaults),
 		cmocka_unit_test(test_random_bytes_never_crash),
 	};
 

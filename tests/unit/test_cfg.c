@@ -378,6 +378,53 @@ static void test_format_round_trips_every_key(void **state)
 	assert_int_equal(cfg_format(&a, NULL, 0), n);
 }
 
+/* config/arcaded.ini (installed to /etc/arcaded) shows every key at its
+ * default, commented out. Run from the repository root, as make does. */
+static void test_shipped_arcaded_ini_lists_every_key_at_its_default(void **state)
+{
+	static const char path[] = "config/arcaded.ini";
+	char text[16384], out[16384];
+	struct cfg c, d;
+	struct errs e;
+	size_t n = 0, o = 0;
+	int fd, keys = 0;
+	ssize_t r;
+
+	(void)state;
+	unsetenv("STATE_DIRECTORY");
+	fd = open(path, O_RDONLY | O_CLOEXEC);
+	if (fd < 0)
+		fail_msg("%s: cannot open (run from the repository root)", path);
+	while ((r = read(fd, text + n, sizeof(text) - 1 - n)) > 0)
+		n += (size_t)r;
+	close(fd);
+	text[n] = '\0';
+	cfg_defaults(&c);
+	cfg_defaults(&d);
+	/* As shipped: nothing to complain about, nothing changed. */
+	memset(&e, 0, sizeof(e));
+	assert_int_equal(cfg_load_file(&c, path, on_err, &e), 0);
+	assert_memory_equal(&c, &d, sizeof(c));
+	/* Uncomment every "; key = value" line: still the defaults, and every
+	 * key is there. */
+	for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
+		size_t k = 2;
+
+		if (strncmp(line, "; ", 2) == 0) {
+			while ((line[k] >= 'a' && line[k] <= 'z') || line[k] == '_')
+				k++;
+			if (k > 2 && strncmp(line + k, " =", 2) == 0) {
+				line += 2;
+				keys++;
+			}
+		}
+		o += (size_t)snprintf(out + o, sizeof(out) - o, "%s\n", line);
+	}
+	assert_int_equal(keys, 19);
+	assert_int_equal(load(&c, out, &e), 0);
+	assert_memory_equal(&c, &d, sizeof(c));
+}
+
 static void test_random_bytes_never_crash(void **state)
 {
 	uint32_t seed = 99;
@@ -418,6 +465,7 @@ int main(void)
 		cmocka_unit_test(test_load_file_missing_is_silent_unreadable_is_reported),
 		cmocka_unit_test(test_set_applies_and_reports_as_set_line_0),
 		cmocka_unit_test(test_format_round_trips_every_key),
+		cmocka_unit_test(test_shipped_arcaded_ini_lists_every_key_at_its_default),
 		cmocka_unit_test(test_random_bytes_never_crash),
 	};
 
