@@ -63,4 +63,39 @@ static inline fx_t fx_div(fx_t a, fx_t b)
 
 static inline fx_t fx_abs(fx_t a) { return a < 0 ? -a : a; }
 
+/* floor(sqrt(n)) for every 64-bit n, by the digit-by-digit method (exact,
+ * no floating point). */
+static inline uint32_t fx_isqrt64(uint64_t n)
+{
+	uint64_t r = 0, bit = (uint64_t)1 << 62;
+
+	while (bit > n)
+		bit >>= 2;
+	while (bit) {
+		if (n >= r + bit) {
+			n -= r + bit;
+			r = (r >> 1) + bit;
+		} else {
+			r >>= 1;
+		}
+		bit >>= 2;
+	}
+	return (uint32_t)r;
+}
+
+/* Length of the vector (dx, dy), rounded to nearest; exact integer for every
+ * pair of fx_t (the sum of squares fits uint64). Saturates to FX_MAX. */
+static inline fx_t fx_len(fx_t dx, fx_t dy)
+{
+	uint64_t ax = dx < 0 ? (uint64_t)(-(int64_t)dx) : (uint64_t)dx;
+	uint64_t ay = dy < 0 ? (uint64_t)(-(int64_t)dy) : (uint64_t)dy;
+	uint64_t n = ax * ax + ay * ay;
+	uint64_t r = fx_isqrt64(n);
+
+	/* round up when n >= (r + 1/2)^2 = r^2 + r + 1/4, i.e. n > r^2 + r */
+	if (n - r * r > r)
+		r++;
+	return r > FX_MAX ? FX_MAX : (fx_t)r;
+}
+
 #endif
