@@ -28,6 +28,12 @@
 #include "engine/fx.h"
 
 #define MAP_NONE UINT32_MAX           /* absent index (no back side, ...) */
+
+/* Largest vertex and thing coordinate magnitude (16.16): just under 16384
+ * map units (Doom levels and Freedoom stay well inside). Differences of two
+ * coordinates then fit fx_t and cross products of differences fit int64, so
+ * every geometric test is exact 64-bit arithmetic. map_finish enforces it. */
+#define MAP_COORD_MAX ((fx_t)((1 << 30) - 1))
 #define MAP_NF_SUBSECTOR 0x80000000u  /* node child flag: a subsector index */
 
 /* Line flags, Doom values. */
@@ -135,8 +141,20 @@ static inline uint32_t map_point_sector(const struct map *m, fx_t x, fx_t y)
 }
 
 /* Which side of node n the point is on: 0 front (right), 1 back (left).
- * Exact integer test, shared by the sim and the renderer. */
+ * Exact integer test, shared by the sim, the renderer and the node builder:
+ * the sign of the 64-bit cross product dx*(y-n.y) - dy*(x-n.x); negative is
+ * right (front), positive left (back), and a point exactly on the partition
+ * line is on the FRONT side. The point is first clamped to +/-MAP_COORD_MAX
+ * (only points outside every map can change side by that). */
 int map_point_on_side(fx_t x, fx_t y, const struct map_node *n);
+
+/* Error-message helpers for engine code, which has no stdio: append a
+ * string, a decimal integer, or a 16.16 value in decimal (e.g. "-8.5") to the
+ * NUL-terminated message in err, truncating at errlen. No-ops when err is
+ * NULL or errlen is 0. */
+void map_msg(char *err, size_t errlen, const char *s);
+void map_msg_int(char *err, size_t errlen, int64_t v);
+void map_msg_fx(char *err, size_t errlen, fx_t v);
 
 /* Number of built-in levels, and a newly allocated, finished copy of level i
  * (0-based). Returns 0, -EINVAL for a bad index, or -ENOMEM. */
