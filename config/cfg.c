@@ -352,11 +352,14 @@ int cfg_load_file(struct cfg *c, const char *path, cfg_err_fn fn, void *user)
 	return ret;
 }
 
+/* *.ini, not hidden, and not the bindings file that shares the directory
+ * (bind_load reads it; its [keyboard] section is no setting). */
 static bool cfg_is_ini(const char *name)
 {
 	size_t n = strlen(name);
 
-	return name[0] != '.' && n > 4 && strcmp(name + n - 4, ".ini") == 0;
+	return name[0] != '.' && n > 4 && strcmp(name + n - 4, ".ini") == 0 &&
+	       strcmp(name, CFG_BINDINGS_FILE) != 0;
 }
 
 static int cfg_cmp_names(const void *a, const void *b)

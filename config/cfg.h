@@ -63,9 +63,14 @@ int cfg_load_text(struct cfg *c, const char *text, size_t len, const char *name,
  * other errors are, with line 0; files above 1 MiB give -EFBIG). */
 int cfg_load_file(struct cfg *c, const char *path, cfg_err_fn fn, void *user);
 
-/* Applies every *.ini in dir (not starting with '.') in byte order of their
- * names; a missing dir is not an error. Returns the total number of
- * problems reported, a file that cannot be read counting as one. */
+/* The bindings file in the configuration directory (config/bind.h); it
+ * shares the directory with the settings files and cfg_load_dir skips it. */
+#define CFG_BINDINGS_FILE "bindings.ini"
+
+/* Applies every *.ini in dir (not starting with '.', not CFG_BINDINGS_FILE)
+ * in byte order of their names; a missing dir is not an error. Returns the
+ * total number of problems reported, a file that cannot be read counting
+ * as one. */
 int cfg_load_dir(struct cfg *c, const char *dir, cfg_err_fn fn, void *user);
 
 /* Applies "section.key=value" (blanks around the parts ignored); 0, or

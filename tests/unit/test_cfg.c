@@ -244,6 +244,8 @@ static void test_load_dir_reads_ini_files_in_byte_order(void **state)
 		{ "Z.ini", "[game]\nlevel = 40\nz = 1\n" },
 		{ "notes.txt", "[game]\nlevel = 50\n" },
 		{ ".hidden.ini", "[game]\nlevel = 60\n" },
+		/* bind_load's file, in the same directory. */
+		{ "bindings.ini", "[keyboard]\nfire = x\n" },
 	};
 	char path[128], want[512];
 	struct errs e;
