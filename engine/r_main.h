@@ -22,7 +22,8 @@ struct pal;
 struct r_view {
 	fx_t x, y, z;                  /* eye position; z is eye height */
 	ang_t angle;                   /* view direction */
-	int32_t shear;                 /* vertical look, pixels (0 = level); reserved */
+	int32_t shear;                 /* vertical look: the horizon moves down
+					* by shear pixels (clamped to +/-h) */
 };
 
 struct r_frame {
@@ -33,7 +34,9 @@ struct r_frame {
 /* Counters of the last frame, for tests and benchmarks. */
 struct r_stats {
 	uint32_t nodes, subsectors, segs, columns;
-	uint32_t pixels_written;       /* each pixel should be written once */
+	uint32_t pixels_written;       /* each pixel is written exactly once */
+	uint32_t pixels_empty;         /* of those, pixels no surface covered
+					* (PAL_BLACK): 0 inside a closed map */
 };
 
 struct r_ctx;
