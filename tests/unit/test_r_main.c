@@ -19,128 +19,11 @@
 
 #include "engine/map.h"
 #include "engine/pal.h"
+#include "engine/r_local.h"
 #include "engine/r_main.h"
-
-#define U(x) ((fx_t)((x) * FX_ONE))
+#include "tests/unit/r_testmap.h"
 
 static struct pal pal;
-
-/* Colours (palette indices) */
-#define C_CEIL PAL_RGB(PAL_GREY, 2)
-#define C_FLOOR PAL_RGB(PAL_BROWN, 6)
-#define C_WEST PAL_RGB(PAL_RED, 4)
-#define C_NORTH PAL_RGB(PAL_GREEN, 4)
-#define C_EAST PAL_RGB(PAL_BLUE, 4)
-#define C_SOUTH PAL_RGB(PAL_YELLOW, 4)
-
-/* ---- hand-built maps (no node builder) ---- */
-
-struct tmap {
-	struct map m;
-	struct map_vertex v[32];
-	struct map_sector sec[4];
-	struct map_side sd[32];
-	struct map_line ln[32];
-	struct map_seg sg[32];
-	struct map_subsector ss[4];
-	struct map_node nd[4];
-};
-
-static void t_init(struct tmap *t)
-{
-	memset(t, 0, sizeof(*t));
-	t->m.vertices = t->v;
-	t->m.sectors = t->sec;
-	t->m.sides = t->sd;
-	t->m.lines = t->ln;
-	t->m.segs = t->sg;
-	t->m.subsectors = t->ss;
-	t->m.nodes = t->nd;
-}
-
-static uint32_t t_vertex(struct tmap *t, int x, int y)
-{
-	t->v[t->m.num_vertices].x = U(x);
-	t->v[t->m.num_vertices].y = U(y);
-	return t->m.num_vertices++;
-}
-
-static uint32_t t_sector(struct tmap *t, int floor, int ceil, int light)
-{
-	struct map_sector *s = &t->sec[t->m.num_sectors];
-	s->floor_h = U(floor);
-	s->ceil_h = U(ceil);
-	s->floor_tex = C_FLOOR;
-	s->ceil_tex = C_CEIL;
-	s->light = (uint8_t)light;
-	return t->m.num_sectors++;
-}
-
-/* A line v1 -> v2 (its front is on the right) with a seg for each side;
- * tex is the middle texture of a one-sided line, the upper and lower of a
- * two-sided one. The segs are appended in order; returns the line. */
-static uint32_t t_line(struct tmap *t, uint32_t v1, uint32_t v2, uint32_t front, uint32_t back,
-		       uint16_t tex)
-{
-	uint32_t li = t->m.num_lines++;
-	struct map_line *l = &t->ln[li];
-
-	l->v1 = v1;
-	l->v2 = v2;
-	l->side[0] = t->m.num_sides;
-	l->side[1] = MAP_NONE;
-	t->sd[t->m.num_sides].sector = front;
-	if (back == MAP_NONE) {
-		t->sd[t->m.num_sides++].mid_tex = tex;
-	} else {
-		t->sd[t->m.num_sides].top_tex = tex;
-		t->sd[t->m.num_sides++].bot_tex = tex;
-		l->flags = ML_TWOSIDED;
-		l->side[1] = t->m.num_sides;
-		t->sd[t->m.num_sides].sector = back;
-		t->sd[t->m.num_sides].top_tex = tex;
-		t->sd[t->m.num_sides++].bot_tex = tex;
-	}
-	return li;
-}
-
-/* Seg of side `side` of line li, facing sector `front`. */
-static void t_seg(struct tmap *t, uint32_t li, int side)
-{
-	struct map_seg *s = &t->sg[t->m.num_segs++];
-	const struct map_line *l = &t->ln[li];
-	uint32_t other = l->side[side ^ 1];
-
-	s->line = li;
-	s->side = (uint8_t)side;
-	s->v1 = side ? l->v2 : l->v1;
-	s->v2 = side ? l->v1 : l->v2;
-	s->front = t->sd[l->side[side]].sector;
-	s->back = other == MAP_NONE ? MAP_NONE : t->sd[other].sector;
-}
-
-/* Square room [-128, 128]^2, floor 0, ceiling 128: one convex sector, no
- * nodes (Doom convention: the map is subsector 0). Walls listed clockwise
- * so that their front (right) side faces in. */
-static void t_room(struct tmap *t, int light, int same_tex)
-{
-	uint32_t a, b, c, d, s;
-
-	t_init(t);
-	a = t_vertex(t, -128, -128);
-	b = t_vertex(t, -128, 128);
-	c = t_vertex(t, 128, 128);
-	d = t_vertex(t, 128, -128);
-	s = t_sector(t, 0, 128, light);
-	t_seg(t, t_line(t, a, b, s, MAP_NONE, C_WEST), 0);
-	t_seg(t, t_line(t, b, c, s, MAP_NONE, same_tex ? C_WEST : C_NORTH), 0);
-	t_seg(t, t_line(t, c, d, s, MAP_NONE, same_tex ? C_WEST : C_EAST), 0);
-	t_seg(t, t_line(t, d, a, s, MAP_NONE, same_tex ? C_WEST : C_SOUTH), 0);
-	t->ss[0].first_seg = 0;
-	t->ss[0].num_segs = 4;
-	t->ss[0].sector = s;
-	t->m.num_subsectors = 1;
-}
 
 /* ---- maps through map_alloc + map_finish (node builder) ---- */
 
@@ -270,6 +153,88 @@ static int setup(void **state)
 }
 
 /* ---- tests ---- */
+
+/* ---- geometry (r_main.c internals, through engine/r_local.h) ---- */
+
+/* A segment across the whole view at depth 100 is cut at the frustum
+ * edges l = -d and l = d; the kept ends are inside, within 2 units of 1/65536
+ * (bisection stops at one unit, rounding may add one). */
+static void clip_cuts_a_segment_at_the_frustum_edges(void **state)
+{
+	struct r_vpt a = { U(-1000), U(100) }, b = { U(1000), U(100) };
+	(void)state;
+	assert_int_equal(r_clip_segment(&a, &b), 1);
+	assert_int_equal(a.d, U(100));
+	assert_int_equal(b.d, U(100));
+	assert_true(a.l >= U(-100) && a.l <= U(-100) + 2);
+	assert_true(b.l <= U(100) && b.l >= U(100) - 2);
+}
+
+/* Crossing the near plane: the behind end moves onto it (d >= R_NEAR, within
+ * two units), on the original line (here l = 0 throughout). */
+static void clip_moves_a_behind_end_onto_the_near_plane(void **state)
+{
+	struct r_vpt a = { 0, U(-10) }, b = { 0, U(10) };
+	(void)state;
+	assert_int_equal(r_clip_segment(&a, &b), 1);
+	assert_int_equal(a.l, 0);
+	assert_true(a.d >= R_NEAR && a.d <= R_NEAR + 2);
+	assert_int_equal(b.d, U(10));
+}
+
+static void clip_rejects_segments_behind_or_beside_the_view(void **state)
+{
+	struct r_vpt a = { U(-5), U(-10) }, b = { U(5), U(-1) };
+	struct r_vpt c = { U(-50), U(10) }, d = { U(-20), U(10) };
+	struct r_vpt e = { U(20), U(10) }, f = { U(30), U(25) };
+	(void)state;
+	assert_int_equal(r_clip_segment(&a, &b), 0);
+	assert_int_equal(r_clip_segment(&c, &d), 0);
+	assert_int_equal(r_clip_segment(&e, &f), 0);
+}
+
+/* A box straddling the near plane and both frustum edges: every point left
+ * is visible, and the clipped polygon still spans the whole view. */
+static void polygon_clip_keeps_only_visible_points(void **state)
+{
+	struct r_ctx *r;
+	struct r_vpt v[R_POLY_MAX] = { { U(-50), U(-5) }, { U(50), U(-5) }, { U(50), U(20) },
+				       { U(-50), U(20) } };
+	int64_t lo = INT64_MAX, hi = INT64_MIN;
+	int n;
+	(void)state;
+	assert_int_equal(r_new(320, 240, &pal, &r), 0);
+	n = r_clip_polygon(v, 4);
+	assert_true(n >= 3);
+	for (int i = 0; i < n; i++) {
+		int64_t sx = r_project_x(r, &v[i]);
+		assert_true(v[i].d >= R_NEAR);
+		assert_true(v[i].l >= -v[i].d && v[i].l <= v[i].d);
+		lo = sx < lo ? sx : lo;
+		hi = sx > hi ? sx : hi;
+	}
+	assert_int_equal(lo, 0);
+	assert_int_equal(hi, (int64_t)320 * FX_ONE);
+	r_free(r);
+}
+
+/* Screen x = w/2 + (w/2) * l / d: the axis at the centre, the frustum edges
+ * at the frame edges. */
+static void projection_maps_the_frustum_onto_the_frame(void **state)
+{
+	struct r_ctx *r;
+	struct r_vpt c = { 0, U(7) }, l = { U(-7), U(7) }, rt = { U(7), U(7) }, q = { U(3), U(12) };
+	(void)state;
+	assert_int_equal(r_new(320, 240, &pal, &r), 0);
+	assert_int_equal(r_project_x(r, &c), (int64_t)160 * FX_ONE);
+	assert_int_equal(r_project_x(r, &l), 0);
+	assert_int_equal(r_project_x(r, &rt), (int64_t)320 * FX_ONE);
+	/* 160 + 160 * 3 / 12 = 200 */
+	assert_int_equal(r_project_x(r, &q), (int64_t)200 * FX_ONE);
+	r_free(r);
+}
+
+/* ---- whole frames ---- */
 
 static void new_rejects_bad_sizes_and_free_takes_null(void **state)
 {
@@ -491,11 +456,10 @@ static void quarter_turns_in_a_symmetric_room_give_the_same_frame(void **state)
 	shot_close(&s);
 }
 
-/* Rooms A [-128,128]^2 (f0 c128), W [128,144]x[-32,32] (the window sill f24,
- * lintel c96) and B [144,400]x[-128,128] (f0 c128), all light 255, with a
- * hand-made BSP: root splits at x = 144 (front B), its back child splits at
- * x = 128 (front W, back A). Eye (0,0) z 64 facing east, 320x240, centre
- * column 160 (scale 160/D):
+/* t_window(24, 96): rooms A [-128,128]^2 (f0 c128), W [128,144]x[-32,32]
+ * (the window sill f24, lintel c96) and B [144,400]x[-128,128] (f0 c128),
+ * all light 255, with a hand-made BSP. Eye (0,0) z 64 facing east,
+ * 320x240, centre column 160 (scale 160/D):
  *  - window line, D 128 (1.25): A ceiling edge 120 - 64*1.25 = 40, lintel
  *    120 - 32*1.25 = 80, sill 120 + 40*1.25 = 170, A floor 200;
  *  - W's far side, D 144: lintel 120 - 32*160/144 = 84.4, sill 164.4;
@@ -505,65 +469,12 @@ static void quarter_turns_in_a_symmetric_room_give_the_same_frame(void **state)
  * lower wall, 200-239 floor. */
 static void window_shows_upper_and_lower_parts_and_the_room_behind(void **state)
 {
-	const uint8_t c_win = PAL_RGB(PAL_PURPLE, 4), c_beast = PAL_RGB(PAL_ORANGE, 4);
-	const uint8_t c_wall = PAL_RGB(PAL_TAN, 4);
+	const uint8_t c_win = C_WIN, c_beast = C_BEAST, c_wall = C_WALL;
 	struct tmap t;
 	struct shot s;
 	struct r_view v = { 0, 0, U(64), 0, 0 };
-	uint32_t a, w, b, la, lw;
-	uint32_t p[12];
 	(void)state;
-	t_init(&t);
-	a = t_sector(&t, 0, 128, 255);
-	w = t_sector(&t, 24, 96, 255);
-	b = t_sector(&t, 0, 128, 255);
-	p[0] = t_vertex(&t, -128, -128);
-	p[1] = t_vertex(&t, -128, 128);
-	p[2] = t_vertex(&t, 128, 128);
-	p[3] = t_vertex(&t, 128, 32);
-	p[4] = t_vertex(&t, 128, -32);
-	p[5] = t_vertex(&t, 128, -128);
-	p[6] = t_vertex(&t, 144, 32);
-	p[7] = t_vertex(&t, 144, -32);
-	p[8] = t_vertex(&t, 144, 128);
-	p[9] = t_vertex(&t, 400, 128);
-	p[10] = t_vertex(&t, 400, -128);
-	p[11] = t_vertex(&t, 144, -128);
-	/* subsector 0: A */
-	t_seg(&t, t_line(&t, p[0], p[1], a, MAP_NONE, c_wall), 0);
-	t_seg(&t, t_line(&t, p[1], p[2], a, MAP_NONE, c_wall), 0);
-	t_seg(&t, t_line(&t, p[2], p[3], a, MAP_NONE, c_wall), 0);
-	la = t_line(&t, p[3], p[4], a, w, c_win);
-	t_seg(&t, la, 0);
-	t_seg(&t, t_line(&t, p[4], p[5], a, MAP_NONE, c_wall), 0);
-	t_seg(&t, t_line(&t, p[5], p[0], a, MAP_NONE, c_wall), 0);
-	t.ss[0] = (struct map_subsector){ 0, 6, a };
-	/* subsector 1: W */
-	t_seg(&t, t_line(&t, p[3], p[6], w, MAP_NONE, c_wall), 0);
-	lw = t_line(&t, p[6], p[7], w, b, c_win);
-	t_seg(&t, lw, 0);
-	t_seg(&t, t_line(&t, p[7], p[4], w, MAP_NONE, c_wall), 0);
-	t_seg(&t, la, 1);
-	t.ss[1] = (struct map_subsector){ 6, 4, w };
-	/* subsector 2: B */
-	t_seg(&t, t_line(&t, p[6], p[8], b, MAP_NONE, c_wall), 0);
-	t_seg(&t, t_line(&t, p[8], p[9], b, MAP_NONE, c_wall), 0);
-	t_seg(&t, t_line(&t, p[9], p[10], b, MAP_NONE, c_beast), 0);
-	t_seg(&t, t_line(&t, p[10], p[11], b, MAP_NONE, c_wall), 0);
-	t_seg(&t, t_line(&t, p[11], p[7], b, MAP_NONE, c_wall), 0);
-	t_seg(&t, lw, 1);
-	t.ss[2] = (struct map_subsector){ 10, 6, b };
-	t.m.num_subsectors = 3;
-	t.nd[0] = (struct map_node){ U(128), 0, 0, U(1),
-				     { { U(32), U(-32), U(128), U(144) },
-				       { U(128), U(-128), U(-128), U(128) } },
-				     { 1 | MAP_NF_SUBSECTOR, 0 | MAP_NF_SUBSECTOR } };
-	t.nd[1] = (struct map_node){ U(144), 0, 0, U(1),
-				     { { U(128), U(-128), U(144), U(400) },
-				       { U(128), U(-128), U(-128), U(144) } },
-				     { 2 | MAP_NF_SUBSECTOR, 0 } };
-	t.m.num_nodes = 2;
-
+	t_window(&t, 24, 96);
 	shot_open(&s, 320, 240);
 	r_render(s.r, &t.m, &v, &s.f);
 	assert_run(&s, 160, 0, 39, C_CEIL);
@@ -794,6 +705,11 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(new_rejects_bad_sizes_and_free_takes_null),
+		cmocka_unit_test(clip_cuts_a_segment_at_the_frustum_edges),
+		cmocka_unit_test(clip_moves_a_behind_end_onto_the_near_plane),
+		cmocka_unit_test(clip_rejects_segments_behind_or_beside_the_view),
+		cmocka_unit_test(polygon_clip_keeps_only_visible_points),
+		cmocka_unit_test(projection_maps_the_frustum_onto_the_frame),
 		cmocka_unit_test(closed_room_frame_is_ceiling_wall_floor_by_geometry),
 		cmocka_unit_test(wall_span_is_height_times_focal_over_depth),
 		cmocka_unit_test(sector_light_and_distance_pick_the_colormap),
