@@ -1,0 +1,612 @@
+/* Tests for engine/sim.c: movement, collision, modes, determinism, hash. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <string.h>
+#include <math.h>
+#include <cmocka.h>
+
+#include "engine/map.h"
+#include "engine/r_main.h"
+#include "engine/sim.h"
+#include "map_fixture.h"
+
+#define R (SIM_PLAYER_RADIUS)
+#define TOL (FX_ONE / 256)             /* how close to a wall "stops at" means */
+
+static const struct sim_settings play = { 1, 0, 1 };
+static const struct sim_settings attract2 = { 2, 0, 0 };
+
+/* A room 2048 x 256 with the start at (sx, sy) facing a. */
+static struct map *room(int sx, int sy, ang_t a)
+{
+	static const int v[][2] = { { 0, 0 }, { 0, 256 }, { 2048, 256 }, { 2048, 0 } };
+	static const struct fix_sector s[] = { { 0, 128, 160 } };
+	static const struct fix_line l[] = {
+		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, -1 }, { 3, 0, 0, -1 },
+	};
+	struct fix_map f = { v, 4, s, 1, l, 4, sx, sy, a };
+	struct map *m = fix_build(&f, NULL, 0);
+	assert_non_null(m);
+	return m;
+}
+
+/* Floors 0 | 16 | 48 side by side (x 0..256..512..768), y 0..128. */
+static struct map *steps(void)
+{
+	static const int v[][2] = {
+		{ 0, 0 }, { 0, 128 }, { 256, 128 }, { 256, 0 },
+		{ 512, 128 }, { 512, 0 }, { 768, 128 }, { 768, 0 },
+	};
+	static const struct fix_sector s[] = { { 0, 128, 160 }, { 16, 128, 160 }, { 48, 128, 160 } };
+	static const struct fix_line l[] = {
+		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
+		{ 2, 4, 1, -1 }, { 4, 5, 1, 2 }, { 5, 3, 1, -1 },
+		{ 4, 6, 2, -1 }, { 6, 7, 2, -1 }, { 7, 5, 2, -1 },
+	};
+	static const struct fix_map f = { v, 8, s, 3, l, 10, 128, 64, 0 };
+	struct map *m = fix_build(&f, NULL, 0);
+	assert_non_null(m);
+	return m;
+}
+
+/* Two rooms (floor 0, ceiling 128) joined through a 16-deep opening x
+ * 256..272 whose floor is 8 (an easy step) and ceiling 56 (48 units of
+ * room: too low for the player). */
+static struct map *low_opening(void)
+{
+	static const int v[][2] = {
+		{ 0, 0 }, { 0, 128 }, { 256, 128 }, { 256, 0 },
+		{ 272, 128 }, { 272, 0 }, { 528, 128 }, { 528, 0 },
+	};
+	static const struct fix_sector s[] = { { 0, 128, 160 }, { 8, 56, 160 }, { 0, 128, 160 } };
+	static const struct fix_line l[] = {
+		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
+		{ 2, 4, 1, -1 }, { 4, 5, 1, 2 }, { 5, 3, 1, -1 },
+		{ 4, 6, 2, -1 }, { 6, 7, 2, -1 }, { 7, 5, 2, -1 },
+	};
+	static const struct fix_map f = { v, 8, s, 3, l, 10, 128, 64, 0 };
+	struct map *m = fix_build(&f, NULL, 0);
+	assert_non_null(m);
+	return m;
+}
+
+static void run(struct sim *s, const struct sim_cmd *c, int ticks)
+{
+	for (int i = 0; i < ticks; i++)
+		sim_tick(s, c);
+}
+
+static void walking_into_a_wall_stops_at_the_radius(void **state)
+{
+	struct map *m = room(1800, 128, 0);
+	struct sim s;
+	struct sim_cmd fwd = { .forward = 127 };
+	(void)state;
+	sim_init(&s, m, &play);
+	run(&s, &fwd, 200);
+	assert_true(s.pl.x <= fx_from_int(2048) - R);
+	assert_true(s.pl.x >= fx_from_int(2048) - R - TOL);
+	assert_int_equal(s.pl.y, fx_from_int(128));
+	/* and backwards into the west wall */
+	fwd.forward = -127;
+	run(&s, &fwd, 400);
+	assert_true(s.pl.x >= R && s.pl.x <= R + TOL);
+	map_free(m);
+}
+
+static void full_speed_is_about_eight_units_per_tick(void **state)
+{
+	struct map *m = room(64, 128, 0);
+	struct sim s;
+	struct sim_cmd fwd = { .forward = 127 };
+	fx_t x;
+	(void)state;
+	sim_init(&s, m, &play);
+	run(&s, &fwd, 100);
+	x = s.pl.x;
+	sim_tick(&s, &fwd);
+	assert_true(s.pl.x - x > 7 * FX_ONE + FX_HALF && s.pl.x - x <= 8 * FX_ONE);
+	/* friction brings it to rest once the stick is released */
+	fwd.forward = 0;
+	run(&s, &fwd, 120);
+	assert_int_equal(s.pl.momx, 0);
+	assert_int_equal(s.pl.momy, 0);
+	x = s.pl.x;
+	sim_tick(&s, &fwd);
+	assert_int_equal(s.pl.x, x);
+	map_free(m);
+}
+
+static void sliding_along_a_wall_at_45_degrees_moves_along_it(void **state)
+{
+	struct map *m = room(256, 200, ANG45);
+	struct sim s;
+	struct sim_cmd fwd = { .forward = 127 };
+	fx_t x;
+	(void)state;
+	sim_init(&s, m, &play);
+	run(&s, &fwd, 30);
+	/* pressed against the north wall (y = 256) ... */
+	assert_true(s.pl.y <= fx_from_int(256) - R && s.pl.y >= fx_from_int(256) - R - TOL);
+	/* ... and still moving east along it, at about cos 45 of full speed */
+	x = s.pl.x;
+	run(&s, &fwd, 10);
+	assert_true(s.pl.x - x > 10 * 5 * FX_ONE);
+	assert_true(s.pl.y <= fx_from_int(256) - R && s.pl.y >= fx_from_int(256) - R - TOL);
+	/* into the north-east corner, where it stops at the radius from both */
+	run(&s, &fwd, 600);
+	assert_true(s.pl.x <= fx_from_int(2048) - R && s.pl.x >= fx_from_int(2048) - R - TOL);
+	assert_true(s.pl.y <= fx_from_int(256) - R && s.pl.y >= fx_from_int(256) - R - TOL);
+	map_free(m);
+}
+
+static void strafing_and_turning(void **state)
+{
+	struct map *m = room(1024, 128, 0);
+	struct sim s;
+	struct sim_cmd c = { .turn = 16384 };  /* a quarter turn left */
+	(void)state;
+	sim_init(&s, m, &play);
+	sim_tick(&s, &c);
+	assert_int_equal(s.pl.angle, ANG90);
+	c.turn = -16384;
+	sim_tick(&s, &c);
+	sim_tick(&s, &c);
+	assert_int_equal(s.pl.angle, ANG270);
+	/* facing south, strafing right goes west */
+	c.turn = 0;
+	c.side = 127;
+	run(&s, &c, 10);
+	assert_true(s.pl.x < fx_from_int(1024) - 20 * FX_ONE);
+	assert_int_equal(s.pl.y, fx_from_int(128));
+	map_free(m);
+}
+
+static void a_16_step_is_climbed_and_a_32_step_blocks(void **state)
+{
+	struct map *m = steps();
+	struct sim s;
+	struct sim_cmd fwd = { .forward = 127 };
+	(void)state;
+	sim_init(&s, m, &play);
+	assert_int_equal(s.pl.z, 0);
+	assert_int_equal(s.pl.viewz, SIM_VIEW_HEIGHT);
+	run(&s, &fwd, 200);
+	assert_int_equal(s.pl.sector, 1);
+	assert_int_equal(s.pl.z, 16 * FX_ONE);
+	assert_int_equal(s.pl.viewz, 16 * FX_ONE + SIM_VIEW_HEIGHT);
+	/* the 48 floor is 32 above: blocked at the radius from its edge */
+	assert_true(s.pl.x <= fx_from_int(512) - R && s.pl.x >= fx_from_int(512) - R - TOL);
+	map_free(m);
+}
+
+static void stepping_down_is_immediate(void **state)
+{
+	struct map *m = steps();
+	struct sim s;
+	struct sim_cmd back = { .forward = -127 };
+	(void)state;
+	sim_init(&s, m, &play);
+	s.pl.x = fx_from_int(384);             /* on the 16 step */
+	run(&s, &back, 1);
+	assert_int_equal(s.pl.z, 16 * FX_ONE);
+	run(&s, &back, 100);
+	assert_int_equal(s.pl.sector, 0);
+	assert_int_equal(s.pl.z, 0);
+	map_free(m);
+}
+
+static void an_opening_lower_than_the_player_blocks(void **state)
+{
+	struct map *m = low_opening();
+	struct sim s;
+	struct sim_cmd fwd = { .forward = 127 };
+	(void)state;
+	sim_init(&s, m, &play);
+	run(&s, &fwd, 200);
+	assert_int_equal(s.pl.sector, 0);
+	assert_true(s.pl.x <= fx_from_int(256) - R && s.pl.x >= fx_from_int(256) - R - TOL);
+	map_free(m);
+}
+
+/* ARENA1 (engine/lvl_builtin.c): the start faces the window at x = 640. */
+static void builtin_window_blocks_and_door_passes(void **state)
+{
+	struct map *m;
+	struct sim s;
+	struct sim_cmd fwd = { .forward = 127 };
+	(void)state;
+	assert_int_equal(map_builtin(0, &m), 0);
+	sim_init(&s, m, &play);
+	assert_int_equal(s.pl.x, fx_from_int(96));
+	assert_int_equal(s.pl.y, fx_from_int(192));
+	run(&s, &fwd, 200);
+	assert_int_equal(s.pl.sector, 0);
+	assert_true(s.pl.x <= fx_from_int(640) - R && s.pl.x >= fx_from_int(640) - R - TOL);
+	assert_int_equal(s.pl.y, fx_from_int(192));
+	/* the doorway (y 320..416, ceiling 120) leads into the yard */
+	s.pl.y = fx_from_int(368);
+	run(&s, &fwd, 60);
+	assert_int_equal(s.pl.sector, 5);
+	assert_true(s.pl.x > fx_from_int(656));
+	map_free(m);
+}
+
+static void builtin_ledge_is_a_one_way_drop(void **state)
+{
+	struct map *m;
+	struct sim s;
+	struct sim_cmd fwd = { .forward = 127 };
+	(void)state;
+	assert_int_equal(map_builtin(0, &m), 0);
+	sim_init(&s, m, &play);
+	s.pl.x = fx_from_int(500);             /* on the gallery (floor 64) */
+	s.pl.y = fx_from_int(900);
+	s.pl.angle = 0;
+	run(&s, &fwd, 1);
+	assert_int_equal(s.pl.z, 64 * FX_ONE);
+	run(&s, &fwd, 60);
+	assert_int_equal(s.pl.sector, 5);      /* the yard */
+	assert_int_equal(s.pl.z, 0);
+	fwd.forward = -127;                    /* back west: a 64 wall now */
+	run(&s, &fwd, 200);
+	assert_int_equal(s.pl.sector, 5);
+	assert_true(s.pl.x >= fx_from_int(656) + R && s.pl.x <= fx_from_int(656) + R + TOL);
+	map_free(m);
+}
+
+/* ARENA1's sectors from its tables (-1: void). */
+static int arena1_sector(double x, double y)
+{
+	if (x > 0 && x < 640 && y > 0 && y < 640) {
+		if ((x > 448 && y > 448) || (x > 224 && x < 288 && y > 320 && y < 384))
+			return -1;
+		return 0;
+	}
+	if (x > 128 && x < 320 && y > 640 && y < 736)
+		return 1 + (int)((y - 640) / 32);
+	if (x > 0 && x < 656 && y > 736 && y < 1024)
+		return 4;
+	if (x > 656 && x < 1024 && y > 0 && y < 1024)
+		return (x > 800 && x < 928 && y > 448 && y < 576) ? 6 : 5;
+	if (x > 640 && x < 656 && y > 320 && y < 416)
+		return 7;
+	if (x > 640 && x < 656 && y > 128 && y < 256)
+		return 8;
+	return -1;
+}
+
+/* Distance (map units) from (x, y) to the nearest line (only one-sided ones
+ * with walls_only). */
+static double line_distance(const struct map *m, double x, double y, int walls_only)
+{
+	double best = 1e30;
+	for (uint32_t i = 0; i < m->num_lines; i++) {
+		const struct map_vertex *a = &m->vertices[m->lines[i].v1];
+		const struct map_vertex *b = &m->vertices[m->lines[i].v2];
+		double ax = a->x / 65536.0, ay = a->y / 65536.0;
+		double dx = b->x / 65536.0 - ax, dy = b->y / 65536.0 - ay;
+		double t = ((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy);
+		if (walls_only && m->lines[i].side[1] != MAP_NONE)
+			continue;
+		t = t < 0 ? 0 : t > 1 ? 1 : t;
+		best = fmin(best, hypot(ax + t * dx - x, ay + t * dy - y));
+	}
+	return best;
+}
+
+/* Random commands for a long time: the player stays inside the level, out
+ * of the walls, on the floor of the sector it is in. */
+static void random_walk_stays_inside_the_level(void **state)
+{
+	struct map *m;
+	struct sim s;
+	uint32_t r = 99, visited = 0;
+	struct sim_cmd c = { 0 };
+	(void)state;
+	assert_int_equal(map_builtin(0, &m), 0);
+	sim_init(&s, m, &play);
+	for (int t = 0; t < 30000; t++) {
+		double x, y;
+		int sec;
+		if (t % 20 == 0) {
+			r = r * 1664525u + 1013904223u;
+			c.forward = (int8_t)((int)(r >> 24) - 128 < -127 ? -127 : (int)(r >> 24) - 128);
+			c.side = (int8_t)(((int)(r >> 16) & 0xff) - 128 < -127 ? -127
+									 : ((int)(r >> 16) & 0xff) - 128);
+			c.turn = (int16_t)((int)(r & 0x7ff) - 1024);
+		}
+		sim_tick(&s, &c);
+		x = s.pl.x / 65536.0;
+		y = s.pl.y / 65536.0;
+		sec = arena1_sector(x, y);
+		if (sec < 0 || line_distance(m, x, y, 1) < 16.0 - 1.0 / 256)
+			fail_msg("tick %d: (%f, %f) sector %d wall %f", t, x, y, sec,
+				 line_distance(m, x, y, 1));
+		assert_int_equal(s.pl.z, m->sectors[s.pl.sector].floor_h);
+		/* the sector is the one under the centre (either, on a portal) */
+		if ((uint32_t)sec != s.pl.sector)
+			assert_true(line_distance(m, x, y, 0) < 1.0 / 4096);
+		visited |= 1u << s.pl.sector;
+	}
+	/* the walk went up the stairs and through the door */
+	assert_true((visited & 0xbf) == 0xbf);
+	map_free(m);
+}
+
+static void coins_make_credits_and_start_consumes_one(void **state)
+{
+	struct map *m = room(64, 64, 0);
+	struct sim s;
+	struct sim_cmd c = { .coins = 1 };
+	(void)state;
+	sim_init(&s, m, &attract2);
+	assert_int_equal(s.mode, SIM_ATTRACT);
+	sim_tick(&s, &c);
+	assert_int_equal(s.credits, 0);
+	assert_int_equal(s.coin_rem, 1);
+	c.coins = 3;
+	sim_tick(&s, &c);
+	assert_int_equal(s.credits, 2);
+	assert_int_equal(s.coin_rem, 0);
+	assert_int_equal(s.coins_total, 4);
+	c.coins = 0;
+	c.buttons = SIM_BT_START;
+	sim_tick(&s, &c);
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(s.credits, 1);
+	assert_int_equal(s.plays, 1);
+	/* coins still count while playing */
+	c.coins = 2;
+	sim_tick(&s, &c);
+	assert_int_equal(s.credits, 2);
+	assert_int_equal(s.coins_total, 6);
+	assert_int_equal(s.mode, SIM_PLAY);
+	map_free(m);
+}
+
+static void start_needs_a_credit_and_a_fresh_press(void **state)
+{
+	struct map *m = room(64, 64, 0);
+	struct sim s;
+	struct sim_cmd c = { .buttons = SIM_BT_START };
+	(void)state;
+	sim_init(&s, m, &attract2);
+	sim_tick(&s, &c);                      /* no credit */
+	assert_int_equal(s.mode, SIM_ATTRACT);
+	c.coins = 2;                           /* a credit while START is held */
+	sim_tick(&s, &c);
+	assert_int_equal(s.credits, 1);
+	c.coins = 0;
+	run(&s, &c, 5);                        /* still held: no new press */
+	assert_int_equal(s.mode, SIM_ATTRACT);
+	c.buttons = 0;
+	sim_tick(&s, &c);
+	c.buttons = SIM_BT_START;
+	sim_tick(&s, &c);
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(s.credits, 0);
+	map_free(m);
+}
+
+static void freeplay_starts_without_credits(void **state)
+{
+	static const struct sim_settings fp = { 1, 1, 0 };
+	struct map *m = room(64, 64, 0);
+	struct sim s;
+	struct sim_cmd c = { .coins = 1 };
+	(void)state;
+	sim_init(&s, m, &fp);
+	sim_tick(&s, &c);
+	assert_int_equal(s.credits, 1);
+	c.coins = 0;
+	c.buttons = SIM_BT_START;
+	sim_tick(&s, &c);
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(s.credits, 1);        /* not consumed */
+	assert_int_equal(s.plays, 1);
+	map_free(m);
+}
+
+static void attract_ignores_movement_and_start_resets_the_player(void **state)
+{
+	static const struct sim_settings fp = { 1, 1, 0 };
+	struct map *m = room(300, 100, ANG90);
+	struct sim s;
+	struct sim_cmd c = { .forward = 127, .side = 50, .turn = 1000 };
+	(void)state;
+	sim_init(&s, m, &fp);
+	run(&s, &c, 60);
+	assert_int_equal(s.pl.x, fx_from_int(300));
+	assert_int_equal(s.pl.y, fx_from_int(100));
+	assert_int_equal(s.pl.momx, 0);
+	assert_true(s.pl.angle != ANG90);      /* the idle camera turns */
+	c = (struct sim_cmd){ .buttons = SIM_BT_START };
+	sim_tick(&s, &c);
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(s.pl.angle, ANG90);
+	assert_int_equal(s.pl.x, fx_from_int(300));
+	map_free(m);
+}
+
+static void start_in_play_skips_attract(void **state)
+{
+	struct map *m = room(64, 64, 0);
+	struct sim s;
+	(void)state;
+	sim_init(&s, m, &play);
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(s.plays, 0);
+	map_free(m);
+}
+
+static void without_a_start_the_player_spawns_inside_sector_0(void **state)
+{
+	struct map *m = room(64, 64, 0);
+	struct sim s;
+	(void)state;
+	m->num_things = 0;
+	sim_init(&s, m, &play);
+	/* first line of sector 0 is the west wall (0,0)->(0,256): 32 east of
+	 * its middle, facing north along it */
+	assert_int_equal(s.pl.x, fx_from_int(32));
+	assert_int_equal(s.pl.y, fx_from_int(128));
+	assert_int_equal(s.pl.angle, ANG90);
+	assert_int_equal(s.pl.sector, 0);
+	map_free(m);
+}
+
+static struct sim_cmd scripted(int t)
+{
+	struct sim_cmd c = { 0 };
+	c.forward = (int8_t)(t % 90 < 60 ? 127 : -40);
+	c.side = (int8_t)(t % 37 < 10 ? 90 : 0);
+	c.turn = (int16_t)(t % 50 < 25 ? 300 : -170);
+	c.buttons = (uint8_t)(t == 5 || t == 400 ? SIM_BT_START : 0);
+	c.coins = (uint8_t)(t == 3 ? 2 : 0);
+	return c;
+}
+
+static void same_commands_give_same_hashes_every_tick(void **state)
+{
+	struct map *m;
+	struct sim a, b;
+	int t;
+	(void)state;
+	assert_int_equal(map_builtin(0, &m), 0);
+	sim_init(&a, m, &attract2);
+	sim_init(&b, m, &attract2);
+	assert_true(sim_hash(&a) == sim_hash(&b));
+	for (t = 0; t < 2000; t++) {
+		struct sim_cmd c = scripted(t);
+		sim_tick(&a, &c);
+		sim_tick(&b, &c);
+		assert_true(sim_hash(&a) == sim_hash(&b));
+	}
+	assert_int_equal(a.mode, SIM_PLAY);
+	map_free(m);
+}
+
+static void a_different_command_changes_the_hash(void **state)
+{
+	struct map *m;
+	struct sim a, b;
+	int t;
+	(void)state;
+	assert_int_equal(map_builtin(0, &m), 0);
+	sim_init(&a, m, &play);
+	sim_init(&b, m, &play);
+	for (t = 0; t < 100; t++) {
+		struct sim_cmd c = scripted(t), d = c;
+		if (t == 50)
+			d.turn++;              /* 1/65536 of a turn, once */
+		sim_tick(&a, &c);
+		sim_tick(&b, &d);
+		if (t < 50)
+			assert_true(sim_hash(&a) == sim_hash(&b));
+		else
+			assert_true(sim_hash(&a) != sim_hash(&b));
+	}
+	map_free(m);
+}
+
+/* Changing any one field of the state changes the hash. */
+static void hash_covers_every_field(void **state)
+{
+	struct map *m = room(64, 64, 0), *m2 = room(64, 64, ANG90);
+	struct sim s, t;
+	uint64_t h;
+	int i;
+	(void)state;
+	sim_init(&s, m, &play);
+	h = sim_hash(&s);
+	for (i = 0; i < 21; i++) {
+		t = s;
+		switch (i) {
+		case 0: t.map = m2; break;
+		case 1: t.set.coins_per_credit++; break;
+		case 2: t.set.freeplay ^= 1; break;
+		case 3: t.set.start_in_play ^= 1; break;
+		case 4: t.tick++; break;
+		case 5: t.mode = SIM_ATTRACT; break;
+		case 6: t.credits++; break;
+		case 7: t.coin_rem++; break;
+		case 8: t.coins_total++; break;
+		case 9: t.plays++; break;
+		case 10: t.prev_buttons ^= 1; break;
+		case 11: t.rng++; break;
+		case 12: t.pl.x++; break;
+		case 13: t.pl.y++; break;
+		case 14: t.pl.z++; break;
+		case 15: t.pl.viewz++; break;
+		case 16: t.pl.momx++; break;
+		case 17: t.pl.momy++; break;
+		case 18: t.pl.angle++; break;
+		case 19: t.pl.sector++; break;
+		default: t.map = NULL; break;
+		}
+		if (sim_hash(&t) == h)
+			fail_msg("field %d not hashed", i);
+	}
+	map_free(m);
+	map_free(m2);
+}
+
+static void view_follows_the_player(void **state)
+{
+	struct map *m = steps();
+	struct sim s;
+	struct r_view v;
+	(void)state;
+	sim_init(&s, m, &play);
+	memset(&v, 0x55, sizeof v);
+	sim_view(&s, &v);
+	assert_int_equal(v.x, s.pl.x);
+	assert_int_equal(v.y, s.pl.y);
+	assert_int_equal(v.z, SIM_VIEW_HEIGHT);
+	assert_int_equal(v.angle, s.pl.angle);
+	assert_int_equal(v.shear, 0);
+	map_free(m);
+}
+
+static void mode_names_round_trip(void **state)
+{
+	(void)state;
+	assert_string_equal(sim_mode_name(SIM_ATTRACT), "attract");
+	assert_string_equal(sim_mode_name(SIM_PLAY), "play");
+	assert_null(sim_mode_name(SIM_MODE_COUNT));
+	assert_int_equal(sim_mode_from_name("attract"), SIM_ATTRACT);
+	assert_int_equal(sim_mode_from_name("play"), SIM_PLAY);
+	assert_int_equal(sim_mode_from_name("Play"), -1);
+	assert_int_equal(sim_mode_from_name(""), -1);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(walking_into_a_wall_stops_at_the_radius),
+		cmocka_unit_test(full_speed_is_about_eight_units_per_tick),
+		cmocka_unit_test(sliding_along_a_wall_at_45_degrees_moves_along_it),
+		cmocka_unit_test(strafing_and_turning),
+		cmocka_unit_test(a_16_step_is_climbed_and_a_32_step_blocks),
+		cmocka_unit_test(stepping_down_is_immediate),
+		cmocka_unit_test(an_opening_lower_than_the_player_blocks),
+		cmocka_unit_test(builtin_window_blocks_and_door_passes),
+		cmocka_unit_test(builtin_ledge_is_a_one_way_drop),
+		cmocka_unit_test(random_walk_stays_inside_the_level),
+		cmocka_unit_test(coins_make_credits_and_start_consumes_one),
+		cmocka_unit_test(start_needs_a_credit_and_a_fresh_press),
+		cmocka_unit_test(freeplay_starts_without_credits),
+		cmocka_unit_test(attract_ignores_movement_and_start_resets_the_player),
+		cmocka_unit_test(start_in_play_skips_attract),
+		cmocka_unit_test(without_a_start_the_player_spawns_inside_sector_0),
+		cmocka_unit_test(same_commands_give_same_hashes_every_tick),
+		cmocka_unit_test(a_different_command_changes_the_hash),
+		cmocka_unit_test(hash_covers_every_field),
+		cmocka_unit_test(view_follows_the_player),
+		cmocka_unit_test(mode_names_round_trip),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
