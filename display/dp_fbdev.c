@@ -103,6 +103,13 @@ static void fbdev_console_enter(struct dp *d, const char *tty)
 		close(fd);
 		return;
 	}
+	/* A console already in graphics mode or with the keyboard off was
+	 * left so by an earlier run that was killed (SIGKILL cannot be
+	 * handled): give it back as text with a Unicode keyboard. */
+	if (kd == KD_GRAPHICS)
+		kd = KD_TEXT;
+	if (kb == K_OFF)
+		kb = K_UNICODE;
 	fbdev_con_fd = fd;
 	fbdev_con_kd = kd;
 	fbdev_con_kb = -1;
@@ -144,12 +151,13 @@ static void fbdev_console_leave(struct dp *d)
 	d->con = 0;
 }
 
-/* The panel format from the screen info; 0 or -EOPNOTSUPP. */
+/* The panel format from the screen info; 0 or -EOPNOTSUPP. Only packed
+ * true-colour pixels: direct-colour visuals pass each field through a
+ * hardware colour map we would have to load, and are refused. */
 static int fbdev_format(const struct fb_var_screeninfo *v, const struct fb_fix_screeninfo *x,
 			struct px_format *f)
 {
-	if (x->type != FB_TYPE_PACKED_PIXELS ||
-	    (x->visual != FB_VISUAL_TRUECOLOR && x->visual != FB_VISUAL_DIRECTCOLOR))
+	if (x->type != FB_TYPE_PACKED_PIXELS || x->visual != FB_VISUAL_TRUECOLOR)
 		return -EOPNOTSUPP;
 	if (v->red.msb_right || v->green.msb_right || v->blue.msb_right)
 		return -EOPNOTSUPP;

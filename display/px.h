@@ -11,7 +11,7 @@
 
 /* Largest panel or frame side px_layout_init accepts (sizes the layout's
  * mapping tables, so px_blit needs no allocation). */
-#define PX_MAX_DIM 8192
+#define PX_MAX_DIM 16384
 
 /* A pixel format as fb_var_screeninfo describes it: bits per pixel and the
  * offset/length of each colour field (offset counted from the least
@@ -94,7 +94,7 @@ void px_blit(const struct px_layout *l, const struct px_table *t, const uint8_t 
 
 /* A panel in memory as fbdev and the file framebuffer use it: format, table,
  * layout and line length. Lives inside the backend's handle (the layout's
- * tables make it about 64 KiB). */
+ * tables make it about 128 KiB). */
 struct px_panel {
 	struct px_format fmt;
 	struct px_table table;
