@@ -122,16 +122,28 @@ int map_alloc(struct map **out, uint32_t vertices, uint32_t sectors, uint32_t si
 	      uint32_t lines, uint32_t things);
 
 /* Validates every index and value (naming the first bad entry in err, e.g.
- * "line 12: side[1] 40 out of range (32 sides)"), builds the BSP with the
- * node builder when the map has no nodes, and computes content_hash.
- * Returns 0, -EINVAL (err says why) or -ENOMEM. */
+ * "line 12: side[1] 40 out of range (32 sides)"): at least one sector and
+ * line; vertex and thing coordinates within MAP_COORD_MAX; no ceiling below
+ * its floor; side sectors; line vertices, zero length, side indices, and
+ * ML_TWOSIDED set exactly when side[1] exists. Then computes content_hash
+ * (see below), builds the BSP with nb_build when the map has neither nodes
+ * nor subsectors, and validates the BSP (seg vertices, lines, sides and
+ * sectors; subsector seg ranges and sectors; node partitions, and children
+ * that are subsectors or nodes listed before their parent, so the root is
+ * the last node; no nodes means exactly one subsector). err may be NULL.
+ * Returns 0, -EINVAL (err says why) or -ENOMEM.
+ *
+ * content_hash: FNV-1a (hash.h) of the counts, then every field of every
+ * vertex, sector, side, line and thing in that order, taken before the node
+ * builder appends split vertices. Not the name, not the BSP. */
 int map_finish(struct map *m, char *err, size_t errlen);
 
 /* NULL-safe. Frees the map and all of its arrays. */
 void map_free(struct map *m);
 
-/* Subsector containing (x, y), by walking the BSP. Never fails on a
- * finished map. */
+/* Subsector containing (x, y), by walking the BSP from the root (the last
+ * node); a map without nodes has one subsector, 0 (Doom's convention).
+ * Never fails on a finished map. */
 uint32_t map_point_subsector(const struct map *m, fx_t x, fx_t y);
 
 /* Sector containing (x, y). */

@@ -83,14 +83,35 @@ struct sim {
 #define SIM_MAX_STEP (24 * FX_ONE)
 
 /* Starts a sim on map m (borrowed): player at the map's player 1 start
- * (thing type 1) or, without one, at the centre of sector 0's first line's
- * front side; mode ATTRACT unless set->start_in_play. */
+ * (thing type 1) or, without one, 32 units in front of the middle of the
+ * first line whose front side faces sector 0, facing along it; mode ATTRACT
+ * unless set->start_in_play (which starts a game without counting it in
+ * plays). coins_per_credit 0 counts as 1. */
 void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set);
 
-/* Advances one tick with cmd. */
+/* Advances one tick with cmd.
+ *
+ * Every mode: cmd->coins add to coins_total and coin_rem, each
+ * coins_per_credit of them making a credit. ATTRACT: a START press (edge)
+ * with a credit or freeplay consumes a credit (not in freeplay), counts a
+ * play, enters PLAY and puts the player at its start; otherwise the camera
+ * turns in place by a constant step (a turn in 32 s) and movement is
+ * ignored. PLAY: turn adds cmd->turn/65536 of a turn; forward/side thrust
+ * along the view (Doom's momentum and friction; full forward settles at
+ * about 8 units per tick); the player, a circle of SIM_PLAYER_RADIUS, moves
+ * in sub-steps of half a radius, pushed out of walls so it slides along
+ * them, with Doom's x-only / y-only fallback. Walls are one-sided and
+ * ML_BLOCKING lines, and portals whose higher floor is more than
+ * SIM_MAX_STEP above the player's z or whose opening is lower than
+ * SIM_PLAYER_HEIGHT. z is the floor of the sector under the centre: steps up
+ * and drops down are immediate (no falling yet). The RNG (xorshift32) steps
+ * once per tick. */
 void sim_tick(struct sim *s, const struct sim_cmd *cmd);
 
-/* Hash of the whole sim state (every field, explicit encoding). */
+/* Hash of the whole sim state (every field, explicit encoding): FNV-1a of
+ * the map's content_hash (0 without a map), the settings, tick, mode,
+ * credits, coin_rem, coins_total, plays, prev_buttons, rng and every player
+ * field, integers as little-endian bytes. */
 uint64_t sim_hash(const struct sim *s);
 
 /* The camera for the current tick. */
