@@ -1,0 +1,701 @@
+/*
+ * The main loop and everything it wires together. This is the one place
+ * that logs: library code returns errors, the app names the file or device
+ * and carries on where it can.
+ */
+#include "app/app.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+
+#include "app/cmd.h"
+#include "app/lat.h"
+#include "config/bind.h"
+#include "display/dp.h"
+#include "display/shot.h"
+#include "engine/hash.h"
+#include "engine/map.h"
+#include "engine/pal.h"
+#include "engine/r_main.h"
+#include "engine/sim.h"
+#include "input/in.h"
+#include "input/rec.h"
+#include "input/scr.h"
+#include "systemd/svc.h"
+
+#define APP_MAX_IN 4
+#define APP_KEYS 1024             /* key codes tracked per device (KEY_CNT is 768) */
+#define APP_TICK_NS(t) ((uint64_t)(t) * 1000000000ull / SIM_TICRATE)
+#define APP_RESYNC_NS 250000000ull /* further behind than this: drop the backlog */
+#define APP_REOPEN_NS 1000000000ull
+
+/* Set by signal handlers only; read by the loop. File-scope because a
+ * handler has no other way to reach the loop. */
+static volatile sig_atomic_t app_stop_sig;
+static volatile sig_atomic_t app_summary_req;
+
+struct app_in {
+	const struct in_backend *be;
+	struct in_dev *dev;
+	const char *path;          /* what to (re)open; NULL: auto-detect */
+	uint64_t retry_ns;         /* when to try reopening a lost device */
+	uint8_t down[APP_KEYS / 8];
+};
+
+struct app {
+	const struct cfg *cfg;
+	const struct app_opts *o;
+	struct pal pal;
+	struct map *map;
+	struct sim sim;
+	struct sim_settings set;
+	struct r_ctx *r;
+	struct r_frame frame;
+	const struct dp_backend *dpb;
+	struct dp *dp;
+	struct app_in in[APP_MAX_IN];
+	int nin;
+	struct bind_table binds;
+	struct cmd_state cs;
+	struct rec_writer *rec;
+	struct rec_reader *rep;
+	struct scr *scr;
+	size_t scr_next;
+	struct lat_series frame_time, latency;
+	uint64_t pending_ns;       /* earliest unpresented input event, 0 none */
+	uint64_t start_ns, ticks_run, frames, dropped;
+	int failures;
+	int ready;
+};
+
+static void logf_(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static void logf_(const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	fputs("arcaded: ", stderr);
+	vfprintf(stderr, fmt, ap);
+	fputc('\n', stderr);
+	va_end(ap);
+}
+
+static void on_stop(int sig)
+{
+	app_stop_sig = sig;
+}
+
+static void on_summary(int sig)
+{
+	(void)sig;
+	app_summary_req = 1;
+}
+
+/* A crash must not leave the console in graphics mode: restore it (only
+ * async-signal-safe calls), then die of the same signal with the default
+ * action (SA_RESETHAND put it back). */
+static void on_fatal(int sig)
+{
+	dp_emergency_restore();
+	raise(sig);
+}
+
+static void install_signals(void)
+{
+	struct sigaction sa;
+	static const int fatal[] = { SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT };
+
+	memset(&sa, 0, sizeof(sa));
+	sigemptyset(&sa.sa_mask);
+	sa.sa_handler = on_stop;
+	sigaction(SIGINT, &sa, NULL);
+	sigaction(SIGTERM, &sa, NULL);
+	sigaction(SIGHUP, &sa, NULL);
+	sa.sa_handler = on_summary;
+	sa.sa_flags = SA_RESTART;
+	sigaction(SIGUSR1, &sa, NULL);
+	sa.sa_handler = SIG_IGN;
+	sigaction(SIGPIPE, &sa, NULL);
+	sa.sa_handler = on_fatal;
+	sa.sa_flags = (int)SA_RESETHAND;
+	for (size_t i = 0; i < sizeof(fatal) / sizeof(fatal[0]); i++)
+		sigaction(fatal[i], &sa, NULL);
+}
+
+static int headless(const struct app *a)
+{
+	return a->o->script || a->o->replay;
+}
+
+static void report_cfg_error(void *user, const char *file, int line, const char *msg)
+{
+	(void)user;
+	if (line > 0)
+		logf_("%s:%d: %s", file, line, msg);
+	else
+		logf_("%s: %s", file, msg);
+}
+
+/* ---- input ---------------------------------------------------------- */
+
+static void add_input(struct app *a, const struct in_backend *be, const char *path, int quiet)
+{
+	char why[512] = "";
+	struct app_in *in;
+	int rc;
+
+	if (a->nin >= APP_MAX_IN)
+		return;
+	in = &a->in[a->nin++];
+	memset(in, 0, sizeof(*in));
+	in->be = be;
+	in->path = path;
+	rc = be->open(path, &in->dev, why, sizeof(why));
+	if (rc < 0) {
+		/* Not there yet (an encoder plugged in after boot, a named
+		 * device that is unplugged): keep the slot and retry once a
+		 * second. */
+		if (!quiet)
+			logf_("input %s: %s; retrying every second", be->name,
+			      why[0] ? why : strerror(-rc));
+		in->dev = NULL;
+		in->retry_ns = in_now_ns() + APP_REOPEN_NS;
+		return;
+	}
+	logf_("input %s: %s", be->name, be->describe(in->dev));
+}
+
+static void open_inputs(struct app *a)
+{
+	const char *ev = a->cfg->input.evdev;
+
+	if (headless(a))
+		return;
+	if (strcmp(ev, "none") != 0)
+		add_input(a, &in_evdev, strcmp(ev, "auto") == 0 ? NULL : ev,
+			  a->dpb == &dp_term);
+	if (a->dpb == &dp_term)
+		add_input(a, &in_tty, NULL, 0);
+	if (a->nin == 0)
+		logf_("no input device configured: the game runs, but nothing controls it");
+}
+
+/* A device went away: release every control it held so nothing stays
+ * pressed, then close it and try again later. */
+static void drop_input(struct app *a, struct app_in *in)
+{
+	int acts[ACT_COUNT];
+
+	for (int code = 0; code < APP_KEYS; code++) {
+		if (!(in->down[code / 8] & (1u << (code % 8))))
+			continue;
+		int n = bind_lookup(&a->binds, code, acts, ACT_COUNT);
+		for (int i = 0; i < n; i++)
+			cmd_action(&a->cs, acts[i], 0);
+	}
+	memset(in->down, 0, sizeof(in->down));
+	logf_("input %s: %s went away; its controls are released", in->be->name,
+	      in->be->describe(in->dev));
+	in->be->close(in->dev);
+	in->dev = NULL;
+	in->retry_ns = in_now_ns() + APP_REOPEN_NS;
+}
+
+static void key_event(struct app *a, struct app_in *in, const struct in_event *e)
+{
+	int acts[ACT_COUNT], n, down = e->value != 0;
+	uint8_t bit;
+
+	if (e->code >= APP_KEYS)
+		return;
+	bit = (uint8_t)(1u << (e->code % 8));
+	/* Ignore a press of a key already down (and a release of one that is
+	 * up): repeats and resyncs must not count twice. */
+	if (!!(in->down[e->code / 8] & bit) == down)
+		return;
+	if (down)
+		in->down[e->code / 8] |= bit;
+	else
+		in->down[e->code / 8] &= (uint8_t)~bit;
+	n = bind_lookup(&a->binds, e->code, acts, ACT_COUNT);
+	for (int i = 0; i < n; i++)
+		cmd_action(&a->cs, acts[i], down);
+	if (n > 0 && (a->pending_ns == 0 || e->time_ns < a->pending_ns))
+		a->pending_ns = e->time_ns;
+}
+
+static void read_inputs(struct app *a)
+{
+	struct in_event ev[64];
+	uint64_t now = 0;
+
+	for (int i = 0; i < a->nin; i++) {
+		struct app_in *in = &a->in[i];
+		if (!in->dev) {
+			if (!now)
+				now = in_now_ns();
+			if (now < in->retry_ns)
+				continue;
+			char why[256];
+			if (in->be->open(in->path, &in->dev, why, sizeof(why)) < 0) {
+				in->dev = NULL;
+				in->retry_ns = now + APP_REOPEN_NS;
+				continue;
+			}
+			logf_("input %s: attached %s", in->be->name, in->be->describe(in->dev));
+		}
+		for (;;) {
+			int n = in->be->read(in->dev, ev, (int)(sizeof(ev) / sizeof(ev[0])));
+			if (n == -ENODEV) {
+				drop_input(a, in);
+				break;
+			}
+			if (n <= 0)
+				break;
+			for (int k = 0; k < n; k++)
+				if (ev[k].type == IN_KEY)
+					key_event(a, in, &ev[k]);
+			if (n < (int)(sizeof(ev) / sizeof(ev[0])))
+				break;
+		}
+	}
+}
+
+/* ---- script --------------------------------------------------------- */
+
+static int64_t field_value(const struct sim *s, enum scr_field f)
+{
+	switch (f) {
+	case SCR_F_X: return s->pl.x;
+	case SCR_F_Y: return s->pl.y;
+	case SCR_F_Z: return s->pl.z;
+	case SCR_F_ANGLE: return (int64_t)(((uint64_t)s->pl.angle * 360u) >> 32);
+	case SCR_F_SECTOR: return s->pl.sector;
+	case SCR_F_CREDITS: return s->credits;
+	case SCR_F_COINS: return s->coins_total;
+	case SCR_F_TICK: return s->tick;
+	case SCR_F_MODE: return s->mode;
+	}
+	return 0;
+}
+
+/* Renders a script value the way the script wrote it. */
+static void format_value(enum scr_field f, int64_t v, char *buf, size_t len)
+{
+	if (f == SCR_F_X || f == SCR_F_Y || f == SCR_F_Z) {
+		/* 16.16 to decimal with 4 places, exact enough to read */
+		int64_t m = v < 0 ? -v : v;
+		snprintf(buf, len, "%s%" PRId64 ".%04" PRId64, v < 0 ? "-" : "", m >> 16,
+			 ((m & 0xffff) * 10000) >> 16);
+	} else if (f == SCR_F_MODE) {
+		const char *n = sim_mode_name((enum sim_mode)v);
+		snprintf(buf, len, "%s", n ? n : "?");
+	} else {
+		snprintf(buf, len, "%" PRId64, v);
+	}
+}
+
+/* Applies the script's press/release steps of tick t (before the tick). */
+static void script_inputs(struct app *a, uint32_t t)
+{
+	for (size_t i = a->scr_next; i < a->scr->n && a->scr->steps[i].tick == t; i++) {
+		const struct scr_step *st = &a->scr->steps[i];
+		if (st->op == SCR_PRESS || st->op == SCR_RELEASE) {
+			cmd_action(&a->cs, st->action, st->op == SCR_PRESS);
+			if (st->op == SCR_PRESS && (a->pending_ns == 0))
+				a->pending_ns = in_now_ns();
+		}
+	}
+}
+
+static uint64_t frame_hash(const struct r_frame *f)
+{
+	uint64_t h = HASH_INIT;
+	for (int y = 0; y < f->h; y++)
+		h = hash_bytes(h, f->px + (size_t)y * (size_t)f->pitch, (size_t)f->w);
+	return h;
+}
+
+/* Runs the checks and outputs of tick t (after the tick ran). */
+static void script_checks(struct app *a, uint32_t t)
+{
+	char got[64], want[64];
+
+	for (; a->scr_next < a->scr->n && a->scr->steps[a->scr_next].tick == t; a->scr_next++) {
+		const struct scr_step *st = &a->scr->steps[a->scr_next];
+		switch (st->op) {
+		case SCR_EXPECT: {
+			int64_t v = field_value(&a->sim, st->field);
+			if (!scr_compare(v, st->cmp, st->value)) {
+				format_value(st->field, v, got, sizeof(got));
+				format_value(st->field, st->value, want, sizeof(want));
+				logf_("%s:%u: expect %s %s %s failed: %s is %s", a->o->script,
+				      st->line, scr_field_name(st->field), scr_cmp_name(st->cmp),
+				      want, scr_field_name(st->field), got);
+				a->failures++;
+			}
+			break;
+		}
+		case SCR_SNAPSHOT:
+			fprintf(a->o->out, "snapshot tick %u frame %016" PRIx64 " state %016" PRIx64 "\n",
+				t, frame_hash(&a->frame), sim_hash(&a->sim));
+			break;
+		case SCR_SCREENSHOT: {
+			int rc = shot_png(st->path, a->frame.px, a->frame.w, a->frame.h,
+					  a->frame.pitch, a->pal.rgb);
+			if (rc < 0) {
+				logf_("%s:%u: screenshot %s: %s", a->o->script, st->line, st->path,
+				      strerror(-rc));
+				a->failures++;
+			}
+			break;
+		}
+		case SCR_PRESS:
+		case SCR_RELEASE:
+		case SCR_END:
+			break;
+		}
+	}
+}
+
+/* ---- set-up and tear-down ------------------------------------------- */
+
+static int open_display(struct app *a)
+{
+	const struct cfg *c = a->cfg;
+	struct dp_config dc;
+	char why[1024] = "";
+	int rc;
+
+	memset(&dc, 0, sizeof(dc));
+	dc.backend = c->display.backend;
+	/* Scripts and replays run headless unless a display is named. */
+	if (headless(a) && strcmp(dc.backend, "auto") == 0)
+		dc.backend = c->display.file[0] ? "file" : "null";
+	dc.device = c->display.device;
+	dc.tty = c->display.tty;
+	dc.file = c->display.file;
+	dc.file_w = c->display.file_width;
+	dc.file_h = c->display.file_height;
+	dc.file_stride = c->display.file_stride;
+	dc.file_format = c->display.file_format;
+	dc.rotate = c->display.rotate;
+	dc.scale = c->display.fill ? DP_SCALE_FILL : DP_SCALE_INTEGER;
+	dc.render_w = a->frame.w;
+	dc.render_h = a->frame.h;
+	rc = dp_open(&dc, &a->dpb, &a->dp, why, sizeof(why));
+	if (rc < 0) {
+		logf_("display %s: %s", dc.backend, why[0] ? why : strerror(-rc));
+		return rc;
+	}
+	logf_("display: %s%s%s%s", a->dpb->name, a->dp ? " - " : "",
+	      a->dp ? a->dpb->describe(a->dp) : "", "");
+	if (why[0])
+		logf_("display: skipped %s", why);
+	a->dpb->set_palette(a->dp, a->pal.rgb);
+	return 0;
+}
+
+static int setup(struct app *a)
+{
+	const struct cfg *c = a->cfg;
+	char err[512] = "";
+	int rc;
+
+	pal_builtin(&a->pal);
+	rc = map_builtin(c->game.level - 1, &a->map);
+	if (rc < 0) {
+		logf_("built-in level %d: %s (there are %d)", c->game.level, strerror(-rc),
+		      map_builtin_count());
+		return rc;
+	}
+	a->set.coins_per_credit = (uint8_t)c->game.coins_per_credit;
+	a->set.freeplay = (uint8_t)c->game.freeplay;
+	a->set.start_in_play = (uint8_t)c->game.start_in_play;
+
+	if (a->o->replay) {
+		rc = rec_reader_open(a->o->replay, &a->rep, err, sizeof(err));
+		if (rc < 0) {
+			logf_("%s", err[0] ? err : strerror(-rc));
+			return rc;
+		}
+		rc = rec_check(rec_reader_header(a->rep), a->map->content_hash, err, sizeof(err));
+		if (rc < 0) {
+			logf_("%s: refused: %s", a->o->replay, err);
+			return rc;
+		}
+		/* The game's rules come from the recording, not from this
+		 * cabinet's settings. */
+		a->set = rec_reader_header(a->rep)->set;
+	}
+	if (a->o->script) {
+		rc = scr_load(a->o->script, &a->scr, err, sizeof(err));
+		if (rc < 0) {
+			logf_("%s", err[0] ? err : strerror(-rc));
+			return rc;
+		}
+	}
+	sim_init(&a->sim, a->map, &a->set);
+
+	a->frame.w = c->game.render_width;
+	a->frame.h = c->game.render_height;
+	a->frame.pitch = a->frame.w;
+	a->frame.px = calloc((size_t)a->frame.w * (size_t)a->frame.h, 1);
+	if (!a->frame.px)
+		return -ENOMEM;
+	rc = r_new(a->frame.w, a->frame.h, &a->pal, &a->r);
+	if (rc < 0) {
+		logf_("renderer %dx%d: %s", a->frame.w, a->frame.h, strerror(-rc));
+		return rc;
+	}
+	rc = open_display(a);
+	if (rc < 0)
+		return rc;
+
+	bind_defaults(&a->binds);
+	if (a->o->config_dir) {
+		char path[CFG_PATH_MAX + 32];
+		snprintf(path, sizeof(path), "%s/bindings.ini", a->o->config_dir);
+		bind_load(&a->binds, path, report_cfg_error, NULL);
+	}
+	if (c->paths.state_dir[0]) {
+		char path[CFG_PATH_MAX + 32];
+		snprintf(path, sizeof(path), "%s/bindings.ini", c->paths.state_dir);
+		bind_load(&a->binds, path, report_cfg_error, NULL);
+	}
+	if (c->input.bindings[0]) {
+		rc = bind_load(&a->binds, c->input.bindings, report_cfg_error, NULL);
+		if (rc == -ENOENT)
+			logf_("%s: %s", c->input.bindings, strerror(-rc));
+	}
+	if (a->o->bindings) {
+		rc = bind_load(&a->binds, a->o->bindings, report_cfg_error, NULL);
+		if (rc < 0)
+			logf_("%s: %s", a->o->bindings, strerror(-rc));
+	}
+	cmd_reset(&a->cs);
+	open_inputs(a);
+
+	if (a->o->record) {
+		struct rec_header h = {
+			.version = REC_VERSION,
+			.tick_rate = SIM_TICRATE,
+			.map_hash = a->map->content_hash,
+			.engine_version = REC_ENGINE_VERSION,
+			.set = a->set,
+			.count = REC_COUNT_UNKNOWN,
+		};
+		rc = rec_writer_open(a->o->record, &h, &a->rec);
+		if (rc < 0) {
+			logf_("%s: %s", a->o->record, strerror(-rc));
+			return rc;
+		}
+	}
+	lat_reset(&a->frame_time);
+	lat_reset(&a->latency);
+	return 0;
+}
+
+static void print_summary(struct app *a)
+{
+	char line[256];
+	struct rusage ru;
+	uint64_t el = in_now_ns() - a->start_ns;
+
+	getrusage(RUSAGE_SELF, &ru);
+	fprintf(stderr, "arcaded: summary: %" PRIu64 " ticks, %" PRIu64 " frames in %" PRIu64
+		".%03" PRIu64 " s (%.1f frames/s), %" PRIu64 " ticks dropped, peak RSS %ld KiB\n",
+		a->ticks_run, a->frames, el / 1000000000u, el / 1000000u % 1000u,
+		el ? (double)a->frames * 1e9 / (double)el : 0.0, a->dropped, ru.ru_maxrss);
+	lat_format(&a->frame_time, "frame time (render+present)", line, sizeof(line));
+	fprintf(stderr, "arcaded: summary: %s\n", line);
+	lat_format(&a->latency, "input-to-present latency", line, sizeof(line));
+	fprintf(stderr, "arcaded: summary: %s\n", line);
+}
+
+static void teardown(struct app *a)
+{
+	for (int i = 0; i < a->nin; i++)
+		if (a->in[i].dev)
+			a->in[i].be->close(a->in[i].dev);
+	if (a->dpb)
+		a->dpb->close(a->dp);
+	if (a->rec) {
+		int rc = rec_writer_close(a->rec);
+		if (rc < 0)
+			logf_("%s: %s", a->o->record, strerror(-rc));
+	}
+	rec_reader_close(a->rep);
+	scr_free(a->scr);
+	r_free(a->r);
+	free(a->frame.px);
+	map_free(a->map);
+}
+
+/* ---- the loop ------------------------------------------------------- */
+
+static void sleep_until(uint64_t deadline_ns)
+{
+	struct timespec ts = {
+		.tv_sec = (time_t)(deadline_ns / 1000000000u),
+		.tv_nsec = (long)(deadline_ns % 1000000000u),
+	};
+	while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, NULL) == EINTR)
+		if (app_stop_sig)
+			break;
+}
+
+/* Gets the command of the next tick. Returns 0 at the end of a replay. */
+static int next_cmd(struct app *a, uint32_t t, struct sim_cmd *cmd)
+{
+	if (a->rep) {
+		int rc = rec_reader_next(a->rep, cmd);
+		if (rc < 0)
+			logf_("%s: tick %u: %s", a->o->replay, t, strerror(-rc));
+		return rc > 0;
+	}
+	if (a->scr)
+		script_inputs(a, t);
+	else
+		read_inputs(a);
+	cmd_build(&a->cs, cmd);
+	return 1;
+}
+
+static int render_and_present(struct app *a)
+{
+	uint64_t t0 = in_now_ns(), t1;
+	struct r_view v;
+	int rc;
+
+	sim_view(&a->sim, &v);
+	r_render(a->r, a->map, &v, &a->frame);
+	rc = a->dpb->present(a->dp, a->frame.px, a->frame.w, a->frame.h, a->frame.pitch);
+	t1 = in_now_ns();
+	a->frames++;
+	lat_add_ns(&a->frame_time, t1 - t0);
+	if (a->pending_ns) {
+		if (t1 > a->pending_ns)
+			lat_add_ns(&a->latency, t1 - a->pending_ns);
+		a->pending_ns = 0;
+	}
+	return rc;
+}
+
+static int loop(struct app *a)
+{
+	uint64_t wd_interval = headless(a) ? 0 : svc_watchdog_interval_ns(), wd_next = 0;
+	uint64_t base = in_now_ns();
+	int present_errors = 0;
+	uint32_t t = 0;
+
+	a->start_ns = base;
+	for (;; t++) {
+		struct sim_cmd cmd;
+
+		if (app_stop_sig) {
+			logf_("signal %d: stopping", (int)app_stop_sig);
+			break;
+		}
+		if (app_summary_req) {
+			app_summary_req = 0;
+			print_summary(a);
+		}
+		if (a->o->ticks && t >= a->o->ticks)
+			break;
+		if (a->scr && t > a->scr->end_tick)
+			break;
+		if (!a->o->fast && !headless(a)) {
+			uint64_t deadline = base + APP_TICK_NS(t), now = in_now_ns();
+			if (now > deadline + APP_RESYNC_NS) {
+				/* Far behind (suspended, debugger): do not
+				 * fast-forward the game, start the clock again. */
+				a->dropped += (now - deadline) / APP_TICK_NS(1);
+				base = now - APP_TICK_NS(t);
+			} else if (now < deadline) {
+				sleep_until(deadline);
+			}
+		}
+		if (!next_cmd(a, t, &cmd))
+			break;
+		if (a->rec && rec_writer_put(a->rec, &cmd) < 0) {
+			logf_("%s: write failed; recording stopped", a->o->record);
+			rec_writer_close(a->rec);
+			a->rec = NULL;
+		}
+		sim_tick(&a->sim, &cmd);
+		a->ticks_run++;
+
+		if (!a->o->no_render) {
+			int rc = render_and_present(a);
+			if (rc < 0 && present_errors++ == 0)
+				logf_("display %s: present: %s", a->dpb->name, strerror(-rc));
+		}
+		if (a->rep && !a->o->quiet)
+			fprintf(a->o->out, "%u %016" PRIx64 " %016" PRIx64 "\n", t,
+				sim_hash(&a->sim), a->o->no_render ? 0 : frame_hash(&a->frame));
+		if (a->scr)
+			script_checks(a, t);
+		if (!a->ready && !headless(a)) {
+			/* READY=1 only once the first frame is on the screen. */
+			svc_ready();
+			a->ready = 1;
+		}
+		if (wd_interval) {
+			uint64_t now = in_now_ns();
+			if (now >= wd_next) {
+				svc_watchdog_ping();
+				wd_next = now + wd_interval;
+			}
+		}
+	}
+	if (!headless(a))
+		svc_stopping();
+	return 0;
+}
+
+int app_run(const struct cfg *c, const struct app_opts *o)
+{
+	struct app *a = calloc(1, sizeof(*a));
+	int rc, code = APP_OK;
+
+	if (!a) {
+		logf_("out of memory");
+		return APP_SETUP_FAILED;
+	}
+	a->cfg = c;
+	a->o = o;
+	install_signals();
+	rc = setup(a);
+	if (rc < 0) {
+		code = APP_SETUP_FAILED;
+		goto out;
+	}
+	loop(a);
+	if (o->screenshot) {
+		rc = shot_png(o->screenshot, a->frame.px, a->frame.w, a->frame.h, a->frame.pitch,
+			      a->pal.rgb);
+		if (rc < 0) {
+			logf_("%s: %s", o->screenshot, strerror(-rc));
+			code = APP_SETUP_FAILED;
+		}
+	}
+	if (a->scr) {
+		if (a->failures)
+			logf_("%s: %d check(s) failed", o->script, a->failures);
+		code = a->failures ? APP_EXPECT_FAILED : APP_OK;
+	}
+out:
+	teardown(a);
+	if (a->ticks_run && !o->replay && !o->script)
+		print_summary(a);
+	else if (a->ticks_run && getenv("ARCADED_SUMMARY"))
+		print_summary(a);
+	free(a);
+	return code;
+}

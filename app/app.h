@@ -1,0 +1,38 @@
+/*
+ * app: the daemon's main loop. One process, one loop at a fixed 60 Hz tick:
+ * read input as late as possible before the tick, build the tick's command,
+ * run the sim, render, present; measure frame time and input-to-present
+ * latency; notify systemd. The same loop runs headless and as fast as it can
+ * for scripts and replays.
+ */
+#ifndef ARCADED_APP_APP_H
+#define ARCADED_APP_APP_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "config/cfg.h"
+
+struct app_opts {
+	const char *script;      /* drive with this script, headless, fast */
+	const char *record;      /* write the commands of every tick here */
+	const char *replay;      /* take the commands from this recording */
+	const char *screenshot;  /* PNG of the last frame, written at exit */
+	const char *bindings;    /* extra bindings file (after the config layers) */
+	const char *config_dir;  /* /etc/arcaded: every *.ini, in name order */
+	uint32_t ticks;          /* stop after this many ticks (0: no limit) */
+	int fast;                /* do not wait for the tick clock */
+	int no_render;           /* replay without rendering (state hashes only) */
+	int quiet;               /* replay without printing per-tick hashes */
+	FILE *out;               /* hashes, snapshots and summaries (stdout) */
+};
+
+/* Exit codes of app_run. */
+enum { APP_OK = 0, APP_EXPECT_FAILED = 1, APP_SETUP_FAILED = 2 };
+
+/* Runs the daemon or a headless script/replay with configuration c until
+ * the end of the script/recording, the tick limit, or SIGINT/SIGTERM.
+ * Logs to stderr. Returns an APP_* code. */
+int app_run(const struct cfg *c, const struct app_opts *o);
+
+#endif

@@ -1,0 +1,48 @@
+#include "app/cmd.h"
+
+#include <string.h>
+
+void cmd_reset(struct cmd_state *s)
+{
+	memset(s, 0, sizeof(*s));
+}
+
+void cmd_action(struct cmd_state *s, int a, int down)
+{
+	if (a < 0 || a >= ACT_COUNT)
+		return;
+	if (down) {
+		if (s->held[a] == 0 && s->presses[a] < UINT16_MAX)
+			s->presses[a]++;
+		if (s->held[a] < UINT16_MAX)
+			s->held[a]++;
+	} else if (s->held[a] > 0) {
+		s->held[a]--;
+	}
+}
+
+/* Held now, or pressed at some point since the last build. */
+static int active(const struct cmd_state *s, int a)
+{
+	return s->held[a] > 0 || s->presses[a] > 0;
+}
+
+static int axis(const struct cmd_state *s, int pos, int neg, int full)
+{
+	return (active(s, pos) ? full : 0) - (active(s, neg) ? full : 0);
+}
+
+void cmd_build(struct cmd_state *s, struct sim_cmd *out)
+{
+	uint16_t coins = s->presses[ACT_COIN];
+
+	out->forward = (int8_t)axis(s, ACT_FORWARD, ACT_BACK, CMD_MOVE);
+	out->side = (int8_t)axis(s, ACT_STRAFE_RIGHT, ACT_STRAFE_LEFT, CMD_MOVE);
+	out->turn = (int16_t)axis(s, ACT_TURN_LEFT, ACT_TURN_RIGHT, CMD_TURN_SPEED);
+	out->buttons = (uint8_t)((active(s, ACT_FIRE) ? SIM_BT_FIRE : 0) |
+				 (active(s, ACT_USE) ? SIM_BT_USE : 0) |
+				 (active(s, ACT_START) ? SIM_BT_START : 0) |
+				 (active(s, ACT_SERVICE) ? SIM_BT_SERVICE : 0));
+	out->coins = (uint8_t)(coins > UINT8_MAX ? UINT8_MAX : coins);
+	memset(s->presses, 0, sizeof(s->presses));
+}

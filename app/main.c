@@ -1,0 +1,167 @@
+/*
+ * arcaded: command line, configuration layers, then the main loop.
+ */
+#include <errno.h>
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app/app.h"
+#include "config/cfg.h"
+
+#define ARCADED_VERSION "0.1.0"
+#define MAX_SETS 64
+
+static void usage(FILE *f)
+{
+	fputs("usage: arcaded [options]\n"
+	      "Runs the arcade cabinet daemon: input, game, framebuffer.\n"
+	      "\n"
+	      "  --config-dir DIR   read DIR/*.ini in name order (default /etc/arcaded)\n"
+	      "  --state-dir DIR    state directory (default $STATE_DIRECTORY or /var/lib/arcaded)\n"
+	      "  --set S.K=V        set one configuration key (repeatable; last layer)\n"
+	      "  --display NAME     auto, fbdev, file, term or null (= --set display.backend=NAME)\n"
+	      "  --level N          built-in level N (= --set game.level=N)\n"
+	      "  --play             start in play, skipping attract (= --set game.start_in_play=1)\n"
+	      "  --bindings FILE    extra key bindings file, applied last\n"
+	      "  --script FILE      run a test script headless, as fast as possible\n"
+	      "  --record FILE      record every tick's command to FILE\n"
+	      "  --replay FILE      replay a recording headless; print per-tick hashes\n"
+	      "  --no-render        with --replay: state hashes only, no rendering\n"
+	      "  --quiet            with --replay: print no per-tick hashes (benchmarks)\n"
+	      "  --ticks N          stop after N ticks\n"
+	      "  --fast             do not wait for the 60 Hz clock\n"
+	      "  --screenshot FILE  write the last frame as PNG at exit\n"
+	      "  --print-config     print the effective configuration and exit\n"
+	      "  --version, --help\n"
+	      "\n"
+	      "SIGUSR1 prints frame-time and latency statistics; they are printed at exit too.\n",
+	      f);
+}
+
+static void report(void *user, const char *file, int line, const char *msg)
+{
+	(void)user;
+	if (line > 0)
+		fprintf(stderr, "arcaded: %s:%d: %s\n", file, line, msg);
+	else
+		fprintf(stderr, "arcaded: %s: %s\n", file, msg);
+}
+
+int main(int argc, char **argv)
+{
+	enum { O_CONFIG_DIR = 256, O_STATE_DIR, O_SET, O_DISPLAY, O_LEVEL, O_PLAY, O_BINDINGS,
+	       O_SCRIPT, O_RECORD, O_REPLAY, O_NO_RENDER, O_QUIET, O_TICKS, O_FAST, O_SCREENSHOT,
+	       O_PRINT_CONFIG, O_VERSION, O_HELP };
+	static const struct option opts[] = {
+		{ "config-dir", required_argument, NULL, O_CONFIG_DIR },
+		{ "state-dir", required_argument, NULL, O_STATE_DIR },
+		{ "set", required_argument, NULL, O_SET },
+		{ "display", required_argument, NULL, O_DISPLAY },
+		{ "level", required_argument, NULL, O_LEVEL },
+		{ "play", no_argument, NULL, O_PLAY },
+		{ "bindings", required_argument, NULL, O_BINDINGS },
+		{ "script", required_argument, NULL, O_SCRIPT },
+		{ "record", required_argument, NULL, O_RECORD },
+		{ "replay", required_argument, NULL, O_REPLAY },
+		{ "no-render", no_argument, NULL, O_NO_RENDER },
+		{ "quiet", no_argument, NULL, O_QUIET },
+		{ "ticks", required_argument, NULL, O_TICKS },
+		{ "fast", no_argument, NULL, O_FAST },
+		{ "screenshot", required_argument, NULL, O_SCREENSHOT },
+		{ "print-config", no_argument, NULL, O_PRINT_CONFIG },
+		{ "version", no_argument, NULL, O_VERSION },
+		{ "help", no_argument, NULL, O_HELP },
+		{ NULL, 0, NULL, 0 },
+	};
+	/* --set values and the shortcuts that expand to them, applied in
+	 * command-line order after the files. */
+	static char sets[MAX_SETS][CFG_PATH_MAX + 32];
+	struct app_opts o = { .out = stdout, .config_dir = "/etc/arcaded" };
+	const char *state_dir = NULL;
+	int nsets = 0, print_config = 0, opt;
+	struct cfg c;
+
+	while ((opt = getopt_long(argc, argv, "", opts, NULL)) != -1) {
+		const char *prefix = NULL;
+		switch (opt) {
+		case O_CONFIG_DIR: o.config_dir = optarg; break;
+		case O_STATE_DIR: state_dir = optarg; break;
+		case O_SET: prefix = ""; break;
+		case O_DISPLAY: prefix = "display.backend="; break;
+		case O_LEVEL: prefix = "game.level="; break;
+		case O_PLAY: prefix = "game.start_in_play="; optarg = "1"; break;
+		case O_BINDINGS: o.bindings = optarg; break;
+		case O_SCRIPT: o.script = optarg; break;
+		case O_RECORD: o.record = optarg; break;
+		case O_REPLAY: o.replay = optarg; break;
+		case O_NO_RENDER: o.no_render = 1; break;
+		case O_QUIET: o.quiet = 1; break;
+		case O_TICKS: {
+			char *end;
+			unsigned long v;
+			errno = 0;
+			v = strtoul(optarg, &end, 10);
+			if (errno || *end || end == optarg || v > 0xffffffffu) {
+				fprintf(stderr, "arcaded: --ticks: '%s' is not a tick count\n", optarg);
+				return 2;
+			}
+			o.ticks = (uint32_t)v;
+			break;
+		}
+		case O_FAST: o.fast = 1; break;
+		case O_SCREENSHOT: o.screenshot = optarg; break;
+		case O_PRINT_CONFIG: print_config = 1; break;
+		case O_VERSION: puts("arcaded " ARCADED_VERSION); return 0;
+		case O_HELP: usage(stdout); return 0;
+		default: usage(stderr); return 2;
+		}
+		if (prefix) {
+			if (nsets == MAX_SETS) {
+				fprintf(stderr, "arcaded: more than %d --set options\n", MAX_SETS);
+				return 2;
+			}
+			snprintf(sets[nsets++], sizeof(sets[0]), "%s%s", prefix, optarg);
+		}
+	}
+	if (optind < argc) {
+		fprintf(stderr, "arcaded: unexpected argument '%s'\n", argv[optind]);
+		usage(stderr);
+		return 2;
+	}
+	if (o.script && o.replay) {
+		fprintf(stderr, "arcaded: --script and --replay cannot be combined\n");
+		return 2;
+	}
+	if (o.no_render && !o.replay) {
+		fprintf(stderr, "arcaded: --no-render goes with --replay\n");
+		return 2;
+	}
+
+	/* Layers: defaults < config dir < state dir < command line. */
+	cfg_defaults(&c);
+	if (state_dir)
+		snprintf(c.paths.state_dir, sizeof(c.paths.state_dir), "%s", state_dir);
+	if (o.config_dir)
+		cfg_load_dir(&c, o.config_dir, report, NULL);
+	if (c.paths.state_dir[0]) {
+		char path[CFG_PATH_MAX + 32];
+		snprintf(path, sizeof(path), "%s/settings.ini", c.paths.state_dir);
+		cfg_load_file(&c, path, report, NULL);
+	}
+	for (int i = 0; i < nsets; i++)
+		cfg_set(&c, sets[i], report, NULL);
+
+	if (print_config) {
+		size_t n = cfg_format(&c, NULL, 0);
+		char *buf = malloc(n + 1);
+		if (!buf)
+			return 2;
+		cfg_format(&c, buf, n + 1);
+		fputs(buf, stdout);
+		free(buf);
+		return 0;
+	}
+	return app_run(&c, &o);
+}
