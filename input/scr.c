@@ -195,15 +195,17 @@ static bool scr_fixed(const struct scr_tok *t, int64_t *out)
 	return true;
 }
 
-/* Mode names belong to the sim (sim_mode_name); the table is repeated here
- * only until engine/sim.c provides sim_mode_from_name to this build. */
+/* Mode names are the sim's own (sim_mode_from_name). */
 static int scr_mode(const struct scr_tok *t)
 {
-	if (scr_is(t, "attract"))
-		return SIM_ATTRACT;
-	if (scr_is(t, "play"))
-		return SIM_PLAY;
-	return -1;
+	char name[16];
+	size_t n = (size_t)(t->e - t->b);
+
+	if (n >= sizeof(name))
+		return -1;
+	memcpy(name, t->b, n);
+	name[n] = '\0';
+	return sim_mode_from_name(name);
 }
 
 static struct scr_step *scr_add(struct scr_parser *p, uint32_t tick, enum scr_op op)
