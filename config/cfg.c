@@ -515,7 +515,8 @@ size_t cfg_format(const struct cfg *c, char *buf, size_t len)
 		case CFG_T_STR:
 		case CFG_T_NAME:
 		case CFG_T_DEVICE:
-			cfg_put(buf, len, &n, "%s = %s\n", k->key, field);
+			/* No blank after '=' for an empty value. */
+			cfg_put(buf, len, &n, "%s =%s%s\n", k->key, field[0] ? " " : "", field);
 			break;
 		case CFG_T_BOOL:
 			memcpy(&v, field, sizeof(v));
