@@ -9,7 +9,6 @@ build-essential
 pkg-config
 clang
 libevdev-dev
-libinih-dev
 libpng-dev
 libsystemd-dev
 libcmocka-dev

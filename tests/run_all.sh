@@ -42,7 +42,7 @@ unit() { # $1: name, $2: build dir, rest: make variables
 		echo "FAIL $name: build"; failed=$((failed + 1)); failures="$failures $name-build"
 		return
 	fi
-	tests/run_unit.sh "$dir"/tests/test_* > "$LOG/$name.log" 2>&1
+	tests/run_unit.sh $(find "$dir/tests" -maxdepth 1 -type f -name "test_*" ! -name "*.d" | sort) > "$LOG/$name.log" 2>&1
 	grep -E '^\[  (PASSED|FAILED|SKIPPED)  \]|^\[  FAILED  \]|^unit:|exited with' "$LOG/$name.log" | tail -n 60
 	count_unit "$LOG/$name.log" "$name"
 }

@@ -3,11 +3,16 @@
 # headless on a file framebuffer, and checks
 #  - the exit status (0, or the value of a "# expect-exit: N" line),
 #  - every "# expect-stderr: TEXT" line appears in stderr,
-#  - stdout (snapshot lines) equals NAME.out when that file exists.
+#  - every "# expect-file: NAME" exists afterwards (relative to the run's
+#    working directory, a fresh temporary one) and is a PNG,
+#  - stdout (snapshot lines) equals NAME.out when that file exists,
+#  - when the run ended normally, the file framebuffer (640x480 xrgb8888)
+#    has its full size and holds a picture (not all one value).
 # Usage: tests/script/run.sh path/to/arcaded
 set -u
-BIN=$1
+BIN=$(realpath "$1")
 cd "$(dirname "$0")/../.."
+top=$(pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 pass=0
@@ -16,11 +21,11 @@ for scr in tests/script/*.scr; do
 	name=$(basename "$scr" .scr)
 	want_exit=$(sed -n 's/^# expect-exit: *\([0-9]*\).*/\1/p' "$scr" | head -n 1)
 	want_exit=${want_exit:-0}
-	(cd "$tmp" && rm -f fb out err)
-	"$BIN" --script "$scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
+	rm -rf "$tmp/run"; mkdir "$tmp/run"
+	(cd "$tmp/run" && "$BIN" --script "$top/$scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
 		--set display.backend=file --set display.file="$tmp/fb" \
 		--set display.file_format=xrgb8888 --set display.file_width=640 \
-		--set display.file_height=480 >"$tmp/out" 2>"$tmp/err"
+		--set display.file_height=480 >"$tmp/out" 2>"$tmp/err")
 	rc=$?
 	ok=1
 	if [ "$rc" -ne "$want_exit" ]; then
@@ -33,6 +38,18 @@ for scr in tests/script/*.scr; do
 	done <<EOT
 $(sed -n 's/^# expect-stderr: //p' "$scr")
 EOT
+	for f in $(sed -n 's/^# expect-file: //p' "$scr"); do
+		if ! head -c 8 "$tmp/run/$f" 2>/dev/null | grep -q PNG; then
+			echo "$name: $f is missing or not a PNG"; ok=0
+		fi
+	done
+	if [ "$rc" -eq 0 ]; then
+		size=$(stat -c %s "$tmp/fb" 2>/dev/null || echo 0)
+		values=$(od -An -tx4 -v "$tmp/fb" 2>/dev/null | tr -s ' ' '\n' | sort -u | wc -l)
+		if [ "$size" -ne $((640 * 480 * 4)) ] || [ "$values" -lt 4 ]; then
+			echo "$name: file framebuffer size $size, $values distinct pixel values"; ok=0
+		fi
+	fi
 	if [ -f "tests/script/$name.out" ] && ! diff -u "tests/script/$name.out" "$tmp/out"; then
 		echo "$name: stdout differs from tests/script/$name.out"; ok=0
 	fi
