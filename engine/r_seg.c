@@ -53,7 +53,11 @@ static int r_light_base(int light)
 		light = 0;
 	if (light > 255)
 		light = 255;
-	return PAL_LIGHTS - 1 - (light >> 3);
+	/* Doom's: 16 light steps of 16, two colormaps apart, so a bright
+	 * sector (208) starts 8 levels down and the distance fade brightens
+	 * near surfaces from there; a dark one (<= 112) is black far away. */
+	int base = 4 * (15 - (light >> 4));
+	return base > PAL_LIGHTS - 1 ? PAL_LIGHTS - 1 : base;
 }
 
 /* Fade factor of a plane dist (> 0) units from the eye: a row's fade is

@@ -327,12 +327,14 @@ static void wall_span_is_height_times_focal_over_depth(void **state)
 	}
 }
 
-/* Light 128 (base level 31 - 128/8 = 15), 320x240, eye z 41 facing east.
- * East wall: north-south, light 128 - 16 = 112, base 17, fade 1280/128 = 10:
- * level 7. Ceiling row 5: depth 87*160/(120-5.5) = 121.6, fade 1280/121.6 =
- * 10.5 -> 10: level 5. Floor rows (depth 41*160/(y+0.5-120)): row 172 depth
- * 124.95, fade 10.2 -> level 5; row 180: 108.4, 11.8 -> level 4; row 200:
- * 81.5, 15.7 -> level 0; row 239: capped -> level 0. */
+/* Light 128, 320x240, eye z 41 facing east. Base level (Doom's rule)
+ * 4 * (15 - light/16). East wall: north-south, light 128 - 16 = 112, base
+ * 4 * 8 = 32, clamped to 31; fade 1280/128 = 10: level 21. Planes: base
+ * 4 * (15 - 8) = 28. Ceiling row 5: depth 87*160/(120-5.5) = 121.6, fade
+ * 1280/121.6 = 10.5 -> 10: level 18. Floor rows (depth 41*160/(y+0.5-120)):
+ * row 172 depth 124.95, fade 10.2 -> 10: level 18; row 180: 108.4, 11.8 ->
+ * 11: level 17; row 200: 81.5, 15.7 -> 15: level 13; row 239: 54.9, 23.3 ->
+ * 23: level 5. */
 static void sector_light_and_distance_pick_the_colormap(void **state)
 {
 	struct tmap t;
@@ -341,13 +343,13 @@ static void sector_light_and_distance_pick_the_colormap(void **state)
 	t_room(&t, 128, 0);
 	shot_open(&s, 320, 240);
 	shot_take(&s, &t.m, 0, 0, 41, 0);
-	assert_int_equal(px(&s, 160, 100), pal.cmap[7][C_EAST]);
-	assert_int_equal(px(&s, 10, 100), pal.cmap[7][C_EAST]);
-	assert_int_equal(px(&s, 160, 5), pal.cmap[5][C_CEIL]);
-	assert_int_equal(px(&s, 160, 172), pal.cmap[5][C_FLOOR]);
-	assert_int_equal(px(&s, 160, 180), pal.cmap[4][C_FLOOR]);
-	assert_int_equal(px(&s, 160, 200), pal.cmap[0][C_FLOOR]);
-	assert_int_equal(px(&s, 160, 239), pal.cmap[0][C_FLOOR]);
+	assert_int_equal(px(&s, 160, 100), pal.cmap[21][C_EAST]);
+	assert_int_equal(px(&s, 10, 100), pal.cmap[21][C_EAST]);
+	assert_int_equal(px(&s, 160, 5), pal.cmap[18][C_CEIL]);
+	assert_int_equal(px(&s, 160, 172), pal.cmap[18][C_FLOOR]);
+	assert_int_equal(px(&s, 160, 180), pal.cmap[17][C_FLOOR]);
+	assert_int_equal(px(&s, 160, 200), pal.cmap[13][C_FLOOR]);
+	assert_int_equal(px(&s, 160, 239), pal.cmap[5][C_FLOOR]);
 	/* the per-row light does not depend on the column */
 	for (int x = 0; x < 320; x++)
 		assert_int_equal(px(&s, x, 180), px(&s, 160, 180));
@@ -355,8 +357,8 @@ static void sector_light_and_distance_pick_the_colormap(void **state)
 }
 
 /* Facing north in the same dim room: the north wall runs east-west, light
- * 128 + 16 = 144, base 31 - 18 = 13, fade 10: level 3, brighter than the
- * east wall's 7 at the same distance. */
+ * 128 + 16 = 144, base 4 * (15 - 9) = 24, fade 10: level 14, brighter than
+ * the west wall's 21 (light 112, base clamped to 31) at the same distance. */
 static void fake_contrast_lights_east_west_walls_brighter(void **state)
 {
 	struct tmap t;
@@ -365,9 +367,9 @@ static void fake_contrast_lights_east_west_walls_brighter(void **state)
 	t_room(&t, 128, 0);
 	shot_open(&s, 320, 240);
 	shot_take(&s, &t.m, 0, 0, 41, ANG90);
-	assert_int_equal(px(&s, 160, 100), pal.cmap[3][C_NORTH]);
+	assert_int_equal(px(&s, 160, 100), pal.cmap[14][C_NORTH]);
 	shot_take(&s, &t.m, 0, 0, 41, ANG180);
-	assert_int_equal(px(&s, 160, 100), pal.cmap[7][C_WEST]);
+	assert_int_equal(px(&s, 160, 100), pal.cmap[21][C_WEST]);
 	shot_close(&s);
 }
 
