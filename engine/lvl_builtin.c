@@ -11,7 +11,7 @@
  *       |                                      :                          |
  *   736 +--------+===========+-----------------+                          |
  *   704 |  void  | STEP3 f48 |     void        |                          |
- *   672 |        | STEP2 f32 |                 |     YARD f0 c256 l112    |
+ *   672 |        | STEP2 f32 |                 |     YARD f0 c256 l176    |
  *   640 +--------+=STEP1 f16=+-------+         |                          |
  *       |                            | notch   |       +--------+ 576     |
  *       |                            | (void)  |       |  DAIS  |         |
@@ -108,7 +108,7 @@ static const struct lvl_sector arena1_sectors[] = {
 	[A1_STEP2] = { 32, 192, PAL_RGB(PAL_OLIVE, 2), PAL_RGB(PAL_GREY, 3), 176 },
 	[A1_STEP3] = { 48, 192, PAL_RGB(PAL_OLIVE, 2), PAL_RGB(PAL_GREY, 3), 176 },
 	[A1_GALLERY] = { 64, 192, PAL_RGB(PAL_GREEN, 3), PAL_RGB(PAL_SLATE, 3), 160 },
-	[A1_YARD] = { 0, 256, PAL_RGB(PAL_OLIVE, 3), PAL_RGB(PAL_SKY, 1), 112 },
+	[A1_YARD] = { 0, 256, PAL_RGB(PAL_OLIVE, 3), PAL_RGB(PAL_SKY, 1), 176 },
 	[A1_DAIS] = { 40, 256, PAL_RGB(PAL_ORANGE, 1), PAL_RGB(PAL_SKY, 1), 240 },
 	[A1_DOOR] = { 0, 120, PAL_RGB(PAL_BROWN, 2), PAL_RGB(PAL_CYAN, 3), 176 },
 	[A1_WINDOW] = { 40, 88, PAL_RGB(PAL_PURPLE, 2), PAL_RGB(PAL_PURPLE, 3), 176 },
