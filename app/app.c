@@ -393,8 +393,7 @@ static int open_display(struct app *a)
 		logf_("display %s: %s", dc.backend, why[0] ? why : strerror(-rc));
 		return rc;
 	}
-	logf_("display: %s%s%s%s", a->dpb->name, a->dp ? " - " : "",
-	      a->dp ? a->dpb->describe(a->dp) : "", "");
+	logf_("display: %s", a->dpb->describe(a->dp));
 	if (why[0])
 		logf_("display: skipped %s", why);
 	a->dpb->set_palette(a->dp, a->pal.rgb);
