@@ -42,13 +42,15 @@ SYSUSERSDIR ?= /usr/lib/sysusers.d
 TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
 .PHONY: all setup run test test-unit test-asan test-script test-replay test-clang \
-	check-layers check-tables check-systemd bench install clean tests tools
+	check-layers check-tables check-systemd check-install docs-shots bench install clean tests tools
 
 all: $(BIN) tools
 
 setup:
 	@scripts/setup.sh
 
+# `make run` goes straight into play; RUN_ARGS= (empty) boots into attract.
+RUN_ARGS ?= --play
 run: setup
 	@$(MAKE) --no-print-directory all
 	./$(BIN) $(RUN_ARGS)
@@ -95,6 +97,18 @@ check-layers:
 
 check-systemd:
 	@tests/check_systemd.sh
+
+# Installs into a temporary DESTDIR and checks the layout.
+check-install: $(BIN)
+	@tests/check_install.sh
+
+# The screenshot in docs/ is made by the daemon's own screenshot command.
+docs-shots: $(BIN)
+	@mkdir -p docs/images
+	printf '0 tap coin\n1 tap start\n2 end\n' > $(BUILD)/shot.scr
+	./$(BIN) --config-dir $(BUILD)/none --state-dir $(BUILD)/none --script $(BUILD)/shot.scr \
+		--set game.render_width=640 --set game.render_height=480 \
+		--screenshot docs/images/arena1-start.png
 
 bench: all
 	@tests/bench.sh $(BIN)

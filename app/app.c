@@ -176,9 +176,14 @@ static void open_inputs(struct app *a)
 
 	if (headless(a))
 		return;
-	if (strcmp(ev, "none") != 0)
-		add_input(a, &in_evdev, strcmp(ev, "auto") == 0 ? NULL : ev,
-			  a->dpb == &dp_term);
+	/* In the terminal preview the keys come from the terminal. Grabbing
+	 * an auto-detected evdev keyboard there would take the developer's
+	 * own keyboard away from every other window: only a device named in
+	 * the configuration is opened. */
+	if (a->dpb == &dp_term && strcmp(ev, "auto") == 0)
+		logf_("input evdev: not auto-detected in the terminal preview (set input.evdev)");
+	else if (strcmp(ev, "none") != 0)
+		add_input(a, &in_evdev, strcmp(ev, "auto") == 0 ? NULL : ev, 0);
 	if (a->dpb == &dp_term)
 		add_input(a, &in_tty, NULL, 0);
 	if (a->nin == 0)
