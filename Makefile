@@ -27,12 +27,18 @@ APP_MAIN := app/main.c
 APP_LIB_SRC := $(filter-out $(APP_MAIN),$(APP_SRC))
 TEST_SRC := $(sort $(wildcard tests/unit/test_*.c))
 TOOL_SRC := $(sort $(wildcard tools/*.c))
+FUZZ_SRC := $(sort $(wildcard tests/fuzz/fuzz_*.c))
 
 LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/%.o) $(APP_LIB_SRC:%.c=$(BUILD)/%.o)
 LIB := $(BUILD)/libarcaded.a
 BIN := $(BUILD)/arcaded
 TEST_BIN := $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 TOOL_BIN := $(TOOL_SRC:tools/%.c=$(BUILD)/tools/%)
+FUZZ_BIN := $(FUZZ_SRC:tests/fuzz/%.c=$(BUILD)/fuzz/%)
+FUZZ_SECONDS ?= 60
+FUZZ_BUILD := build/fuzz
+FUZZ_VARS := BUILD=$(FUZZ_BUILD) CC=clang OPT="-O1 -g -fno-omit-frame-pointer" \
+	SAN="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=all"
 
 PREFIX ?= /usr/local
 DESTDIR ?=
@@ -42,7 +48,7 @@ SYSUSERSDIR ?= /usr/lib/sysusers.d
 TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
 .PHONY: all setup run test test-unit test-asan test-script test-replay test-clang \
-	check-layers check-tables check-systemd check-install docs-shots bench install clean tests tools
+	check-layers check-tables check-systemd check-install docs-shots fuzz fuzzers bench install clean tests tools
 
 all: $(BIN) tools
 
@@ -79,8 +85,21 @@ $(BUILD)/tools/%: tools/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< -lm
 
+# libFuzzer targets (tests/fuzz/fuzz_<parser>.c, each defining
+# LLVMFuzzerTestOneInput), linked against the library built for fuzzing.
+$(BUILD)/fuzz/%: tests/fuzz/%.c $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -fsanitize=fuzzer -o $@ $< $(LIB) $(LDLIBS)
+
 tests: $(TEST_BIN)
 tools: $(TOOL_BIN)
+fuzzers: $(FUZZ_BIN)
+
+# Every fuzz target for FUZZ_SECONDS each (make fuzz FUZZ_SECONDS=3600),
+# starting from its seed corpus tests/fuzz/corpus/<target>/.
+fuzz:
+	@$(MAKE) --no-print-directory $(FUZZ_VARS) fuzzers
+	@tests/fuzz/run.sh $(FUZZ_BUILD)/fuzz $(FUZZ_SECONDS)
 
 # Unit tests of this build; prints cmocka's summaries.
 test-unit: $(TEST_BIN)

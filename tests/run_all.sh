@@ -70,6 +70,7 @@ step build-O0 make --no-print-directory -j"$JOBS" BUILD=build/O0 OPT="-O0 -g" al
 step script-tests tests/script/run.sh build/arcaded
 step replay-tests tests/replay/run.sh build/arcaded build/O0/arcaded
 step terminal-preview tests/term/run.sh build/arcaded
+step fuzz make --no-print-directory fuzz FUZZ_SECONDS="${FUZZ_SECONDS:-60}"
 
 echo
 [ -n "$failures" ] && echo "failed:$failures"
