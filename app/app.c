@@ -39,6 +39,7 @@
  * handler has no other way to reach the loop. */
 static volatile sig_atomic_t app_stop_sig;
 static volatile sig_atomic_t app_summary_req;
+static volatile sig_atomic_t app_fault_req;
 
 struct app_in {
 	const struct in_backend *be;
@@ -90,10 +91,58 @@ static void on_stop(int sig)
 	app_stop_sig = sig;
 }
 
+static void sleep_until(uint64_t deadline_ns);
+
 static void on_summary(int sig)
 {
 	(void)sig;
 	app_summary_req = 1;
+}
+
+static void on_fault(int sig)
+{
+	(void)sig;
+	app_fault_req = 1;
+}
+
+/* Fault injection for the watchdog test, off unless the environment asks:
+ *   ARCADED_FAULT=hang-at:N   the main loop hangs after tick N
+ *   ARCADED_FAULT=sigusr2     the main loop hangs when SIGUSR2 arrives
+ * A hung loop stops sending WATCHDOG=1, so systemd must kill and restart
+ * the service. Returns the tick to hang at, or UINT32_MAX. */
+static uint32_t fault_setup(void)
+{
+	const char *f = getenv("ARCADED_FAULT");
+	struct sigaction sa;
+
+	if (!f || !*f)
+		return UINT32_MAX;
+	if (strncmp(f, "hang-at:", 8) == 0) {
+		char *end;
+		unsigned long n = strtoul(f + 8, &end, 10);
+		if (*end == '\0' && end != f + 8 && n < UINT32_MAX) {
+			logf_("fault injection: the main loop hangs after tick %lu", n);
+			return (uint32_t)n;
+		}
+	} else if (strcmp(f, "sigusr2") == 0) {
+		memset(&sa, 0, sizeof(sa));
+		sigemptyset(&sa.sa_mask);
+		sa.sa_handler = on_fault;
+		sigaction(SIGUSR2, &sa, NULL);
+		logf_("fault injection: SIGUSR2 hangs the main loop");
+		return UINT32_MAX;
+	}
+	logf_("ARCADED_FAULT=%s not understood (hang-at:N or sigusr2); ignored", f);
+	return UINT32_MAX;
+}
+
+/* The injected hang: sleeps forever without pinging, until a stop signal
+ * (systemd's watchdog sends SIGABRT, which is fatal, not this). */
+static void fault_hang(void)
+{
+	logf_("fault injection: main loop hung");
+	while (!app_stop_sig)
+		sleep_until(in_now_ns() + 1000000000ull);
 }
 
 /* A crash must not leave the console in graphics mode: restore it (only
@@ -595,6 +644,7 @@ static int loop(struct app *a)
 {
 	uint64_t wd_interval = headless(a) ? 0 : svc_watchdog_interval_ns(), wd_next = 0;
 	uint64_t base = in_now_ns();
+	uint32_t hang_at = fault_setup();
 	int present_errors = 0;
 	uint32_t t = 0;
 
@@ -612,6 +662,8 @@ static int loop(struct app *a)
 		}
 		if (a->o->ticks && t >= a->o->ticks)
 			break;
+		if (t == hang_at || app_fault_req)
+			fault_hang();
 		if (a->scr && t > a->scr->end_tick)
 			break;
 		if (!a->o->fast && !headless(a)) {
