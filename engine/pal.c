@@ -88,9 +88,8 @@ static uint8_t pal_nearest(const struct pal *p, int r, int g, int b)
 	return (uint8_t)besti;
 }
 
-void pal_builtin(struct pal *p)
+void pal_make_colormaps(struct pal *p)
 {
-	pal_ramps(p);
 	for (int l = 0; l < PAL_LIGHTS; l++) {
 		int f = PAL_LIGHTS - l;
 
@@ -102,4 +101,10 @@ void pal_builtin(struct pal *p)
 			p->cmap[l][i] = pal_nearest(p, r, g, b);
 		}
 	}
+}
+
+void pal_builtin(struct pal *p)
+{
+	pal_ramps(p);
+	pal_make_colormaps(p);
 }

@@ -21,6 +21,12 @@ struct pal {
  * with integer nearest-colour search: deterministic). */
 void pal_builtin(struct pal *p);
 
+/* Fills p->cmap from p->rgb: colormap l scales each colour by
+ * (PAL_LIGHTS - l) / PAL_LIGHTS, rounded, and maps it to the nearest
+ * palette entry by squared RGB distance, ties to the lowest index. For a
+ * palette loaded without light tables (a WAD without COLORMAP). */
+void pal_make_colormaps(struct pal *p);
+
 /* Layout of the built-in palette: 16 ramps of 16 shades. Index
  * PAL_RGB(ramp, shade) with shade 0 the brightest and 15 the darkest of
  * that hue. Index 0 (PAL_GREY ramp, shade 0) is white and index 15 is
