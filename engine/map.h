@@ -113,6 +113,9 @@ struct map {
 	uint32_t num_vertices, num_sectors, num_sides, num_lines;
 	uint32_t num_segs, num_subsectors, num_nodes, num_things;
 	uint64_t content_hash;         /* over the level geometry and things */
+	uint32_t missing_textures;     /* texture/flat names a loader could not resolve
+					* (drawn as the fallback; map_wad.h); 0 for maps
+					* built in code. Not part of content_hash. */
 };
 
 /* Allocates an empty map with room for the given numbers of level objects

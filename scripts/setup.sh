@@ -16,6 +16,7 @@ systemd
 udev
 tmux
 valgrind
+freedoom
 "
 
 missing=""
