@@ -7,7 +7,14 @@
  *
  * Numbering, as map sides and sectors store it (map.h):
  *   - wall texture 0 is "no texture" (Doom's "-"); 1..num_textures-1 real;
+ *     texture 0 is a 1x1 fully transparent picture, never meant to be drawn;
  *   - flat 0 is a valid flat; sky ceilings use the flat sky_flat.
+ * From a WAD, textures 1.. are TEXTURE1's entries then TEXTURE2's, in lump
+ * order, then the fallback checker (fallback_tex); flats are in lump order
+ * over every F_START/F_END (FF_START/FF_END) range, a later flat of the same
+ * name replacing the earlier one's pixels in place, then the fallback flat.
+ * Sprite picture 0 is the fallback picture: a frame or rotation with no
+ * lump points at it, so every tex_sprframe entry is drawable.
  * Pictures are decoded once at load into plain arrays (no format parsing
  * while drawing): wall textures and sprites column-major, flats row-major.
  * Animations (Doom's fixed table of animated textures and flats) are
@@ -57,6 +64,16 @@ struct tex_sprite {
 	struct tex_sprframe *frames;
 };
 
+/* An animation: count textures (or flats) with consecutive indices from
+ * first, cycling every TEX_ANIM_TICKS (Doom's animated table, existing
+ * ranges only). */
+struct tex_anim {
+	uint8_t flat;                  /* 1: flats, 0: wall textures */
+	uint16_t first, count;
+};
+
+#define TEX_ANIM_TICKS 14              /* Doom's 8 tics at 35 Hz, at 60 Hz */
+
 struct tex_set {
 	struct pal pal;                /* palette and PAL_LIGHTS colormaps */
 	struct tex_pic *textures;      /* [0] is the empty "-" texture */
@@ -64,7 +81,9 @@ struct tex_set {
 	struct tex_flat *flats;
 	int num_flats;
 	int sky_flat;                  /* index of F_SKY1, -1 if none */
-	int sky_tex;                   /* wall texture drawn as the sky */
+	int sky_tex;                   /* wall texture drawn as the sky: SKY1, else
+					* fallback_tex; always valid. The app may set
+					* it to tex_find(t, "SKY2") etc. per episode. */
 	struct tex_pic *sprpics;
 	int num_sprpics;
 	struct tex_sprite *sprites;
@@ -72,6 +91,12 @@ struct tex_set {
 	uint16_t *tex_xlat;            /* current texture per texture (animation) */
 	uint16_t *flat_xlat;           /* current flat per flat */
 	uint32_t missing;              /* names that fell back (counted, drawn as a checker) */
+	/* Added for the map loader and animation (after the fields above, so
+	 * their layout is unchanged): */
+	int fallback_tex;              /* the checker texture an unknown name becomes */
+	int fallback_flat;             /* the checker flat an unknown flat name becomes */
+	struct tex_anim *anims;
+	int num_anims;
 };
 
 /* Loads everything from the layered WAD set. Problems that leave a
@@ -93,7 +118,9 @@ int tex_find_flat(const struct tex_set *t, const char *name);
 int tex_find_sprite(const struct tex_set *t, const char *name);
 
 /* Advances animations to game tick `tick` (Doom: every 8 tics at 35 Hz;
- * here every 14 ticks at 60 Hz), updating tex_xlat and flat_xlat. */
+ * here every TEX_ANIM_TICKS at 60 Hz), updating tex_xlat and flat_xlat:
+ * member k (0-based) of an animation of n shows member (tick /
+ * TEX_ANIM_TICKS + k) % n. A pure function of tick. */
 void tex_animate(struct tex_set *t, uint32_t tick);
 
 #endif
