@@ -31,8 +31,8 @@ int wad_add(struct wad *w, const uint8_t *data, size_t len, const char *name, ch
 /* Number of lumps over all files (later files after earlier ones). */
 int wad_count(const struct wad *w);
 
-/* Index of the last lump called name (case-insensitive, up to 8 chars),
- * or -1. */
+/* Index of the last lump called name (case-insensitive; a name of more
+ * than 8 chars matches nothing), or -1. */
 int wad_find(const struct wad *w, const char *name);
 
 /* Index of the first lump called name at or after index from, or -1 (for
@@ -45,9 +45,27 @@ const uint8_t *wad_data(const struct wad *w, int i, size_t *len);
 /* Lump name, NUL-terminated, upper case; "" for a bad index. */
 const char *wad_name(const struct wad *w, int i);
 
-/* Name of the file lump i came from. */
+/* Name of the file lump i came from ("" for a bad index); lumps of one
+ * file return the same pointer. */
 const char *wad_file(const struct wad *w, int i);
 
 void wad_free(struct wad *w);
+
+/* Little-endian field readers for lump parsers; p must have the bytes. */
+static inline uint16_t wad_u16(const uint8_t *p)
+{
+	return (uint16_t)(p[0] | p[1] << 8);
+}
+
+static inline int16_t wad_i16(const uint8_t *p)
+{
+	return (int16_t)wad_u16(p);
+}
+
+static inline int32_t wad_i32(const uint8_t *p)
+{
+	return (int32_t)((uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |
+			 (uint32_t)p[3] << 24);
+}
 
 #endif
