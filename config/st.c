@@ -1,0 +1,373 @@
+/*
+ * st: power-cut-safe state files. Why each step of st_save is there:
+ *  - the new bytes go to NAME.tmp and are fsynced before any name changes,
+ *    so a rename never publishes data that is not on disk;
+ *  - the current NAME is kept as NAME.prev only if it checks out: rotating
+ *    a corrupt NAME would push the last good copy out of .prev;
+ *  - .prev is made by a hard link and a rename, so NAME itself never
+ *    disappears (file systems without hard links fall back to renaming
+ *    NAME to NAME.prev: for that instant only .prev exists, and st_load
+ *    finds it);
+ *  - renaming NAME.tmp over NAME is atomic; the directory fsync then makes
+ *    the renames durable before st_save reports success.
+ */
+#include "config/st.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <inttypes.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static const uint8_t st_magic[8] = { 'A', 'R', 'C', 'D', 'S', 'T', 'A', '\0' };
+
+/* CRC-32 a nibble at a time: a 16-entry constant table, no set-up. */
+static const uint32_t st_crc_nibble[16] = {
+	0x00000000u, 0x1db71064u, 0x3b6e20c8u, 0x26d930acu, 0x76dc4190u, 0x6b6b51f4u,
+	0x4db26158u, 0x5005713cu, 0xedb88320u, 0xf00f9344u, 0xd6d6a3e8u, 0xcb61b38cu,
+	0x9b64c2b0u, 0x86d3d2d4u, 0xa00ae278u, 0xbdbdf21cu,
+};
+
+uint32_t st_crc32(uint32_t crc, const void *p, size_t n)
+{
+	const uint8_t *b = p;
+
+	crc = ~crc;
+	for (size_t i = 0; i < n; i++) {
+		crc ^= b[i];
+		crc = (crc >> 4) ^ st_crc_nibble[crc & 15];
+		crc = (crc >> 4) ^ st_crc_nibble[crc & 15];
+	}
+	return ~crc;
+}
+
+static void st_put16(uint8_t *p, uint16_t v)
+{
+	p[0] = (uint8_t)v;
+	p[1] = (uint8_t)(v >> 8);
+}
+
+static void st_put32(uint8_t *p, uint32_t v)
+{
+	for (int i = 0; i < 4; i++)
+		p[i] = (uint8_t)(v >> (8 * i));
+}
+
+static uint16_t st_get16(const uint8_t *p)
+{
+	return (uint16_t)(p[0] | (unsigned)p[1] << 8);
+}
+
+static uint32_t st_get32(const uint8_t *p)
+{
+	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+__attribute__((format(printf, 3, 4)))
+static void st_msg(char *msg, size_t msglen, const char *fmt, ...)
+{
+	va_list ap;
+
+	if (!msg || !msglen)
+		return;
+	va_start(ap, fmt);
+	vsnprintf(msg, msglen, fmt, ap);
+	va_end(ap);
+}
+
+void st_header(uint8_t out[ST_HEADER_SIZE], const void *payload, size_t len)
+{
+	memcpy(out, st_magic, sizeof(st_magic));
+	st_put16(out + 8, ST_VERSION);
+	st_put16(out + 10, ST_HEADER_SIZE);
+	st_put32(out + 12, (uint32_t)len);
+	st_put32(out + 16, st_crc32(0, payload, len));
+	st_put32(out + 20, st_crc32(0, out, 20));
+}
+
+int st_check(const uint8_t *img, size_t n, size_t *payload_len, char *why, size_t whylen)
+{
+	uint32_t len;
+
+	if (n < ST_HEADER_SIZE) {
+		st_msg(why, whylen, "too short (%zu bytes)", n);
+		return -EBADMSG;
+	}
+	if (memcmp(img, st_magic, sizeof(st_magic)) != 0) {
+		st_msg(why, whylen, "bad magic");
+		return -EBADMSG;
+	}
+	if (st_get32(img + 20) != st_crc32(0, img, 20)) {
+		st_msg(why, whylen, "header checksum mismatch");
+		return -EBADMSG;
+	}
+	if (st_get16(img + 8) != ST_VERSION || st_get16(img + 10) != ST_HEADER_SIZE) {
+		st_msg(why, whylen, "version %u (header size %u) not supported", st_get16(img + 8),
+		       st_get16(img + 10));
+		return -EBADMSG;
+	}
+	len = st_get32(img + 12);
+	if (len > ST_MAX_LEN || len != n - ST_HEADER_SIZE) {
+		st_msg(why, whylen, "length %" PRIu32 " does not match the file (%zu bytes of payload)",
+		       len, n - ST_HEADER_SIZE);
+		return -EBADMSG;
+	}
+	if (st_get32(img + 16) != st_crc32(0, img + ST_HEADER_SIZE, len)) {
+		st_msg(why, whylen, "payload checksum mismatch");
+		return -EBADMSG;
+	}
+	*payload_len = len;
+	return 0;
+}
+
+static int st_name_ok(const char *name)
+{
+	size_t n = strlen(name);
+
+	return n > 0 && n <= ST_NAME_MAX && !strchr(name, '/') && strcmp(name, ".") != 0 &&
+	       strcmp(name, "..") != 0;
+}
+
+static int st_write_all(int fd, const uint8_t *p, size_t n)
+{
+	while (n) {
+		ssize_t w = write(fd, p, n);
+
+		if (w < 0) {
+			if (errno == EINTR)
+				continue;
+			return -errno;
+		}
+		if (w == 0)
+			return -EIO;
+		p += w;
+		n -= (size_t)w;
+	}
+	return 0;
+}
+
+/* Reads the whole file NAME in dfd: 0 with *img (malloc'd) and *n, or
+ * -errno (-EFBIG when it is larger than any valid state file). */
+static int st_read_file(int dfd, const char *name, uint8_t **img, size_t *n)
+{
+	struct stat sb;
+	uint8_t *b = NULL;
+	size_t got = 0, size;
+	int fd, ret;
+
+	fd = openat(dfd, name, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+	if (fd < 0)
+		return -errno;
+	if (fstat(fd, &sb) < 0) {
+		ret = -errno;
+		goto out;
+	}
+	if (!S_ISREG(sb.st_mode)) {
+		ret = -EINVAL;
+		goto out;
+	}
+	if ((uint64_t)sb.st_size > (uint64_t)ST_HEADER_SIZE + ST_MAX_LEN) {
+		ret = -EFBIG;
+		goto out;
+	}
+	size = (size_t)sb.st_size;
+	/* One spare byte tells a file that grew since fstat. */
+	b = malloc(size + 1);
+	if (!b) {
+		ret = -ENOMEM;
+		goto out;
+	}
+	for (;;) {
+		ssize_t r = read(fd, b + got, size + 1 - got);
+
+		if (r < 0) {
+			if (errno == EINTR)
+				continue;
+			ret = -errno;
+			goto out;
+		}
+		if (r == 0)
+			break;
+		got += (size_t)r;
+		if (got > size) {
+			ret = -EAGAIN;
+			goto out;
+		}
+	}
+	*img = b;
+	*n = got;
+	b = NULL;
+	ret = 0;
+out:
+	free(b);
+	close(fd);
+	return ret;
+}
+
+/* 1 if NAME in dfd is a valid state file, 0 if missing or invalid, -errno
+ * on a read error other than a missing file. */
+static int st_valid(int dfd, const char *name)
+{
+	uint8_t *img;
+	size_t n, plen;
+	int ret;
+
+	ret = st_read_file(dfd, name, &img, &n);
+	if (ret == -ENOENT || ret == -EFBIG || ret == -EINVAL)
+		return 0;
+	if (ret < 0)
+		return ret;
+	ret = st_check(img, n, &plen, NULL, 0) == 0;
+	free(img);
+	return ret;
+}
+
+/* Makes prev a copy of the (valid) current file: hard link then rename, or
+ * a plain rename where hard links are not supported. */
+static int st_keep_prev(int dfd, const char *name, const char *prev, const char *prevtmp)
+{
+	if (unlinkat(dfd, prevtmp, 0) < 0 && errno != ENOENT)
+		return -errno;
+	if (linkat(dfd, name, dfd, prevtmp, 0) == 0) {
+		if (renameat(dfd, prevtmp, dfd, prev) < 0)
+			return -errno;
+		return 0;
+	}
+	if (errno != EPERM && errno != ENOTSUP && errno != EOPNOTSUPP && errno != EMLINK &&
+	    errno != ENOSYS)
+		return -errno;
+	if (renameat(dfd, name, dfd, prev) < 0)
+		return -errno;
+	return 0;
+}
+
+int st_save(const char *dir, const char *name, const void *data, size_t len)
+{
+	char tmp[ST_NAME_MAX + 16], prev[ST_NAME_MAX + 16], prevtmp[ST_NAME_MAX + 16];
+	uint8_t hdr[ST_HEADER_SIZE];
+	int dfd, fd = -1, ret;
+
+	if (!st_name_ok(name) || len > ST_MAX_LEN || (!data && len))
+		return -EINVAL;
+	snprintf(tmp, sizeof(tmp), "%s.tmp", name);
+	snprintf(prev, sizeof(prev), "%s.prev", name);
+	snprintf(prevtmp, sizeof(prevtmp), "%s.prev.tmp", name);
+	dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+	if (dfd < 0)
+		return -errno;
+
+	fd = openat(dfd, tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
+	if (fd < 0) {
+		ret = -errno;
+		goto out;
+	}
+	st_header(hdr, data, len);
+	ret = st_write_all(fd, hdr, sizeof(hdr));
+	if (ret == 0)
+		ret = st_write_all(fd, data, len);
+	if (ret == 0 && fsync(fd) < 0)
+		ret = -errno;
+	if (close(fd) < 0 && ret == 0 && errno != EINTR)
+		ret = -errno;
+	fd = -1;
+	if (ret < 0)
+		goto fail_unlink;
+
+	ret = st_valid(dfd, name);
+	if (ret < 0)
+		goto fail_unlink;
+	if (ret == 1) {
+		ret = st_keep_prev(dfd, name, prev, prevtmp);
+		if (ret < 0)
+			goto fail_unlink;
+	}
+	if (renameat(dfd, tmp, dfd, name) < 0) {
+		ret = -errno;
+		goto fail_unlink;
+	}
+	ret = fsync(dfd) < 0 ? -errno : 0;
+	goto out;
+fail_unlink:
+	unlinkat(dfd, tmp, 0);
+out:
+	close(dfd);
+	return ret;
+}
+
+/* Loads and checks one copy: 0 with the payload moved to the front of a
+ * malloc'd buffer, or -errno with the reason in why. */
+static int st_load_one(int dfd, const char *name, void **buf, size_t *len, char *why,
+		       size_t whylen)
+{
+	uint8_t *img;
+	size_t n, plen;
+	int ret;
+
+	ret = st_read_file(dfd, name, &img, &n);
+	if (ret == -EFBIG || ret == -EINVAL) {
+		st_msg(why, whylen, "%s", ret == -EFBIG ? "larger than any state file"
+							: "not a regular file");
+		return -EBADMSG;
+	}
+	if (ret < 0) {
+		st_msg(why, whylen, "%s", strerror(-ret));
+		return ret;
+	}
+	ret = st_check(img, n, &plen, why, whylen);
+	if (ret < 0) {
+		free(img);
+		return ret;
+	}
+	memmove(img, img + ST_HEADER_SIZE, plen);
+	*buf = img;
+	*len = plen;
+	return 0;
+}
+
+int st_load(const char *dir, const char *name, void **buf, size_t *len, enum st_which *which,
+	    char *msg, size_t msglen)
+{
+	char prev[ST_NAME_MAX + 16], why1[128], why2[128];
+	int dfd, r1, r2;
+
+	st_msg(msg, msglen, "%s", "");
+	if (!st_name_ok(name)) {
+		st_msg(msg, msglen, "bad state file name");
+		return -EINVAL;
+	}
+	snprintf(prev, sizeof(prev), "%s.prev", name);
+	dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+	if (dfd < 0) {
+		r1 = -errno;
+		st_msg(msg, msglen, "%s: %s", dir, strerror(-r1));
+		return r1;
+	}
+	r1 = st_load_one(dfd, name, buf, len, why1, sizeof(why1));
+	if (r1 == 0) {
+		if (which)
+			*which = ST_MAIN;
+		close(dfd);
+		return 0;
+	}
+	r2 = st_load_one(dfd, prev, buf, len, why2, sizeof(why2));
+	close(dfd);
+	if (r2 == 0) {
+		if (which)
+			*which = ST_PREV;
+		st_msg(msg, msglen, "%s: %s; loaded %s", name, why1, prev);
+		return 0;
+	}
+	st_msg(msg, msglen, "%s: %s; %s: %s", name, why1, prev, why2);
+	if (r1 == -ENOENT && r2 == -ENOENT)
+		return -ENOENT;
+	/* Corruption outranks a missing copy; a read error outranks both. */
+	if (r1 != -ENOENT && r1 != -EBADMSG)
+		return r1;
+	if (r2 != -ENOENT && r2 != -EBADMSG)
+		return r2;
+	return -EBADMSG;
+}
