@@ -66,8 +66,7 @@ static void pal_ramps(struct pal *p)
 	}
 }
 
-/* Index of the palette colour nearest to (r, g, b); ties to the lowest. */
-static uint8_t pal_nearest(const struct pal *p, int r, int g, int b)
+uint8_t pal_nearest(const struct pal *p, int r, int g, int b)
 {
 	int32_t best = INT32_MAX;
 	int besti = 0;

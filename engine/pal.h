@@ -27,6 +27,10 @@ void pal_builtin(struct pal *p);
  * palette loaded without light tables (a WAD without COLORMAP). */
 void pal_make_colormaps(struct pal *p);
 
+/* Index of the colour of p->rgb nearest to (r, g, b) by squared RGB
+ * distance, ties to the lowest index. */
+uint8_t pal_nearest(const struct pal *p, int r, int g, int b);
+
 /* Layout of the built-in palette: 16 ramps of 16 shades. Index
  * PAL_RGB(ramp, shade) with shade 0 the brightest and 15 the darkest of
  * that hue. Index 0 (PAL_GREY ramp, shade 0) is white and index 15 is
