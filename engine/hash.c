@@ -49,3 +49,12 @@ uint64_t hash_u64(uint64_t h, uint64_t v)
 		b[i] = (unsigned char)(v >> (8 * i));
 	return hash_bytes(h, b, sizeof b);
 }
+
+uint64_t hash_frame(const uint8_t *px, int w, int h, int pitch)
+{
+	uint64_t hv = HASH_INIT;
+
+	for (int y = 0; y < h; y++)
+		hv = hash_bytes(hv, px + (size_t)y * (size_t)pitch, (size_t)w);
+	return hv;
+}

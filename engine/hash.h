@@ -18,6 +18,10 @@ uint64_t hash_u8(uint64_t h, uint8_t v);
 uint64_t hash_u16(uint64_t h, uint16_t v);
 uint64_t hash_u32(uint64_t h, uint32_t v);
 uint64_t hash_u64(uint64_t h, uint64_t v);
+/* Frame hash, as `arcaded --replay` prints and recordings store: FNV-1a
+ * from HASH_INIT over the w bytes of each of the h rows, top to bottom,
+ * rows pitch bytes apart (bytes between rows are not hashed). */
+uint64_t hash_frame(const uint8_t *px, int w, int h, int pitch);
 static inline uint64_t hash_i32(uint64_t h, int32_t v) { return hash_u32(h, (uint32_t)v); }
 
 #endif

@@ -43,6 +43,21 @@ static void different_values_give_different_hashes(void **state)
 	assert_true(hash_u32(HASH_INIT, 1) != hash_u64(HASH_INIT, 1));
 }
 
+/* A 3x2 frame in a pitch of 5: hashed as its 6 pixels, padding ignored. */
+static void frame_hash_skips_row_padding(void **state)
+{
+	const uint8_t padded[10] = { 'a', 'b', 'c', 9, 9, 'd', 'e', 'f', 9, 9 };
+	const uint8_t other_pad[10] = { 'a', 'b', 'c', 1, 2, 'd', 'e', 'f', 3, 4 };
+	const uint64_t want = hash_bytes(HASH_INIT, "abcdef", 6);
+
+	(void)state;
+	assert_true(hash_frame(padded, 3, 2, 5) == want);
+	assert_true(hash_frame(other_pad, 3, 2, 5) == want);
+	assert_true(hash_frame((const uint8_t *)"abcdef", 3, 2, 3) == want);
+	assert_true(hash_frame(padded, 3, 1, 5) == hash_bytes(HASH_INIT, "abc", 3));
+	assert_true(hash_frame(padded, 0, 0, 5) == HASH_INIT);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -50,6 +65,7 @@ int main(void)
 		cmocka_unit_test(hashing_in_pieces_equals_hashing_at_once),
 		cmocka_unit_test(integers_hash_as_little_endian_bytes),
 		cmocka_unit_test(different_values_give_different_hashes),
+		cmocka_unit_test(frame_hash_skips_row_padding),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
