@@ -6,8 +6,19 @@
  * optional). Every count, offset and index is validated; an error names the
  * map, the lump and the entry ("E1M1: LINEDEFS entry 17: sidedef 900 out of
  * range (512 sidedefs)"). Texture and flat names are resolved against the
- * texture set; an unknown name becomes the fallback and is counted. A map
- * without (valid) NODES/SEGS/SSECTORS gets its BSP from the node builder.
+ * texture set; an unknown name becomes the fallback (tex_set.fallback_tex
+ * or fallback_flat) and is counted in map.missing_textures; "-" or an empty
+ * name is texture 0. A map whose SEGS or SSECTORS are empty, whose NODES are
+ * empty with more than one subsector, or whose NODES are in ZDoom's
+ * extended formats (XNOD, ZNOD, XGLN, ...) gets its BSP from the node
+ * builder; BSP lumps in Doom's format are used as they are, and any bad
+ * entry in them is an error. REJECT and BLOCKMAP are not read.
+ *
+ * Normalised as Doom behaves, not refused: a linedef's two-sided flag is
+ * set exactly when it has a back sidedef; a sector whose ceiling is below
+ * its floor gets its floor lowered to the ceiling; a thing beyond
+ * MAP_COORD_MAX is left out. Sky ceilings keep their flat (tex_set.sky_flat
+ * tells the renderer). Hexen-format and UDMF maps are refused (-EINVAL).
  */
 #ifndef ARCADED_ENGINE_MAP_WAD_H
 #define ARCADED_ENGINE_MAP_WAD_H
