@@ -1,0 +1,57 @@
+/*
+ * grid: Wolfenstein-style ASCII tile maps imported into the level model.
+ *
+ * A grid map is text: a legend that defines tile characters, a line "map",
+ * then rows of tile characters (the first row is the north edge). One tile
+ * is GRID_TILE (64) map units square. The import turns every 4-connected
+ * region of open tiles with the same surface (floor, ceiling, light, flats,
+ * edge texture, special, tag) into one sector, puts a one-sided wall where
+ * an open tile meets a wall tile, a two-sided line where two different open
+ * regions meet (steps, windows, lintels), merges collinear edges of the same
+ * kind into one line, places things at tile centres, and finishes the map
+ * with map_finish (the node builder makes its BSP), so a grid map goes
+ * through the same sim and renderer as any other. Syntax: docs/grid.md.
+ *
+ * Pure engine code: text in, map out, no I/O. Errors name the place:
+ * "grid.txt:7:12: unknown tile 'x'".
+ */
+#ifndef ARCADED_ENGINE_GRID_H
+#define ARCADED_ENGINE_GRID_H
+
+#include <stddef.h>
+
+struct map;
+
+#define GRID_TILE 64                   /* map units per tile */
+#define GRID_MAX_DIM 255               /* rows and columns: keeps coordinates
+					* inside MAP_COORD_MAX */
+
+/* Texture and flat names to numbers, as the caller's texture set numbers
+ * them (tex_find / tex_find_flat wrapped; map.h "Textures"). Each returns
+ * the number (>= 0) or a negative value for an unknown name, which the
+ * parser reports as an error at the name ("unknown texture 'FOO'"); a
+ * caller that prefers Doom's fallback behaviour returns its fallback
+ * number instead and counts. A token made only of digits is always taken
+ * as a number and never looked up. Either pointer, or the whole struct, may
+ * be NULL: then only numbers are accepted. */
+struct grid_names {
+	void *ctx;
+	int (*wall)(void *ctx, const char *name);
+	int (*flat)(void *ctx, const char *name);
+};
+
+/* Parses len bytes of text (need not be NUL-terminated) named `name` (for
+ * messages, e.g. the file name) into a new finished map. names may be NULL.
+ * Returns 0, -EINVAL with err holding "name:line:column: what is wrong"
+ * (line and column 1-based; "name: ..." for whole-map errors such as a
+ * missing player start), or -ENOMEM. err may be NULL. The map is the
+ * caller's: map_free. */
+int grid_parse(const char *text, size_t len, const char *name, const struct grid_names *names,
+	       struct map **out, char *err, size_t errlen);
+
+/* The built-in grid level's text (levels/grid1.txt is the same text) and
+ * its length. Its textures are numbers of the built-in palette-colour
+ * scheme (map.h "Textures"). */
+const char *grid_builtin_text(size_t *len);
+
+#endif
