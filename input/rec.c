@@ -20,9 +20,11 @@ static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 
 /* Header sizes above this are refused as garbage rather than skipped. */
 #define REC_HEADER_SIZE_MAX 65536u
-/* Commands buffered by the writer: 680 * 6 = 4080 bytes, so every flush
- * ends on a command boundary. */
-#define REC_WBUF_CMDS 680
+/* Bytes buffered by the writer and the reader. Records go in whole, so
+ * every flush ends on a record boundary. */
+#define REC_BUF 4096
+/* Largest render size a header may name (r_new's limit). */
+#define REC_RENDER_MAX 4096
 
 static void rec_put16(uint8_t *p, uint16_t v)
 {
@@ -69,19 +71,37 @@ static void rec_msg(char *err, size_t errlen, const char *fmt, ...)
 	va_end(ap);
 }
 
-void rec_header_encode(uint8_t out[REC_HEADER_SIZE], const struct rec_header *h)
+size_t rec_record_size(uint8_t hash_flags)
 {
-	memset(out, 0, REC_HEADER_SIZE);
+	return REC_CMD_SIZE + (hash_flags & REC_HAS_STATE ? 8u : 0u) +
+	       (hash_flags & REC_HAS_FRAME ? 8u : 0u);
+}
+
+size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
+{
+	size_t size = h->version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE;
+
+	memset(out, 0, size);
 	memcpy(out, rec_magic, sizeof(rec_magic));
 	rec_put16(out + 8, h->version);
 	rec_put16(out + 10, h->tick_rate);
-	rec_put32(out + 12, REC_HEADER_SIZE);
+	rec_put32(out + 12, (uint32_t)size);
 	rec_put64(out + 16, h->map_hash);
 	rec_put32(out + 24, h->engine_version);
 	out[28] = h->set.coins_per_credit;
 	out[29] = h->set.freeplay;
 	out[30] = h->set.start_in_play;
 	rec_put32(out + 32, h->count);
+	if (size == REC_HEADER_SIZE)
+		return size;
+	rec_put16(out + 40, h->render_w);
+	rec_put16(out + 42, h->render_h);
+	out[44] = h->hash_flags;
+	out[45] = h->level;
+	rec_put32(out + 48, h->render_version);
+	memcpy(out + 56, h->map_name, strnlen(h->map_name, 8));
+	rec_put64(out + 64, (uint64_t)h->start_time);
+	return size;
 }
 
 int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char *err,
@@ -112,14 +132,19 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		rec_msg(err, errlen, "version 0 is not a valid version");
 		return -EINVAL;
 	}
-	if (d.version > REC_VERSION) {
+	if (d.version > REC_VERSION_MAX) {
 		rec_msg(err, errlen, "version %u is newer than this build (%d)", d.version,
-			REC_VERSION);
+			REC_VERSION_MAX);
 		return -EINVAL;
 	}
-	if (d.header_size < REC_HEADER_SIZE) {
+	if (d.version >= REC_VERSION_2 && len < REC_HEADER_SIZE_V2) {
+		rec_msg(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
+			REC_HEADER_SIZE_V2);
+		return -EINVAL;
+	}
+	if (d.header_size < (d.version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE)) {
 		rec_msg(err, errlen, "header size %" PRIu32 " is smaller than %d", d.header_size,
-			REC_HEADER_SIZE);
+			d.version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE);
 		return -EINVAL;
 	}
 	if (d.header_size > REC_HEADER_SIZE_MAX) {
@@ -140,6 +165,33 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		rec_msg(err, errlen, "freeplay %u / start_in_play %u is not 0 or 1",
 			d.set.freeplay, d.set.start_in_play);
 		return -EINVAL;
+	}
+	if (d.version >= REC_VERSION_2) {
+		d.render_w = rec_get16(buf + 40);
+		d.render_h = rec_get16(buf + 42);
+		d.hash_flags = buf[44];
+		d.level = buf[45];
+		d.render_version = rec_get32(buf + 48);
+		memcpy(d.map_name, buf + 56, 8);
+		d.map_name[8] = '\0';
+		d.start_time = (int64_t)rec_get64(buf + 64);
+		if (d.hash_flags & ~(REC_HAS_STATE | REC_HAS_FRAME)) {
+			rec_msg(err, errlen, "hash flags 0x%02x unknown", d.hash_flags);
+			return -EINVAL;
+		}
+		if (d.render_w > REC_RENDER_MAX || d.render_h > REC_RENDER_MAX ||
+		    (d.render_w == 0) != (d.render_h == 0)) {
+			rec_msg(err, errlen, "render size %ux%u out of range", d.render_w,
+				d.render_h);
+			return -EINVAL;
+		}
+		for (int i = 0; i < 8; i++) {
+			unsigned char ch = (unsigned char)d.map_name[i];
+			if (ch != 0 && (ch < 0x21 || ch > 0x7e)) {
+				rec_msg(err, errlen, "map name is not printable ASCII");
+				return -EINVAL;
+			}
+		}
 	}
 	*h = d;
 	return 0;
@@ -216,28 +268,38 @@ struct rec_writer {
 	int fd;
 	int err;                 /* first failure, returned from then on */
 	uint32_t count;
+	uint8_t flags;           /* hash flags of the header */
+	size_t recsize;
 	size_t n;                /* bytes pending in buf */
-	uint8_t buf[REC_WBUF_CMDS * REC_CMD_SIZE];
+	uint8_t buf[REC_BUF];
 };
 
 int rec_writer_open(const char *path, const struct rec_header *h, struct rec_writer **out)
 {
-	uint8_t hdr[REC_HEADER_SIZE];
-	struct rec_header hh = *h;
+	uint8_t hdr[REC_HEADER_MAX];
+	struct rec_header hh = *h, back;
 	struct rec_writer *w;
+	size_t size;
 	int ret;
 
+	if (hh.version < REC_VERSION_2)
+		hh.hash_flags = 0;
+	hh.count = REC_COUNT_UNKNOWN;
+	size = rec_header_encode(hdr, &hh);
+	/* Never write what the reader would refuse. */
+	if (rec_header_decode(hdr, size, &back, NULL, 0) < 0)
+		return -EINVAL;
 	w = calloc(1, sizeof(*w));
 	if (!w)
 		return -ENOMEM;
+	w->flags = hh.hash_flags;
+	w->recsize = rec_record_size(hh.hash_flags);
 	w->fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
 	if (w->fd < 0) {
 		ret = -errno;
 		goto fail_free;
 	}
-	hh.count = REC_COUNT_UNKNOWN;
-	rec_header_encode(hdr, &hh);
-	ret = rec_write_all(w->fd, hdr, sizeof(hdr));
+	ret = rec_write_all(w->fd, hdr, size);
 	if (ret < 0)
 		goto fail_close;
 	*out = w;
@@ -258,19 +320,38 @@ int rec_writer_flush(struct rec_writer *w)
 	return w->err;
 }
 
-int rec_writer_put(struct rec_writer *w, const struct sim_cmd *c)
+int rec_writer_put_tick(struct rec_writer *w, const struct rec_tick *t)
 {
+	uint8_t *p;
+
 	if (w->err)
 		return w->err;
 	/* The count must never reach the "unknown" marker. */
 	if (w->count >= REC_COUNT_UNKNOWN - 1)
 		return -EFBIG;
-	if (w->n + REC_CMD_SIZE > sizeof(w->buf) && rec_writer_flush(w) < 0)
+	if (w->n + w->recsize > sizeof(w->buf) && rec_writer_flush(w) < 0)
 		return w->err;
-	rec_cmd_encode(w->buf + w->n, c);
-	w->n += REC_CMD_SIZE;
+	p = w->buf + w->n;
+	rec_cmd_encode(p, &t->cmd);
+	p += REC_CMD_SIZE;
+	if (w->flags & REC_HAS_STATE) {
+		rec_put64(p, t->state_hash);
+		p += 8;
+	}
+	if (w->flags & REC_HAS_FRAME)
+		rec_put64(p, t->frame_hash);
+	w->n += w->recsize;
 	w->count++;
 	return 0;
+}
+
+int rec_writer_put(struct rec_writer *w, const struct sim_cmd *c)
+{
+	struct rec_tick t = { .cmd = *c };
+
+	if (w->flags)
+		return -EINVAL;
+	return rec_writer_put_tick(w, &t);
 }
 
 int rec_writer_close(struct rec_writer *w)
@@ -302,16 +383,17 @@ int rec_writer_close(struct rec_writer *w)
 struct rec_reader {
 	int fd;
 	struct rec_header h;
-	uint32_t total;          /* commands next returns in all */
-	uint32_t pos;            /* commands returned so far */
+	size_t recsize;
+	uint32_t total;          /* records next returns in all */
+	uint32_t pos;            /* records returned so far */
 	bool damaged;            /* finished, yet shorter than its count */
 	size_t bn, bi;           /* bytes in buf, next byte */
-	uint8_t buf[REC_WBUF_CMDS * REC_CMD_SIZE];
+	uint8_t buf[REC_BUF];
 };
 
 int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t errlen)
 {
-	uint8_t hdr[REC_HEADER_SIZE];
+	uint8_t hdr[REC_HEADER_MAX];
 	char why[160];
 	struct rec_reader *r;
 	struct stat sb;
@@ -357,7 +439,8 @@ int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t
 		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
 		goto fail_close;
 	}
-	whole = ((uint64_t)sb.st_size - r->h.header_size) / REC_CMD_SIZE;
+	r->recsize = rec_record_size(r->h.hash_flags);
+	whole = ((uint64_t)sb.st_size - r->h.header_size) / r->recsize;
 	if (r->h.count == REC_COUNT_UNKNOWN) {
 		/* Cut short while recording: everything whole replays. */
 		r->total = whole < REC_COUNT_UNKNOWN ? (uint32_t)whole : REC_COUNT_UNKNOWN - 1;
@@ -386,11 +469,13 @@ uint32_t rec_reader_count(const struct rec_reader *r)
 	return r->total;
 }
 
-int rec_reader_next(struct rec_reader *r, struct sim_cmd *c)
+int rec_reader_next_tick(struct rec_reader *r, struct rec_tick *t)
 {
+	const uint8_t *p;
+
 	if (r->pos == r->total)
 		return r->damaged ? -EIO : 0;
-	if (r->bn - r->bi < REC_CMD_SIZE) {
+	if (r->bn - r->bi < r->recsize) {
 		/* Refill, keeping a partial command's bytes at the front. */
 		size_t keep = r->bn - r->bi;
 		ssize_t got;
@@ -403,13 +488,33 @@ int rec_reader_next(struct rec_reader *r, struct sim_cmd *c)
 			return (int)got;
 		r->bn += (size_t)got;
 		/* The file shrank since open. */
-		if (r->bn < REC_CMD_SIZE)
+		if (r->bn < r->recsize)
 			return -EIO;
 	}
-	rec_cmd_decode(r->buf + r->bi, c);
-	r->bi += REC_CMD_SIZE;
+	p = r->buf + r->bi;
+	rec_cmd_decode(p, &t->cmd);
+	p += REC_CMD_SIZE;
+	t->state_hash = 0;
+	t->frame_hash = 0;
+	if (r->h.hash_flags & REC_HAS_STATE) {
+		t->state_hash = rec_get64(p);
+		p += 8;
+	}
+	if (r->h.hash_flags & REC_HAS_FRAME)
+		t->frame_hash = rec_get64(p);
+	r->bi += r->recsize;
 	r->pos++;
 	return 1;
+}
+
+int rec_reader_next(struct rec_reader *r, struct sim_cmd *c)
+{
+	struct rec_tick t;
+	int ret = rec_reader_next_tick(r, &t);
+
+	if (ret > 0)
+		*c = t.cmd;
+	return ret;
 }
 
 void rec_reader_close(struct rec_reader *r)
@@ -439,4 +544,168 @@ int rec_check(const struct rec_header *h, uint64_t map_hash, char *err, size_t e
 		return 0;
 	rec_msg(err, errlen, "%s", buf);
 	return -EINVAL;
+}
+
+/* Appends "; " (unless first) and a formatted part to buf of size len at
+ * *n, never past the end. */
+__attribute__((format(printf, 4, 5)))
+static void rec_join(char *buf, size_t len, size_t *n, const char *fmt, ...)
+{
+	va_list ap;
+	int w;
+
+	if (*n >= len - 1)
+		return;
+	if (*n) {
+		w = snprintf(buf + *n, len - *n, "; ");
+		*n += (size_t)w < len - *n ? (size_t)w : len - 1 - *n;
+	}
+	va_start(ap, fmt);
+	w = vsnprintf(buf + *n, len - *n, fmt, ap);
+	va_end(ap);
+	if (w > 0)
+		*n += (size_t)w < len - *n ? (size_t)w : len - 1 - *n;
+}
+
+static bool rec_frames_comparable(const struct rec_header *h, const struct rec_run *run)
+{
+	return (h->hash_flags & REC_HAS_FRAME) && run->render_w != 0;
+}
+
+int rec_check_run(const struct rec_header *h, const struct rec_run *run, char *err,
+		  size_t errlen)
+{
+	const char *name = run->map_name ? run->map_name : "";
+	char buf[512];
+	size_t n = 0;
+
+	buf[0] = '\0';
+	if (h->map_hash != run->map_hash)
+		rec_join(buf, sizeof(buf), &n,
+			 "map content differs: recording 0x%016" PRIx64 ", loaded 0x%016" PRIx64,
+			 h->map_hash, run->map_hash);
+	if (h->engine_version != REC_ENGINE_VERSION)
+		rec_join(buf, sizeof(buf), &n,
+			 "engine version differs: recording %" PRIu32 ", this build %d",
+			 h->engine_version, REC_ENGINE_VERSION);
+	if (h->set.coins_per_credit != run->set.coins_per_credit)
+		rec_join(buf, sizeof(buf), &n,
+			 "settings differ: coins_per_credit recording %u, this run %u",
+			 h->set.coins_per_credit, run->set.coins_per_credit);
+	if (h->set.freeplay != run->set.freeplay)
+		rec_join(buf, sizeof(buf), &n, "settings differ: freeplay recording %u, this run %u",
+			 h->set.freeplay, run->set.freeplay);
+	if (h->set.start_in_play != run->set.start_in_play)
+		rec_join(buf, sizeof(buf), &n,
+			 "settings differ: start_in_play recording %u, this run %u",
+			 h->set.start_in_play, run->set.start_in_play);
+	if (h->level && h->level != run->level)
+		rec_join(buf, sizeof(buf), &n, "level differs: recording %u, loaded %u", h->level,
+			 run->level);
+	if (h->map_name[0] && strcmp(h->map_name, name) != 0)
+		rec_join(buf, sizeof(buf), &n, "map differs: recording %s, loaded %s", h->map_name,
+			 name[0] ? name : "(a built-in level)");
+	if (rec_frames_comparable(h, run)) {
+		if (h->render_w != run->render_w || h->render_h != run->render_h)
+			rec_join(buf, sizeof(buf), &n,
+				 "render size differs: recording %ux%u, this run %ux%u",
+				 h->render_w, h->render_h, run->render_w, run->render_h);
+		if (h->render_version != REC_RENDER_VERSION)
+			rec_join(buf, sizeof(buf), &n,
+				 "renderer version differs: recording %" PRIu32 ", this build %d",
+				 h->render_version, REC_RENDER_VERSION);
+	}
+	if (n == 0)
+		return 0;
+	rec_msg(err, errlen, "%s", buf);
+	return -EINVAL;
+}
+
+void rec_run_from_header(const struct rec_header *h, struct rec_run *run)
+{
+	memset(run, 0, sizeof(*run));
+	run->set = h->set;
+	run->render_w = h->render_w;
+	run->render_h = h->render_h;
+	run->level = h->level;
+	run->map_name = h->map_name;
+}
+
+void rec_verify_init(struct rec_verify *v, const struct rec_header *h, const struct rec_run *run)
+{
+	memset(v, 0, sizeof(*v));
+	v->first_bad = -1;
+	v->compare = h->hash_flags & REC_HAS_STATE;
+	if (!(h->hash_flags & REC_HAS_FRAME))
+		return;
+	if (run->render_w == 0)
+		rec_msg(v->note, sizeof(v->note), "frame hashes not compared: not rendering");
+	else if (h->render_w != run->render_w || h->render_h != run->render_h)
+		rec_msg(v->note, sizeof(v->note),
+			"frame hashes not compared: recorded at %ux%u, rendering %ux%u",
+			h->render_w, h->render_h, run->render_w, run->render_h);
+	else if (h->render_version != REC_RENDER_VERSION)
+		rec_msg(v->note, sizeof(v->note),
+			"frame hashes not compared: drawn by renderer version %" PRIu32
+			", this build draws version %d",
+			h->render_version, REC_RENDER_VERSION);
+	else
+		v->compare |= REC_HAS_FRAME;
+}
+
+int rec_verify_tick(struct rec_verify *v, uint32_t tick, const struct rec_tick *rec,
+		    uint64_t state, uint64_t frame)
+{
+	bool sbad = false, fbad = false;
+
+	v->ticks++;
+	if (v->compare & REC_HAS_STATE) {
+		v->state_checked++;
+		sbad = rec->state_hash != state;
+		v->state_bad += sbad;
+	}
+	if (v->compare & REC_HAS_FRAME) {
+		v->frame_checked++;
+		fbad = rec->frame_hash != frame;
+		v->frame_bad += fbad;
+	}
+	if (!sbad && !fbad)
+		return 0;
+	if (v->first_bad < 0) {
+		v->first_bad = tick;
+		if (sbad)
+			rec_msg(v->first, sizeof(v->first),
+				"state hash recording 0x%016" PRIx64 ", replay 0x%016" PRIx64,
+				rec->state_hash, state);
+		else
+			rec_msg(v->first, sizeof(v->first),
+				"frame hash recording 0x%016" PRIx64 ", replay 0x%016" PRIx64
+				" (state hashes equal)",
+				rec->frame_hash, frame);
+	}
+	return -EDOM;
+}
+
+int rec_verify_summary(const struct rec_verify *v, char *buf, size_t len)
+{
+	char note[sizeof(v->note) + 4] = "";
+	int ret;
+
+	if (v->note[0])
+		snprintf(note, sizeof(note), " (%s)", v->note);
+	if (v->first_bad >= 0) {
+		rec_msg(buf, len,
+			"verify: FAILED: first difference at tick %" PRId64 ": %s; %" PRIu32
+			" state and %" PRIu32 " frame hashes differ of %" PRIu32 " ticks%s",
+			v->first_bad, v->first, v->state_bad, v->frame_bad, v->ticks, note);
+		return -EDOM;
+	}
+	ret = v->state_checked + v->frame_checked ? 0 : 1;
+	if (ret)
+		rec_msg(buf, len, "verify: %" PRIu32 " ticks, nothing compared: the recording "
+			"holds no hashes%s", v->ticks, note);
+	else
+		rec_msg(buf, len, "verify: %" PRIu32 " ticks, %" PRIu32 " state and %" PRIu32
+			" frame hashes equal%s", v->ticks, v->state_checked, v->frame_checked, note);
+	return ret;
 }

@@ -1,26 +1,43 @@
 /*
- * rec: the recording format: one sim_cmd per tick after a versioned header.
+ * rec: the recording format: one record per tick after a versioned header.
  *
- * Layout (all integers little-endian, explicit offsets, never struct dumps):
+ * Version 1 (all integers little-endian, explicit offsets, never struct
+ * dumps):
  *   0  8  magic "ARCDREC\0"
- *   8  2  format version (REC_VERSION)
+ *   8  2  format version (1 or 2)
  *  10  2  tick rate (60)
  *  12  4  header size in bytes (REC_HEADER_SIZE for version 1)
  *  16  8  content hash of the map (map.content_hash)
  *  24  4  engine version (REC_ENGINE_VERSION: bumped when the sim changes)
  *  28  1  coins_per_credit   29 1 freeplay   30 1 start_in_play   31 1 reserved 0
- *  32  4  number of commands, or 0xffffffff if the writer did not finish
+ *  32  4  number of records, or 0xffffffff if the writer did not finish
  *  36  4  reserved 0
- *  40  ... commands, REC_CMD_SIZE bytes each:
+ *  40  ... records: the command, REC_CMD_SIZE bytes:
  *        int8 forward, int8 side, int16 turn, uint8 buttons, uint8 coins
+ *
+ * Version 2 keeps bytes 0..39 and adds (header size REC_HEADER_SIZE_V2):
+ *  40  2  render width    42 2 render height (0: unknown)
+ *  44  1  hash flags: REC_HAS_STATE, REC_HAS_FRAME
+ *  45  1  built-in level number 1..99, 0 for a map loaded from a file
+ *  46  2  reserved 0
+ *  48  4  renderer version (REC_RENDER_VERSION: bumped when frames change)
+ *  52  4  reserved 0
+ *  56  8  map name, NUL-padded ("MAP01"; empty for a built-in level)
+ *  64  8  start time, seconds since 1970 (0: unknown; never read by replay)
+ *  72  8  reserved 0
+ *  80  ... records: the command, then the state hash (8 bytes) if
+ *        REC_HAS_STATE, then the frame hash (8 bytes) if REC_HAS_FRAME:
+ *        sim_hash after the tick ran, and hash_frame of the frame rendered
+ *        after it, exactly what `arcaded --replay` prints for that tick.
+ *
  * The writer puts 0xffffffff in the count and writes the real count only
  * when it closes, so a recording cut short (power loss, crash) is
- * recognisable and replays up to its last whole command. A finished
- * recording (count known) that holds fewer commands than its count was
- * damaged afterwards: its whole commands replay, then the reader reports
- * -EIO. Bytes after the counted commands, and a partial last command, are
- * ignored. A header larger than REC_HEADER_SIZE (a later minor addition)
- * is skipped.
+ * recognisable and replays up to its last whole record. A finished
+ * recording (count known) that holds fewer records than its count was
+ * damaged afterwards: its whole records replay, then the reader reports
+ * -EIO. Bytes after the counted records, and a partial last record, are
+ * ignored. A header larger than the version's size (a later minor
+ * addition) is skipped.
  */
 #ifndef ARCADED_INPUT_REC_H
 #define ARCADED_INPUT_REC_H
@@ -30,11 +47,22 @@
 
 #include "engine/sim.h"
 
-#define REC_VERSION 1
+#define REC_VERSION 1               /* commands only (see REC_VERSION_2) */
+#define REC_VERSION_2 2             /* run description and per-tick hashes */
+#define REC_VERSION_MAX 2           /* newest version this build reads */
 #define REC_ENGINE_VERSION 1
-#define REC_HEADER_SIZE 40
+/* Bumped whenever the renderer draws any frame differently (engine/r_*.c,
+ * textures, palette): recorded frame hashes of another renderer version
+ * are not compared. */
+#define REC_RENDER_VERSION 1
+#define REC_HEADER_SIZE 40          /* version 1 */
+#define REC_HEADER_SIZE_V2 80
+#define REC_HEADER_MAX 80
 #define REC_CMD_SIZE 6
+#define REC_RECORD_MAX 22           /* command and both hashes */
 #define REC_COUNT_UNKNOWN 0xffffffffu
+#define REC_HAS_STATE 0x01
+#define REC_HAS_FRAME 0x02
 
 struct rec_header {
 	uint16_t version;
@@ -44,15 +72,34 @@ struct rec_header {
 	uint32_t engine_version;
 	struct sim_settings set;
 	uint32_t count;            /* REC_COUNT_UNKNOWN while being written */
+	/* Version 2 only; 0 / "" when read from version 1. */
+	uint16_t render_w, render_h;
+	uint8_t hash_flags;        /* REC_HAS_STATE | REC_HAS_FRAME */
+	uint8_t level;             /* built-in level, 0: a map from a file */
+	uint32_t render_version;
+	char map_name[9];
+	int64_t start_time;
 };
 
-/* Writes h as the 40-byte header (header size REC_HEADER_SIZE whatever
- * h->header_size says). */
-void rec_header_encode(uint8_t out[REC_HEADER_SIZE], const struct rec_header *h);
+/* One tick as stored: the command and, where the header's hash_flags say
+ * so, the hashes after the tick (0 where not stored). */
+struct rec_tick {
+	struct sim_cmd cmd;
+	uint64_t state_hash, frame_hash;
+};
+
+/* Bytes of one record for these hash flags: 6, 14 or 22. */
+size_t rec_record_size(uint8_t hash_flags);
+
+/* Writes h as the header of its version (h->version 1: 40 bytes, 2: 80
+ * bytes; the header size field is that size whatever h->header_size says)
+ * into out (REC_HEADER_MAX bytes); returns the size written. */
+size_t rec_header_encode(uint8_t *out, const struct rec_header *h);
 /* Parses and checks a header from len bytes: 0, or -EINVAL with the reason
  * in err ("file too short (12 bytes, the header needs 40)", "bad magic",
- * "version 7 is newer than this build (1)", "header size 8 is smaller than
- * 40", "tick rate 50 is not 60", "coins_per_credit 0 out of range 1..9").
+ * "version 7 is newer than this build (2)", "header size 8 is smaller than
+ * 40", "tick rate 50 is not 60", "coins_per_credit 0 out of range 1..9",
+ * "hash flags 0x04 unknown", "render size 5000x240 out of range").
  * The map hash and engine version are not judged here: see rec_check. */
 int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char *err,
 		      size_t errlen);
@@ -60,13 +107,20 @@ void rec_cmd_encode(uint8_t out[REC_CMD_SIZE], const struct sim_cmd *c);
 void rec_cmd_decode(const uint8_t in[REC_CMD_SIZE], struct sim_cmd *c);
 
 struct rec_writer;
-/* Creates path (truncating, mode 0644, O_CLOEXEC) and writes the header
- * with count REC_COUNT_UNKNOWN. 0 or -errno. */
+/* Creates path (truncating, mode 0644, O_CLOEXEC) and writes the header of
+ * h->version (1 or 2; hash flags only in version 2) with count
+ * REC_COUNT_UNKNOWN. 0, -EINVAL for a header that could not be read back,
+ * or -errno. */
 int rec_writer_open(const char *path, const struct rec_header *h, struct rec_writer **out);
 /* Appends one command (buffered: written when about 4 KiB are pending, on
  * rec_writer_flush and on close). 0 or -errno; -EFBIG after 2^32-2
- * commands. Once a write fails, every later call returns that error. */
+ * commands; -EINVAL if the header asks for hashes (use rec_writer_put_tick).
+ * Once a write fails, every later call returns that error. */
 int rec_writer_put(struct rec_writer *w, const struct sim_cmd *c);
+/* Appends one tick: the command and the hashes the header's hash_flags
+ * ask for (the others are ignored). Same buffering and errors as
+ * rec_writer_put. */
+int rec_writer_put_tick(struct rec_writer *w, const struct rec_tick *t);
 /* Writes the pending commands to the file (no fsync). 0 or -errno. */
 int rec_writer_flush(struct rec_writer *w);
 /* Writes the final count, fsyncs and closes; NULL-safe. 0 or -errno. */
@@ -74,14 +128,16 @@ int rec_writer_close(struct rec_writer *w);
 
 struct rec_reader;
 /* Opens and checks a recording; 0 or -errno / -EINVAL with reason in err
- * ("FILE: bad magic", "FILE: version 7 is newer than this build (1)"). */
+ * ("FILE: bad magic", "FILE: version 7 is newer than this build (2)"). */
 int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t errlen);
 const struct rec_header *rec_reader_header(const struct rec_reader *r);
-/* How many commands rec_reader_next returns in all. */
+/* How many records rec_reader_next returns in all. */
 uint32_t rec_reader_count(const struct rec_reader *r);
 /* 1 and *c filled, 0 at the end, -errno on a read error; -EIO at the end
- * of a finished recording that holds fewer commands than its count. */
+ * of a finished recording that holds fewer records than its count. */
 int rec_reader_next(struct rec_reader *r, struct sim_cmd *c);
+/* As rec_reader_next, with the stored hashes (0 where not stored). */
+int rec_reader_next_tick(struct rec_reader *r, struct rec_tick *t);
 /* NULL-safe. */
 void rec_reader_close(struct rec_reader *r);
 
@@ -90,5 +146,67 @@ void rec_reader_close(struct rec_reader *r);
  * "; " ("map content differs: recording 0x..., loaded 0x...; engine
  * version differs: recording 2, this build 1"). */
 int rec_check(const struct rec_header *h, uint64_t map_hash, char *err, size_t errlen);
+
+/* What a replay actually runs, to compare with a recording's header. */
+struct rec_run {
+	uint64_t map_hash;             /* content hash of the loaded map */
+	struct sim_settings set;       /* the sim's settings */
+	uint16_t render_w, render_h;   /* frame size drawn (0: not rendering) */
+	uint8_t level;                 /* built-in level, 0: a map from a file */
+	const char *map_name;          /* for a map from a file; NULL or "" */
+};
+
+/* rec_check for everything a replay depends on: the map content, engine
+ * version and settings always; the level (or map name) when the recording
+ * names one; and, when the recording holds frame hashes and run renders,
+ * the render size and renderer version. 0 if the recording replays here
+ * and its hashes can be compared, else -EINVAL and every difference joined
+ * by "; " ("settings differ: coins_per_credit recording 2, this run 1";
+ * "render size differs: recording 320x240, this run 640x480"; "renderer
+ * version differs: recording 1, this build 2"; "level differs: recording
+ * 2, loaded 1"). A caller that takes the settings, level and size from the
+ * recording (as it should: rec_run_from_header) is refused only for what
+ * it cannot change: content and versions. */
+int rec_check_run(const struct rec_header *h, const struct rec_run *run, char *err,
+		  size_t errlen);
+
+/* The run a recording asks for: its settings, level, map name and render
+ * size (0x0 for version 1, which does not store one: keep the default).
+ * map_hash is left 0: the caller loads the map and fills it in. The
+ * map_name pointer points into h. */
+void rec_run_from_header(const struct rec_header *h, struct rec_run *run);
+
+/* Verification of a replay against the hashes stored in a recording
+ * (--verify). A plain value; fill with rec_verify_init. */
+struct rec_verify {
+	uint8_t compare;               /* REC_HAS_* this replay compares */
+	uint32_t ticks;                /* ticks seen */
+	uint32_t state_checked, frame_checked;
+	uint32_t state_bad, frame_bad;
+	int64_t first_bad;             /* tick of the first difference, -1 none */
+	char first[192];               /* what differed there */
+	char note[192];                /* why something is not compared, or "" */
+};
+
+/* Prepares v for a replay of a recording with header h by run (run
+ * render_w 0: no rendering). Frame hashes are compared only when the
+ * recording holds them, run renders at the recorded size, and the renderer
+ * version is this build's; otherwise v->note says why not. */
+void rec_verify_init(struct rec_verify *v, const struct rec_header *h, const struct rec_run *run);
+
+/* Compares tick `tick`'s stored hashes (rec, from rec_reader_next_tick)
+ * with the replay's (after sim_tick and r_render of that tick; frame is
+ * ignored when frames are not compared). 0 if equal, -EDOM if not (the
+ * first difference is kept in v->first_bad and v->first). */
+int rec_verify_tick(struct rec_verify *v, uint32_t tick, const struct rec_tick *rec,
+		    uint64_t state, uint64_t frame);
+
+/* One line: "verify: 800 ticks, 800 state and 800 frame hashes equal" or
+ * "verify: FAILED: first difference at tick 17: state hash recording
+ * 0x..., replay 0x...; 3 state and 0 frame hashes differ of 800 ticks",
+ * with the note appended. Returns 0 if everything compared was equal and
+ * something was compared, 1 if nothing could be compared (no hashes
+ * stored), -EDOM on a difference. */
+int rec_verify_summary(const struct rec_verify *v, char *buf, size_t len);
 
 #endif

@@ -1,6 +1,6 @@
-/* libFuzzer target: the recording format (input/rec.c). The input is
- * written to a file and read back through the real reader; every command
- * read must re-encode to the bytes it came from. */
+/* libFuzzer target: the recording format (input/rec.c), versions 1 and 2.
+ * The input is written to a file and read back through the real reader;
+ * every record read must re-encode to the bytes it came from. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,10 +16,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t len)
 	static char path[64];
 	struct rec_header h;
 	struct rec_reader *r;
-	struct sim_cmd c;
+	struct rec_tick t;
 	char err[256];
 	FILE *f;
-	size_t off;
+	size_t off, rs;
 
 	rec_header_decode(data, len, &h, err, sizeof(err));
 	if (!path[0])
@@ -30,15 +30,25 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t len)
 	fwrite(data, 1, len, f);
 	fclose(f);
 	if (rec_reader_open(path, &r, err, sizeof(err)) == 0) {
-		off = rec_reader_header(r)->header_size;
-		while (rec_reader_next(r, &c) == 1) {
+		const struct rec_header *rh = rec_reader_header(r);
+		struct rec_verify v;
+		struct rec_run run;
+
+		off = rh->header_size;
+		rs = rec_record_size(rh->hash_flags);
+		rec_run_from_header(rh, &run);
+		rec_verify_init(&v, rh, &run);
+		while (rec_reader_next_tick(r, &t) == 1) {
 			uint8_t b[REC_CMD_SIZE];
-			rec_cmd_encode(b, &c);
-			if (off + REC_CMD_SIZE > len || memcmp(b, data + off, REC_CMD_SIZE) != 0)
+			rec_cmd_encode(b, &t.cmd);
+			if (off + rs > len || memcmp(b, data + off, REC_CMD_SIZE) != 0)
 				abort();
-			off += REC_CMD_SIZE;
+			rec_verify_tick(&v, (uint32_t)((off - rh->header_size) / rs), &t, 0, 0);
+			off += rs;
 		}
-		rec_check(rec_reader_header(r), 0x1234, err, sizeof(err));
+		rec_verify_summary(&v, err, sizeof(err));
+		rec_check(rh, 0x1234, err, sizeof(err));
+		rec_check_run(rh, &run, err, sizeof(err));
 		rec_reader_close(r);
 	}
 	return 0;

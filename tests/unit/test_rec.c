@@ -143,8 +143,11 @@ static void test_header_errors(void **state)
 	assert_string_equal(err, "bad magic (not an arcaded recording)");
 	assert_int_equal(decode_patched(7, 1, 40, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "bad magic (not an arcaded recording)");
+	assert_int_equal(decode_patched(8, 3, 40, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "version 3 is newer than this build (2)");
+	/* Version 2 needs its longer header. */
 	assert_int_equal(decode_patched(8, 2, 40, err, sizeof(err)), -EINVAL);
-	assert_string_equal(err, "version 2 is newer than this build (1)");
+	assert_string_equal(err, "file too short (40 bytes, the header needs 80)");
 	assert_int_equal(decode_patched(8, 0, 40, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "version 0 is not a valid version");
 	assert_int_equal(decode_patched(12, 39, 40, err, sizeof(err)), -EINVAL);
@@ -378,7 +381,7 @@ static void test_reader_open_errors_name_the_file(void **state)
 	b[8] = 7;
 	write_bytes(path, b, sizeof(b));
 	assert_int_equal(rec_reader_open(path, &r, err, sizeof(err)), -EINVAL);
-	snprintf(want, sizeof(want), "%s: version 7 is newer than this build (1)", path);
+	snprintf(want, sizeof(want), "%s: version 7 is newer than this build (2)", path);
 	assert_string_equal(err, want);
 
 	memcpy(b, sample_bytes, sizeof(b));
@@ -425,6 +428,369 @@ static void test_check_names_every_difference(void **state)
 				 "recording 2, this build 1");
 }
 
+/* ---- version 2 ------------------------------------------------------ */
+
+static struct rec_header sample_header_v2(void)
+{
+	struct rec_header h = sample_header();
+
+	h.version = 2;
+	h.render_w = 320;
+	h.render_h = 240;
+	h.hash_flags = REC_HAS_STATE | REC_HAS_FRAME;
+	h.level = 2;
+	h.render_version = 0x0a0b0c0d;
+	memcpy(h.map_name, "MAP01", 6);
+	h.start_time = 0x0000000063a1b2c3ll;
+	return h;
+}
+
+static const uint8_t sample_bytes_v2[REC_HEADER_SIZE_V2] = {
+	'A', 'R', 'C', 'D', 'R', 'E', 'C', 0,   /* 0 magic */
+	0x02, 0x00,                             /* 8 version 2 */
+	0x3c, 0x00,                             /* 10 tick rate 60 */
+	0x50, 0x00, 0x00, 0x00,                 /* 12 header size 80 */
+	0x08, 0x07, 0x06, 0x05, 0x04, 0x03, 0x02, 0x01, /* 16 map hash */
+	0x01, 0x00, 0x00, 0x00,                 /* 24 engine version 1 */
+	0x03, 0x01, 0x00, 0x00,                 /* 28 coins 3, freeplay 1, start 0, 0 */
+	0x44, 0x33, 0x22, 0x11,                 /* 32 count */
+	0x00, 0x00, 0x00, 0x00,                 /* 36 reserved */
+	0x40, 0x01, 0xf0, 0x00,                 /* 40 render 320 x 240 */
+	0x03, 0x02, 0x00, 0x00,                 /* 44 hash flags 3, level 2, reserved */
+	0x0d, 0x0c, 0x0b, 0x0a,                 /* 48 renderer version */
+	0x00, 0x00, 0x00, 0x00,                 /* 52 reserved */
+	'M', 'A', 'P', '0', '1', 0, 0, 0,       /* 56 map name */
+	0xc3, 0xb2, 0xa1, 0x63, 0, 0, 0, 0,     /* 64 start time */
+	0, 0, 0, 0, 0, 0, 0, 0,                 /* 72 reserved */
+};
+
+static void test_v2_header_encode_is_byte_exact(void **state)
+{
+	struct rec_header h = sample_header_v2();
+	uint8_t out[REC_HEADER_MAX];
+
+	(void)state;
+	memset(out, 0xaa, sizeof(out));
+	assert_int_equal(rec_header_encode(out, &h), REC_HEADER_SIZE_V2);
+	assert_memory_equal(out, sample_bytes_v2, REC_HEADER_SIZE_V2);
+	/* Version 1 writes its 40 bytes only. */
+	h.version = 1;
+	memset(out, 0xaa, sizeof(out));
+	assert_int_equal(rec_header_encode(out, &h), REC_HEADER_SIZE);
+	assert_int_equal(out[REC_HEADER_SIZE], 0xaa);
+}
+
+static void test_v2_header_decode_round_trip(void **state)
+{
+	struct rec_header h;
+	char err[128] = "";
+
+	(void)state;
+	assert_int_equal(rec_header_decode(sample_bytes_v2, sizeof(sample_bytes_v2), &h, err,
+					   sizeof(err)), 0);
+	assert_int_equal(h.version, 2);
+	assert_int_equal(h.header_size, 80);
+	assert_int_equal(h.render_w, 320);
+	assert_int_equal(h.render_h, 240);
+	assert_int_equal(h.hash_flags, 3);
+	assert_int_equal(h.level, 2);
+	assert_int_equal(h.render_version, 0x0a0b0c0d);
+	assert_string_equal(h.map_name, "MAP01");
+	assert_true(h.start_time == 0x63a1b2c3ll);
+	assert_int_equal(h.set.coins_per_credit, 3);
+	/* Version 1 leaves the version 2 fields zero. */
+	assert_int_equal(rec_header_decode(sample_bytes, sizeof(sample_bytes), &h, err,
+					   sizeof(err)), 0);
+	assert_int_equal(h.hash_flags, 0);
+	assert_int_equal(h.render_w, 0);
+	assert_string_equal(h.map_name, "");
+}
+
+static int decode_v2_patched(size_t off, uint8_t v, char *err, size_t errlen)
+{
+	uint8_t b[REC_HEADER_SIZE_V2];
+	struct rec_header h;
+
+	memcpy(b, sample_bytes_v2, sizeof(b));
+	b[off] = v;
+	err[0] = '\0';
+	return rec_header_decode(b, sizeof(b), &h, err, errlen);
+}
+
+static void test_v2_header_errors(void **state)
+{
+	char err[128];
+
+	(void)state;
+	assert_int_equal(decode_v2_patched(44, 0x04, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "hash flags 0x04 unknown");
+	assert_int_equal(decode_v2_patched(41, 0x20, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "render size 8256x240 out of range");
+	{
+		uint8_t b[REC_HEADER_SIZE_V2];
+		struct rec_header h;
+
+		memcpy(b, sample_bytes_v2, sizeof(b));
+		b[42] = 0;                      /* 320 x 0 */
+		assert_int_equal(rec_header_decode(b, sizeof(b), &h, err, sizeof(err)), -EINVAL);
+		assert_string_equal(err, "render size 320x0 out of range");
+	}
+	assert_int_equal(decode_v2_patched(57, ' ', err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "map name is not printable ASCII");
+	assert_int_equal(decode_v2_patched(12, 40, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "header size 40 is smaller than 80");
+}
+
+static uint64_t nth_state(uint32_t i)
+{
+	return 0x1000000000000001ull * (i + 1);
+}
+
+static uint64_t nth_frame(uint32_t i)
+{
+	return ~(uint64_t)i << 7;
+}
+
+static void write_v2(const char *path, uint8_t flags, uint32_t n)
+{
+	struct rec_header h = sample_header_v2();
+	struct rec_writer *w;
+
+	h.hash_flags = flags;
+	assert_int_equal(rec_writer_open(path, &h, &w), 0);
+	for (uint32_t i = 0; i < n; i++) {
+		struct rec_tick t = { .cmd = nth_cmd(i), .state_hash = nth_state(i),
+				      .frame_hash = nth_frame(i) };
+
+		assert_int_equal(rec_writer_put_tick(w, &t), 0);
+	}
+	assert_int_equal(rec_writer_close(w), 0);
+}
+
+/* Replays path (written by write_v2 with flags) expecting n ticks. */
+static int replay_v2(const char *path, uint8_t flags, uint32_t n)
+{
+	struct rec_reader *r;
+	struct rec_tick t;
+	char err[256];
+	int ret;
+
+	assert_int_equal(rec_reader_open(path, &r, err, sizeof(err)), 0);
+	assert_int_equal(rec_reader_count(r), n);
+	for (uint32_t i = 0; i < n; i++) {
+		struct sim_cmd want = nth_cmd(i);
+
+		assert_int_equal(rec_reader_next_tick(r, &t), 1);
+		assert_memory_equal(&t.cmd, &want, sizeof(want));
+		assert_true(t.state_hash == (flags & REC_HAS_STATE ? nth_state(i) : 0));
+		assert_true(t.frame_hash == (flags & REC_HAS_FRAME ? nth_frame(i) : 0));
+	}
+	ret = rec_reader_next_tick(r, &t);
+	rec_reader_close(r);
+	return ret;
+}
+
+static void test_v2_round_trip_for_every_hash_choice(void **state)
+{
+	static const size_t recsize[4] = { 6, 14, 14, 22 };
+	char path[128];
+
+	(void)state;
+	for (uint8_t flags = 0; flags < 4; flags++) {
+		const uint32_t n = 700; /* several writer buffers */
+		struct stat sb;
+
+		assert_int_equal(rec_record_size(flags), recsize[flags]);
+		tmp_path(path, sizeof(path), "v2.rec");
+		write_v2(path, flags, n);
+		assert_int_equal(stat(path, &sb), 0);
+		assert_int_equal(sb.st_size, 80 + n * recsize[flags]);
+		assert_int_equal(replay_v2(path, flags, n), 0);
+	}
+	/* The state hash comes first, then the frame hash, little-endian. */
+	{
+		uint8_t b[80 + 22];
+
+		write_v2(path, 3, 1);
+		assert_int_equal(read_bytes(path, b, sizeof(b)), sizeof(b));
+		assert_memory_equal(b + 86, "\x01\0\0\0\0\0\0\x10", 8);
+		assert_memory_equal(b + 94, "\x80\xff\xff\xff\xff\xff\xff\xff", 8);
+	}
+}
+
+static void test_v2_put_without_hashes_is_refused(void **state)
+{
+	struct rec_header h = sample_header_v2();
+	struct sim_cmd c = nth_cmd(0);
+	struct rec_writer *w;
+	char path[128];
+
+	(void)state;
+	tmp_path(path, sizeof(path), "v2put.rec");
+	assert_int_equal(rec_writer_open(path, &h, &w), 0);
+	assert_int_equal(rec_writer_put(w, &c), -EINVAL);
+	assert_int_equal(rec_writer_close(w), 0);
+	/* A header the reader would refuse is never written. */
+	h.hash_flags = 0x10;
+	assert_int_equal(rec_writer_open(path, &h, &w), -EINVAL);
+}
+
+static void test_v2_cut_mid_record_replays_whole_records(void **state)
+{
+	uint8_t buf[80 + 50 * 22];
+	char path[128];
+
+	(void)state;
+	tmp_path(path, sizeof(path), "v2cut.rec");
+	write_v2(path, 3, 50);
+	assert_int_equal(read_bytes(path, buf, sizeof(buf)), sizeof(buf));
+	memcpy(buf + 32, "\xff\xff\xff\xff", 4);
+	write_bytes(path, buf, 80 + 20 * 22 + 21);
+	assert_int_equal(replay_v2(path, 3, 20), 0);
+	/* Finished (count 50) but holding 20 and a half: 20, then -EIO. */
+	memcpy(buf + 32, "\x32\0\0\0", 4);
+	write_bytes(path, buf, 80 + 20 * 22 + 21);
+	assert_int_equal(replay_v2(path, 3, 20), -EIO);
+}
+
+static struct rec_run sample_run(const struct rec_header *h)
+{
+	struct rec_run run;
+
+	rec_run_from_header(h, &run);
+	run.map_hash = h->map_hash;
+	return run;
+}
+
+static void test_check_run_names_each_difference(void **state)
+{
+	struct rec_header h = sample_header_v2();
+	struct rec_run run;
+	char err[512];
+
+	(void)state;
+	h.engine_version = REC_ENGINE_VERSION;
+	h.render_version = REC_RENDER_VERSION;
+	run = sample_run(&h);
+	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), 0);
+
+	run.set.coins_per_credit = 1;
+	run.set.freeplay = 0;
+	run.set.start_in_play = 1;
+	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "settings differ: coins_per_credit recording 3, this run 1; "
+				 "settings differ: freeplay recording 1, this run 0; "
+				 "settings differ: start_in_play recording 0, this run 1");
+
+	run = sample_run(&h);
+	run.level = 1;
+	run.map_name = NULL;
+	run.render_w = 640;
+	run.render_h = 480;
+	h.render_version = REC_RENDER_VERSION + 1;
+	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "level differs: recording 2, loaded 1; "
+				 "map differs: recording MAP01, loaded (a built-in level); "
+				 "render size differs: recording 320x240, this run 640x480; "
+				 "renderer version differs: recording 2, this build 1");
+	/* Not rendering: size and renderer do not matter. */
+	run = sample_run(&h);
+	run.render_w = run.render_h = 0;
+	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), 0);
+	/* Nor without stored frame hashes. */
+	h.hash_flags = REC_HAS_STATE;
+	run = sample_run(&h);
+	run.render_w = 64;
+	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), 0);
+
+	run.map_hash = 0xabc;
+	h.engine_version = 9;
+	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "map content differs: recording 0x0102030405060708, loaded "
+				 "0x0000000000000abc; engine version differs: recording 9, this "
+				 "build 1");
+	/* A message longer than the buffer is cut, not overrun. */
+	assert_int_equal(rec_check_run(&h, &run, err, 20), -EINVAL);
+	assert_int_equal(strlen(err), 19);
+}
+
+static void test_verify_finds_the_first_difference(void **state)
+{
+	struct rec_header h = sample_header_v2();
+	struct rec_verify v;
+	struct rec_run run;
+	char line[512];
+
+	(void)state;
+	h.render_version = REC_RENDER_VERSION;
+	run = sample_run(&h);
+	rec_verify_init(&v, &h, &run);
+	assert_string_equal(v.note, "");
+	for (uint32_t i = 0; i < 10; i++) {
+		struct rec_tick t = { .state_hash = nth_state(i), .frame_hash = nth_frame(i) };
+		uint64_t s = nth_state(i), f = nth_frame(i);
+
+		if (i == 7)
+			f++;
+		if (i >= 8)
+			s++;
+		assert_int_equal(rec_verify_tick(&v, i, &t, s, f), i >= 7 ? -EDOM : 0);
+	}
+	assert_int_equal(rec_verify_summary(&v, line, sizeof(line)), -EDOM);
+	assert_string_equal(line, "verify: FAILED: first difference at tick 7: frame hash "
+				  "recording 0xfffffffffffffc00, replay 0xfffffffffffffc01 "
+				  "(state hashes equal); 2 state and 1 frame hashes differ of 10 "
+				  "ticks");
+
+	rec_verify_init(&v, &h, &run);
+	for (uint32_t i = 0; i < 3; i++) {
+		struct rec_tick t = { .state_hash = nth_state(i), .frame_hash = nth_frame(i) };
+
+		assert_int_equal(rec_verify_tick(&v, i, &t, nth_state(i), nth_frame(i)), 0);
+	}
+	assert_int_equal(rec_verify_summary(&v, line, sizeof(line)), 0);
+	assert_string_equal(line, "verify: 3 ticks, 3 state and 3 frame hashes equal");
+}
+
+static void test_verify_says_why_frames_are_not_compared(void **state)
+{
+	struct rec_header h = sample_header_v2();
+	struct rec_tick t = { .state_hash = 1, .frame_hash = 2 };
+	struct rec_verify v;
+	struct rec_run run;
+	char line[512];
+
+	(void)state;
+	h.render_version = REC_RENDER_VERSION;
+	run = sample_run(&h);
+	run.render_w = run.render_h = 0;
+	rec_verify_init(&v, &h, &run);
+	assert_int_equal(rec_verify_tick(&v, 0, &t, 1, 999), 0);
+	assert_int_equal(rec_verify_summary(&v, line, sizeof(line)), 0);
+	assert_string_equal(line, "verify: 1 ticks, 1 state and 0 frame hashes equal "
+				  "(frame hashes not compared: not rendering)");
+
+	run = sample_run(&h);
+	run.render_w = 640;
+	rec_verify_init(&v, &h, &run);
+	assert_string_equal(v.note, "frame hashes not compared: recorded at 320x240, "
+				    "rendering 640x240");
+	h.render_version = REC_RENDER_VERSION + 1;
+	run = sample_run(&h);
+	rec_verify_init(&v, &h, &run);
+	assert_string_equal(v.note, "frame hashes not compared: drawn by renderer version 2, "
+				    "this build draws version 1");
+	assert_int_equal(rec_verify_tick(&v, 0, &t, 5, 2), -EDOM);
+
+	/* A recording without hashes verifies nothing, and says so. */
+	h.hash_flags = 0;
+	rec_verify_init(&v, &h, &run);
+	assert_int_equal(rec_verify_tick(&v, 0, &t, 5, 6), 0);
+	assert_int_equal(rec_verify_summary(&v, line, sizeof(line)), 1);
+	assert_string_equal(line, "verify: 1 ticks, nothing compared: the recording holds no "
+				  "hashes");
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -440,6 +806,15 @@ int main(void)
 		cmocka_unit_test(test_reader_open_errors_name_the_file),
 		cmocka_unit_test(test_writer_open_fails_cleanly),
 		cmocka_unit_test(test_check_names_every_difference),
+		cmocka_unit_test(test_v2_header_encode_is_byte_exact),
+		cmocka_unit_test(test_v2_header_decode_round_trip),
+		cmocka_unit_test(test_v2_header_errors),
+		cmocka_unit_test(test_v2_round_trip_for_every_hash_choice),
+		cmocka_unit_test(test_v2_put_without_hashes_is_refused),
+		cmocka_unit_test(test_v2_cut_mid_record_replays_whole_records),
+		cmocka_unit_test(test_check_run_names_each_difference),
+		cmocka_unit_test(test_verify_finds_the_first_difference),
+		cmocka_unit_test(test_verify_says_why_frames_are_not_compared),
 	};
 
 	return cmocka_run_group_tests(tests, setup, teardown);
