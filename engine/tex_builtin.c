@@ -1,0 +1,504 @@
+/*
+ * tex_builtin: the project's own texture set, made by integer code so the
+ * game needs no WAD: pal_builtin's palette, wall textures, flats, a sky and
+ * a few sprites. Every pixel comes from integer hashing and patterns of
+ * the coordinates (tiling: every noise lattice wraps at the picture size),
+ * so the set is identical on every build.
+ *
+ * Names are Doom-style. The sprites use Doom's sprite names (BAR1 barrel,
+ * COLU lamp, POSS enemy, MEDI medikit) so that the thing table (th.h)
+ * finds pictures for those thing types in a map drawn with this set.
+ */
+#include "engine/tex.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine/tex_local.h"
+
+struct tb_tex {
+	const char *name;
+	int w, h;
+	void (*make)(struct tex_pic *p);
+};
+
+struct tb_flat {
+	const char *name;
+	void (*make)(struct tex_flat *f, int arg);
+	int arg;
+};
+
+struct tb_spr {
+	const char *name;              /* lump-style: "POSSA2A8" */
+	int w, h;
+	void (*make)(struct tex_pic *p, int arg);
+	int arg;
+};
+
+static uint32_t tb_hash(uint32_t a, uint32_t b, uint32_t seed)
+{
+	uint32_t h = a * 0x9E3779B1u ^ b * 0x85EBCA77u ^ seed * 0xC2B2AE3Du;
+
+	h ^= h >> 15;
+	h *= 0x2C1B3C6Du;
+	h ^= h >> 12;
+	h *= 0x297A2D39u;
+	h ^= h >> 15;
+	return h;
+}
+
+/* Value noise 0..255 on a lattice of `cell` pixels that wraps every
+ * `period` pixels (a multiple of cell), bilinear between lattice points. */
+static int tb_noise(int x, int y, int cell, int period, uint32_t seed)
+{
+	int n = period / cell;
+	int cx = x / cell, cy = y / cell, fx = x % cell, fy = y % cell;
+	int x0 = cx % n, x1 = (cx + 1) % n, y0 = cy % n, y1 = (cy + 1) % n;
+	int a = (int)(tb_hash((uint32_t)x0, (uint32_t)y0, seed) & 255);
+	int b = (int)(tb_hash((uint32_t)x1, (uint32_t)y0, seed) & 255);
+	int c = (int)(tb_hash((uint32_t)x0, (uint32_t)y1, seed) & 255);
+	int d = (int)(tb_hash((uint32_t)x1, (uint32_t)y1, seed) & 255);
+	int top = a * (cell - fx) + b * fx, bot = c * (cell - fx) + d * fx;
+
+	return (top * (cell - fy) + bot * fy) / (cell * cell);
+}
+
+/* Palette index of a ramp's shade, clamped to the ramp. */
+static uint8_t tb_c(int ramp, int shade)
+{
+	return PAL_RGB(ramp, shade < 0 ? 0 : shade > PAL_SHADES - 1 ? PAL_SHADES - 1 : shade);
+}
+
+static void tb_set(struct tex_pic *p, int x, int y, uint8_t c)
+{
+	if (x < 0 || y < 0 || x >= p->w || y >= p->h)
+		return;
+	p->px[(size_t)x * (size_t)p->h + (size_t)y] = c;
+	if (p->opaque)
+		p->opaque[(size_t)x * (size_t)p->h + (size_t)y] = 1;
+}
+
+/* ---- wall textures ---------------------------------------------------- */
+
+static void tb_brick(struct tex_pic *p)
+{
+	for (int y = 0; y < p->h; y++) {
+		for (int x = 0; x < p->w; x++) {
+			int row = y / 16, sx = (x + (row & 1) * 16) % p->w;
+			int id = row * 2 + sx / 32;
+			int shade = 5 + (int)(tb_hash((uint32_t)id, 1, 11) % 3) +
+				    (int)(tb_hash((uint32_t)x, (uint32_t)y, 12) % 3) - 1;
+
+			if (y % 16 == 15 || sx % 32 == 31)
+				tb_set(p, x, y, tb_c(PAL_GREY, 9 + (int)(tb_hash((uint32_t)x, (uint32_t)y, 13) % 2)));
+			else
+				tb_set(p, x, y, tb_c(PAL_RED, y % 16 == 0 ? shade - 2 : shade + 1));
+		}
+	}
+}
+
+static void tb_metal(struct tex_pic *p)
+{
+	for (int y = 0; y < p->h; y++) {
+		for (int x = 0; x < p->w; x++) {
+			int px = x % 32, py = y % 32;
+			int shade = 5 + tb_noise(x, y, 8, 64, 21) / 100;
+			int rx = px < 16 ? px - 4 : px - 27, ry = py < 16 ? py - 4 : py - 27;
+
+			if (px == 0 || py == 0)
+				shade = 11;
+			else if (px == 1 || py == 1)
+				shade = 2;
+			else if (rx * rx + ry * ry <= 2)
+				shade = rx + ry < 0 ? 1 : 9;
+			tb_set(p, x, y, tb_c(PAL_SLATE, shade));
+		}
+	}
+}
+
+/* Stone blocks: a wrapped Voronoi pattern, one point per 16x16 cell. */
+static void tb_stone(struct tex_pic *p)
+{
+	for (int y = 0; y < p->h; y++) {
+		for (int x = 0; x < p->w; x++) {
+			int d1 = 1 << 30, d2 = 1 << 30, id = 0;
+
+			for (int j = -1; j <= 1; j++) {
+				for (int i = -1; i <= 1; i++) {
+					int cx = ((x / 16 + i) + 4) % 4, cy = ((y / 16 + j) + 4) % 4;
+					uint32_t h = tb_hash((uint32_t)cx, (uint32_t)cy, 31);
+					int ox = (x / 16 + i) * 16 + 2 + (int)(h % 12);
+					int oy = (y / 16 + j) * 16 + 2 + (int)((h >> 8) % 12);
+					int d = (x - ox) * (x - ox) + (y - oy) * (y - oy);
+
+					if (d < d1) {
+						d2 = d1;
+						d1 = d;
+						id = cx + 4 * cy;
+					} else if (d < d2) {
+						d2 = d;
+					}
+				}
+			}
+			if (d2 - d1 < 24)
+				tb_set(p, x, y, tb_c(PAL_GREY, 12));
+			else
+				tb_set(p, x, y, tb_c(PAL_GREY, 6 + (int)(tb_hash((uint32_t)id, 0, 32) % 3) +
+						     (int)(tb_hash((uint32_t)x, (uint32_t)y, 33) % 2)));
+		}
+	}
+}
+
+static void tb_tech(struct tex_pic *p)
+{
+	static const int lights[4] = { PAL_RED, PAL_YELLOW, PAL_GREEN, PAL_CYAN };
+
+	for (int y = 0; y < p->h; y++) {
+		for (int x = 0; x < p->w; x++) {
+			int shade = 8 + (int)(tb_hash((uint32_t)x, (uint32_t)y, 41) % 2);
+			uint8_t c;
+
+			if (x % 16 == 0)
+				shade = 12;
+			if (y % 32 == 0)
+				shade = 3;
+			c = tb_c(PAL_TEAL, shade);
+			if (x >= 12 && x < 52 && y >= 40 && y < 80) {
+				c = tb_c(PAL_BLACKRAMP, 13);
+				if (y % 4 == 0 && (int)(tb_hash((uint32_t)y, 0, 42) % 32) > x - 12)
+					c = tb_c(PAL_CYAN, 3);
+			}
+			if (y >= 10 && y < 14 && x % 8 >= 2 && x % 8 < 6)
+				c = tb_c(lights[(x / 8) % 4], 1);
+			tb_set(p, x, y, c);
+		}
+	}
+}
+
+static void tb_wood(struct tex_pic *p)
+{
+	for (int y = 0; y < p->h; y++) {
+		for (int x = 0; x < p->w; x++) {
+			int plank = x / 16;
+			int grain = tb_noise(x * 4, y, 16, 256, 51 + (uint32_t)plank) / 64;
+			int shade = 4 + (int)(tb_hash((uint32_t)plank, 0, 52) % 3) + grain;
+
+			if (x % 16 == 15 || (y + plank * 23) % 64 == 0)
+				shade = 12;
+			tb_set(p, x, y, tb_c(PAL_BROWN, shade));
+		}
+	}
+}
+
+static void tb_door(struct tex_pic *p)
+{
+	for (int y = 0; y < p->h; y++) {
+		for (int x = 0; x < p->w; x++) {
+			int shade = 6 + tb_noise(x, y, 8, 64, 61) / 128;
+			uint8_t c;
+
+			if (x < 4 || x >= p->w - 4 || y < 4)
+				shade = 10;
+			if (y % 32 == 31 || x == p->w / 2)
+				shade = 12;
+			c = tb_c(PAL_SLATE, shade);
+			if (y >= p->h - 16 && x >= 4 && x < p->w - 4)
+				c = ((x + y) / 8) & 1 ? tb_c(PAL_YELLOW, 3) : tb_c(PAL_BLACKRAMP, 12);
+			tb_set(p, x, y, c);
+		}
+	}
+}
+
+/* A grate: a frame and bars, transparent between them (a masked texture
+ * for windows and fences). */
+static void tb_grate(struct tex_pic *p)
+{
+	for (int y = 0; y < p->h; y++)
+		for (int x = 0; x < p->w; x++)
+			if (x < 4 || x >= p->w - 4 || y < 4 || y >= p->h - 4 || x % 16 < 2)
+				tb_set(p, x, y, tb_c(PAL_GREY, 9 - (x % 16 == 0 || x < 2 || y < 2)));
+}
+
+static void tb_marble(struct tex_pic *p)
+{
+	for (int y = 0; y < p->h; y++) {
+		for (int x = 0; x < p->w; x++) {
+			int n = tb_noise(x, y, 16, 64, 71) + tb_noise(x, y, 4, 64, 72) / 4;
+			int vein = (n + x * 2 + y) % 64;
+
+			tb_set(p, x, y, vein < 4 ? tb_c(PAL_RED, 8) : tb_c(PAL_TAN, 2 + n / 64));
+		}
+	}
+}
+
+/* The sky: blue fading to pale towards the horizon (the bottom), with
+ * clouds of two noise octaves that wrap around the 256 columns. */
+static void tb_sky(struct tex_pic *p)
+{
+	for (int y = 0; y < p->h; y++) {
+		for (int x = 0; x < p->w; x++) {
+			int n = tb_noise(x, y * 2, 32, 256, 81) + tb_noise(x, y * 2, 8, 256, 82) / 2;
+			int cloud = n - 250 + y / 4;
+			uint8_t c = tb_c(PAL_SKY, 6 - y * 6 / p->h);
+
+			if (cloud > 24)
+				c = tb_c(PAL_GREY, 1 + (int)(tb_hash((uint32_t)x, (uint32_t)y, 83) % 2));
+			else if (cloud > 0)
+				c = tb_c(PAL_SLATE, 1);
+			tb_set(p, x, y, c);
+		}
+	}
+}
+
+/* ---- flats -------------------------------------------------------------- */
+
+static void tb_fset(struct tex_flat *f, int x, int y, uint8_t c)
+{
+	f->px[y * TEX_FLAT_SIZE + x] = c;
+}
+
+static void tb_floor(struct tex_flat *f, int arg)
+{
+	(void)arg;
+	for (int y = 0; y < TEX_FLAT_SIZE; y++)
+		for (int x = 0; x < TEX_FLAT_SIZE; x++)
+			tb_fset(f, x, y, x % 32 == 0 || y % 32 == 0
+				? tb_c(PAL_GREY, 11)
+				: tb_c(PAL_TAN, 4 + ((x / 32 + y / 32) & 1) * 2 +
+						(int)(tb_hash((uint32_t)x, (uint32_t)y, 91) % 2)));
+}
+
+/* Noise of one ramp: ramp, base shade and spread packed in arg. */
+static void tb_noisy(struct tex_flat *f, int arg)
+{
+	int ramp = arg & 15, base = (arg >> 4) & 15, spread = (arg >> 8) & 15;
+
+	for (int y = 0; y < TEX_FLAT_SIZE; y++)
+		for (int x = 0; x < TEX_FLAT_SIZE; x++)
+			tb_fset(f, x, y, tb_c(ramp, base + tb_noise(x, y, 8, 64, (uint32_t)arg) *
+						      spread / 256 +
+						      (int)(tb_hash((uint32_t)x, (uint32_t)y,
+								    (uint32_t)arg) % 2)));
+}
+
+#define TB_NOISY(ramp, base, spread) ((ramp) | (base) << 4 | (spread) << 8)
+
+static void tb_ceil(struct tex_flat *f, int arg)
+{
+	for (int y = 0; y < TEX_FLAT_SIZE; y++) {
+		for (int x = 0; x < TEX_FLAT_SIZE; x++) {
+			int cx = x % 32 - 16, cy = y % 32 - 16;
+			int shade = 7;
+
+			if (x % 32 == 0 || y % 32 == 0)
+				shade = 11;
+			/* a light panel: a pale glowing disc in each square */
+			if (arg && cx * cx + cy * cy < 40) {
+				tb_fset(f, x, y, tb_c(PAL_YELLOW, (cx * cx + cy * cy) / 20));
+				continue;
+			}
+			tb_fset(f, x, y, tb_c(PAL_GREY, shade));
+		}
+	}
+}
+
+/* Water, frame arg of 4: ripples that move one quarter of their period per
+ * frame. */
+static void tb_water(struct tex_flat *f, int arg)
+{
+	for (int y = 0; y < TEX_FLAT_SIZE; y++)
+		for (int x = 0; x < TEX_FLAT_SIZE; x++) {
+			int n = tb_noise((x + arg * 16) % 64, y, 16, 64, 101) +
+				tb_noise(x, (y + 64 - arg * 16) % 64, 16, 64, 102);
+
+			tb_fset(f, x, y, tb_c(PAL_BLUE, 4 + n / 64));
+		}
+}
+
+static void tb_skyflat(struct tex_flat *f, int arg)
+{
+	(void)arg;
+	memset(f->px, tb_c(PAL_SKY, 3), sizeof f->px);
+}
+
+/* ---- sprites -------------------------------------------------------------- */
+
+/* A barrel: a shaded cylinder with two bands; arg 1 makes its top glow. */
+static void tb_barrel(struct tex_pic *p, int arg)
+{
+	int cx = p->w / 2;
+
+	for (int y = 0; y < p->h; y++) {
+		for (int x = 0; x < p->w; x++) {
+			int d = x - cx < 0 ? cx - x : x - cx;
+			int shade = 4 + d * 8 / cx;
+
+			if ((y < 3 || y >= p->h - 2) && d > cx - 2)
+				continue;
+			if (y < 3)
+				tb_set(p, x, y, arg ? tb_c(PAL_GREEN, 1) : tb_c(PAL_GREEN, 6));
+			else if (y == 6 || y == p->h - 6)
+				tb_set(p, x, y, tb_c(PAL_GREY, shade + 2));
+			else
+				tb_set(p, x, y, tb_c(PAL_OLIVE, shade));
+		}
+	}
+}
+
+static void tb_lamp(struct tex_pic *p, int arg)
+{
+	int cx = p->w / 2;
+
+	(void)arg;
+	for (int y = 0; y < p->h; y++) {
+		for (int x = 0; x < p->w; x++) {
+			int dx = x - cx, dy = y - 7;
+
+			if (dx * dx + dy * dy <= 36)
+				tb_set(p, x, y, tb_c(PAL_YELLOW, (dx * dx + dy * dy) / 12));
+			else if (y > 12 && dx >= -1 && dx <= 1)
+				tb_set(p, x, y, tb_c(PAL_GREY, 7 + dx));
+			else if (y >= p->h - 4 && dx >= -5 && dx <= 5)
+				tb_set(p, x, y, tb_c(PAL_GREY, 9));
+		}
+	}
+}
+
+static void tb_rect(struct tex_pic *p, int x0, int y0, int w, int h, uint8_t c)
+{
+	for (int y = y0; y < y0 + h; y++)
+		for (int x = x0; x < x0 + w; x++)
+			tb_set(p, x, y, c);
+}
+
+/* The enemy, rotation arg 1 (facing the viewer) .. 5 (its back); 6..8 are
+ * 4..2 mirrored by the sprite names. The gun arm is on its right hand,
+ * which the viewer sees on the left at rotation 1. */
+static void tb_enemy(struct tex_pic *p, int rot)
+{
+	static const int half[6] = { 0, 8, 7, 5, 7, 8 };  /* torso half width */
+	int cx = p->w / 2, hw = half[rot];
+	uint8_t skin = tb_c(PAL_TAN, 4), body = tb_c(PAL_GREEN, 7), dark = tb_c(PAL_GREEN, 11);
+
+	tb_rect(p, cx - hw + 1, 40, hw - 2, 16, dark);                 /* legs */
+	tb_rect(p, cx + 1, 40, hw - 2, 16, dark);
+	tb_rect(p, cx - hw, 14, 2 * hw, 27, body);                     /* torso */
+	tb_rect(p, cx - hw, 38, 2 * hw, 3, tb_c(PAL_BROWN, 8));        /* belt */
+	for (int y = 0; y < 13; y++)                                   /* head */
+		for (int x = -5; x <= 5; x++)
+			if (x * x + (y - 6) * (y - 6) <= 30)
+				tb_set(p, cx + x, y + 1, rot == 5 ? tb_c(PAL_BROWN, 9) : skin);
+	if (rot == 1) {                                                /* eyes */
+		tb_set(p, cx - 2, 6, tb_c(PAL_RED, 3));
+		tb_set(p, cx + 2, 6, tb_c(PAL_RED, 3));
+	} else if (rot == 2) {
+		tb_set(p, cx - 3, 6, tb_c(PAL_RED, 3));
+		tb_set(p, cx + 1, 6, tb_c(PAL_RED, 3));
+	} else if (rot == 3) {
+		tb_set(p, cx - 4, 6, tb_c(PAL_RED, 3));
+	}
+	/* the gun: held forward, so it points at the viewer's left in side
+	 * views and is hidden behind the body from the back */
+	if (rot <= 3)
+		tb_rect(p, rot == 3 ? 0 : cx - hw - 3, 24, rot == 3 ? cx : 4, 4,
+			tb_c(PAL_BLACKRAMP, 6));
+	if (rot == 4)
+		tb_rect(p, cx - hw - 2, 22, 3, 3, tb_c(PAL_BLACKRAMP, 6));
+}
+
+static void tb_medikit(struct tex_pic *p, int arg)
+{
+	(void)arg;
+	tb_rect(p, 0, 0, p->w, p->h, tb_c(PAL_GREY, 1));
+	tb_rect(p, 0, p->h - 2, p->w, 2, tb_c(PAL_GREY, 8));
+	tb_rect(p, p->w / 2 - 2, 3, 4, p->h - 6, tb_c(PAL_RED, 4));
+	tb_rect(p, p->w / 2 - 7, p->h / 2 - 2, 14, 4, tb_c(PAL_RED, 4));
+}
+
+static const struct tb_tex tb_textures[] = {
+	{ "AR_BRICK", 64, 64, tb_brick },   { "AR_METAL", 64, 64, tb_metal },
+	{ "AR_STONE", 64, 64, tb_stone },   { "AR_TECH", 64, 128, tb_tech },
+	{ "AR_WOOD", 64, 64, tb_wood },     { "AR_DOOR", 64, 128, tb_door },
+	{ "AR_GRATE", 64, 64, tb_grate },   { "AR_MARBL", 64, 128, tb_marble },
+	{ "SKY1", 256, 128, tb_sky },
+};
+
+static const struct tb_flat tb_flats[] = {
+	{ "AR_FLOOR", tb_floor, 0 },
+	{ "AR_GRASS", tb_noisy, TB_NOISY(PAL_GREEN, 5, 4) },
+	{ "AR_DIRT", tb_noisy, TB_NOISY(PAL_BROWN, 5, 4) },
+	{ "AR_SLATE", tb_noisy, TB_NOISY(PAL_SLATE, 5, 3) },
+	{ "AR_CEIL", tb_ceil, 0 },
+	{ "AR_LIGHT", tb_ceil, 1 },
+	{ "AR_WAT1", tb_water, 0 },
+	{ "AR_WAT2", tb_water, 1 },
+	{ "AR_WAT3", tb_water, 2 },
+	{ "AR_WAT4", tb_water, 3 },
+	{ "F_SKY1", tb_skyflat, 0 },
+};
+
+static const struct tb_spr tb_sprites[] = {
+	{ "BAR1A0", 23, 32, tb_barrel, 0 },   { "BAR1B0", 23, 32, tb_barrel, 1 },
+	{ "COLUA0", 23, 48, tb_lamp, 0 },     { "MEDIA0", 28, 19, tb_medikit, 0 },
+	{ "POSSA1", 32, 56, tb_enemy, 1 },    { "POSSA2A8", 32, 56, tb_enemy, 2 },
+	{ "POSSA3A7", 32, 56, tb_enemy, 3 },  { "POSSA4A6", 32, 56, tb_enemy, 4 },
+	{ "POSSA5", 32, 56, tb_enemy, 5 },
+};
+
+#define TB_N(a) ((int)(sizeof(a) / sizeof((a)[0])))
+
+int tex_builtin(struct tex_set **out)
+{
+	struct tex_set *t;
+	uint64_t budget = TEX_BUDGET;
+	uint8_t ca = PAL_RGB(PAL_PINK, 3), cb = PAL_BLACK;
+	int r, nt = TB_N(tb_textures) + 2, nf = TB_N(tb_flats) + 1, ns = TB_N(tb_sprites) + 1;
+
+	*out = NULL;
+	r = tex_set_alloc(&t, nt, nf, ns);
+	if (r)
+		return r;
+	pal_builtin(&t->pal);
+	r = tex_pic_new(&t->textures[0], "-", 1, 1, &budget);
+	for (int i = 0; !r && i < TB_N(tb_textures); i++) {
+		struct tex_pic *p = &t->textures[i + 1];
+
+		r = tex_pic_new(p, tb_textures[i].name, tb_textures[i].w, tb_textures[i].h, &budget);
+		if (!r) {
+			tb_textures[i].make(p);
+			tex_pic_seal(p);
+		}
+	}
+	t->fallback_tex = nt - 1;
+	if (!r)
+		r = tex_pic_checker(&t->textures[nt - 1], "", TEX_CHECKER_SIDE, TEX_CHECKER_SIDE, ca,
+				    cb);
+	for (int i = 0; i < TB_N(tb_flats); i++) {
+		tex_name(t->flats[i].name, tb_flats[i].name);
+		tb_flats[i].make(&t->flats[i], tb_flats[i].arg);
+	}
+	t->fallback_flat = nf - 1;
+	tex_flat_checker(&t->flats[nf - 1], "", ca, cb);
+	if (!r)
+		r = tex_pic_checker(&t->sprpics[0], "", 8, 8, ca, cb);
+	for (int i = 0; !r && i < TB_N(tb_sprites); i++) {
+		struct tex_pic *p = &t->sprpics[i + 1];
+
+		r = tex_pic_new(p, tb_sprites[i].name, tb_sprites[i].w, tb_sprites[i].h, &budget);
+		if (!r) {
+			tb_sprites[i].make(p, tb_sprites[i].arg);
+			tex_pic_seal(p);
+			p->left = (int16_t)(p->w / 2);
+			p->top = p->h;
+		}
+	}
+	if (!r)
+		r = tex_set_finish(t);
+	if (r) {
+		tex_free(t);
+		return r < 0 && r != -ENOMEM ? -ENOMEM : r;
+	}
+	*out = t;
+	return 0;
+}
