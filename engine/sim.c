@@ -1,12 +1,16 @@
 /*
- * sim: modes, coins and credits, and Doom-like player movement with wall
- * collision, in 16.16 fixed point.
+ * sim: the mode machine (attract, play, game over, initials, service),
+ * coins and credits, stages, lives and the player, in 16.16 fixed point.
+ * The rules of the fight live in the g_*.c files, the service menu in
+ * menu.c; this file sequences them, one tick at a time.
  */
 #include "engine/sim.h"
 
+#include <assert.h>
 #include <stddef.h>
 #include <string.h>
 
+#include "engine/g_local.h"
 #include "engine/hash.h"
 #include "engine/map.h"
 #include "engine/r_main.h"
@@ -23,28 +27,44 @@
 #define SIM_STOPSPEED 0x1000           /* Doom's STOPSPEED: below it, stop */
 #define SIM_THRUST 384                 /* thrust per unit of forward/side */
 #define SIM_MAX_MOVE (16 * FX_ONE)     /* momentum clamp per axis */
-#define SIM_SUBSTEP (SIM_PLAYER_RADIUS / 2)
-#define SIM_PUSH_ITERS 4
-#define SIM_PUSH_MARGIN 2              /* fx units left between player and wall */
 #define SIM_ATTRACT_TURN (ANG90 / (8 * SIM_TICRATE))  /* a turn in 32 s */
 #define SIM_RNG_SEED 0x2545f491u
 #define SIM_SPAWN_INSET (32 * FX_ONE)  /* no player start: this far off a wall */
+#define SIM_DEAD_VIEW (8 * FX_ONE)     /* eye height of a dead player */
+#define SIM_NAV_DELAY 20               /* ticks before a held direction repeats */
+#define SIM_NAV_REPEAT 6               /* ticks between repeats */
+
+static const char *const sim_modes[SIM_MODE_COUNT] = {
+	[SIM_ATTRACT] = "attract", [SIM_PLAY] = "play", [SIM_GAMEOVER] = "gameover",
+	[SIM_INITIALS] = "initials", [SIM_SERVICE] = "service",
+};
+
+static const char *const sim_pages[SIM_PAGE_COUNT] = {
+	[SIM_PAGE_TITLE] = "title", [SIM_PAGE_SCORES] = "scores", [SIM_PAGE_DEMO] = "demo",
+};
 
 const char *sim_mode_name(enum sim_mode m)
 {
-	switch (m) {
-	case SIM_ATTRACT: return "attract";
-	case SIM_PLAY: return "play";
-	default: return NULL;
-	}
+	return (unsigned)m < SIM_MODE_COUNT ? sim_modes[m] : NULL;
 }
 
 int sim_mode_from_name(const char *name)
 {
-	int i;
+	for (int i = 0; i < SIM_MODE_COUNT; i++)
+		if (strcmp(name, sim_modes[i]) == 0)
+			return i;
+	return -1;
+}
 
-	for (i = 0; i < SIM_MODE_COUNT; i++)
-		if (strcmp(name, sim_mode_name((enum sim_mode)i)) == 0)
+const char *sim_page_name(int page)
+{
+	return page >= 0 && page < SIM_PAGE_COUNT ? sim_pages[page] : NULL;
+}
+
+int sim_page_from_name(const char *name)
+{
+	for (int i = 0; i < SIM_PAGE_COUNT; i++)
+		if (strcmp(name, sim_pages[i]) == 0)
 			return i;
 	return -1;
 }
@@ -60,14 +80,18 @@ static void sim_settle(struct sim *s)
 
 /* Puts the player at the map's player 1 start, or, without one, SPAWN_INSET
  * in front of the middle of the first line whose front side faces sector 0,
- * facing along that line. */
+ * facing along that line. Keeps health and ammo. */
 static void sim_spawn(struct sim *s)
 {
 	const struct map *m = s->map;
 	struct sim_player *p = &s->pl;
+	fx_t health = p->health;
+	uint16_t ammo = p->ammo;
 	uint32_t i;
 
 	memset(p, 0, sizeof *p);
+	p->health = health;
+	p->ammo = ammo;
 	for (i = 0; i < m->num_things; i++) {
 		if (m->things[i].type == 1) {
 			p->x = m->things[i].x;
@@ -92,194 +116,77 @@ static void sim_spawn(struct sim *s)
 	sim_settle(s);
 }
 
-void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set)
+/* Loads stage i: its map, enemies and pickups, the player at its start. */
+static void sim_start_stage(struct sim *s, int i)
 {
-	memset(s, 0, sizeof *s);
-	s->map = m;
-	s->set = *set;
-	s->mode = set->start_in_play ? SIM_PLAY : SIM_ATTRACT;
-	s->rng = SIM_RNG_SEED;
+	s->g.stage = (uint8_t)i;
+	s->map = s->stages[i];
+	s->g.phase = G_PH_PLAY;
+	s->g.phase_t = 0;
+	s->g.stage_t = 0;
+	s->g.shot = G_SHOT_NONE;
+	s->g.shot_t = UINT16_MAX;
+	g_spawn_stage(s);
 	sim_spawn(s);
 }
 
-/* Whether line l stops a player whose feet are at z: one-sided and blocking
- * lines always; a portal when the higher floor is more than a step above z,
- * or the opening (lower ceiling - higher floor) or the room above z is lower
- * than the player. */
-static int sim_blocks(const struct map *m, const struct map_line *l, fx_t z)
+static void sim_full_health(struct sim *s)
 {
-	const struct map_sector *f, *b;
-	int64_t floor, ceil;
-
-	if (l->side[1] == MAP_NONE || (l->flags & ML_BLOCKING))
-		return 1;
-	f = &m->sectors[m->sides[l->side[0]].sector];
-	b = &m->sectors[m->sides[l->side[1]].sector];
-	floor = f->floor_h > b->floor_h ? f->floor_h : b->floor_h;
-	ceil = f->ceil_h < b->ceil_h ? f->ceil_h : b->ceil_h;
-	return floor - z > SIM_MAX_STEP || ceil - floor < SIM_PLAYER_HEIGHT ||
-	       ceil - z < SIM_PLAYER_HEIGHT;
+	s->pl.health = G_HEALTH_MAX * FX_ONE;
+	if (s->pl.ammo < G_AMMO_START)
+		s->pl.ammo = G_AMMO_START;
 }
 
-/* |n / d| rounded up, for d > 0: pushes round away from the wall. */
-static int64_t sim_div_up(int64_t n, int64_t d)
+static void sim_new_game(struct sim *s)
 {
-	return n >= 0 ? (n + d - 1) / d : -((-n + d - 1) / d);
+	memset(&s->g, 0, sizeof s->g);
+	s->g.lives = (uint8_t)g_lives_setting(s);
+	s->pl.ammo = 0;
+	sim_full_health(s);
+	s->new_rank = -1;
+	s->mode = SIM_PLAY;
+	s->mode_t = 0;
+	sim_start_stage(s, 0);
 }
 
-/* Pushes (*x, *y) radially away from point (ax, ay) to the player radius
- * (plus margin) if closer; (fdx, fdy) is the way out if it is exactly on it.
- * Returns whether it was closer. */
-static int sim_push_point(fx_t *x, fx_t *y, fx_t ax, fx_t ay, int64_t fdx, int64_t fdy,
-			  int apply)
+/* Back to attract at `page`: the world is stage 0 again, seen by the idle
+ * camera. */
+static void sim_attract(struct sim *s, int page)
 {
-	int64_t vx = (int64_t)*x - ax, vy = (int64_t)*y - ay;
-	int64_t out = SIM_PLAYER_RADIUS + SIM_PUSH_MARGIN;
-	int64_t d;
-
-	if (vx <= -SIM_PLAYER_RADIUS || vx >= SIM_PLAYER_RADIUS || vy <= -SIM_PLAYER_RADIUS ||
-	    vy >= SIM_PLAYER_RADIUS || vx * vx + vy * vy >= (int64_t)SIM_PLAYER_RADIUS * SIM_PLAYER_RADIUS)
-		return 0;
-	if (!apply)
-		return 1;
-	if (vx == 0 && vy == 0) {
-		vx = fdx;
-		vy = fdy;
-	}
-	d = fx_len((fx_t)vx, (fx_t)vy);
-	*x = (fx_t)(ax + sim_div_up(vx * out, d));
-	*y = (fx_t)(ay + sim_div_up(vy * out, d));
-	return 1;
+	s->mode = SIM_ATTRACT;
+	s->page = (uint8_t)page;
+	s->mode_t = 0;
+	sim_start_stage(s, 0);
 }
 
-/*
- * Whether the player circle at (*x, *y) overlaps segment a-b; with apply,
- * moves it out to SIM_PLAYER_RADIUS + margin: along the segment's normal
- * when the nearest point is inside the segment (which is what makes the
- * player slide along walls), radially from an end point otherwise. A centre
- * exactly on the line goes to the front (right) side.
- */
-static int sim_push(fx_t *x, fx_t *y, const struct map_vertex *a, const struct map_vertex *b,
-		    int apply)
+void sim_init_stages(struct sim *s, const struct map *const *maps, int n,
+		     const struct sim_settings *set, const struct g_scores *scores,
+		     const struct g_books *books)
 {
-	int64_t dx = (int64_t)b->x - a->x, dy = (int64_t)b->y - a->y;
-	int64_t px = (int64_t)*x - a->x, py = (int64_t)*y - a->y;
-	int64_t t = px * dx + py * dy, len2 = dx * dx + dy * dy;
-	int64_t cross, mag, len, need;
-
-	if (t <= 0)
-		return sim_push_point(x, y, a->x, a->y, -dx, -dy, apply);
-	if (t >= len2)
-		return sim_push_point(x, y, b->x, b->y, dx, dy, apply);
-	len = fx_len((fx_t)dx, (fx_t)dy);
-	cross = dx * py - dy * px;     /* > 0: left of a->b */
-	mag = cross < 0 ? -cross : cross;
-	if (mag >= SIM_PLAYER_RADIUS * len)
-		return 0;
-	if (!apply)
-		return 1;
-	/* left normal (-dy, dx) / len; the centre moves by (R - dist) along it */
-	need = SIM_PLAYER_RADIUS + SIM_PUSH_MARGIN - mag / len;
-	if (cross <= 0)
-		need = -need;
-	*x = (fx_t)(*x + sim_div_up(-dy * need, len));
-	*y = (fx_t)(*y + sim_div_up(dx * need, len));
-	return 1;
+	assert(n >= 1 && n <= G_MAX_STAGES);
+	memset(s, 0, sizeof *s);
+	for (int i = 0; i < n; i++)
+		s->stages[i] = maps[i];
+	s->num_stages = (uint8_t)n;
+	s->set = *set;
+	s->rng = SIM_RNG_SEED;
+	s->new_rank = -1;
+	s->ini_rank = -1;
+	if (scores)
+		s->scores = *scores;
+	else
+		g_scores_default(&s->scores);
+	if (books)
+		s->books = *books;
+	if (set->start_in_play)
+		sim_new_game(s);
+	else
+		sim_attract(s, SIM_PAGE_TITLE);
 }
 
-/* Pushes the player at (*x, *y) out of every wall it overlaps. Returns 1 if
- * it then fits and moved no more than a radius per axis from (ox, oy) (so a
- * push can never carry it through a wall), else 0. Lines are tested only
- * when their bounding box, grown by the radius, contains the centre. */
-static int sim_fit(const struct map *m, fx_t z, fx_t ox, fx_t oy, fx_t *x, fx_t *y)
+void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set)
 {
-	int iter, apply;
-
-	for (iter = 0; iter <= SIM_PUSH_ITERS; iter++) {
-		int hit = 0;
-		apply = iter < SIM_PUSH_ITERS;
-		for (uint32_t i = 0; i < m->num_lines && !(hit && !apply); i++) {
-			const struct map_line *l = &m->lines[i];
-			const struct map_vertex *a = &m->vertices[l->v1], *b = &m->vertices[l->v2];
-			int64_t lo, hi;
-			lo = (a->x < b->x ? a->x : b->x) - (int64_t)SIM_PLAYER_RADIUS;
-			hi = (a->x > b->x ? a->x : b->x) + (int64_t)SIM_PLAYER_RADIUS;
-			if (*x <= lo || *x >= hi)
-				continue;
-			lo = (a->y < b->y ? a->y : b->y) - (int64_t)SIM_PLAYER_RADIUS;
-			hi = (a->y > b->y ? a->y : b->y) + (int64_t)SIM_PLAYER_RADIUS;
-			if (*y <= lo || *y >= hi)
-				continue;
-			if (sim_blocks(m, l, z) && sim_push(x, y, a, b, apply))
-				hit = 1;
-		}
-		if (!hit)
-			break;
-		if (!apply)
-			return 0;
-	}
-	return (int64_t)*x - ox <= SIM_PLAYER_RADIUS && ox - (int64_t)*x <= SIM_PLAYER_RADIUS &&
-	       (int64_t)*y - oy <= SIM_PLAYER_RADIUS && oy - (int64_t)*y <= SIM_PLAYER_RADIUS;
-}
-
-/* Tries to move the player by (dx, dy); updates its position on success. */
-static int sim_try(struct sim *s, fx_t dx, fx_t dy)
-{
-	struct sim_player *p = &s->pl;
-	fx_t x = p->x + dx, y = p->y + dy;
-
-	if (!sim_fit(s->map, p->z, p->x, p->y, &x, &y))
-		return 0;
-	p->x = x;
-	p->y = y;
-	return 1;
-}
-
-/* Momentum after a blocked move: no more than what was actually moved, and
- * never reversed. */
-static fx_t sim_limit(fx_t mom, fx_t moved)
-{
-	if ((mom > 0 && moved <= 0) || (mom < 0 && moved >= 0))
-		return 0;
-	return fx_abs(moved) < fx_abs(mom) ? moved : mom;
-}
-
-/*
- * Moves the player by its momentum in sub-steps of at most half a radius per
- * axis (so it cannot pass through a wall), each pushed out of the walls it
- * touches (sliding). A sub-step that does not fit is retried along x only,
- * then y only (Doom's fallback); if neither fits the player stops there.
- */
-static void sim_move(struct sim *s)
-{
-	struct sim_player *p = &s->pl;
-	int64_t mx = p->momx, my = p->momy;
-	int64_t ax = mx < 0 ? -mx : mx, ay = my < 0 ? -my : my;
-	int64_t n = (ax > ay ? ax : ay) / SIM_SUBSTEP + 1, i;
-	fx_t x0 = p->x, y0 = p->y;
-	int blocked = 0;
-
-	for (i = 0; i < n; i++) {
-		fx_t dx = (fx_t)(mx * (i + 1) / n - mx * i / n);
-		fx_t dy = (fx_t)(my * (i + 1) / n - my * i / n);
-		fx_t want_x = p->x + dx, want_y = p->y + dy;
-		if (sim_try(s, dx, dy)) {
-			if (p->x != want_x || p->y != want_y)
-				blocked = 1;
-			continue;
-		}
-		blocked = 1;
-		if (dx && sim_try(s, dx, 0))
-			continue;
-		if (dy && sim_try(s, 0, dy))
-			continue;
-		break;
-	}
-	if (blocked) {
-		p->momx = sim_limit(p->momx, p->x - x0);
-		p->momy = sim_limit(p->momy, p->y - y0);
-	}
-	sim_settle(s);
+	sim_init_stages(s, &m, 1, set, NULL, NULL);
 }
 
 static fx_t sim_clamp_mom(int64_t v)
@@ -294,7 +201,7 @@ static fx_t sim_friction(fx_t v)
 	return (fx_t)(v < 0 ? -a : a);
 }
 
-static void sim_player_tick(struct sim *s, const struct sim_cmd *cmd)
+static void sim_player_move(struct sim *s, const struct sim_cmd *cmd)
 {
 	struct sim_player *p = &s->pl;
 	int64_t mx = p->momx, my = p->momy;
@@ -312,8 +219,15 @@ static void sim_player_tick(struct sim *s, const struct sim_cmd *cmd)
 	}
 	p->momx = sim_clamp_mom(mx);
 	p->momy = sim_clamp_mom(my);
-	if (p->momx || p->momy)
-		sim_move(s);
+	if (p->momx || p->momy) {
+		struct g_body b = { p->x, p->y, p->z, p->momx, p->momy, SIM_PLAYER_RADIUS, -1 };
+		g_move(s, &b);
+		p->x = b.x;
+		p->y = b.y;
+		p->momx = b.momx;
+		p->momy = b.momy;
+		sim_settle(s);
+	}
 	if (!cmd->forward && !cmd->side && fx_abs(p->momx) < SIM_STOPSPEED &&
 	    fx_abs(p->momy) < SIM_STOPSPEED) {
 		p->momx = 0;
@@ -328,7 +242,11 @@ static void sim_coins(struct sim *s, uint8_t coins)
 {
 	uint32_t per = s->set.coins_per_credit ? s->set.coins_per_credit : 1;
 
+	if (!coins)
+		return;
 	s->coins_total += coins;
+	s->books.coins += coins;
+	s->books_gen++;
 	s->coin_rem += coins;
 	while (s->coin_rem >= per) {
 		s->coin_rem -= per;
@@ -336,61 +254,251 @@ static void sim_coins(struct sim *s, uint8_t coins)
 	}
 }
 
+/* Spends a credit for a start or continue; 0 if there is none. */
+static int sim_pay(struct sim *s)
+{
+	if (s->set.freeplay)
+		return 1;
+	if (s->credits == 0)
+		return 0;
+	s->credits--;
+	return 1;
+}
+
+/* The player lost a life (the death phase ended). */
+static void sim_life_lost(struct sim *s)
+{
+	struct g_game *g = &s->g;
+
+	if (g->lives > 0)
+		g->lives--;
+	if (g->lives > 0) {
+		sim_full_health(s);
+		g_enemies_reset(s);
+		g->phase = G_PH_PLAY;
+		g->phase_t = 0;
+		sim_spawn(s);
+		return;
+	}
+	s->mode = SIM_GAMEOVER;
+	s->mode_t = 0;
+	s->countdown = G_CONTINUE_TICKS;
+}
+
+static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd)
+{
+	struct g_game *g = &s->g;
+	struct sim_player *p = &s->pl;
+
+	if (g->stage_t < UINT32_MAX)
+		g->stage_t++;
+	if (g->shot_t < UINT16_MAX)
+		g->shot_t++;
+	if (p->refire)
+		p->refire--;
+	if (p->hurt)
+		p->hurt--;
+	if (p->bonus)
+		p->bonus--;
+	switch (g->phase) {
+	case G_PH_PLAY:
+		sim_player_move(s, cmd);
+		if ((cmd->buttons & SIM_BT_FIRE) && p->refire == 0 && p->ammo > 0)
+			g_fire(s);
+		g_pickups_tick(s);
+		g_enemies_tick(s);
+		if (g->phase == G_PH_PLAY && g->num_enemies > 0 && g->alive == 0) {
+			g->score += G_STAGE_BONUS * ((uint32_t)g->stage + 1);
+			g->phase = G_PH_CLEAR;
+			g->phase_t = 0;
+		}
+		break;
+	case G_PH_DEAD:
+		g->phase_t++;
+		p->momx = p->momy = 0;
+		if (p->viewz - p->z > SIM_DEAD_VIEW)
+			p->viewz -= FX_ONE;
+		if (g->phase_t >= G_DEAD_TICKS)
+			sim_life_lost(s);
+		break;
+	case G_PH_CLEAR:
+	default:
+		/* the player may walk about while the banner shows */
+		g->phase_t++;
+		sim_player_move(s, cmd);
+		if (g->phase_t >= G_CLEAR_TICKS) {
+			int next = g->stage + 1;
+			if (next >= s->num_stages) {
+				next = 0;
+				if (g->loop < UINT8_MAX)
+					g->loop++;
+			}
+			sim_start_stage(s, next);
+		}
+		break;
+	}
+}
+
+static void sim_gameover_tick(struct sim *s, uint8_t pressed)
+{
+	int rank;
+
+	if ((pressed & SIM_BT_START) && sim_pay(s)) {
+		struct g_game *g = &s->g;
+		if (g->continues < UINT8_MAX)
+			g->continues++;
+		g->lives = (uint8_t)g_lives_setting(s);
+		sim_full_health(s);
+		g_enemies_reset(s);
+		g->phase = G_PH_PLAY;
+		g->phase_t = 0;
+		sim_spawn(s);
+		s->mode = SIM_PLAY;
+		s->mode_t = 0;
+		return;
+	}
+	if (pressed & SIM_BT_FIRE)
+		s->countdown = s->countdown > SIM_TICRATE ? (uint16_t)(s->countdown - SIM_TICRATE) : 0;
+	else if (s->countdown)
+		s->countdown--;
+	if (s->countdown)
+		return;
+	rank = g_scores_rank(&s->scores, s->g.score);
+	if (rank < 0) {
+		sim_attract(s, SIM_PAGE_TITLE);
+		return;
+	}
+	s->mode = SIM_INITIALS;
+	s->mode_t = 0;
+	s->ini_pos = 0;
+	memset(s->ini, 0, sizeof s->ini);
+	s->ini_rank = (int8_t)rank;
+}
+
+static void sim_initials_done(struct sim *s)
+{
+	char name[G_NAME_LEN];
+
+	for (int i = 0; i < G_NAME_LEN; i++)
+		name[i] = G_ALPHABET[s->ini[i] % G_ALPHABET_LEN];
+	g_scores_insert(&s->scores, s->ini_rank, name, s->g.score, (uint8_t)(s->g.stage + 1));
+	s->scores_gen++;
+	s->new_rank = s->ini_rank;
+	s->ini_rank = -1;
+	sim_attract(s, SIM_PAGE_SCORES);
+}
+
+static void sim_initials_tick(struct sim *s, uint8_t pressed, uint8_t nav)
+{
+	uint8_t *c = &s->ini[s->ini_pos];
+
+	if (nav & (MENU_NAV_UP | MENU_NAV_RIGHT))
+		*c = (uint8_t)((*c + 1) % G_ALPHABET_LEN);
+	else if (nav & (MENU_NAV_DOWN | MENU_NAV_LEFT))
+		*c = (uint8_t)((*c + G_ALPHABET_LEN - 1) % G_ALPHABET_LEN);
+	if (pressed & SIM_BT_FIRE) {
+		s->ini_pos++;
+		if (s->ini_pos >= G_NAME_LEN) {
+			sim_initials_done(s);
+			return;
+		}
+		s->ini[s->ini_pos] = s->ini[s->ini_pos - 1];  /* start from the last letter */
+	}
+	if (s->mode_t >= G_INITIALS_TICKS)
+		sim_initials_done(s);
+}
+
+static void sim_attract_tick(struct sim *s, uint8_t pressed)
+{
+	static const uint32_t len[SIM_PAGE_COUNT] = { SIM_TITLE_TICKS, SIM_SCORES_TICKS,
+						      SIM_DEMO_TICKS };
+
+	if ((pressed & SIM_BT_START) && sim_pay(s)) {
+		s->plays++;
+		s->books.plays++;
+		s->books_gen++;
+		sim_new_game(s);
+		return;
+	}
+	s->pl.angle += SIM_ATTRACT_TURN;
+	if (s->mode_t >= len[s->page % SIM_PAGE_COUNT]) {
+		s->page = (uint8_t)((s->page + 1) % SIM_PAGE_COUNT);
+		s->mode_t = 0;
+	}
+}
+
+/* Directions held in cmd, as MENU_NAV_* bits: forward is up, back is
+ * down, turning or strafing left is left, right is right. */
+static uint8_t sim_dirs(const struct sim_cmd *c)
+{
+	return (uint8_t)((c->forward > 0 ? MENU_NAV_UP : 0) | (c->forward < 0 ? MENU_NAV_DOWN : 0) |
+			 (c->turn > 0 || c->side < 0 ? MENU_NAV_LEFT : 0) |
+			 (c->turn < 0 || c->side > 0 ? MENU_NAV_RIGHT : 0));
+}
+
+/* This tick's navigation: new directions, and held ones every
+ * SIM_NAV_REPEAT ticks after SIM_NAV_DELAY. */
+static uint8_t sim_nav(struct sim *s, const struct sim_cmd *c)
+{
+	uint8_t held = sim_dirs(c), nav = (uint8_t)(held & ~s->prev_nav);
+
+	if (held != s->prev_nav)
+		s->nav_t = 0;
+	else if (s->nav_t < UINT16_MAX)
+		s->nav_t++;
+	if (held && s->nav_t >= SIM_NAV_DELAY && (s->nav_t - SIM_NAV_DELAY) % SIM_NAV_REPEAT == 0)
+		nav |= held;
+	s->prev_nav = held;
+	return nav;
+}
+
 void sim_tick(struct sim *s, const struct sim_cmd *cmd)
 {
 	uint8_t pressed = (uint8_t)(cmd->buttons & ~s->prev_buttons);
+	uint8_t nav = sim_nav(s, cmd);
 
 	s->prev_buttons = cmd->buttons;
+	s->cmd = *cmd;
+	s->books.on_ticks++;
+	if (s->mode_t < UINT32_MAX)
+		s->mode_t++;
 	sim_coins(s, cmd->coins);
+	if ((pressed & SIM_BT_SERVICE) && s->mode != SIM_SERVICE) {
+		s->mode = SIM_SERVICE;
+		s->mode_t = 0;
+		menu_enter(&s->menu);
+		pressed = 0;
+	}
 	switch (s->mode) {
 	case SIM_ATTRACT:
-		if ((pressed & SIM_BT_START) && (s->set.freeplay || s->credits > 0)) {
-			if (!s->set.freeplay)
-				s->credits--;
-			s->plays++;
-			s->mode = SIM_PLAY;
-			sim_spawn(s);
-		} else {
-			s->pl.angle += SIM_ATTRACT_TURN;
-		}
+		sim_attract_tick(s, pressed);
 		break;
 	case SIM_PLAY:
+		s->books.play_ticks++;
+		sim_play_tick(s, cmd);
+		break;
+	case SIM_GAMEOVER:
+		sim_gameover_tick(s, pressed);
+		break;
+	case SIM_INITIALS:
+		sim_initials_tick(s, pressed, nav);
+		break;
+	case SIM_SERVICE:
 	default:
-		sim_player_tick(s, cmd);
+		if (menu_tick(s, pressed, nav))
+			sim_attract(s, SIM_PAGE_TITLE);
 		break;
 	}
-	/* xorshift32, stepped every tick so every tick's hash covers it */
-	s->rng ^= s->rng << 13;
-	s->rng ^= s->rng >> 17;
-	s->rng ^= s->rng << 5;
+	g_random(s);                   /* stepped every tick so every tick's hash covers it */
 	s->tick++;
 }
 
-uint64_t sim_hash(const struct sim *s)
+uint64_t sim_stages_hash(const struct map *const *maps, int n)
 {
-	const struct sim_player *p = &s->pl;
 	uint64_t h = HASH_INIT;
 
-	h = hash_u64(h, s->map ? s->map->content_hash : 0);
-	h = hash_u8(h, s->set.coins_per_credit);
-	h = hash_u8(h, s->set.freeplay);
-	h = hash_u8(h, s->set.start_in_play);
-	h = hash_u32(h, s->tick);
-	h = hash_u32(h, (uint32_t)s->mode);
-	h = hash_u32(h, s->credits);
-	h = hash_u32(h, s->coin_rem);
-	h = hash_u32(h, s->coins_total);
-	h = hash_u32(h, s->plays);
-	h = hash_u8(h, s->prev_buttons);
-	h = hash_u32(h, s->rng);
-	h = hash_i32(h, p->x);
-	h = hash_i32(h, p->y);
-	h = hash_i32(h, p->z);
-	h = hash_i32(h, p->viewz);
-	h = hash_i32(h, p->momx);
-	h = hash_i32(h, p->momy);
-	h = hash_u32(h, p->angle);
-	h = hash_u32(h, p->sector);
+	for (int i = 0; i < n; i++)
+		h = hash_u64(h, maps[i] ? maps[i]->content_hash : 0);
 	return h;
 }
 

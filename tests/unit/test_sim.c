@@ -15,8 +15,8 @@
 #define R (SIM_PLAYER_RADIUS)
 #define TOL (FX_ONE / 256)             /* how close to a wall "stops at" means */
 
-static const struct sim_settings play = { 1, 0, 1 };
-static const struct sim_settings attract2 = { 2, 0, 0 };
+static const struct sim_settings play = { 1, 0, 1, 0, 0 };
+static const struct sim_settings attract2 = { 2, 0, 0, 0, 0 };
 
 /* A room 2048 x 256 with the start at (sx, sy) facing a. */
 static struct map *room(int sx, int sy, ang_t a)
@@ -393,7 +393,7 @@ static void start_needs_a_credit_and_a_fresh_press(void **state)
 
 static void freeplay_starts_without_credits(void **state)
 {
-	static const struct sim_settings fp = { 1, 1, 0 };
+	static const struct sim_settings fp = { 1, 1, 0, 0, 0 };
 	struct map *m = room(64, 64, 0);
 	struct sim s;
 	struct sim_cmd c = { .coins = 1 };
@@ -412,7 +412,7 @@ static void freeplay_starts_without_credits(void **state)
 
 static void attract_ignores_movement_and_start_resets_the_player(void **state)
 {
-	static const struct sim_settings fp = { 1, 1, 0 };
+	static const struct sim_settings fp = { 1, 1, 0, 0, 0 };
 	struct map *m = room(300, 100, ANG90);
 	struct sim s;
 	struct sim_cmd c = { .forward = 127, .side = 50, .turn = 1000 };
