@@ -261,7 +261,7 @@ static inline void wfx_sprite(struct wbuf *b, int i)
 	wb_16(b, 1 + i);
 	wb_16(b, 10 + i);
 	wb_32(b, 16);
-	wb_32(b, 16 + 7);
+	wb_32(b, 16 + 8);
 	for (int x = 0; x < 2; x++) {
 		wb_u8(b, 0);
 		wb_u8(b, 3);

@@ -1,0 +1,451 @@
+/* Tests for engine/tex*.c: palette and light maps, texture composition from
+ * patches, flats, sprites and their rotations, animation, fallbacks,
+ * layering, and the built-in set. Fixture values: wad_fixture.h. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "engine/tex.h"
+#include "engine/wad.h"
+#include "wad_fixture.h"
+
+struct fx {
+	uint8_t *img;
+	struct wad *w;
+	struct tex_set *t;
+};
+
+static struct fx load_fixture(int with_colormap)
+{
+	struct fx f;
+	struct wfix b;
+	size_t len;
+	char err[160];
+
+	wf_init(&b);
+	wfx_graphics(&b, with_colormap);
+	f.img = wf_finish(&b, "IWAD", &len);
+	assert_int_equal(wad_new(&f.w), 0);
+	assert_int_equal(wad_add(f.w, f.img, len, "fix.wad", err, sizeof err), 0);
+	assert_int_equal(tex_load_wad(f.w, &f.t, err, sizeof err), 0);
+	return f;
+}
+
+static void unload(struct fx *f)
+{
+	tex_free(f->t);
+	wad_free(f->w);
+	free(f->img);
+}
+
+/* Pixel (x, y) of texture name, or -1 where it is transparent. */
+static int px(const struct tex_set *t, const char *name, int x, int y)
+{
+	int i = tex_find(t, name);
+	const struct tex_pic *p;
+	size_t k;
+
+	assert_true(i > 0);
+	p = &t->textures[i];
+	k = (size_t)x * (size_t)p->h + (size_t)y;
+	if (p->opaque && !p->opaque[k])
+		return -1;
+	return p->px[k];
+}
+
+static void palette_and_colormaps_are_read_exactly(void **state)
+{
+	struct fx f = load_fixture(1);
+
+	(void)state;
+	for (int i = 0; i < 256; i++) {
+		assert_int_equal(f.t->pal.rgb[i][0], i);
+		assert_int_equal(f.t->pal.rgb[i][1], 255 - i);
+		assert_int_equal(f.t->pal.rgb[i][2], (7 * i) & 255);
+	}
+	for (int l = 0; l < PAL_LIGHTS; l++)
+		for (int i = 0; i < 256; i++)
+			assert_int_equal(f.t->pal.cmap[l][i], (i + l) & 255);
+	unload(&f);
+}
+
+static void missing_colormap_is_computed(void **state)
+{
+	struct fx f = load_fixture(0);
+
+	(void)state;
+	/* the fixture's 256 colours are distinct, so full light maps every
+	 * colour to itself; the darkest map picks a colour at least as near to
+	 * the colour at 1/32 brightness as black-most entry 0 (0, 255, 0) and
+	 * the original colour are */
+	for (int i = 0; i < 256; i++)
+		assert_int_equal(f.t->pal.cmap[0][i], i);
+	for (int i = 0; i < 256; i++) {
+		const uint8_t *c = f.t->pal.rgb[i];
+		int t[3], d[3] = { 0, 0, 0 };
+		const uint8_t *cand[3] = { f.t->pal.rgb[f.t->pal.cmap[PAL_LIGHTS - 1][i]], c,
+					   f.t->pal.rgb[0] };
+		for (int k = 0; k < 3; k++)
+			t[k] = (c[k] + 16) / 32;
+		for (int j = 0; j < 3; j++)
+			for (int k = 0; k < 3; k++)
+				d[j] += (cand[j][k] - t[k]) * (cand[j][k] - t[k]);
+		assert_true(d[0] <= d[1]);
+		assert_true(d[0] <= d[2]);
+	}
+	unload(&f);
+}
+
+static void two_patch_texture_is_composed_and_clipped(void **state)
+{
+	struct fx f = load_fixture(1);
+	const struct tex_pic *p;
+
+	(void)state;
+	assert_int_equal(tex_find(f.t, "TWO"), 1);
+	p = &f.t->textures[1];
+	assert_int_equal(p->w, 8);
+	assert_int_equal(p->h, 8);
+	/* PAT1 at (0,0): 16 + 4x + y */
+	assert_int_equal(px(f.t, "TWO", 0, 0), 16);
+	assert_int_equal(px(f.t, "TWO", 3, 2), 16 + 12 + 2);
+	assert_int_equal(px(f.t, "TWO", 1, 3), 16 + 4 + 3);
+	/* PAT2 at (6,4): its first post (rows 0-1) lands on rows 4-5 */
+	assert_int_equal(px(f.t, "TWO", 6, 4), 100);
+	assert_int_equal(px(f.t, "TWO", 6, 5), 101);
+	assert_int_equal(px(f.t, "TWO", 7, 4), 110);
+	assert_int_equal(px(f.t, "TWO", 7, 5), 111);
+	/* its hole (rows 2-3) at rows 6-7; its second post (rows 4-5 -> 8-9)
+	 * and its third column (x 8) are past the edges */
+	assert_int_equal(px(f.t, "TWO", 6, 6), -1);
+	assert_int_equal(px(f.t, "TWO", 7, 7), -1);
+	/* nothing drawn at all */
+	assert_int_equal(px(f.t, "TWO", 4, 0), -1);
+	assert_int_equal(px(f.t, "TWO", 0, 4), -1);
+	assert_non_null(p->opaque);
+	unload(&f);
+}
+
+static void solid_negative_and_tall_textures(void **state)
+{
+	struct fx f = load_fixture(1);
+
+	(void)state;
+	assert_null(f.t->textures[tex_find(f.t, "SOLID")].opaque);
+	/* NEG: PAT1 at (-2,-1), so (x, y) shows PAT1 (x + 2, y + 1) */
+	assert_int_equal(px(f.t, "NEG", 0, 0), 16 + 8 + 1);
+	assert_int_equal(px(f.t, "NEG", 1, 2), 16 + 12 + 3);
+	assert_int_equal(px(f.t, "NEG", 2, 0), -1);
+	assert_int_equal(px(f.t, "NEG", 0, 3), -1);
+	/* TALL: posts at 0, 254, then 254 + 10 (relative topdelta) */
+	assert_int_equal(f.t->textures[tex_find(f.t, "TALL")].h, 300);
+	assert_int_equal(px(f.t, "TALL", 0, 0), 1);
+	assert_int_equal(px(f.t, "TALL", 0, 254), 2);
+	assert_int_equal(px(f.t, "TALL", 0, 264), 3);
+	assert_int_equal(px(f.t, "TALL", 0, 10), -1);
+	unload(&f);
+}
+
+static void missing_patches_become_counted_checkers(void **state)
+{
+	struct fx f = load_fixture(1);
+	const struct tex_pic *a, *b;
+
+	(void)state;
+	a = &f.t->textures[tex_find(f.t, "MISSP")];
+	b = &f.t->textures[tex_find(f.t, "NOLUMP")];
+	/* the texture keeps its size so its neighbours stay aligned */
+	assert_int_equal(a->w, 8);
+	assert_int_equal(b->w, 16);
+	assert_int_equal(b->h, 8);
+	assert_null(b->opaque);
+	/* a checker: two colours in 8-pixel squares */
+	assert_int_not_equal(b->px[0], b->px[8 * 8]);
+	assert_int_equal(b->px[0], b->px[7 * 8 + 7]);
+	/* 2 textures + 15 sprite rotations (see sprites test) */
+	assert_int_equal(f.t->missing, 2 + 15);
+	unload(&f);
+}
+
+static void numbering_and_lookup(void **state)
+{
+	struct fx f = load_fixture(1);
+
+	(void)state;
+	/* 0 "-", 1..8 TEXTURE1 in order, 9 the fallback */
+	assert_int_equal(f.t->num_textures, 10);
+	assert_int_equal(tex_find(f.t, "-"), 0);
+	assert_int_equal(tex_find(f.t, "two"), 1);
+	assert_int_equal(tex_find(f.t, "BFALL2"), 8);
+	assert_int_equal(tex_find(f.t, "NOPE"), -1);
+	assert_int_equal(tex_find(f.t, ""), -1);
+	assert_int_equal(tex_find(f.t, "TWOTWOTWO"), -1);
+	assert_int_equal(f.t->fallback_tex, 9);
+	assert_int_equal(f.t->textures[0].w, 1);
+	assert_non_null(f.t->textures[0].opaque);
+	assert_int_equal(f.t->textures[0].opaque[0], 0);
+	/* no SKY1 in the fixture: the fallback */
+	assert_int_equal(f.t->sky_tex, 9);
+	unload(&f);
+}
+
+static void flats_are_read_exactly(void **state)
+{
+	struct fx f = load_fixture(1);
+	int i;
+
+	(void)state;
+	/* FLOOR1, NUKAGE1..3, F_SKY1 (SHORT is not 4096 bytes), fallback */
+	assert_int_equal(f.t->num_flats, 6);
+	i = tex_find_flat(f.t, "floor1");
+	assert_int_equal(i, 0);
+	assert_int_equal(f.t->flats[i].px[0], 0);
+	assert_int_equal(f.t->flats[i].px[10 * 64 + 7], (3 * 7 + 5 * 10) & 255);
+	assert_int_equal(f.t->flats[i].px[63 * 64 + 63], (3 * 63 + 5 * 63) & 255);
+	assert_int_equal(tex_find_flat(f.t, "SHORT"), -1);
+	assert_int_equal(f.t->sky_flat, 4);
+	assert_int_equal(f.t->flats[4].px[100], 7);
+	assert_int_equal(f.t->fallback_flat, 5);
+	unload(&f);
+}
+
+static void sprite_rotations_and_mirroring_follow_lump_names(void **state)
+{
+	struct fx f = load_fixture(1);
+	const struct tex_sprite *s;
+	const struct tex_sprframe *a;
+
+	(void)state;
+	assert_int_equal(f.t->num_sprites, 1);
+	s = &f.t->sprites[tex_find_sprite(f.t, "troo")];
+	/* frames A, B, C (no lumps), D */
+	assert_int_equal(s->num_frames, 4);
+	a = &s->frames[0];
+	/* sprpics are 1.. in lump order: TROOA1 1, TROOA2A8 2, TROOA3A7 3,
+	 * TROOA4A6 4, TROOA5 5, TROOB0 6, TROOD1 7 */
+	static const int pic[8] = { 1, 2, 3, 4, 5, 4, 3, 2 };
+	static const int flip[8] = { 0, 0, 0, 0, 0, 1, 1, 1 };
+	for (int r = 0; r < 8; r++) {
+		assert_int_equal(a->pic[r], pic[r]);
+		assert_int_equal(a->flip[r], flip[r]);
+	}
+	for (int r = 0; r < 8; r++) {
+		assert_int_equal(s->frames[1].pic[r], 6);
+		assert_int_equal(s->frames[1].flip[r], 0);
+		assert_int_equal(s->frames[2].pic[r], 0);
+	}
+	assert_int_equal(s->frames[3].pic[0], 7);
+	assert_int_equal(s->frames[3].pic[1], 0);
+	/* the pictures: 2x3, every pixel 200 + lump index, offsets 1 + i and
+	 * 10 + i */
+	assert_string_equal(f.t->sprpics[2].name, "TROOA2A8");
+	assert_int_equal(f.t->sprpics[2].w, 2);
+	assert_int_equal(f.t->sprpics[2].h, 3);
+	assert_int_equal(f.t->sprpics[2].px[5], 201);
+	assert_int_equal(f.t->sprpics[2].left, 2);
+	assert_int_equal(f.t->sprpics[2].top, 11);
+	assert_null(f.t->sprpics[2].opaque);
+	assert_int_equal(tex_find_sprite(f.t, "POSS"), -1);
+	assert_int_equal(tex_find_sprite(f.t, "TROOA"), -1);
+	unload(&f);
+}
+
+static void animations_cycle_whole_ranges_only(void **state)
+{
+	struct fx f = load_fixture(1);
+
+	(void)state;
+	/* NUKAGE1..3 (flats 1..3) animate; BFALL1..2 lack Doom's BFALL4 */
+	assert_int_equal(f.t->num_anims, 1);
+	for (int i = 0; i < f.t->num_textures; i++)
+		assert_int_equal(f.t->tex_xlat[i], i);
+	tex_animate(f.t, 0);
+	assert_int_equal(f.t->flat_xlat[1], 1);
+	assert_int_equal(f.t->flat_xlat[3], 3);
+	tex_animate(f.t, TEX_ANIM_TICKS - 1);
+	assert_int_equal(f.t->flat_xlat[1], 1);
+	tex_animate(f.t, TEX_ANIM_TICKS);
+	assert_int_equal(f.t->flat_xlat[1], 2);
+	assert_int_equal(f.t->flat_xlat[2], 3);
+	assert_int_equal(f.t->flat_xlat[3], 1);
+	tex_animate(f.t, 5 * TEX_ANIM_TICKS);
+	assert_int_equal(f.t->flat_xlat[1], 3);
+	assert_int_equal(f.t->flat_xlat[0], 0);
+	assert_int_equal(f.t->flat_xlat[4], 4);
+	unload(&f);
+}
+
+static void pwad_overrides_a_texture_and_a_flat(void **state)
+{
+	struct fx f = load_fixture(1);
+	struct wfix b;
+	struct wbuf l = { 0 };
+	uint8_t *pw, flat[4096];
+	size_t len;
+	char err[160];
+	struct tex_set *t;
+	static const int one[1][3] = { { 0, 0, 0 } };
+
+	(void)state;
+	/* the PWAD's TEXTURE1 replaces the whole list; its FLOOR1 replaces the
+	 * pixels of the IWAD's FLOOR1 in place */
+	wf_init(&b);
+	wb_32(&l, 1);
+	wb_32(&l, 8);
+	wfx_texdef(&l, "SOLID", 2, 2, 1, one);
+	wf_lumpb(&b, "TEXTURE1", &l);
+	wf_lump(&b, "FF_START", NULL, 0);
+	memset(flat, 42, sizeof flat);
+	wf_lump(&b, "FLOOR1", flat, sizeof flat);
+	wf_lump(&b, "FF_END", NULL, 0);
+	pw = wf_finish(&b, "PWAD", &len);
+	assert_int_equal(wad_add(f.w, pw, len, "p.wad", err, sizeof err), 0);
+	assert_int_equal(tex_load_wad(f.w, &t, err, sizeof err), 0);
+	assert_int_equal(t->num_textures, 3);
+	assert_int_equal(tex_find(t, "SOLID"), 1);
+	assert_int_equal(tex_find(t, "TWO"), -1);
+	assert_int_equal(t->textures[1].w, 2);
+	assert_int_equal(t->textures[1].px[0], 16);
+	assert_int_equal(tex_find_flat(t, "FLOOR1"), 0);
+	assert_int_equal(t->flats[0].px[0], 42);
+	assert_int_equal(t->num_flats, 6);
+	tex_free(t);
+	unload(&f);
+	free(pw);
+}
+
+/* A graphics WAD whose lump `name` is replaced by n bytes. */
+static int load_with(const char *name, size_t n, char *err, size_t errlen)
+{
+	struct fx f = load_fixture(1);
+	struct wfix b;
+	uint8_t *pw, zero[16] = { 0 };
+	size_t len;
+	struct tex_set *t = NULL;
+	int r;
+
+	wf_init(&b);
+	wf_lump(&b, name, zero, n);
+	pw = wf_finish(&b, "PWAD", &len);
+	assert_int_equal(wad_add(f.w, pw, len, "p.wad", err, errlen), 0);
+	r = tex_load_wad(f.w, &t, err, errlen);
+	if (r)
+		assert_null(t);
+	tex_free(t);
+	unload(&f);
+	free(pw);
+	return r;
+}
+
+static void bad_palette_and_lists_are_errors(void **state)
+{
+	char err[160];
+
+	(void)state;
+	assert_int_equal(load_with("PLAYPAL", 10, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "PLAYPAL: a palette needs 768 bytes, has 10");
+	assert_int_equal(load_with("COLORMAP", 16, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "COLORMAP: 32 light maps need 8192 bytes, has 16");
+	assert_int_equal(load_with("TEXTURE1", 2, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "TEXTURE1: no count: 2");
+	/* count 0 in 16 bytes is fine: no textures */
+	assert_int_equal(load_with("TEXTURE1", 16, err, sizeof err), 0);
+	assert_int_equal(load_with("PNAMES", 3, err, sizeof err), -EINVAL);
+}
+
+static void no_playpal_is_an_error(void **state)
+{
+	struct wfix b;
+	struct wad *w;
+	struct tex_set *t;
+	uint8_t *img;
+	size_t len;
+	char err[160];
+
+	(void)state;
+	wf_init(&b);
+	wf_lump(&b, "JUNK", "x", 1);
+	img = wf_finish(&b, "PWAD", &len);
+	assert_int_equal(wad_new(&w), 0);
+	assert_int_equal(wad_add(w, img, len, "j.wad", err, sizeof err), 0);
+	assert_int_equal(tex_load_wad(w, &t, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "PLAYPAL: no palette in the WADs");
+	wad_free(w);
+	free(img);
+}
+
+static void builtin_set_is_complete_and_deterministic(void **state)
+{
+	struct tex_set *a, *b;
+	struct pal p;
+	static const char *const walls[] = { "AR_BRICK", "AR_METAL", "AR_STONE", "AR_TECH",
+					     "AR_WOOD", "AR_DOOR", "AR_GRATE", "SKY1" };
+	static const char *const flats[] = { "AR_FLOOR", "AR_GRASS", "AR_CEIL", "AR_WAT1",
+					     "F_SKY1" };
+	static const char *const sprites[] = { "BAR1", "COLU", "POSS", "MEDI" };
+
+	(void)state;
+	assert_int_equal(tex_builtin(&a), 0);
+	assert_int_equal(tex_builtin(&b), 0);
+	pal_builtin(&p);
+	assert_memory_equal(&a->pal, &p, sizeof p);
+	for (size_t i = 0; i < sizeof walls / sizeof walls[0]; i++) {
+		int k = tex_find(a, walls[i]);
+		assert_true(k > 0);
+		assert_int_not_equal(k, a->fallback_tex);
+		assert_memory_equal(a->textures[k].px, b->textures[k].px,
+				    (size_t)a->textures[k].w * (size_t)a->textures[k].h);
+	}
+	for (size_t i = 0; i < sizeof flats / sizeof flats[0]; i++)
+		assert_true(tex_find_flat(a, flats[i]) >= 0);
+	for (size_t i = 0; i < sizeof sprites / sizeof sprites[0]; i++) {
+		const struct tex_sprite *s = &a->sprites[tex_find_sprite(a, sprites[i])];
+		for (int r = 0; r < 8; r++)
+			assert_int_not_equal(s->frames[0].pic[r], 0);
+	}
+	assert_int_equal(a->sky_tex, tex_find(a, "SKY1"));
+	assert_int_equal(a->textures[a->sky_tex].w, 256);
+	assert_int_equal(a->sky_flat, tex_find_flat(a, "F_SKY1"));
+	assert_int_equal(a->missing, 0);
+	/* the grate has holes (a masked texture), the brick has none */
+	assert_non_null(a->textures[tex_find(a, "AR_GRATE")].opaque);
+	assert_null(a->textures[tex_find(a, "AR_BRICK")].opaque);
+	/* the enemy has 8 views from 5 pictures: 6..8 mirror 4..2 */
+	const struct tex_sprframe *e = &a->sprites[tex_find_sprite(a, "POSS")].frames[0];
+	assert_int_equal(e->pic[1], e->pic[7]);
+	assert_int_equal(e->flip[7], 1);
+	assert_int_not_equal(e->pic[0], e->pic[4]);
+	/* the water flats animate */
+	assert_int_equal(a->num_anims, 1);
+	tex_animate(a, TEX_ANIM_TICKS);
+	assert_int_equal(a->flat_xlat[tex_find_flat(a, "AR_WAT1")], tex_find_flat(a, "AR_WAT2"));
+	tex_free(a);
+	tex_free(b);
+	tex_free(NULL);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(palette_and_colormaps_are_read_exactly),
+		cmocka_unit_test(missing_colormap_is_computed),
+		cmocka_unit_test(two_patch_texture_is_composed_and_clipped),
+		cmocka_unit_test(solid_negative_and_tall_textures),
+		cmocka_unit_test(missing_patches_become_counted_checkers),
+		cmocka_unit_test(numbering_and_lookup),
+		cmocka_unit_test(flats_are_read_exactly),
+		cmocka_unit_test(sprite_rotations_and_mirroring_follow_lump_names),
+		cmocka_unit_test(animations_cycle_whole_ranges_only),
+		cmocka_unit_test(pwad_overrides_a_texture_and_a_flat),
+		cmocka_unit_test(bad_palette_and_lists_are_errors),
+		cmocka_unit_test(no_playpal_is_an_error),
+		cmocka_unit_test(builtin_set_is_complete_and_deterministic),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
