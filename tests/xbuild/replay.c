@@ -1,0 +1,329 @@
+/*
+ * replay: the headless replayer of the cross-build determinism test.
+ *
+ * Links only the engine (every engine/ source) and the recording code (input/rec.c),
+ * no platform library, so it builds with any C11 compiler for any CPU
+ * (tests/xbuild/run.sh builds it with gcc -O0, gcc -O3, clang -O2 and an
+ * aarch64 cross gcc). It does per tick exactly what `arcaded --replay`
+ * does, through the same engine functions, and prints the same lines:
+ * "TICK STATEHASH FRAMEHASH" (frame hash 0 without rendering); the test
+ * diffs its output with the daemon's.
+ *
+ *   replay [options] FILE
+ *     --no-render       state hashes only (frame hash printed as 0)
+ *     --size WxH        render size (default: the recording's, else 320x240)
+ *     --level N         built-in level (default: the recording's, else 1)
+ *     --until T         stop after tick T (ticks 0..T run)
+ *     --quiet           no per-tick lines
+ *     --verify          compare with the hashes stored in the recording
+ *                       (format 2); print the verdict; exit 1 on a difference
+ *     --rehash OUT      write the recording again as format 2 with the
+ *                       state and frame hashes of this replay
+ *     --bench           print ticks per second to stderr
+ *   replay --make-random OUT TICKS SEED
+ *     writes a format 1 recording for built-in level 1: a coin and START,
+ *     then TICKS ticks of random play (xorshift32 from SEED): movement,
+ *     turning and strafing held for random spans, running into walls
+ *
+ * Exit: 0, 1 (verification failed or nothing to verify), 2 (bad usage,
+ * unreadable or refused recording).
+ *
+ * Mirror of app/app.c: setup() (built-in palette, level, settings from the
+ * recording, sim_init, r_new) and the loop (rec_reader_next, sim_tick,
+ * sim_view, r_render, hash_frame). Keep the two in step: run.sh fails when
+ * their hashes differ.
+ */
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "engine/hash.h"
+#include "engine/map.h"
+#include "engine/pal.h"
+#include "engine/r_main.h"
+#include "engine/sim.h"
+#include "input/rec.h"
+
+#define RP_DEFAULT_W 320
+#define RP_DEFAULT_H 240
+
+struct rp_opts {
+	const char *file, *rehash;
+	int render, quiet, verify, bench;
+	int w, h, level;
+	int64_t until;
+};
+
+static int rp_usage(void)
+{
+	fprintf(stderr, "usage: replay [--no-render] [--size WxH] [--level N] [--until T] "
+			"[--quiet] [--verify] [--rehash OUT] [--bench] FILE\n");
+	return 2;
+}
+
+static int rp_args(int argc, char **argv, struct rp_opts *o)
+{
+	memset(o, 0, sizeof(*o));
+	o->render = 1;
+	o->until = -1;
+	for (int i = 1; i < argc; i++) {
+		const char *a = argv[i];
+		const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+
+		if (strcmp(a, "--no-render") == 0) {
+			o->render = 0;
+		} else if (strcmp(a, "--quiet") == 0) {
+			o->quiet = 1;
+		} else if (strcmp(a, "--verify") == 0) {
+			o->verify = 1;
+		} else if (strcmp(a, "--bench") == 0) {
+			o->bench = 1;
+		} else if (strcmp(a, "--size") == 0 && v) {
+			if (sscanf(v, "%dx%d", &o->w, &o->h) != 2 || o->w < 1 || o->h < 1 ||
+			    o->w > 4096 || o->h > 4096)
+				return -1;
+			i++;
+		} else if (strcmp(a, "--level") == 0 && v) {
+			o->level = atoi(v);
+			if (o->level < 1 || o->level > 99)
+				return -1;
+			i++;
+		} else if (strcmp(a, "--until") == 0 && v) {
+			o->until = strtoll(v, NULL, 10);
+			i++;
+		} else if (strcmp(a, "--rehash") == 0 && v) {
+			o->rehash = v;
+			i++;
+		} else if (a[0] != '-' && !o->file) {
+			o->file = a;
+		} else {
+			return -1;
+		}
+	}
+	return o->file ? 0 : -1;
+}
+
+static uint32_t rp_rand(uint32_t *s)
+{
+	*s ^= *s << 13;
+	*s ^= *s >> 17;
+	*s ^= *s << 5;
+	return *s;
+}
+
+/* A value in -127..127, often the full speed a digital control gives. */
+static int8_t rp_axis(uint32_t *s)
+{
+	uint32_t v = rp_rand(s);
+
+	if (v % 4 == 0)
+		return 0;
+	if (v % 4 == 1)
+		return (int8_t)((v >> 8) % 2 ? 127 : -127);
+	return (int8_t)((int32_t)((v >> 8) % 255) - 127);
+}
+
+static int rp_make_random(const char *out, uint32_t ticks, uint32_t seed)
+{
+	struct rec_header h = {
+		.version = REC_VERSION,
+		.tick_rate = SIM_TICRATE,
+		.engine_version = REC_ENGINE_VERSION,
+		.set = { .coins_per_credit = 1 },
+	};
+	struct sim_cmd c = { 0 };
+	struct rec_writer *w;
+	struct map *m;
+	uint32_t span = 0;
+	int rc;
+
+	if (!seed)
+		seed = 1;
+	rc = map_builtin(0, &m);
+	if (rc < 0)
+		return rc;
+	h.map_hash = m->content_hash;
+	map_free(m);
+	rc = rec_writer_open(out, &h, &w);
+	if (rc < 0)
+		return rc;
+	for (uint32_t t = 0; t < ticks + 30 && rc == 0; t++) {
+		if (t < 30) {
+			struct sim_cmd idle = { .coins = t == 5, .buttons = t == 15 ? SIM_BT_START : 0 };
+
+			rc = rec_writer_put(w, &idle);
+			continue;
+		}
+		if (span-- == 0) {
+			span = rp_rand(&seed) % 90;
+			c.forward = rp_axis(&seed);
+			c.side = rp_axis(&seed);
+			c.turn = (int16_t)((int32_t)(rp_rand(&seed) % 1025) - 512);
+			if (rp_rand(&seed) % 3 == 0)
+				c.turn = 0;
+		}
+		c.buttons = rp_rand(&seed) % 16 == 0 ? SIM_BT_FIRE : 0;
+		rc = rec_writer_put(w, &c);
+	}
+	if (rec_writer_close(w) < 0 && rc == 0)
+		rc = -EIO;
+	return rc;
+}
+
+static double rp_now(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
+}
+
+int main(int argc, char **argv)
+{
+	struct rp_opts o;
+	struct rec_reader *rd = NULL;
+	struct rec_writer *wr = NULL;
+	const struct rec_header *h;
+	struct rec_verify ver;
+	struct rec_run run;
+	struct r_ctx *r = NULL;
+	struct r_frame f = { 0 };
+	struct map *m = NULL;
+	struct pal pal;
+	struct sim sim;
+	char err[512];
+	uint32_t t = 0;
+	double t0;
+	int rc, code = 2;
+
+	if (argc == 5 && strcmp(argv[1], "--make-random") == 0) {
+		rc = rp_make_random(argv[2], (uint32_t)strtoul(argv[3], NULL, 10),
+				    (uint32_t)strtoul(argv[4], NULL, 10));
+		if (rc < 0)
+			fprintf(stderr, "replay: %s: %s\n", argv[2], strerror(-rc));
+		return rc < 0 ? 2 : 0;
+	}
+	if (rp_args(argc, argv, &o) < 0)
+		return rp_usage();
+	rc = rec_reader_open(o.file, &rd, err, sizeof(err));
+	if (rc < 0) {
+		fprintf(stderr, "replay: %s\n", err);
+		return 2;
+	}
+	h = rec_reader_header(rd);
+	/* The run the recording asks for; options override. */
+	rec_run_from_header(h, &run);
+	if (o.level)
+		run.level = (uint8_t)o.level;
+	if (!run.level)
+		run.level = 1;
+	if (o.w) {
+		run.render_w = (uint16_t)o.w;
+		run.render_h = (uint16_t)o.h;
+	} else if (!run.render_w) {
+		run.render_w = RP_DEFAULT_W;
+		run.render_h = RP_DEFAULT_H;
+	}
+	pal_builtin(&pal);
+	rc = map_builtin(run.level - 1, &m);
+	if (rc < 0) {
+		fprintf(stderr, "replay: built-in level %u: %s\n", run.level, strerror(-rc));
+		goto out;
+	}
+	run.map_hash = m->content_hash;
+	if (!o.render)
+		run.render_w = run.render_h = 0;
+	rc = o.verify ? rec_check_run(h, &run, err, sizeof(err))
+		      : rec_check(h, run.map_hash, err, sizeof(err));
+	if (rc < 0) {
+		fprintf(stderr, "replay: %s: refused: %s\n", o.file, err);
+		goto out;
+	}
+	rec_verify_init(&ver, h, &run);
+	sim_init(&sim, m, &run.set);
+	if (o.render) {
+		f.w = f.pitch = run.render_w;
+		f.h = run.render_h;
+		f.px = calloc((size_t)f.w * (size_t)f.h, 1);
+		if (!f.px || r_new(f.w, f.h, &pal, &r) < 0) {
+			fprintf(stderr, "replay: renderer %dx%d: out of memory\n", f.w, f.h);
+			goto out;
+		}
+	}
+	if (o.rehash) {
+		struct rec_header nh = *h;
+
+		nh.version = REC_VERSION_2;
+		nh.hash_flags = REC_HAS_STATE | (o.render ? REC_HAS_FRAME : 0);
+		nh.render_w = (uint16_t)f.w;
+		nh.render_h = (uint16_t)f.h;
+		nh.render_version = REC_RENDER_VERSION;
+		nh.level = run.level;
+		rc = rec_writer_open(o.rehash, &nh, &wr);
+		if (rc < 0) {
+			fprintf(stderr, "replay: %s: %s\n", o.rehash, strerror(-rc));
+			goto out;
+		}
+	}
+
+	code = 0;
+	t0 = rp_now();
+	for (;; t++) {
+		struct rec_tick rt;
+		uint64_t sh, fh = 0;
+
+		if (o.until >= 0 && t > (uint64_t)o.until)
+			break;
+		rc = rec_reader_next_tick(rd, &rt);
+		if (rc < 0)
+			fprintf(stderr, "replay: %s: tick %u: %s\n", o.file, t, strerror(-rc));
+		if (rc <= 0)
+			break;
+		sim_tick(&sim, &rt.cmd);
+		if (o.render) {
+			struct r_view v;
+
+			sim_view(&sim, &v);
+			r_render(r, m, &v, &f);
+			fh = hash_frame(f.px, f.w, f.h, f.pitch);
+		}
+		sh = sim_hash(&sim);
+		if (!o.quiet)
+			printf("%u %016" PRIx64 " %016" PRIx64 "\n", t, sh, fh);
+		if (o.verify)
+			rec_verify_tick(&ver, t, &rt, sh, fh);
+		if (wr) {
+			struct rec_tick nt = { .cmd = rt.cmd, .state_hash = sh, .frame_hash = fh };
+
+			if (rec_writer_put_tick(wr, &nt) < 0) {
+				fprintf(stderr, "replay: %s: write failed\n", o.rehash);
+				code = 2;
+				break;
+			}
+		}
+	}
+	if (o.bench) {
+		double el = rp_now() - t0;
+
+		fprintf(stderr, "replay: %u ticks in %.3f s: %.0f ticks/s (%s)\n", t, el,
+			el > 0 ? t / el : 0.0,
+			o.render ? "rendering" : "no rendering");
+	}
+	if (o.verify) {
+		rc = rec_verify_summary(&ver, err, sizeof(err));
+		fprintf(stderr, "replay: %s\n", err);
+		if (rc != 0 && code == 0)
+			code = 1;
+	}
+out:
+	if (wr && rec_writer_close(wr) < 0 && code == 0)
+		code = 2;
+	r_free(r);
+	free(f.px);
+	map_free(m);
+	rec_reader_close(rd);
+	return code;
+}
