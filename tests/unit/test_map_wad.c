@@ -1,0 +1,514 @@
+/* Tests for engine/map_wad.c: the two-room fixture read field by field, a
+ * corpus of corrupted maps each naming map, lump and entry, BSP rebuild,
+ * normalisations, layering, and every map of Freedoom (skipped loudly when
+ * the freedoom package is not installed). Fixture: wad_fixture.h. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <cmocka.h>
+
+#include "engine/map.h"
+#include "engine/map_wad.h"
+#include "engine/tex.h"
+#include "engine/wad.h"
+#include "wad_fixture.h"
+
+/* The fixture graphics plus map MAP01 changed by fix (NULL: as is), and E1M1
+ * as is. */
+struct mfx {
+	uint8_t *img;
+	struct wad *w;
+	struct tex_set *t;
+};
+
+static struct mfx mfx_open(void (*fix)(struct wbuf *l))
+{
+	struct mfx f;
+	struct wfix b;
+	size_t len;
+	char err[160];
+
+	wf_init(&b);
+	wfx_graphics(&b, 1);
+	wfx_map(&b, "MAP01", fix);
+	wfx_map(&b, "E1M1", NULL);
+	f.img = wf_finish(&b, "IWAD", &len);
+	assert_int_equal(wad_new(&f.w), 0);
+	assert_int_equal(wad_add(f.w, f.img, len, "fix.wad", err, sizeof err), 0);
+	assert_int_equal(tex_load_wad(f.w, &f.t, err, sizeof err), 0);
+	return f;
+}
+
+static void mfx_close(struct mfx *f)
+{
+	tex_free(f->t);
+	wad_free(f->w);
+	free(f->img);
+}
+
+/* Loads MAP01 with fix applied; returns the result, err filled. */
+static int load_fixed(void (*fix)(struct wbuf *l), char *err, size_t errlen)
+{
+	struct mfx f = mfx_open(fix);
+	struct map *m = NULL;
+	int r = map_load_wad(f.w, f.t, "MAP01", &m, err, errlen);
+
+	if (r)
+		assert_null(m);
+	map_free(m);
+	mfx_close(&f);
+	return r;
+}
+
+/* Overwrites the 16-bit field at byte `at` of lump l. */
+static void put16(struct wbuf *l, size_t at, int v)
+{
+	l->d[at] = (uint8_t)(v & 255);
+	l->d[at + 1] = (uint8_t)((v >> 8) & 255);
+}
+
+enum { L_THINGS, L_LINEDEFS, L_SIDEDEFS, L_VERTEXES, L_SEGS, L_SSECTORS, L_NODES, L_SECTORS };
+
+static void reads_every_field(void **state)
+{
+	struct mfx f = mfx_open(NULL);
+	struct map *m;
+	char err[160];
+
+	(void)state;
+	assert_int_equal(map_load_wad(f.w, f.t, "map01", &m, err, sizeof err), 0);
+	assert_string_equal(m->name, "MAP01");
+	assert_int_equal(m->num_vertices, 6);
+	assert_int_equal(m->num_lines, 7);
+	assert_int_equal(m->num_sides, 8);
+	assert_int_equal(m->num_sectors, 2);
+	assert_int_equal(m->num_things, 2);
+	assert_int_equal(m->num_segs, 8);
+	assert_int_equal(m->num_subsectors, 2);
+	assert_int_equal(m->num_nodes, 1);
+	for (int i = 0; i < 6; i++) {
+		assert_int_equal(m->vertices[i].x, wfx_verts[i][0] * FX_ONE);
+		assert_int_equal(m->vertices[i].y, wfx_verts[i][1] * FX_ONE);
+	}
+	/* sectors */
+	assert_int_equal(m->sectors[0].floor_h, 0);
+	assert_int_equal(m->sectors[0].ceil_h, 128 * FX_ONE);
+	assert_int_equal(m->sectors[0].floor_tex, tex_find_flat(f.t, "FLOOR1"));
+	assert_int_equal(m->sectors[0].ceil_tex, f.t->sky_flat);
+	assert_int_equal(m->sectors[0].light, 160);
+	assert_int_equal(m->sectors[1].floor_h, 16 * FX_ONE);
+	assert_int_equal(m->sectors[1].ceil_h, 112 * FX_ONE);
+	assert_int_equal(m->sectors[1].floor_tex, tex_find_flat(f.t, "NUKAGE1"));
+	assert_int_equal(m->sectors[1].ceil_tex, f.t->fallback_flat);
+	assert_int_equal(m->sectors[1].light, 255);
+	assert_int_equal(m->sectors[1].special, 9);
+	assert_int_equal(m->sectors[1].tag, 7);
+	/* sides: "two" in lower case finds TWO; "-" is 0; NOTEX the fallback */
+	assert_int_equal(m->sides[0].xoff, 8 * FX_ONE);
+	assert_int_equal(m->sides[0].yoff, -4 * FX_ONE);
+	assert_int_equal(m->sides[0].mid_tex, tex_find(f.t, "TWO"));
+	assert_int_equal(m->sides[0].top_tex, 0);
+	assert_int_equal(m->sides[2].top_tex, tex_find(f.t, "SOLID"));
+	assert_int_equal(m->sides[2].mid_tex, 0);
+	assert_int_equal(m->sides[3].top_tex, f.t->fallback_tex);
+	assert_int_equal(m->sides[3].sector, 1);
+	assert_int_equal(m->missing_textures, 2);
+	/* lines */
+	assert_int_equal(m->lines[2].v1, 2);
+	assert_int_equal(m->lines[2].v2, 3);
+	assert_int_equal(m->lines[2].flags, ML_TWOSIDED);
+	assert_int_equal(m->lines[2].special, 1);
+	assert_int_equal(m->lines[2].tag, 7);
+	assert_int_equal(m->lines[2].side[0], 2);
+	assert_int_equal(m->lines[2].side[1], 3);
+	assert_int_equal(m->lines[0].side[1], MAP_NONE);
+	assert_int_equal(m->lines[0].flags, ML_BLOCKING);
+	/* things: 225 degrees is 5/8 of a turn */
+	assert_int_equal(m->things[0].x, 64 * FX_ONE);
+	assert_int_equal(m->things[0].angle, ANG90);
+	assert_int_equal(m->things[0].type, 1);
+	assert_int_equal(m->things[0].flags, 7);
+	assert_int_equal(m->things[1].angle, 0xA0000000u);
+	assert_int_equal(m->things[1].type, 3004);
+	/* segs: BAM16 << 16, the back side of line 2 faces B */
+	assert_int_equal(m->segs[0].angle, ANG90);
+	assert_int_equal(m->segs[2].angle, ANG270);
+	assert_int_equal(m->segs[4].line, 2);
+	assert_int_equal(m->segs[4].side, 1);
+	assert_int_equal(m->segs[4].front, 1);
+	assert_int_equal(m->segs[4].back, 0);
+	assert_int_equal(m->segs[3].back, MAP_NONE);
+	assert_int_equal(m->subsectors[1].first_seg, 4);
+	assert_int_equal(m->subsectors[1].sector, 1);
+	/* the node: 0x8000 children become MAP_NF_SUBSECTOR, boxes in 16.16 */
+	assert_int_equal(m->nodes[0].child[0], MAP_NF_SUBSECTOR | 1);
+	assert_int_equal(m->nodes[0].child[1], MAP_NF_SUBSECTOR | 0);
+	assert_int_equal(m->nodes[0].dy, 128 * FX_ONE);
+	assert_int_equal(m->nodes[0].bbox[0][BOX_RIGHT], 256 * FX_ONE);
+	assert_int_equal(m->nodes[0].bbox[1][BOX_LEFT], 0);
+	/* point location through the file's BSP */
+	assert_int_equal(map_point_sector(m, 64 * FX_ONE, 64 * FX_ONE), 0);
+	assert_int_equal(map_point_sector(m, 192 * FX_ONE, 64 * FX_ONE), 1);
+	map_free(m);
+	mfx_close(&f);
+}
+
+static void bad_line_vertex(struct wbuf *l) { put16(&l[L_LINEDEFS], 3 * 14 + 2, 99); }
+static void bad_line_side(struct wbuf *l) { put16(&l[L_LINEDEFS], 4 * 14 + 12, 0xFFFE); }
+static void no_front_side(struct wbuf *l) { put16(&l[L_LINEDEFS], 5 * 14 + 10, 0xFFFF); }
+static void zero_length(struct wbuf *l) { put16(&l[L_VERTEXES], 4 + 2, 0); }
+static void far_vertex(struct wbuf *l) { put16(&l[L_VERTEXES], 5 * 4, 20000); }
+static void bad_side_sector(struct wbuf *l) { put16(&l[L_SIDEDEFS], 5 * 30 + 28, 9); }
+static void bad_seg_vertex(struct wbuf *l) { put16(&l[L_SEGS], 6 * 12 + 2, 6); }
+static void bad_seg_line(struct wbuf *l) { put16(&l[L_SEGS], 1 * 12 + 6, 7); }
+static void bad_seg_side(struct wbuf *l) { put16(&l[L_SEGS], 0 * 12 + 8, 1); }
+static void bad_ssector(struct wbuf *l) { put16(&l[L_SSECTORS], 4, 60000); }
+static void bad_child_ss(struct wbuf *l) { put16(&l[L_NODES], 24, 0x8005); }
+static void bad_child_node(struct wbuf *l) { put16(&l[L_NODES], 26, 0x0000); }
+static void empty_partition(struct wbuf *l) { put16(&l[L_NODES], 6, 0); }
+static void odd_segs(struct wbuf *l) { wb_u8(&l[L_SEGS], 0); }
+static void odd_sectors(struct wbuf *l) { l[L_SECTORS].n -= 3; }
+
+static void corrupt_maps_name_map_lump_and_entry(void **state)
+{
+	static const struct {
+		void (*fix)(struct wbuf *l);
+		const char *msg;
+	} cases[] = {
+		{ bad_line_vertex, "MAP01: LINEDEFS entry 3: vertex 99 out of range (6 vertices)" },
+		{ bad_line_side, "MAP01: LINEDEFS entry 4: sidedef 65534 out of range (8 sidedefs)" },
+		{ no_front_side, "MAP01: LINEDEFS entry 5: no front sidedef" },
+		{ zero_length, "MAP01: LINEDEFS entry 0: zero length" },
+		{ far_vertex,
+		  "MAP01: VERTEXES entry 5: coordinates out of range (+/-16384 units)" },
+		{ bad_side_sector, "MAP01: SIDEDEFS entry 5: sector 9 out of range (2 sectors)" },
+		{ bad_seg_vertex, "MAP01: SEGS entry 6: vertex 6 out of range (6 vertices)" },
+		{ bad_seg_line, "MAP01: SEGS entry 1: linedef 7 out of range (7 linedefs)" },
+		{ bad_seg_side, "MAP01: SEGS entry 0: direction 1: no such side of linedef 0" },
+		{ bad_ssector, "MAP01: SSECTORS entry 1: segs 4+60000 out of range (8 segs)" },
+		{ bad_child_ss,
+		  "MAP01: NODES entry 0: right child subsector 5 out of range (2 subsectors)" },
+		{ bad_child_node, "MAP01: NODES entry 0: left child node 0 is not listed before it" },
+		{ empty_partition, "MAP01: NODES entry 0: empty partition line" },
+		{ odd_segs, "MAP01: SEGS size 97 is not a multiple of 12" },
+		{ odd_sectors, "MAP01: SECTORS size 49 is not a multiple of 26" },
+	};
+	char err[160];
+
+	(void)state;
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		assert_int_equal(load_fixed(cases[i].fix, err, sizeof err), -EINVAL);
+		assert_string_equal(err, cases[i].msg);
+	}
+}
+
+/* Every lump of the map cut to every length: an error naming MAP01 or a
+ * map that passes map_finish, never a read past the lump (ASan build). */
+static int cut_lump, cut_len;
+static void cut(struct wbuf *l) { l[cut_lump].n = (size_t)cut_len; }
+
+static void truncated_lumps_fail_cleanly(void **state)
+{
+	static const int sizes[8] = { 20, 98, 240, 24, 96, 8, 28, 52 };
+	char err[160];
+
+	(void)state;
+	for (cut_lump = 0; cut_lump < 8; cut_lump++) {
+		for (cut_len = 0; cut_len < sizes[cut_lump]; cut_len++) {
+			int r = load_fixed(cut, err, sizeof err);
+			assert_true(r == 0 || r == -EINVAL);
+			if (r)
+				assert_memory_equal(err, "MAP01: ", 7);
+		}
+	}
+}
+
+static void no_bsp(struct wbuf *l) { l[L_SEGS].n = l[L_SSECTORS].n = l[L_NODES].n = 0; }
+static void xnod(struct wbuf *l) { memcpy(l[L_NODES].d, "XNOD", 4); }
+
+static void maps_without_nodes_get_built_ones(void **state)
+{
+	void (*fixes[2])(struct wbuf *) = { no_bsp, xnod };
+
+	(void)state;
+	for (int k = 0; k < 2; k++) {
+		struct mfx f = mfx_open(fixes[k]);
+		struct map *m;
+		char err[160];
+
+		assert_int_equal(map_load_wad(f.w, f.t, "MAP01", &m, err, sizeof err), 0);
+		assert_true(m->num_nodes >= 1);
+		assert_true(m->num_segs >= 8);
+		assert_int_equal(map_point_sector(m, 64 * FX_ONE, 64 * FX_ONE), 0);
+		assert_int_equal(map_point_sector(m, 192 * FX_ONE, 100 * FX_ONE), 1);
+		map_free(m);
+		mfx_close(&f);
+	}
+}
+
+static void low_ceiling(struct wbuf *l) { put16(&l[L_SECTORS], 26 + 2, 8); }
+static void flags_lie(struct wbuf *l)
+{
+	put16(&l[L_LINEDEFS], 2 * 14 + 4, 0);      /* two sides, no flag */
+	put16(&l[L_LINEDEFS], 0 * 14 + 4, 5);      /* one side, flag set */
+}
+static void far_thing(struct wbuf *l) { put16(&l[L_THINGS], 2, 24608); }
+
+static void doom_quirks_are_normalised(void **state)
+{
+	struct mfx f;
+	struct map *m;
+	char err[160];
+
+	(void)state;
+	f = mfx_open(low_ceiling);
+	assert_int_equal(map_load_wad(f.w, f.t, "MAP01", &m, err, sizeof err), 0);
+	assert_int_equal(m->sectors[1].ceil_h, 8 * FX_ONE);
+	assert_int_equal(m->sectors[1].floor_h, 8 * FX_ONE);
+	map_free(m);
+	mfx_close(&f);
+	f = mfx_open(flags_lie);
+	assert_int_equal(map_load_wad(f.w, f.t, "MAP01", &m, err, sizeof err), 0);
+	assert_int_equal(m->lines[2].flags, ML_TWOSIDED);
+	assert_int_equal(m->lines[0].flags, ML_BLOCKING);
+	map_free(m);
+	mfx_close(&f);
+	f = mfx_open(far_thing);
+	assert_int_equal(map_load_wad(f.w, f.t, "MAP01", &m, err, sizeof err), 0);
+	assert_int_equal(m->num_things, 1);
+	assert_int_equal(m->things[0].type, 3004);
+	map_free(m);
+	mfx_close(&f);
+}
+
+static void names_lists_and_missing_maps(void **state)
+{
+	struct mfx f = mfx_open(NULL);
+	struct map *m;
+	char err[160], names[4][9];
+
+	(void)state;
+	assert_int_equal(map_list_wad(f.w, names, 4), 2);
+	assert_string_equal(names[0], "MAP01");
+	assert_string_equal(names[1], "E1M1");
+	assert_int_equal(map_list_wad(f.w, names, 1), 2);
+	assert_int_equal(map_load_wad(f.w, f.t, "e1m1", &m, err, sizeof err), 0);
+	assert_string_equal(m->name, "E1M1");
+	map_free(m);
+	assert_int_equal(map_load_wad(f.w, f.t, "MAP02", &m, err, sizeof err), -ENOENT);
+	assert_null(m);
+	assert_string_equal(err, "no map MAP02 (maps: MAP01 E1M1)");
+	/* THINGS is a lump, not a map */
+	assert_int_equal(map_load_wad(f.w, f.t, "THINGS", &m, err, sizeof err), -ENOENT);
+	assert_int_equal(map_load_wad(f.w, f.t, "MAP01XXXX", &m, err, sizeof err), -ENOENT);
+	mfx_close(&f);
+}
+
+static void brighter(struct wbuf *l) { put16(&l[L_SECTORS], 20, 99); }
+
+static void pwad_overrides_a_map(void **state)
+{
+	struct mfx f = mfx_open(NULL);
+	struct wfix b;
+	struct map *m;
+	uint8_t *pw;
+	size_t len;
+	char err[160], names[4][9];
+
+	(void)state;
+	wf_init(&b);
+	wfx_map(&b, "MAP01", brighter);
+	pw = wf_finish(&b, "PWAD", &len);
+	assert_int_equal(wad_add(f.w, pw, len, "p.wad", err, sizeof err), 0);
+	assert_int_equal(map_load_wad(f.w, f.t, "MAP01", &m, err, sizeof err), 0);
+	assert_int_equal(m->sectors[0].light, 99);
+	map_free(m);
+	assert_int_equal(map_list_wad(f.w, names, 4), 2);
+	mfx_close(&f);
+	free(pw);
+}
+
+static void other_formats_and_missing_lumps_are_refused(void **state)
+{
+	struct wfix b;
+	struct wad *w;
+	struct tex_set *t;
+	struct map *m;
+	uint8_t *img;
+	size_t len;
+	char err[160];
+
+	(void)state;
+	assert_int_equal(tex_builtin(&t), 0);
+	wf_init(&b);
+	wf_lump(&b, "MAP01", NULL, 0);
+	wf_lump(&b, "TEXTMAP", "namespace=\"doom\";", 17);
+	wfx_map(&b, "MAP02", NULL);
+	wf_lump(&b, "BEHAVIOR", "x", 1);
+	wf_lump(&b, "MAP03", NULL, 0);
+	wf_lump(&b, "THINGS", NULL, 0);
+	wf_lump(&b, "LINEDEFS", NULL, 0);
+	img = wf_finish(&b, "PWAD", &len);
+	assert_int_equal(wad_new(&w), 0);
+	assert_int_equal(wad_add(w, img, len, "o.wad", err, sizeof err), 0);
+	assert_int_equal(map_load_wad(w, t, "MAP01", &m, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "MAP01: UDMF map (TEXTMAP) not supported");
+	assert_int_equal(map_load_wad(w, t, "MAP02", &m, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "MAP02: Hexen-format map (BEHAVIOR lump) not supported");
+	assert_int_equal(map_load_wad(w, t, "MAP03", &m, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "MAP03: no SIDEDEFS lump");
+	wad_free(w);
+	free(img);
+	tex_free(t);
+}
+
+/* ---- Freedoom ------------------------------------------------------------ */
+
+static uint8_t *slurp(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "rbe");
+	uint8_t *d = NULL;
+	long n;
+
+	if (!f)
+		return NULL;
+	if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) > 0 && fseek(f, 0, SEEK_SET) == 0) {
+		d = malloc((size_t)n);
+		if (d && fread(d, 1, (size_t)n, f) != (size_t)n) {
+			free(d);
+			d = NULL;
+		}
+		*len = (size_t)n;
+	}
+	fclose(f);
+	return d;
+}
+
+/* For each sector with an area, some seg of it whose midpoint, nudged 1/16
+ * unit to its front (right) side, locates back into that sector. A sector
+ * of zero area (E3M6 has one: two lines back to back) has no inside. The
+ * area is the shoelace sum over the line sides facing the sector. */
+static uint32_t unreachable_sectors(const struct map *m)
+{
+	uint8_t *ok = calloc(m->num_sectors, 1), *used = calloc(m->num_sectors, 1);
+	int64_t *area = calloc(m->num_sectors, sizeof *area);
+	uint32_t bad = 0;
+
+	assert_non_null(ok);
+	assert_non_null(used);
+	assert_non_null(area);
+	for (uint32_t i = 0; i < m->num_lines; i++) {
+		const struct map_line *l = &m->lines[i];
+		int64_t x1 = m->vertices[l->v1].x / FX_ONE, y1 = m->vertices[l->v1].y / FX_ONE;
+		int64_t x2 = m->vertices[l->v2].x / FX_ONE, y2 = m->vertices[l->v2].y / FX_ONE;
+
+		area[m->sides[l->side[0]].sector] += x1 * y2 - x2 * y1;
+		if (l->side[1] != MAP_NONE)
+			area[m->sides[l->side[1]].sector] -= x1 * y2 - x2 * y1;
+	}
+	for (uint32_t i = 0; i < m->num_sides; i++)
+		used[m->sides[i].sector] = area[m->sides[i].sector] != 0;
+	free(area);
+	for (uint32_t i = 0; i < m->num_segs; i++) {
+		const struct map_seg *s = &m->segs[i];
+		const struct map_vertex *a = &m->vertices[s->v1], *b = &m->vertices[s->v2];
+		fx_t dx = b->x - a->x, dy = b->y - a->y;
+		fx_t x = a->x + dx / 2 + (dy > 0 ? FX_ONE / 16 : dy < 0 ? -FX_ONE / 16 : 0);
+		fx_t y = a->y + dy / 2 + (dx > 0 ? -FX_ONE / 16 : dx < 0 ? FX_ONE / 16 : 0);
+
+		if (map_point_sector(m, x, y) == s->front)
+			ok[s->front] = 1;
+	}
+	for (uint32_t i = 0; i < m->num_sectors; i++)
+		bad += used[i] && !ok[i];
+	free(ok);
+	free(used);
+	return bad;
+}
+
+static void check_freedoom(const char *path, const char *first, const char *last, int count)
+{
+	size_t len = 0;
+	uint8_t *d = slurp(path, &len);
+	struct wad *w;
+	struct tex_set *t;
+	char err[256], names[64][9];
+	clock_t t0 = clock();
+	int n;
+
+	if (!d) {
+		print_message("SKIPPED: %s is not installed (Debian package freedoom; "
+			      "scripts/setup.sh installs it)\n", path);
+		skip();
+	}
+	assert_int_equal(wad_new(&w), 0);
+	assert_int_equal(wad_add(w, d, len, path, err, sizeof err), 0);
+	assert_int_equal(tex_load_wad(w, &t, err, sizeof err), 0);
+	assert_int_equal(t->missing, 0);
+	assert_true(t->num_textures > 100);
+	assert_true(t->num_flats > 100);
+	assert_true(t->sky_flat >= 0);
+	assert_int_equal(t->sky_tex, tex_find(t, "SKY1"));
+	n = map_list_wad(w, names, 64);
+	assert_int_equal(n, count);
+	assert_string_equal(names[0], first);
+	assert_string_equal(names[n - 1], last);
+	for (int i = 0; i < n; i++) {
+		struct map *m;
+		int starts = 0;
+
+		if (map_load_wad(w, t, names[i], &m, err, sizeof err))
+			fail_msg("%s: %s", path, err);
+		assert_true(m->num_sectors > 10 && m->num_lines > 100 && m->num_things > 10);
+		assert_true(m->num_nodes > 0 && m->num_subsectors == m->num_nodes + 1);
+		assert_int_equal(m->missing_textures, 0);
+		for (uint32_t k = 0; k < m->num_things; k++)
+			starts += m->things[k].type == 1;
+		assert_true(starts >= 1);
+		if (unreachable_sectors(m))
+			fail_msg("%s %s: %u sectors not found by point location", path, names[i],
+				 unreachable_sectors(m));
+		map_free(m);
+	}
+	print_message("%s: palette, %d textures, %d flats, %d sprites and %d maps in %ld ms\n",
+		      path, t->num_textures, t->num_flats, t->num_sprites, n,
+		      (long)((clock() - t0) * 1000 / CLOCKS_PER_SEC));
+	tex_free(t);
+	wad_free(w);
+	free(d);
+}
+
+static void freedoom1_every_map_loads(void **state)
+{
+	(void)state;
+	check_freedoom("/usr/share/games/doom/freedoom1.wad", "E1M1", "E4M9", 36);
+}
+
+static void freedoom2_every_map_loads(void **state)
+{
+	(void)state;
+	check_freedoom("/usr/share/games/doom/freedoom2.wad", "MAP01", "MAP32", 32);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(reads_every_field),
+		cmocka_unit_test(corrupt_maps_name_map_lump_and_entry),
+		cmocka_unit_test(truncated_lumps_fail_cleanly),
+		cmocka_unit_test(maps_without_nodes_get_built_ones),
+		cmocka_unit_test(doom_quirks_are_normalised),
+		cmocka_unit_test(names_lists_and_missing_maps),
+		cmocka_unit_test(pwad_overrides_a_map),
+		cmocka_unit_test(other_formats_and_missing_lumps_are_refused),
+		cmocka_unit_test(freedoom1_every_map_loads),
+		cmocka_unit_test(freedoom2_every_map_loads),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
