@@ -57,6 +57,7 @@ struct app {
 	struct sim sim;
 	struct sim_settings set;
 	struct r_ctx *r;
+	struct tex_set *tex;       /* what r draws with (r_pal_set_new) */
 	struct r_frame frame;
 	const struct dp_backend *dpb;
 	struct dp *dp;
@@ -501,7 +502,9 @@ static int setup(struct app *a)
 	a->frame.px = calloc((size_t)a->frame.w * (size_t)a->frame.h, 1);
 	if (!a->frame.px)
 		return -ENOMEM;
-	rc = r_new(a->frame.w, a->frame.h, &a->pal, &a->r);
+	rc = r_pal_set_new(&a->tex);
+	if (rc == 0)
+		rc = r_new(a->frame.w, a->frame.h, &a->r);
 	if (rc < 0) {
 		logf_("renderer %dx%d: %s", a->frame.w, a->frame.h, strerror(-rc));
 		return rc;
@@ -586,6 +589,7 @@ static void teardown(struct app *a)
 	rec_reader_close(a->rep);
 	scr_free(a->scr);
 	r_free(a->r);
+	r_pal_set_free(a->tex);
 	free(a->frame.px);
 	map_free(a->map);
 }
@@ -627,7 +631,7 @@ static int render_and_present(struct app *a)
 	int rc;
 
 	sim_view(&a->sim, &v);
-	r_render(a->r, a->map, &v, &a->frame);
+	r_render(a->r, a->map, a->tex, &v, NULL, 0, &a->frame);
 	rc = a->dpb->present(a->dp, a->frame.px, a->frame.w, a->frame.h, a->frame.pitch);
 	t1 = in_now_ns();
 	a->frames++;

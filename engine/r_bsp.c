@@ -3,10 +3,11 @@
  *
  * From the root, each node sends the walk first into the child on the
  * eye's side, then into the other child only if that child's bounding box
- * reaches a column that is not yet fully occluded. Segs of each subsector
- * reached go to r_seg_add in that order, so every surface drawn is nearer
- * than anything drawn later in the same pixel. The walk stops once every
- * column is occluded.
+ * reaches a column that is not yet fully occluded. Each subsector reached
+ * looks up the visplanes of its sector's floor and ceiling, then its segs
+ * go to r_seg_add in order, so every wall drawn is nearer than anything
+ * drawn later in the same pixel. The walk stops once every column is
+ * occluded.
  *
  * The solid list is Doom's solidsegs: sorted, disjoint, non-adjacent runs of
  * occluded columns with one sentinel run left of column 0 and one right of
@@ -116,6 +117,7 @@ static void r_subsector(struct r_ctx *r, uint32_t i)
 {
 	const struct map *m = r->map;
 	const struct map_subsector *ss;
+	const struct map_sector *sec;
 	uint32_t end;
 
 	if (i >= m->num_subsectors)
@@ -123,8 +125,17 @@ static void r_subsector(struct r_ctx *r, uint32_t i)
 	ss = &m->subsectors[i];
 	r->st.subsectors++;
 	end = ss->first_seg + ss->num_segs;
-	if (ss->first_seg > m->num_segs || end > m->num_segs || end < ss->first_seg)
+	if (ss->first_seg > m->num_segs || end > m->num_segs || end < ss->first_seg ||
+	    ss->sector >= m->num_sectors)
 		return;
+	/* the subsector's planes, when seen from their visible side (the sky
+	 * always is); its segs add columns to them */
+	r->front = ss->sector;
+	sec = &m->sectors[ss->sector];
+	r->floorplane = sec->floor_h < r->ez ?
+		r_plane_find(r, sec->floor_h, sec->floor_tex, sec->light) : -1;
+	r->ceilplane = sec->ceil_h > r->ez || r_is_sky(r, sec->ceil_tex) ?
+		r_plane_find(r, sec->ceil_h, sec->ceil_tex, sec->light) : -1;
 	for (uint32_t k = ss->first_seg; k < end && r->nsolid > 1; k++)
 		r_seg_add(r, &m->segs[k]);
 }

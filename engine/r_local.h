@@ -3,19 +3,26 @@
  * Internal to engine/r_*.c; nothing outside the renderer includes it.
  *
  * Stages (Doom's split): r_main.c sets up the view and owns the geometry
- * helpers (view transform, clipping, projection); r_bsp.c walks the BSP
- * front to back and keeps the solid-column list; r_seg.c turns one seg into
- * wall, ceiling and floor column runs; r_draw.c is the only code that writes
- * frame pixels.
+ * and texture helpers (view transform, clipping, projection, texture and
+ * light lookup, list growth); r_bsp.c walks the BSP front to back and keeps
+ * the solid-column list; r_seg.c turns one seg into wall columns, plane
+ * marks and a drawseg; r_plane.c keeps the visplanes and draws them as
+ * spans (and the sky as columns); r_things.c projects sprites and draws
+ * them and the masked middle textures back to front; r_draw.c is the only
+ * code that writes frame pixels.
  *
  * Number formats (all integer):
  *  - map and view-space coordinates: 16.16 map units, view space in int64;
  *  - screen x: 16.16 pixels (int64), 0 = left edge of column 0;
  *  - scale (pixels per map unit at a column, focal / depth): 32.32 in int64
  *    while stepping, 16.16 where it multiplies heights;
- *  - screen y of an edge: 32.32 pixels (int64), 0 = top edge of row 0.
+ *  - screen y of an edge: 32.32 pixels (int64), 0 = top edge of row 0;
+ *  - texture coordinates: 16.16 texels (one texel per map unit), in uint32
+ *    inside the column loops; flat coordinates 6.26 (position modulo 64
+ *    units) inside the span loop.
  * Fill rule: a column or row is covered when its pixel centre (x + 0.5 or
- * y + 0.5) lies in [start, end) of the projected span.
+ * y + 0.5) lies in [start, end) of the projected span; textures are
+ * sampled at pixel centres.
  */
 #ifndef ARCADED_ENGINE_R_LOCAL_H
 #define ARCADED_ENGINE_R_LOCAL_H
@@ -26,6 +33,7 @@
 #include "engine/map.h"
 #include "engine/pal.h"
 #include "engine/r_main.h"
+#include "engine/tex.h"
 
 #define R_MAX_DIM 4096
 
@@ -33,6 +41,9 @@
  * The sim keeps the eye 16 units from solid walls, so it only shows when the
  * eye is within a quarter unit of a portal or outside the map. */
 #define R_NEAR (FX_ONE / 4)
+
+/* Sprites nearer than this depth are not drawn (Doom's MINZ). */
+#define R_SPR_NEAR (4 * FX_ONE)
 
 /* Distance fade, Doom's: a surface at depth z is R_FADE_DIST / z colormap
  * levels brighter than its sector's light alone gives, at most R_FADE_MAX. */
@@ -42,6 +53,31 @@
 /* Fake contrast: east-west walls one Doom light level (16 of 255) brighter,
  * north-south walls one darker. */
 #define R_CONTRAST 16
+
+/* Planes deeper than this (16.16: 65536 map units, beyond any map) are
+ * textured as if at this depth: keeps the span set-up inside int64. */
+#define R_PLANE_DMAX ((int64_t)1 << 32)
+
+/* The sky: Doom's 1024 texture columns per turn (a 256-wide sky repeats four
+ * times), texel row R_SKY_MID at the horizon, R_SKY_COLS texels per screen
+ * width vertically too (square texels, like the walls on square pixels). */
+#define R_SKY_SHIFT 22
+#define R_SKY_MID 100
+#define R_SKY_COLS 256
+
+/* Checker drawn for textures and flats the set cannot provide. */
+#define R_FB_SIZE 64
+
+#define R_PLANE_HASH 256
+#define R_EMPTY 0xffffu                 /* visplane column with no rows */
+#define R_MASK_DONE INT16_MAX           /* masked column already drawn */
+
+/* Drawseg silhouettes (Doom's SIL_*): which edges clip sprites behind. */
+#define R_SIL_BOTTOM 1
+#define R_SIL_TOP 2
+/* drawseg clip references besides an index into the openings */
+#define R_CLIP_NONE (-1)                /* no saved clip */
+#define R_CLIP_ALL (-2)                 /* the whole column is occluded */
 
 /* A view-space point: l to the right of the view axis, d along it. */
 struct r_vpt {
@@ -53,9 +89,56 @@ struct r_range {
 	int first, last;
 };
 
+/* A visplane (Doom's visplane_t): the rows of one floor or ceiling (key:
+ * height, flat, light; every sky ceiling is one key) per column, for
+ * columns minx..maxx. top/bot hold w entries. */
+struct r_plane {
+	fx_t height;
+	uint16_t pic;                   /* flat number as the sector stores it */
+	uint8_t light, sky;
+	int minx, maxx;
+	int next;                       /* hash chain (most recent first), -1 ends */
+	uint16_t *top, *bot;            /* R_EMPTY: no rows in that column */
+};
+
+/* A wall range kept for the masked pass (Doom's drawseg_t). Scales over
+ * the range: clamp(s0 + step * (x - sx), smin, smax). Clip references are
+ * indices into ctx.open such that column x is open[ref + x - x1], or
+ * R_CLIP_NONE / R_CLIP_ALL. */
+struct r_dseg {
+	int x1, x2;
+	uint32_t seg;                   /* for the sprite's side test */
+	int sx;
+	int64_t s0, step, smin, smax;
+	int64_t lo, hi;                 /* smallest, largest scale over [x1, x2] */
+	int sil;                        /* R_SIL_* */
+	int64_t bsil, tsil;             /* world z: sprites entirely above bsil
+					 * ignore the bottom silhouette, entirely
+					 * below tsil the top one */
+	int32_t topclip, botclip;
+	int32_t maskcol;                /* texture column per x, or R_CLIP_NONE */
+	const struct tex_pic *mid;      /* masked middle texture */
+	int64_t mid_tmid;               /* its top, 16.16 above the eye */
+	int light_base;                 /* colormap level before fade */
+};
+
+/* A projected sprite (Doom's vissprite_t). */
+struct r_vis {
+	int x1, x2;
+	int64_t scale;                  /* 32.32 */
+	fx_t gx, gy;
+	int64_t gz, gzt;                /* world z of the picture's bottom, top */
+	int64_t sxl;                    /* screen x of the left edge, 16.16 */
+	int64_t iscale;                 /* texels per pixel, 16.16 */
+	int64_t tmid;                   /* picture top, 16.16 above the eye */
+	const struct tex_pic *pic;
+	int flip;
+	int lvl;                        /* colormap level */
+	int order;                      /* index in the caller's list: ties */
+};
+
 struct r_ctx {
 	int w, h;
-	const struct pal *pal;          /* borrowed */
 
 	/* per column: rows [ceilclip + 1, floorclip - 1] are still unwritten;
 	 * everything outside that interval has been written exactly once */
@@ -67,20 +150,57 @@ struct r_ctx {
 	int nsolid, maxsolid;
 
 	/* per row: |2y + 1 - cy2|, twice the distance of the row's centre from
-	 * the horizon; a plane's depth at row y is proportional to 1 / rowv[y] */
+	 * the horizon; a plane's depth at row y is proportional to 1 / rowv[y];
+	 * yslope[y] = w * 2^16 / rowv[y] (depth per unit of plane height) */
 	int32_t *rowv;
+	int64_t *yslope;
 	int rowv_cy2;                   /* the cy2 rowv was built for */
+
+	/* per column: angle of the ray through the column centre relative to
+	 * the view direction (positive left), for the sky */
+	ang_t *xtoang;
 
 	int64_t wall_kq;                /* wall fade = (scale16 * wall_kq) >> 32 */
 
+	/* visplanes: planes[0..nplanes-1] used this frame; the arrays of
+	 * planes up to maxplanes are kept allocated */
+	struct r_plane *planes;
+	int nplanes, maxplanes;
+	int plane_hash[R_PLANE_HASH];
+	int ceilplane, floorplane;      /* of the subsector being drawn, -1 none */
+	uint16_t *spanstart;            /* per row */
+	/* per row, the set-up of the last span drawn at that row (Doom's
+	 * cachedheight): plane height, and the world position at the view
+	 * axis and step per pixel, 32.32 relative to the eye */
+	int64_t *span_h, *span_fx, *span_fy, *span_sx, *span_sy;
+
+	struct r_dseg *dsegs;
+	int ndsegs, maxdsegs;
+	int16_t *open;                  /* openings: saved clips, masked columns */
+	int32_t nopen, maxopen;
+	struct r_vis *vis;
+	int nvis, maxvis;
+	int16_t *cliptop, *clipbot;     /* a sprite's clip, per column */
+
+	/* fallback checker, magenta and black (the palette's nearest) */
+	struct tex_pic fb_pic;
+	uint8_t fb_px[R_FB_SIZE * R_FB_SIZE];
+	uint8_t fb_flat[TEX_FLAT_SIZE * TEX_FLAT_SIZE];
+	int fb_lo, fb_hi;               /* colours it is drawn in, -1 before use */
+
 	/* the frame being drawn (valid during r_render only) */
 	const struct map *map;
+	const struct tex_set *tex;
+	const uint8_t (*cmap)[256];     /* tex->pal.cmap */
+	uint8_t black;                  /* the palette's nearest to black */
 	uint8_t *px;
 	int pitch;
 	fx_t ex, ey, ez;                /* eye, x/y clamped to MAP_COORD_MAX */
+	ang_t angle;
 	fx_t vcos, vsin;
 	int cy2;                        /* twice the horizon row: h + 2 * shear */
 	int64_t cy32;                   /* horizon, 32.32 pixels */
+	uint32_t front;                 /* sector of the subsector being drawn */
 	struct r_stats st;
 };
 
@@ -100,6 +220,28 @@ static inline int r_col_at(int64_t sx)
 {
 	return (int)((sx - FX_HALF + FX_ONE - 1) >> FX_SHIFT);
 }
+/* First row whose centre is at or below the edge of height hrel (16.16
+ * above the eye) at scale s16 (16.16), clamped to [lo, hi]. */
+int r_edge_row(const struct r_ctx *r, int64_t hrel, int64_t s16, int lo, int hi);
+
+/* r_main.c: light and textures */
+/* Colormap level before distance fade for a light level (clamped 0..255). */
+int r_light_base(int light);
+/* Level of a surface at scale s (32.32) with base level base. */
+int r_scale_level(const struct r_ctx *r, int base, int64_t s);
+/* The wall texture a side's number num draws now (animation applied):
+ * NULL for 0 ("-", no texture), the fallback checker (counted) for a
+ * number or picture the set cannot provide. */
+const struct tex_pic *r_wall_pic(struct r_ctx *r, uint16_t num);
+/* The 64x64 pixels of flat num now (animation applied), or the fallback. */
+const uint8_t *r_flat_px(struct r_ctx *r, uint16_t num);
+/* 1 when a sector's ceiling number num is the sky. */
+int r_is_sky(const struct r_ctx *r, uint16_t num);
+/* Grows the array *p of *cap elements of size elem to hold at least need.
+ * 0, or -ENOMEM with *p unchanged. */
+int r_grow(void **p, int *cap, size_t elem, int need);
+/* Reserves n entries of ctx.open; returns the index of the first or -1. */
+int32_t r_open_alloc(struct r_ctx *r, int n);
 
 /* r_bsp.c: traversal and the solid-column list */
 void r_bsp_render(struct r_ctx *r);
@@ -110,16 +252,50 @@ void r_solid_add(struct r_ctx *r, int x1, int x2);
 int r_solid_covers(const struct r_ctx *r, int x1, int x2);
 
 /* r_seg.c: draws the parts of seg sg visible in columns not yet occluded,
- * then marks the columns it closed. */
+ * marks its planes, records its drawsegs, then marks the columns it
+ * closed. */
 void r_seg_add(struct r_ctx *r, const struct map_seg *sg);
+/* 1 when the eye is on the front (right) side of seg sg's line, or (x, y)
+ * when not the eye: the exact cross-product test. */
+int r_seg_front(const struct map *m, const struct map_seg *sg, fx_t x, fx_t y);
+
+/* r_plane.c: visplanes */
+void r_plane_clear(struct r_ctx *r);
+/* The visplane of key (height, pic, light) to add columns to, or -1 when
+ * none could be allocated (degraded). */
+int r_plane_find(struct r_ctx *r, fx_t height, uint16_t pic, int light);
+/* Plane p, or a new plane of the same key when p already has rows in a
+ * column of [x1, x2]; its column range then includes [x1, x2]. -1 when
+ * p is -1 or none could be allocated. */
+int r_plane_check(struct r_ctx *r, int p, int x1, int x2);
+/* Draws every visplane (spans; the sky by columns). */
+void r_plane_draw_all(struct r_ctx *r);
+
+/* r_things.c: sprites and masked middle textures */
+void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr);
+/* Draws the projected sprites and masked middles back to front. */
+void r_things_draw(struct r_ctx *r);
 
 /* r_draw.c: the only writers of frame pixels. Rows y1..y2 inclusive of
- * column x; nothing when y2 < y1. */
+ * column x (or columns x1..x2 of row y); nothing when the range is
+ * empty. */
 void r_draw_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour);
-/* A floor or ceiling run: palette index tex lit per row, level
- * base - min(R_FADE_MAX, (rowv[y] * q) >> 32), clamped at 0. */
-void r_draw_plane(struct r_ctx *r, int x, int y1, int y2, uint8_t tex, int base, int64_t q);
-/* Fills every still unwritten pixel with PAL_BLACK (counted as empty). */
+/* A wall or sky column: texture column col of h texels (h >= 1), texel
+ * row frac >> 16 at row y1, frac + step at the next row, wrapping at h;
+ * requires frac, step < h << 16. Through colormap cm. */
+void r_draw_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col, int h,
+		const uint8_t *cm, uint32_t frac, uint32_t step);
+/* A masked column (sprites, masked middles): like r_draw_col without
+ * wrapping, and only texels whose op entry is nonzero (op NULL: all);
+ * requires (frac + (y2 - y1) * step) >> 16 within the column. Counted in
+ * pixels_masked. */
+void r_draw_masked(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col,
+		   const uint8_t *op, const uint8_t *cm, uint32_t frac, uint32_t step);
+/* A span of a flat: row y, columns x1..x2; flat position (6.26 texels in
+ * x and y, wrapping at 64) xf, yf at x1's centre, plus xs, ys per pixel. */
+void r_draw_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat,
+		 const uint8_t *cm, uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys);
+/* Fills every still unwritten pixel with black (counted as empty). */
 void r_draw_finish(struct r_ctx *r);
 
 #endif

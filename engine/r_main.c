@@ -1,6 +1,7 @@
 /*
- * r_main: render context, per-frame set-up, and the geometry every stage
- * shares: view transform, clipping to the visible region, projection.
+ * r_main: render context, per-frame set-up, and what every stage shares:
+ * view transform, clipping to the visible region, projection, light levels,
+ * texture lookup with its fallback, growth of the per-frame lists.
  *
  * Projection: 90-degree horizontal field of view, focal length w/2 pixels,
  * square pixels. Screen x of a view-space point is w/2 + (w/2) * l / d; a
@@ -21,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/pal.h"
 #include "engine/r_local.h"
 #include "engine/tab.h"
 
@@ -143,32 +145,183 @@ int64_t r_project_x(const struct r_ctx *r, const struct r_vpt *p)
 	return half + p->l * half / p->d;
 }
 
-int r_new(int w, int h, const struct pal *pal, struct r_ctx **out)
+int r_edge_row(const struct r_ctx *r, int64_t hrel, int64_t s16, int lo, int hi)
+{
+	/* |hrel| < 2^33, s16 <= 2^29: product < 2^62 */
+	int64_t y = r->cy32 - hrel * s16;
+	int64_t row = (y + ((int64_t)1 << 31) - 1) >> 32;
+
+	if (row < lo)
+		return lo;
+	if (row > hi)
+		return hi;
+	return (int)row;
+}
+
+int r_light_base(int light)
+{
+	int base;
+
+	if (light < 0)
+		light = 0;
+	if (light > 255)
+		light = 255;
+	/* Doom's: 16 light steps of 16, two colormaps apart, so a bright
+	 * sector (208) starts 8 levels down and the distance fade brightens
+	 * near surfaces from there; a dark one (<= 112) is black far away. */
+	base = 4 * (15 - (light >> 4));
+	return base > PAL_LIGHTS - 1 ? PAL_LIGHTS - 1 : base;
+}
+
+int r_scale_level(const struct r_ctx *r, int base, int64_t s)
+{
+	/* s16 <= 2^29, wall_kq <= 1280 * 2^17: product < 2^60 */
+	int64_t fade = ((s >> 16) * r->wall_kq) >> 32;
+	int lvl = base - (fade > R_FADE_MAX ? R_FADE_MAX : (int)fade);
+
+	return lvl < 0 ? 0 : lvl;
+}
+
+/* Paints the fallback checker (8x8 squares) in the palette's nearest
+ * magenta and black, when those differ from the last frame's. */
+static void r_fallback_colours(struct r_ctx *r)
+{
+	int hi = pal_nearest(&r->tex->pal, 255, 0, 255);
+	int lo = r->black;
+
+	if (hi == r->fb_hi && lo == r->fb_lo)
+		return;
+	r->fb_hi = hi;
+	r->fb_lo = lo;
+	for (int x = 0; x < R_FB_SIZE; x++)
+		for (int y = 0; y < R_FB_SIZE; y++)
+			r->fb_px[x * R_FB_SIZE + y] = (uint8_t)(((x ^ y) & 8) ? lo : hi);
+	for (int y = 0; y < TEX_FLAT_SIZE; y++)
+		for (int x = 0; x < TEX_FLAT_SIZE; x++)
+			r->fb_flat[y * TEX_FLAT_SIZE + x] = (uint8_t)(((x ^ y) & 8) ? lo : hi);
+}
+
+const struct tex_pic *r_wall_pic(struct r_ctx *r, uint16_t num)
+{
+	const struct tex_set *t = r->tex;
+	const struct tex_pic *p;
+	int n = num;
+
+	if (n == 0)
+		return NULL;
+	if (t->tex_xlat && n < t->num_textures)
+		n = t->tex_xlat[n];
+	if (n <= 0 || n >= t->num_textures || !t->textures)
+		goto fallback;
+	p = &t->textures[n];
+	if (p->w <= 0 || p->h <= 0 || !p->px)
+		goto fallback;
+	return p;
+fallback:
+	r->st.missing++;
+	return &r->fb_pic;
+}
+
+const uint8_t *r_flat_px(struct r_ctx *r, uint16_t num)
+{
+	const struct tex_set *t = r->tex;
+	int n = num;
+
+	if (t->flat_xlat && n < t->num_flats)
+		n = t->flat_xlat[n];
+	if (n >= t->num_flats || !t->flats) {
+		r->st.missing++;
+		return r->fb_flat;
+	}
+	return t->flats[n].px;
+}
+
+int r_is_sky(const struct r_ctx *r, uint16_t num)
+{
+	return r->tex->sky_flat >= 0 && num == r->tex->sky_flat;
+}
+
+int r_grow(void **p, int *cap, size_t elem, int need)
+{
+	int64_t n = *cap > 0 ? *cap : 16;
+	void *np;
+
+	if (need <= *cap)
+		return 0;
+	while (n < need)
+		n *= 2;
+	if (n > INT32_MAX / 2 || (uint64_t)n > SIZE_MAX / elem)
+		return -ENOMEM;
+	np = realloc(*p, (size_t)n * elem);
+	if (!np)
+		return -ENOMEM;
+	*p = np;
+	*cap = (int)n;
+	return 0;
+}
+
+int32_t r_open_alloc(struct r_ctx *r, int n)
+{
+	int cap = r->maxopen;
+	int32_t at = r->nopen;
+
+	if ((int64_t)at + n > INT32_MAX / 2 ||
+	    r_grow((void **)&r->open, &cap, sizeof(*r->open), at + n) < 0) {
+		r->st.degraded++;
+		return -1;
+	}
+	r->maxopen = cap;
+	r->nopen = at + n;
+	r->st.openings += (uint32_t)n;
+	return at;
+}
+
+int r_new(int w, int h, struct r_ctx **out)
 {
 	struct r_ctx *r;
 
 	*out = NULL;
-	if (w < 1 || h < 1 || w > R_MAX_DIM || h > R_MAX_DIM || !pal)
+	if (w < 1 || h < 1 || w > R_MAX_DIM || h > R_MAX_DIM)
 		return -EINVAL;
 	r = calloc(1, sizeof(*r));
 	if (!r)
 		return -ENOMEM;
 	r->w = w;
 	r->h = h;
-	r->pal = pal;
 	/* disjoint non-adjacent runs in w columns: at most (w + 1) / 2, plus the
 	 * two sentinels and one being inserted */
 	r->maxsolid = w / 2 + 4;
 	r->ceilclip = malloc((size_t)w * sizeof(*r->ceilclip));
 	r->floorclip = malloc((size_t)w * sizeof(*r->floorclip));
+	r->cliptop = malloc((size_t)w * sizeof(*r->cliptop));
+	r->clipbot = malloc((size_t)w * sizeof(*r->clipbot));
+	r->xtoang = malloc((size_t)w * sizeof(*r->xtoang));
 	r->solid = malloc((size_t)r->maxsolid * sizeof(*r->solid));
 	r->rowv = malloc((size_t)h * sizeof(*r->rowv));
-	if (!r->ceilclip || !r->floorclip || !r->solid || !r->rowv)
+	r->yslope = malloc((size_t)h * sizeof(*r->yslope));
+	r->spanstart = malloc((size_t)h * sizeof(*r->spanstart));
+	r->span_h = malloc((size_t)h * sizeof(*r->span_h));
+	r->span_fx = malloc((size_t)h * sizeof(*r->span_fx));
+	r->span_fy = malloc((size_t)h * sizeof(*r->span_fy));
+	r->span_sx = malloc((size_t)h * sizeof(*r->span_sx));
+	r->span_sy = malloc((size_t)h * sizeof(*r->span_sy));
+	if (!r->ceilclip || !r->floorclip || !r->cliptop || !r->clipbot || !r->xtoang ||
+	    !r->solid || !r->rowv || !r->yslope || !r->spanstart || !r->span_h || !r->span_fx ||
+	    !r->span_fy || !r->span_sx || !r->span_sy)
 		goto fail;
 	r->rowv_cy2 = INT32_MIN;
 	/* fade = R_FADE_DIST * scale / focal with focal = w / 2 and scale16 =
 	 * scale * 2^16: (scale16 * R_FADE_DIST * 2^17 / w) >> 32 */
 	r->wall_kq = ((int64_t)R_FADE_DIST << 17) / w;
+	/* the ray through column x's centre: lateral 2x + 1 - w (right) per
+	 * depth w, i.e. an angle atan((w - 2x - 1) / w) to the left */
+	for (int x = 0; x < w; x++)
+		r->xtoang[x] = tab_atan2((fx_t)((w - 2 * x - 1) * 4096), (fx_t)(w * 4096));
+	r->fb_pic.w = R_FB_SIZE;
+	r->fb_pic.h = R_FB_SIZE;
+	r->fb_pic.px = r->fb_px;
+	memcpy(r->fb_pic.name, "-FALLBK", 8);
+	r->fb_lo = r->fb_hi = -1;
 	*out = r;
 	return 0;
 fail:
@@ -180,10 +333,28 @@ void r_free(struct r_ctx *r)
 {
 	if (!r)
 		return;
+	for (int i = 0; i < r->maxplanes; i++) {
+		free(r->planes[i].top);
+		free(r->planes[i].bot);
+	}
+	free(r->planes);
+	free(r->dsegs);
+	free(r->open);
+	free(r->vis);
 	free(r->ceilclip);
 	free(r->floorclip);
+	free(r->cliptop);
+	free(r->clipbot);
+	free(r->xtoang);
 	free(r->solid);
 	free(r->rowv);
+	free(r->yslope);
+	free(r->spanstart);
+	free(r->span_h);
+	free(r->span_fx);
+	free(r->span_fy);
+	free(r->span_sx);
+	free(r->span_sy);
 	free(r);
 }
 
@@ -203,6 +374,7 @@ static void r_setup_view(struct r_ctx *r, const struct r_view *v)
 	r->ex = r_clamp_coord(v->x);
 	r->ey = r_clamp_coord(v->y);
 	r->ez = v->z;
+	r->angle = v->angle;
 	r->vcos = tab_cos(v->angle);
 	r->vsin = tab_sin(v->angle);
 	if (shear > r->h)
@@ -214,7 +386,11 @@ static void r_setup_view(struct r_ctx *r, const struct r_view *v)
 	if (r->cy2 != r->rowv_cy2) {
 		for (int y = 0; y < r->h; y++) {
 			int32_t dv = 2 * y + 1 - r->cy2;
+
 			r->rowv[y] = dv < 0 ? -dv : dv;
+			/* a row on the horizon (odd h, no shear) counts as half a
+			 * unit away: its planes are clamped to R_PLANE_DMAX */
+			r->yslope[y] = ((int64_t)r->w << 16) * 2 / (r->rowv[y] ? 2 * r->rowv[y] : 1);
 		}
 		r->rowv_cy2 = r->cy2;
 	}
@@ -222,23 +398,44 @@ static void r_setup_view(struct r_ctx *r, const struct r_view *v)
 		r->ceilclip[x] = -1;
 		r->floorclip[x] = (int16_t)r->h;
 	}
+	for (int y = 0; y < r->h; y++)
+		r->span_h[y] = -1;
 	r_solid_reset(r);
 }
 
-void r_render(struct r_ctx *r, const struct map *m, const struct r_view *v,
-	      struct r_frame *f)
+void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
+	      const struct r_view *v, const struct r_sprite *spr, int nspr, struct r_frame *f)
 {
-	assert(r && m && v && f && f->px);
+	assert(r && m && t && v && f && f->px && (spr || nspr == 0));
 	assert(f->w == r->w && f->h == r->h && f->pitch >= f->w);
 	memset(&r->st, 0, sizeof(r->st));
 	r->map = m;
+	r->tex = t;
+	r->cmap = t->pal.cmap;
+	r->black = pal_nearest(&t->pal, 0, 0, 0);
+	r_fallback_colours(r);
 	r->px = f->px;
 	r->pitch = f->pitch;
 	r_setup_view(r, v);
-	if (m->num_subsectors > 0)
+	r_plane_clear(r);
+	r->ndsegs = 0;
+	r->nopen = 0;
+	r->nvis = 0;
+	if (m->num_subsectors > 0) {
 		r_bsp_render(r);
+		r_plane_draw_all(r);
+	}
 	r_draw_finish(r);
+	if (m->num_subsectors > 0 && nspr > 0) {
+		r_things_project(r, spr, nspr);
+		r_things_draw(r);
+	}
+	r->st.planes = (uint32_t)r->nplanes;
+	r->st.drawsegs = (uint32_t)r->ndsegs;
+	r->st.sprites = (uint32_t)r->nvis;
 	r->map = NULL;
+	r->tex = NULL;
+	r->cmap = NULL;
 	r->px = NULL;
 }
 

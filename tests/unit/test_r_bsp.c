@@ -16,12 +16,19 @@
 #include "engine/r_main.h"
 #include "tests/unit/r_testmap.h"
 
-static struct pal pal;
+static struct ttex *tt;
 
 static int setup(void **state)
 {
 	(void)state;
-	pal_builtin(&pal);
+	tt = tt_new();
+	return 0;
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	tt_free(tt);
 	return 0;
 }
 
@@ -29,7 +36,7 @@ static struct r_ctx *ctx(int w)
 {
 	struct r_ctx *r;
 
-	assert_int_equal(r_new(w, 10, &pal, &r), 0);
+	assert_int_equal(r_new(w, 10, &r), 0);
 	r_solid_reset(r);
 	return r;
 }
@@ -110,8 +117,8 @@ static void render_stats(const struct map *m, int x, int y, ang_t a, struct r_st
 	struct r_frame f = { px, 160, 120, 160 };
 
 	assert_non_null(px);
-	assert_int_equal(r_new(160, 120, &pal, &r), 0);
-	r_render(r, m, &v, &f);
+	assert_int_equal(r_new(160, 120, &r), 0);
+	r_render(r, m, &tt->t, &v, NULL, 0, &f);
 	r_get_stats(r, st);
 	assert_int_equal(st->pixels_written, 160 * 120);
 	r_free(r);
@@ -163,5 +170,5 @@ int main(void)
 		cmocka_unit_test(subsectors_behind_the_view_are_not_visited),
 		cmocka_unit_test(walk_stops_when_every_column_is_occluded),
 	};
-	return cmocka_run_group_tests(tests, setup, NULL);
+	return cmocka_run_group_tests(tests, setup, teardown);
 }

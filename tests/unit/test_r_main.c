@@ -24,6 +24,7 @@
 #include "tests/unit/r_testmap.h"
 
 static struct pal pal;
+static struct ttex *tt;
 
 /* ---- maps through map_alloc + map_finish (node builder) ---- */
 
@@ -87,7 +88,7 @@ struct shot {
 static void shot_open(struct shot *s, int w, int h)
 {
 	memset(s, 0, sizeof(*s));
-	assert_int_equal(r_new(w, h, &pal, &s->r), 0);
+	assert_int_equal(r_new(w, h, &s->r), 0);
 	s->f.w = w;
 	s->f.h = h;
 	s->f.pitch = w;
@@ -106,7 +107,7 @@ static void shot_take(struct shot *s, const struct map *m, int x, int y, int z, 
 	struct r_view v = { U(x), U(y), U(z), a, 0 };
 
 	memset(s->f.px, 0xee, (size_t)s->f.w * (size_t)s->f.h);
-	r_render(s->r, m, &v, &s->f);
+	r_render(s->r, m, &tt->t, &v, NULL, 0, &s->f);
 	r_get_stats(s->r, &s->st);
 }
 
@@ -135,10 +136,10 @@ static void assert_written_once(struct shot *s, const struct map *m, const struc
 
 	assert_non_null(first);
 	memset(s->f.px, 0x11, n);
-	r_render(s->r, m, v, &s->f);
+	r_render(s->r, m, &tt->t, v, NULL, 0, &s->f);
 	memcpy(first, s->f.px, n);
 	memset(s->f.px, 0x99, n);
-	r_render(s->r, m, v, &s->f);
+	r_render(s->r, m, &tt->t, v, NULL, 0, &s->f);
 	r_get_stats(s->r, &s->st);
 	assert_memory_equal(first, s->f.px, n);
 	assert_int_equal(s->st.pixels_written, n);
@@ -149,6 +150,14 @@ static int setup(void **state)
 {
 	(void)state;
 	pal_builtin(&pal);
+	tt = tt_new();
+	return 0;
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	tt_free(tt);
 	return 0;
 }
 
@@ -203,7 +212,7 @@ static void polygon_clip_keeps_only_visible_points(void **state)
 	int64_t lo = INT64_MAX, hi = INT64_MIN;
 	int n;
 	(void)state;
-	assert_int_equal(r_new(320, 240, &pal, &r), 0);
+	assert_int_equal(r_new(320, 240, &r), 0);
 	n = r_clip_polygon(v, 4);
 	assert_true(n >= 3);
 	for (int i = 0; i < n; i++) {
@@ -225,7 +234,7 @@ static void projection_maps_the_frustum_onto_the_frame(void **state)
 	struct r_ctx *r;
 	struct r_vpt c = { 0, U(7) }, l = { U(-7), U(7) }, rt = { U(7), U(7) }, q = { U(3), U(12) };
 	(void)state;
-	assert_int_equal(r_new(320, 240, &pal, &r), 0);
+	assert_int_equal(r_new(320, 240, &r), 0);
 	assert_int_equal(r_project_x(r, &c), (int64_t)160 * FX_ONE);
 	assert_int_equal(r_project_x(r, &l), 0);
 	assert_int_equal(r_project_x(r, &rt), (int64_t)320 * FX_ONE);
@@ -240,13 +249,12 @@ static void new_rejects_bad_sizes_and_free_takes_null(void **state)
 {
 	struct r_ctx *r = (struct r_ctx *)1;
 	(void)state;
-	assert_int_equal(r_new(0, 10, &pal, &r), -EINVAL);
+	assert_int_equal(r_new(0, 10, &r), -EINVAL);
 	assert_null(r);
-	assert_int_equal(r_new(10, 0, &pal, &r), -EINVAL);
-	assert_int_equal(r_new(4097, 10, &pal, &r), -EINVAL);
-	assert_int_equal(r_new(10, 4097, &pal, &r), -EINVAL);
-	assert_int_equal(r_new(10, 10, NULL, &r), -EINVAL);
-	assert_int_equal(r_new(4096, 4096, &pal, &r), 0);
+	assert_int_equal(r_new(10, 0, &r), -EINVAL);
+	assert_int_equal(r_new(4097, 10, &r), -EINVAL);
+	assert_int_equal(r_new(10, 4097, &r), -EINVAL);
+	assert_int_equal(r_new(4096, 4096, &r), 0);
 	r_free(r);
 	r_free(NULL);
 }
@@ -383,7 +391,7 @@ static void shear_moves_the_horizon(void **state)
 	t_room(&t, 255, 0);
 	shot_open(&s, 320, 240);
 	memset(s.f.px, 0, 320 * 240);
-	r_render(s.r, &t.m, &v, &s.f);
+	r_render(s.r, &t.m, &tt->t, &v, NULL, 0, &s.f);
 	assert_run(&s, 100, 0, 20, C_CEIL);
 	assert_run(&s, 100, 21, 180, C_EAST);
 	assert_run(&s, 100, 181, 239, C_FLOOR);
@@ -400,7 +408,7 @@ static void near_wall_fills_the_frame(void **state)
 	(void)state;
 	t_room(&t, 255, 0);
 	shot_open(&s, 160, 120);
-	r_render(s.r, &t.m, &v, &s.f);
+	r_render(s.r, &t.m, &tt->t, &v, NULL, 0, &s.f);
 	for (int x = 0; x < 160; x++)
 		assert_run(&s, x, 0, 119, C_EAST);
 	shot_close(&s);
@@ -417,8 +425,8 @@ static void pitch_padding_is_left_alone(void **state)
 	(void)state;
 	t_room(&t, 255, 0);
 	memset(buf, 0x77, sizeof(buf));
-	assert_int_equal(r_new(16, 20, &pal, &r), 0);
-	r_render(r, &t.m, &v, &f);
+	assert_int_equal(r_new(16, 20, &r), 0);
+	r_render(r, &t.m, &tt->t, &v, NULL, 0, &f);
 	for (int y = 0; y < 20; y++)
 		for (int x = 16; x < 24; x++)
 			assert_int_equal(buf[y * 24 + x], 0x77);
@@ -478,7 +486,7 @@ static void window_shows_upper_and_lower_parts_and_the_room_behind(void **state)
 	(void)state;
 	t_window(&t, 24, 96);
 	shot_open(&s, 320, 240);
-	r_render(s.r, &t.m, &v, &s.f);
+	r_render(s.r, &t.m, &tt->t, &v, NULL, 0, &s.f);
 	assert_run(&s, 160, 0, 39, C_CEIL);
 	assert_run(&s, 160, 40, 79, c_win);
 	assert_run(&s, 160, 80, 93, C_CEIL);
@@ -726,5 +734,5 @@ int main(void)
 		cmocka_unit_test(same_view_gives_identical_bytes),
 		cmocka_unit_test(builtin_level_500_views_write_every_pixel_once),
 	};
-	return cmocka_run_group_tests(tests, setup, NULL);
+	return cmocka_run_group_tests(tests, setup, teardown);
 }
