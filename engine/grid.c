@@ -16,8 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine/lmap.h"
 #include "engine/map.h"
+#include "engine/tex.h"
+#include "engine/th.h"
 
 #define GRID_THINGS 4                  /* things per tile definition */
 #define GRID_TOKENS 24                 /* tokens per legend line */
@@ -284,11 +285,23 @@ static int grid_open_key(struct grid_p *p, struct grid_def *d, int line, const s
 		if (grid_add_thing(p, d, line, k->col, (uint16_t)a, ang))
 			return -EINVAL;
 	} else if (grid_tok_is(k, "lamp")) {
-		if (grid_int(&t[*i + 1], 16, 256, &a))
-			return grid_fail(p, line, t[*i + 1].col, "lamp intensity must be 16..256");
-		if (grid_int(&t[*i + 2], 64, 1024, &b))
-			return grid_fail(p, line, t[*i + 2].col, "lamp radius must be 64..1024");
-		if (grid_add_thing(p, d, line, k->col, lmap_thing_type(a, b), 0))
+		static const char *const colours[8] = { "white", "red",   "orange", "yellow",
+							"green", "cyan", "blue",   "purple" };
+		int c = 0;
+		if (grid_int(&t[*i + 1], 32, 256, &a))
+			return grid_fail(p, line, t[*i + 1].col, "lamp intensity must be 32..256");
+		if (grid_int(&t[*i + 2], 64, 512, &b))
+			return grid_fail(p, line, t[*i + 2].col, "lamp radius must be 64..512");
+		if (*i + 3 < n)
+			for (int q = 1; q < 8; q++)
+				if (grid_tok_is(&t[*i + 3], colours[q]))
+					c = q;
+		if (c || (*i + 3 < n && grid_tok_is(&t[*i + 3], "white")))
+			(*i)++;
+		/* th.h's light thing: nearest intensity step of 32, radius step
+		 * of 64 */
+		if (grid_add_thing(p, d, line, k->col,
+				   th_light_type((b + 32) / 64 - 1, (a + 16) / 32 - 1, c), 0))
 			return -EINVAL;
 		(*i)++;
 	} else {
@@ -844,4 +857,21 @@ int grid_parse(const char *text, size_t len, const char *name, const struct grid
 	free(p);
 	*out = m;
 	return r;
+}
+
+static int grid_tex_wall(void *ctx, const char *name)
+{
+	return tex_find(ctx, name);
+}
+
+static int grid_tex_flat(void *ctx, const char *name)
+{
+	return tex_find_flat(ctx, name);
+}
+
+void grid_names_from_tex(struct grid_names *n, const struct tex_set *t)
+{
+	n->ctx = (void *)(uintptr_t)t;
+	n->wall = grid_tex_wall;
+	n->flat = grid_tex_flat;
 }

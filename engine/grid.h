@@ -21,6 +21,7 @@
 #include <stddef.h>
 
 struct map;
+struct tex_set;
 
 #define GRID_TILE 64                   /* map units per tile */
 #define GRID_MAX_DIM 255               /* rows and columns: keeps coordinates
@@ -40,6 +41,10 @@ struct grid_names {
 	int (*flat)(void *ctx, const char *name);
 };
 
+/* Fills n to look names up in texture set t (tex_find, tex_find_flat;
+ * borrowed: t must outlive the parse). An unknown name is an error. */
+void grid_names_from_tex(struct grid_names *n, const struct tex_set *t);
+
 /* Parses len bytes of text (need not be NUL-terminated) named `name` (for
  * messages, e.g. the file name) into a new finished map. names may be NULL.
  * Returns 0, -EINVAL with err holding "name:line:column: what is wrong"
@@ -50,8 +55,8 @@ int grid_parse(const char *text, size_t len, const char *name, const struct grid
 	       struct map **out, char *err, size_t errlen);
 
 /* The built-in grid level's text (levels/grid1.txt is the same text) and
- * its length. Its textures are numbers of the built-in palette-colour
- * scheme (map.h "Textures"). */
+ * its length. Its textures and flats are names of the built-in set
+ * (tex_builtin): parse it with grid_names_from_tex. */
 const char *grid_builtin_text(size_t *len);
 
 #endif

@@ -21,6 +21,7 @@
 #include "engine/hash.h"
 #include "engine/map.h"
 #include "engine/pal.h"
+#include "engine/th.h"
 
 #define LMAP_SUB(v) ((int64_t)(v) >> 12)        /* 16.16 to 1/16 units */
 #define LMAP_CELL_SHIFT 11                      /* 128 units in sub units */
@@ -47,8 +48,11 @@ struct lmap_b {
 	uint64_t rays;
 };
 
+/* Doom's light-giving decorations (th.h TH_DECOR | TH_LIGHT): intensity,
+ * radius and the flame's height above the floor, judged from their
+ * sprites; others of that kind get LMAP_DECOR_DEFAULT. */
 static const int32_t lmap_doom_decor[][4] = {
-	/* type, intensity, radius, light height above the floor */
+	/* type, intensity, radius, height */
 	{ 34, 64, 128, 16 },                    /* candle */
 	{ 35, 128, 192, 56 },                   /* candelabra */
 	{ 44, 160, 256, 64 },                   /* tall blue firestick */
@@ -62,24 +66,33 @@ static const int32_t lmap_doom_decor[][4] = {
 	{ 86, 160, 256, 52 },                   /* short techno lamp */
 	{ 2028, 160, 256, 44 },                 /* floor lamp */
 };
+static const int32_t lmap_decor_default[3] = { 96, 160, 24 };
 
-uint16_t lmap_thing_type(int intensity, int radius)
+/* Intensity, radius and height of thing type `type` as a light, or 0. */
+static int lmap_thing_light(uint16_t type, unsigned flags, int32_t *inten, int32_t *rad,
+			    int32_t *above)
 {
-	int i = (intensity + 8) / 16 - 1, r = (radius + 32) / 64 - 1;
+	const struct th_info *ti;
+	struct th_light tl;
 
-	i = i < 0 ? 0 : i > 15 ? 15 : i;
-	r = r < 0 ? 0 : r > 15 ? 15 : r;
-	return (uint16_t)(LMAP_THING_BASE + 16 * r + i);
-}
-
-int lmap_thing_decode(uint16_t type, int *intensity, int *radius)
-{
-	int k = (int)type - LMAP_THING_BASE;
-
-	if (k < 0 || k >= LMAP_THING_COUNT)
+	if (th_light(type, &tl)) {
+		*inten = tl.intensity;
+		*rad = tl.radius;
+		*above = -1;                    /* half way up */
+		return 1;
+	}
+	ti = th_find(type);
+	if (!(flags & LMAP_DECOR) || !ti || (ti->flags & (TH_DECOR | TH_LIGHT)) != (TH_DECOR | TH_LIGHT))
 		return 0;
-	*intensity = 16 * ((k & 15) + 1);
-	*radius = 64 * ((k >> 4) + 1);
+	*inten = lmap_decor_default[0];
+	*rad = lmap_decor_default[1];
+	*above = lmap_decor_default[2];
+	for (size_t k = 0; k < sizeof lmap_doom_decor / sizeof lmap_doom_decor[0]; k++)
+		if (lmap_doom_decor[k][0] == type) {
+			*inten = lmap_doom_decor[k][1];
+			*rad = lmap_doom_decor[k][2];
+			*above = lmap_doom_decor[k][3];
+		}
 	return 1;
 }
 
@@ -90,26 +103,16 @@ int lmap_lights_from_map(const struct map *m, unsigned flags, struct lmap_light 
 	for (uint32_t i = 0; i < m->num_things; i++) {
 		const struct map_thing *t = &m->things[i];
 		const struct map_sector *s;
-		int inten = 0, rad = 0, above = -1;
+		int32_t inten, rad, above;
 
-		if (!lmap_thing_decode(t->type, &inten, &rad)) {
-			if (!(flags & LMAP_DECOR))
-				continue;
-			for (size_t k = 0; k < sizeof lmap_doom_decor / sizeof lmap_doom_decor[0]; k++)
-				if (lmap_doom_decor[k][0] == t->type) {
-					inten = lmap_doom_decor[k][1];
-					rad = lmap_doom_decor[k][2];
-					above = lmap_doom_decor[k][3];
-				}
-			if (above < 0)
-				continue;
-		}
+		if (!lmap_thing_light(t->type, flags, &inten, &rad, &above))
+			continue;
 		if (n < max) {
 			s = &m->sectors[map_point_sector(m, t->x, t->y)];
 			out[n].x = t->x;
 			out[n].y = t->y;
 			/* (floor + ceil) / 2 without overflow; decorations at their
-			 * flame, below the ceiling */
+			 * flame, not above the ceiling */
 			out[n].z = above < 0 ? s->floor_h + (fx_t)(((int64_t)s->ceil_h - s->floor_h) / 2)
 					     : (fx_t)((int64_t)s->floor_h + fx_from_int(above) < s->ceil_h
 							      ? s->floor_h + fx_from_int(above)

@@ -52,15 +52,11 @@ struct map_thing;
 #define LMAP_GRID_MAX 65536            /* texels per surface before coarsening */
 #define LMAP_RADIUS_MAX 2048           /* map units */
 
-/* arcaded's light thing (Doom-format things have only a type, an angle
- * and flags, and the angle does not survive every loader exactly, so the
- * type carries both numbers):
- *     type = LMAP_THING_BASE + 16 * (radius / 64 - 1) + (intensity / 16 - 1)
- * radius 64..1024 in steps of 64, intensity 16..256 light units in steps
- * of 16: types 24576..24831. The light sits at the thing's x, y and half
- * way between the floor and the ceiling of the sector it is in. */
-#define LMAP_THING_BASE 24576
-#define LMAP_THING_COUNT 256
+/* Lights come from map things (lmap_lights_from_map): arcaded's light
+ * thing (th.h: types TH_LIGHT_FIRST..TH_LIGHT_LAST encode radius 64..512,
+ * intensity 32..255 and a colour; the colour is not used here, the boost
+ * is brightness only), placed half way between the floor and the ceiling
+ * of the sector it is in. */
 
 struct lmap_light {
 	fx_t x, y, z;                  /* 16.16 map units */
@@ -68,17 +64,10 @@ struct lmap_light {
 	int32_t radius;                /* map units, 1..LMAP_RADIUS_MAX */
 };
 
-/* Light thing type for an intensity and radius, each rounded to the
- * nearest step and clamped to the ranges above. */
-uint16_t lmap_thing_type(int intensity, int radius);
-
-/* 1 and the intensity and radius when type is an arcaded light thing,
- * else 0. */
-int lmap_thing_decode(uint16_t type, int *intensity, int *radius);
-
 /* Flags of lmap_lights_from_map. */
-#define LMAP_DECOR 1u   /* also Doom's light-giving decorations (lamps,
-			 * candles, torches, burning barrels) as lights */
+#define LMAP_DECOR 1u   /* also Doom's light-giving decorations (th.h
+			 * TH_DECOR with TH_LIGHT: lamps, candles,
+			 * torches, burning barrels) as lights */
 
 /* Collects the point lights of finished map m from its things (arcaded
  * light things, plus Doom decorations with LMAP_DECOR; docs/lights.md has

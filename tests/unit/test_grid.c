@@ -13,8 +13,9 @@
 #include <cmocka.h>
 
 #include "engine/grid.h"
-#include "engine/lmap.h"
 #include "engine/map.h"
+#include "engine/tex.h"
+#include "engine/th.h"
 
 static struct map *parse_ok(const char *text)
 {
@@ -178,18 +179,22 @@ static void lamps_and_things_sit_at_tile_centres(void **state)
 {
 	struct map *m = parse_ok("# = wall 5\n. = open\n@ = . player east\n"
 				 "* = . lamp 192 320\nE = . thing 3004 west\n"
-				 "map\n#####\n#@*E#\n#####\n");
-	int inten = 0, rad = 0;
+				 "+ = . lamp 250 100 cyan\n"
+				 "map\n######\n#@*E+#\n######\n");
+	struct th_light tl;
 	(void)state;
-	assert_int_equal(m->num_things, 3);
+	assert_int_equal(m->num_things, 4);
 	/* things in row-major tile order */
 	assert_int_equal(m->things[1].x, tile_x(2));
 	assert_int_equal(m->things[1].y, tile_y(3, 1));
-	/* 24576 + 16 * (320 / 64 - 1) + (192 / 16 - 1) */
-	assert_int_equal(m->things[1].type, 24576 + 64 + 11);
-	assert_true(lmap_thing_decode(m->things[1].type, &inten, &rad));
-	assert_int_equal(inten, 192);
-	assert_int_equal(rad, 320);
+	/* th.h: 15000 + 64 * (320 / 64 - 1) + 8 * (192 / 32 - 1) + white 0 */
+	assert_int_equal(m->things[1].type, 15000 + 64 * 4 + 8 * 5);
+	assert_true(th_light(m->things[1].type, &tl));
+	assert_int_equal(tl.intensity, 192);
+	assert_int_equal(tl.radius, 320);
+	/* nearest steps: intensity 250 -> 255 (index 7), radius 100 -> 128
+	 * (index 1), cyan is colour 5 */
+	assert_int_equal(m->things[3].type, 15000 + 64 * 1 + 8 * 7 + 5);
 	assert_int_equal(m->things[2].type, 3004);
 	assert_int_equal(m->things[2].angle, ANG180);
 	assert_int_equal(m->things[2].x, tile_x(3));
@@ -313,17 +318,22 @@ static void builtin_grid_level_matches_its_file_and_imports(void **state)
 	char *file = slurp("levels/grid1.txt", &flen);
 	struct map *m = NULL, *m2 = NULL;
 	char err[256];
-	int players = 0, lamps = 0, a, b;
+	int players = 0, lamps = 0;
+	struct th_light tl;
+	struct tex_set *tex = NULL;
+	struct grid_names names;
 	(void)state;
+	assert_int_equal(tex_builtin(&tex), 0);
+	grid_names_from_tex(&names, tex);
 	assert_non_null(file);
 	assert_int_equal(flen, len);
 	assert_memory_equal(file, text, len);
 	free(file);
-	assert_int_equal(grid_parse(text, len, "grid1.txt", NULL, &m, err, sizeof err), 0);
+	assert_int_equal(grid_parse(text, len, "grid1.txt", &names, &m, err, sizeof err), 0);
 	assert_string_equal(m->name, "GRID1");
 	for (uint32_t i = 0; i < m->num_things; i++) {
 		players += m->things[i].type == 1;
-		lamps += lmap_thing_decode(m->things[i].type, &a, &b);
+		lamps += th_light(m->things[i].type, &tl);
 	}
 	assert_int_equal(players, 1);
 	assert_int_equal(lamps, 5);
@@ -335,11 +345,18 @@ static void builtin_grid_level_matches_its_file_and_imports(void **state)
 	assert_int_equal(m->sectors[map_point_sector(m, tile_x(3), tile_y(13, 7))].ceil_h,
 			 fx_from_int(88));
 	/* deterministic */
-	assert_int_equal(grid_parse(text, len, "grid1.txt", NULL, &m2, err, sizeof err), 0);
+	assert_int_equal(grid_parse(text, len, "grid1.txt", &names, &m2, err, sizeof err), 0);
 	assert_int_equal(m->content_hash, m2->content_hash);
 	assert_int_equal(m->num_nodes, m2->num_nodes);
+	/* its names are the built-in set's */
+	assert_int_equal(m->sides[0].mid_tex, tex_find(tex, "AR_BRICK"));
+	assert_int_equal(m->sectors[0].floor_tex, tex_find_flat(tex, "AR_FLOOR"));
 	map_free(m);
 	map_free(m2);
+	/* without the names it does not import */
+	assert_int_equal(grid_parse(text, len, "grid1.txt", NULL, &m, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "grid1.txt:4:10: unknown texture 'AR_BRICK'");
+	tex_free(tex);
 }
 
 int main(void)
