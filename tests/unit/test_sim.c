@@ -10,6 +10,8 @@
 #include "engine/map.h"
 #include "engine/r_main.h"
 #include "engine/sim.h"
+#include "engine/g_local.h"
+#include "g_fixture.h"
 #include "map_fixture.h"
 
 #define R (SIM_PLAYER_RADIUS)
@@ -583,6 +585,461 @@ static void mode_names_round_trip(void **state)
 	assert_int_equal(sim_mode_from_name(""), -1);
 }
 
+
+/* ---- the game flow -------------------------------------------------- */
+
+static const struct sim_cmd nothing = { 0 };
+static const struct sim_cmd coin = { .coins = 1 };
+static const struct sim_cmd start = { .buttons = SIM_BT_START };
+static const struct sim_cmd shoot = { .buttons = SIM_BT_FIRE };
+
+/* Two stages: a room with one grunt 300 ahead of the start, and a room
+ * with the start elsewhere and two grunts. */
+static void two_stages(struct map **a, struct map **b)
+{
+	static const struct gf_thing ta[] = { { 100, 128, 0, 1, 0 }, { 400, 128, ANG180, 3004, 0 } };
+	static const struct gf_thing tb[] = { { 200, 64, ANG90, 1, 0 },
+					      { 200, 400, 0, 3004, 0 }, { 900, 400, 0, 3004, 0 } };
+	*a = gf_room(1024, 256, ta, 2, NULL, 0);
+	*b = gf_room(1024, 512, tb, 3, NULL, 0);
+	assert_non_null(*a);
+	assert_non_null(*b);
+}
+
+static void kill_all(struct sim *s)
+{
+	for (int i = 0; i < s->g.num_enemies; i++)
+		g_hurt_enemy(s, i, 1000);
+}
+
+static void clearing_a_stage_scores_a_bonus_and_loads_the_next(void **state)
+{
+	static const struct sim_settings set = { 1, 0, 1, 1, 3, };
+	const struct map *maps[2];
+	struct map *a, *b;
+	struct sim s;
+	(void)state;
+	two_stages(&a, &b);
+	maps[0] = a;
+	maps[1] = b;
+	sim_init_stages(&s, maps, 2, &set, NULL, NULL);
+	assert_ptr_equal(s.map, a);
+	assert_int_equal(s.g.alive, 1);
+	/* two shots kill the grunt 300 ahead */
+	run(&s, &shoot, G_REFIRE + 1);
+	assert_int_equal(s.g.alive, 0);
+	assert_int_equal(s.g.phase, G_PH_CLEAR);
+	assert_int_equal(s.g.score, 100 + G_STAGE_BONUS * 1);
+	run(&s, &nothing, G_CLEAR_TICKS - 1);
+	assert_int_equal(s.g.stage, 0);
+	sim_tick(&s, &nothing);
+	assert_int_equal(s.g.stage, 1);
+	assert_ptr_equal(s.map, b);
+	assert_int_equal(s.g.phase, G_PH_PLAY);
+	assert_int_equal(s.g.alive, 2);
+	assert_int_equal(s.pl.x, fx_from_int(200));
+	assert_int_equal(s.pl.y, fx_from_int(64));
+	assert_int_equal(s.pl.angle, ANG90);
+	assert_int_equal(s.pl.ammo, G_AMMO_START - 2);    /* carried over */
+	/* clearing the last stage loops to the first, one loop harder */
+	kill_all(&s);
+	run(&s, &nothing, G_CLEAR_TICKS + 1);
+	assert_int_equal(s.g.stage, 0);
+	assert_int_equal(s.g.loop, 1);
+	assert_int_equal(s.g.score, 100 + G_STAGE_BONUS + 200 + 2 * G_STAGE_BONUS);
+	assert_int_equal(g_enemy_damage(&s, G_GRUNT), 5 * FX_ONE * 125 / 100);
+	map_free(a);
+	map_free(b);
+}
+
+static void a_map_without_enemies_is_never_cleared(void **state)
+{
+	struct map *m = room(64, 64, 0);
+	struct sim s;
+	(void)state;
+	sim_init(&s, m, &play);
+	run(&s, &nothing, 600);
+	assert_int_equal(s.g.phase, G_PH_PLAY);
+	assert_int_equal(s.g.score, 0);
+	map_free(m);
+}
+
+static void dying_costs_a_life_and_respawns_with_enemies_reset(void **state)
+{
+	static const struct sim_settings set = { 1, 0, 1, 1, 2 };
+	struct map *a, *b;
+	struct sim s;
+	(void)state;
+	two_stages(&a, &b);
+	sim_init(&s, a, &set);
+	assert_int_equal(s.g.lives, 2);
+	s.g.en[0].x = fx_from_int(700);        /* moved away from its spawn point */
+	s.g.en[0].state = G_E_CHASE;
+	s.pl.x = fx_from_int(150);
+	s.pl.ammo = 3;
+	g_hurt_player(&s, fx_from_int(150));
+	assert_int_equal(s.g.phase, G_PH_DEAD);
+	assert_int_equal(s.pl.health, 0);
+	run(&s, &nothing, G_DEAD_TICKS - 1);
+	assert_int_equal(s.g.lives, 2);
+	assert_true(s.pl.viewz < s.pl.z + SIM_VIEW_HEIGHT);  /* sank */
+	sim_tick(&s, &nothing);
+	assert_int_equal(s.g.lives, 1);
+	assert_int_equal(s.g.phase, G_PH_PLAY);
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(s.pl.health, fx_from_int(G_HEALTH_MAX));
+	assert_int_equal(s.pl.ammo, G_AMMO_START);
+	assert_int_equal(s.pl.x, fx_from_int(100));
+	assert_int_equal(s.pl.viewz, SIM_VIEW_HEIGHT);
+	assert_int_equal(s.g.en[0].x, fx_from_int(400));
+	assert_int_equal(s.g.en[0].state, G_E_IDLE);
+	map_free(a);
+	map_free(b);
+}
+
+static void die(struct sim *s)
+{
+	g_hurt_player(s, fx_from_int(1000));
+	run(s, &nothing, G_DEAD_TICKS);
+}
+
+static void the_last_life_leads_to_the_continue_countdown(void **state)
+{
+	static const struct sim_settings set = { 1, 0, 0, 1, 1 };
+	struct map *a, *b;
+	struct sim s;
+	(void)state;
+	two_stages(&a, &b);
+	sim_init(&s, a, &set);
+	sim_tick(&s, &coin);
+	sim_tick(&s, &start);
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(s.g.lives, 1);
+	s.g.score = 700;
+	die(&s);
+	assert_int_equal(s.mode, SIM_GAMEOVER);
+	assert_int_equal(s.countdown, G_CONTINUE_TICKS);
+	/* start without a credit does nothing; the countdown runs */
+	run(&s, &start, 60);
+	assert_int_equal(s.mode, SIM_GAMEOVER);
+	assert_int_equal(s.countdown, G_CONTINUE_TICKS - 60);
+	/* a fire press takes a second off */
+	sim_tick(&s, &shoot);
+	assert_int_equal(s.countdown, G_CONTINUE_TICKS - 120);
+	/* coin, then start: continue, score kept, lives back */
+	sim_tick(&s, &coin);
+	assert_int_equal(s.credits, 1);
+	sim_tick(&s, &start);
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(s.credits, 0);
+	assert_int_equal(s.g.continues, 1);
+	assert_int_equal(s.g.lives, 1);
+	assert_int_equal(s.g.score, 700);
+	assert_int_equal(s.plays, 1);          /* a continue is not a new play */
+	assert_int_equal(s.pl.health, fx_from_int(G_HEALTH_MAX));
+	map_free(a);
+	map_free(b);
+}
+
+static void a_low_score_goes_back_to_attract_after_the_countdown(void **state)
+{
+	static const struct sim_settings set = { 1, 0, 1, 1, 1 };
+	struct map *a, *b;
+	struct sim s;
+	(void)state;
+	two_stages(&a, &b);
+	sim_init(&s, a, &set);
+	s.g.score = 999;                       /* the table's lowest is 1000 */
+	die(&s);
+	run(&s, &nothing, G_CONTINUE_TICKS - 1);
+	assert_int_equal(s.mode, SIM_GAMEOVER);
+	sim_tick(&s, &nothing);
+	assert_int_equal(s.mode, SIM_ATTRACT);
+	assert_int_equal(s.page, SIM_PAGE_TITLE);
+	map_free(a);
+	map_free(b);
+}
+
+static void initials_are_chosen_letter_by_letter_and_enter_the_table(void **state)
+{
+	static const struct sim_settings set = { 1, 0, 1, 1, 1 };
+	static const struct sim_cmd fwd = { .forward = 127 }, left = { .turn = 384 };
+	struct map *a, *b;
+	struct sim s;
+	(void)state;
+	two_stages(&a, &b);
+	sim_init(&s, a, &set);
+	s.g.score = 5500;                      /* between 6000 and 5000: rank 5 (0-based) */
+	s.g.stage = 0;
+	die(&s);
+	run(&s, &nothing, G_CONTINUE_TICKS);
+	assert_int_equal(s.mode, SIM_INITIALS);
+	assert_int_equal(s.ini_rank, 5);
+	/* letter 1: forward twice (press, release, press): A -> C */
+	sim_tick(&s, &fwd);
+	sim_tick(&s, &nothing);
+	sim_tick(&s, &fwd);
+	sim_tick(&s, &nothing);
+	sim_tick(&s, &shoot);
+	sim_tick(&s, &nothing);
+	/* letter 2 starts at C; turn left once: B */
+	assert_int_equal(s.ini_pos, 1);
+	assert_int_equal(s.ini[1], 2);
+	sim_tick(&s, &left);
+	sim_tick(&s, &nothing);
+	sim_tick(&s, &shoot);
+	sim_tick(&s, &nothing);
+	/* letter 3: held forward repeats: 1 + one repeat after 20 ticks */
+	run(&s, &fwd, 21);
+	sim_tick(&s, &nothing);
+	assert_int_equal(s.ini[2], 1 + 2);     /* B -> D */
+	sim_tick(&s, &shoot);
+	assert_int_equal(s.mode, SIM_ATTRACT);
+	assert_int_equal(s.page, SIM_PAGE_SCORES);
+	assert_int_equal(s.new_rank, 5);
+	assert_memory_equal(s.scores.e[5].name, "CBD", 3);
+	assert_int_equal(s.scores.e[5].score, 5500);
+	assert_int_equal(s.scores.e[5].stage, 1);
+	assert_int_equal(s.scores.e[6].score, 5000);  /* moved down */
+	assert_int_equal(s.scores.e[9].score, 2000);  /* 1000 dropped */
+	assert_int_equal(s.scores_gen, 1);
+	map_free(a);
+	map_free(b);
+}
+
+static void initials_time_out_with_the_letters_shown(void **state)
+{
+	static const struct sim_settings set = { 1, 0, 1, 1, 1 };
+	struct map *a, *b;
+	struct sim s;
+	(void)state;
+	two_stages(&a, &b);
+	sim_init(&s, a, &set);
+	s.g.score = 20000;
+	die(&s);
+	run(&s, &nothing, G_CONTINUE_TICKS);
+	assert_int_equal(s.mode, SIM_INITIALS);
+	run(&s, &nothing, G_INITIALS_TICKS);
+	assert_int_equal(s.mode, SIM_ATTRACT);
+	assert_memory_equal(s.scores.e[0].name, "AAA", 3);
+	assert_int_equal(s.scores.e[0].score, 20000);
+	map_free(a);
+	map_free(b);
+}
+
+static void attract_pages_cycle_title_scores_demo(void **state)
+{
+	struct map *m = room(64, 64, 0);
+	struct sim s;
+	(void)state;
+	sim_init(&s, m, &attract2);
+	assert_int_equal(s.page, SIM_PAGE_TITLE);
+	run(&s, &nothing, SIM_TITLE_TICKS - 1);
+	assert_int_equal(s.page, SIM_PAGE_TITLE);
+	sim_tick(&s, &nothing);
+	assert_int_equal(s.page, SIM_PAGE_SCORES);
+	run(&s, &nothing, SIM_SCORES_TICKS);
+	assert_int_equal(s.page, SIM_PAGE_DEMO);
+	run(&s, &nothing, SIM_DEMO_TICKS);
+	assert_int_equal(s.page, SIM_PAGE_TITLE);
+	assert_int_equal(s.mode, SIM_ATTRACT);
+	map_free(m);
+}
+
+static void service_enters_the_menu_from_play_and_leaves_to_attract(void **state)
+{
+	static const struct sim_cmd svc = { .buttons = SIM_BT_SERVICE };
+	struct map *m = room(64, 64, 0);
+	struct sim s;
+	(void)state;
+	sim_init(&s, m, &play);
+	sim_tick(&s, &svc);
+	assert_int_equal(s.mode, SIM_SERVICE);
+	assert_int_equal(s.menu.page, MENU_MAIN);
+	run(&s, &svc, 10);                     /* held: no new press */
+	assert_int_equal(s.mode, SIM_SERVICE);
+	sim_tick(&s, &nothing);
+	sim_tick(&s, &svc);
+	assert_int_equal(s.mode, SIM_ATTRACT);
+	assert_int_equal(s.page, SIM_PAGE_TITLE);
+	map_free(m);
+}
+
+static void bookkeeping_counts_coins_plays_and_time(void **state)
+{
+	static const struct g_books base = { 10, 3, 1000, 5000 };
+	struct map *m = room(64, 64, 0);
+	const struct map *mp = m;
+	struct sim s;
+	(void)state;
+	sim_init_stages(&s, &mp, 1, &attract2, NULL, &base);
+	sim_tick(&s, &(struct sim_cmd){ .coins = 2 });
+	sim_tick(&s, &start);
+	run(&s, &nothing, 100);
+	assert_int_equal(s.books.coins, 12);
+	assert_int_equal(s.books.plays, 4);
+	assert_int_equal(s.books.play_ticks, 1000 + 100);
+	assert_int_equal(s.books.on_ticks, 5000 + 102);
+	assert_int_equal(s.books_gen, 2);      /* the coins, the play */
+	map_free(m);
+}
+
+static void the_table_given_at_init_decides_initials(void **state)
+{
+	static const struct sim_settings set = { 1, 0, 1, 1, 1 };
+	struct g_scores high;
+	struct map *a, *b;
+	const struct map *mp;
+	struct sim s;
+	(void)state;
+	two_stages(&a, &b);
+	mp = a;
+	g_scores_default(&high);
+	for (int i = 0; i < G_SCORES; i++)
+		high.e[i].score = 100000u - (uint32_t)i;
+	sim_init_stages(&s, &mp, 1, &set, &high, NULL);
+	s.g.score = 50000;                     /* would make the default table */
+	die(&s);
+	run(&s, &nothing, G_CONTINUE_TICKS);
+	assert_int_equal(s.mode, SIM_ATTRACT);
+	map_free(a);
+	map_free(b);
+}
+
+static void difficulty_picks_things_by_skill_bits(void **state)
+{
+	static const struct gf_thing t[] = {
+		{ 100, 128, 0, 1, 7 },
+		{ 300, 128, 0, 3004, 1 },          /* easy only */
+		{ 400, 128, 0, 3004, 2 },          /* normal only */
+		{ 500, 128, 0, 3004, 4 },          /* hard only */
+		{ 600, 128, 0, 3004, 6 },          /* normal and hard */
+		{ 700, 128, 0, 3004, 0 },          /* no bits: every skill */
+	};
+	static const int want[4] = { 2, 3, 3, 3 };
+	struct map *m = gf_room(1024, 256, t, 6, NULL, 0);
+	(void)state;
+	assert_non_null(m);
+	for (int d = 0; d < 4; d++) {
+		struct sim_settings set = { 1, 0, 1, (uint8_t)d, 1 };
+		struct sim s;
+		sim_init(&s, m, &set);
+		assert_int_equal(s.g.num_enemies, want[d]);
+	}
+	map_free(m);
+}
+
+static void difficulty_scales_speed(void **state)
+{
+	struct map *m = room(64, 64, 0);
+	static const int pct[4] = { 80, 100, 115, 130 };
+	(void)state;
+	for (int d = 0; d < 4; d++) {
+		struct sim_settings set = { 1, 0, 1, (uint8_t)d, 1 };
+		struct sim s;
+		sim_init(&s, m, &set);
+		assert_int_equal(g_enemy_speed(&s, G_BRUTE), 7 * FX_HALF * pct[d] / 100);
+		assert_int_equal(g_enemy_speed(&s, G_SENTRY), 0);
+	}
+	map_free(m);
+}
+
+/* Changing any one of the game's fields changes the hash. */
+static void hash_covers_the_game_fields(void **state)
+{
+	static const struct gf_thing t[] = { { 100, 128, 0, 1, 0 }, { 400, 128, 0, 3004, 0 },
+					      { 500, 128, 0, 2012, 0 } };
+	struct map *m = gf_room(1024, 256, t, 3, NULL, 0);
+	struct sim s, u;
+	uint64_t h;
+	int i, n = 0;
+	(void)state;
+	sim_init(&s, m, &play);
+	h = sim_hash(&s);
+	for (i = 0; ; i++) {
+		u = s;
+		switch (i) {
+		case 0: u.set.difficulty++; break;
+		case 1: u.set.lives++; break;
+		case 2: u.page++; break;
+		case 3: u.mode_t++; break;
+		case 4: u.prev_nav++; break;
+		case 5: u.nav_t++; break;
+		case 6: u.cmd.forward++; break;
+		case 7: u.cmd.side++; break;
+		case 8: u.cmd.turn++; break;
+		case 9: u.cmd.buttons++; break;
+		case 10: u.cmd.coins++; break;
+		case 11: u.pl.health++; break;
+		case 12: u.pl.ammo++; break;
+		case 13: u.pl.refire++; break;
+		case 14: u.pl.hurt++; break;
+		case 15: u.pl.bonus++; break;
+		case 16: u.g.score++; break;
+		case 17: u.g.lives++; break;
+		case 18: u.g.continues++; break;
+		case 19: u.g.stage++; break;
+		case 20: u.g.loop++; break;
+		case 21: u.g.phase++; break;
+		case 22: u.g.phase_t++; break;
+		case 23: u.g.stage_t++; break;
+		case 24: u.g.kills++; break;
+		case 25: u.g.alive++; break;
+		case 26: u.g.en[0].x++; break;
+		case 27: u.g.en[0].health++; break;
+		case 28: u.g.en[0].state++; break;
+		case 29: u.g.en[0].timer++; break;
+		case 30: u.g.en[0].anim++; break;
+		case 31: u.g.en[0].wander++; break;
+		case 32: u.g.en[0].stuck++; break;
+		case 33: u.g.en[0].flash++; break;
+		case 34: u.g.en[0].angle++; break;
+		case 35: u.g.en[0].sx++; break;
+		case 36: u.g.pk[0].taken++; break;
+		case 37: u.g.pk[0].amount++; break;
+		case 38: u.g.shot_x++; break;
+		case 39: u.g.shot++; break;
+		case 40: u.g.shot_t++; break;
+		case 41: u.countdown++; break;
+		case 42: u.ini_pos++; break;
+		case 43: u.ini[2]++; break;
+		case 44: u.ini_rank++; break;
+		case 45: u.new_rank++; break;
+		case 46: u.scores.e[9].score++; break;
+		case 47: u.scores.e[3].name[1]++; break;
+		case 48: u.scores.e[5].stage++; break;
+		case 49: u.books.coins++; break;
+		case 50: u.books.plays++; break;
+		case 51: u.books.play_ticks++; break;
+		case 52: u.books.on_ticks++; break;
+		case 53: u.set_gen++; break;
+		case 54: u.scores_gen++; break;
+		case 55: u.books_gen++; break;
+		case 56: u.menu.page++; break;
+		case 57: u.menu.cursor++; break;
+		case 58: u.menu.main_cursor++; break;
+		case 59: u.menu.display++; break;
+		case 60: u.menu.confirm++; break;
+		case 61: u.menu.yes++; break;
+		case 62: u.menu.res++; break;
+		case 63: u.menu.done++; break;
+		case 64: u.menu.done_t++; break;
+		case 65: u.menu.coins_seen++; break;
+		case 66: u.menu.t++; break;
+		case 67: u.g.num_enemies--; break;
+		case 68: u.g.num_pickups--; break;
+		case 69: u.num_stages++; break;
+		default: goto done;
+		}
+		n++;
+		if (sim_hash(&u) == h)
+			fail_msg("case %d not hashed", i);
+	}
+done:
+	assert_int_equal(n, 70);
+	map_free(m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -607,6 +1064,20 @@ int main(void)
 		cmocka_unit_test(hash_covers_every_field),
 		cmocka_unit_test(view_follows_the_player),
 		cmocka_unit_test(mode_names_round_trip),
+		cmocka_unit_test(clearing_a_stage_scores_a_bonus_and_loads_the_next),
+		cmocka_unit_test(a_map_without_enemies_is_never_cleared),
+		cmocka_unit_test(dying_costs_a_life_and_respawns_with_enemies_reset),
+		cmocka_unit_test(the_last_life_leads_to_the_continue_countdown),
+		cmocka_unit_test(a_low_score_goes_back_to_attract_after_the_countdown),
+		cmocka_unit_test(initials_are_chosen_letter_by_letter_and_enter_the_table),
+		cmocka_unit_test(initials_time_out_with_the_letters_shown),
+		cmocka_unit_test(attract_pages_cycle_title_scores_demo),
+		cmocka_unit_test(service_enters_the_menu_from_play_and_leaves_to_attract),
+		cmocka_unit_test(bookkeeping_counts_coins_plays_and_time),
+		cmocka_unit_test(the_table_given_at_init_decides_initials),
+		cmocka_unit_test(difficulty_picks_things_by_skill_bits),
+		cmocka_unit_test(difficulty_scales_speed),
+		cmocka_unit_test(hash_covers_the_game_fields),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

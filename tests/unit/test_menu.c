@@ -1,0 +1,244 @@
+/* Tests for engine/menu.c: navigating the service menu with the game's
+ * commands, changing settings, resets with confirmation. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "engine/map.h"
+#include "engine/menu.h"
+#include "engine/sim.h"
+#include "g_fixture.h"
+
+static const struct sim_cmd none = { 0 };
+
+/* One press of a control: a tick with it, a tick without. */
+static void press(struct sim *s, struct sim_cmd c)
+{
+	sim_tick(s, &c);
+	sim_tick(s, &none);
+}
+
+#define UP ((struct sim_cmd){ .forward = 127 })
+#define DOWN ((struct sim_cmd){ .forward = -127 })
+#define LEFT ((struct sim_cmd){ .turn = 384 })
+#define RIGHT ((struct sim_cmd){ .turn = -384 })
+#define FIRE ((struct sim_cmd){ .buttons = SIM_BT_FIRE })
+#define SERVICE ((struct sim_cmd){ .buttons = SIM_BT_SERVICE })
+
+static struct map *m_room;
+
+static int setup(void **state)
+{
+	static const struct gf_thing t[] = { { 100, 100, 0, 1, 0 } };
+	(void)state;
+	m_room = gf_room(512, 512, t, 1, NULL, 0);
+	return m_room ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	map_free(m_room);
+	return 0;
+}
+
+static void in_menu(struct sim *s, const struct sim_settings *set)
+{
+	sim_init(s, m_room, set);
+	press(s, SERVICE);
+	assert_int_equal(s->mode, SIM_SERVICE);
+	assert_int_equal(s->menu.page, MENU_MAIN);
+	assert_int_equal(s->menu.cursor, MENU_I_INPUT);
+}
+
+static const struct sim_settings base = { 1, 0, 0, 1, 3 };
+
+static void the_cursor_moves_and_wraps_and_pages_open_and_close(void **state)
+{
+	struct sim s;
+	(void)state;
+	in_menu(&s, &base);
+	press(&s, DOWN);
+	assert_int_equal(s.menu.cursor, MENU_I_DISPLAY);
+	press(&s, UP);
+	press(&s, UP);                         /* wraps to the last item */
+	assert_int_equal(s.menu.cursor, MENU_I_EXIT);
+	press(&s, DOWN);
+	assert_int_equal(s.menu.cursor, MENU_I_INPUT);
+	press(&s, DOWN);
+	press(&s, DOWN);
+	press(&s, DOWN);
+	press(&s, FIRE);
+	assert_int_equal(s.menu.page, MENU_BOOKS);
+	press(&s, SERVICE);                    /* back, cursor kept */
+	assert_int_equal(s.menu.page, MENU_MAIN);
+	assert_int_equal(s.menu.cursor, MENU_I_BOOKS);
+	assert_int_equal(s.mode, SIM_SERVICE);
+	press(&s, SERVICE);                    /* and out */
+	assert_int_equal(s.mode, SIM_ATTRACT);
+}
+
+static void a_held_direction_repeats(void **state)
+{
+	struct sim s;
+	(void)state;
+	in_menu(&s, &base);
+	/* held 21 ticks: the press, then one repeat at 20 ticks held */
+	for (int i = 0; i < 21; i++)
+		sim_tick(&s, &DOWN);
+	assert_int_equal(s.menu.cursor, 2);
+	for (int i = 0; i < 6; i++)              /* every 6 ticks after that */
+		sim_tick(&s, &DOWN);
+	assert_int_equal(s.menu.cursor, 3);
+}
+
+static void the_input_test_shows_commands_and_counts_coins(void **state)
+{
+	struct sim s;
+	(void)state;
+	in_menu(&s, &base);
+	press(&s, FIRE);
+	assert_int_equal(s.menu.page, MENU_INPUT);
+	press(&s, (struct sim_cmd){ .coins = 2 });
+	press(&s, (struct sim_cmd){ .coins = 1 });
+	assert_int_equal(s.menu.coins_seen, 3);
+	/* directions and fire do not navigate here */
+	press(&s, DOWN);
+	press(&s, FIRE);
+	assert_int_equal(s.menu.page, MENU_INPUT);
+	sim_tick(&s, &(struct sim_cmd){ .forward = 127, .buttons = SIM_BT_USE });
+	assert_int_equal(s.cmd.forward, 127);
+	assert_int_equal(s.cmd.buttons, SIM_BT_USE);
+	press(&s, SERVICE);
+	assert_int_equal(s.menu.page, MENU_MAIN);
+}
+
+static void the_display_test_steps_through_its_screens(void **state)
+{
+	struct sim s;
+	(void)state;
+	in_menu(&s, &base);
+	press(&s, DOWN);
+	press(&s, FIRE);
+	assert_int_equal(s.menu.page, MENU_DISPLAY);
+	assert_int_equal(s.menu.display, MENU_D_BARS);
+	press(&s, FIRE);
+	assert_int_equal(s.menu.display, MENU_D_GRID);
+	press(&s, FIRE);
+	assert_int_equal(s.menu.display, MENU_D_ORIENT);
+	press(&s, FIRE);
+	assert_int_equal(s.menu.display, MENU_D_BARS);
+}
+
+static void settings_change_with_left_and_right(void **state)
+{
+	struct sim s;
+	int w, h;
+	(void)state;
+	in_menu(&s, &base);
+	press(&s, DOWN);
+	press(&s, DOWN);
+	press(&s, FIRE);
+	assert_int_equal(s.menu.page, MENU_SETTINGS);
+	assert_int_equal(s.menu.cursor, MENU_S_DIFFICULTY);
+	press(&s, RIGHT);
+	assert_int_equal(s.set.difficulty, 2);
+	press(&s, RIGHT);
+	press(&s, RIGHT);                      /* 3 wraps to 0 */
+	assert_int_equal(s.set.difficulty, 0);
+	press(&s, DOWN);
+	press(&s, LEFT);
+	assert_int_equal(s.set.lives, 2);
+	press(&s, LEFT);
+	press(&s, LEFT);                       /* 1 wraps to 9 */
+	assert_int_equal(s.set.lives, 9);
+	press(&s, DOWN);
+	press(&s, FIRE);                       /* fire steps forward too */
+	assert_int_equal(s.set.coins_per_credit, 2);
+	press(&s, DOWN);
+	press(&s, RIGHT);
+	assert_int_equal(s.set.freeplay, 1);
+	assert_int_equal(s.set_gen, 3 + 3 + 1 + 1);   /* one per change */
+	press(&s, DOWN);
+	press(&s, RIGHT);
+	assert_int_equal(s.menu.res, 1);
+	menu_res_size(s.menu.res, &w, &h);
+	assert_int_equal(w, 320);
+	assert_int_equal(h, 240);
+	press(&s, LEFT);
+	press(&s, LEFT);                       /* 0 (as configured) wraps to the last */
+	assert_int_equal(s.menu.res, MENU_RES_COUNT);
+	assert_int_equal(s.set_gen, 8);        /* the size is not a game setting */
+	press(&s, DOWN);
+	press(&s, FIRE);                       /* BACK */
+	assert_int_equal(s.menu.page, MENU_MAIN);
+	/* the new settings rule the next game: free play, 9 lives */
+	press(&s, SERVICE);
+	press(&s, (struct sim_cmd){ .buttons = SIM_BT_START });
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(s.g.lives, 9);
+	assert_int_equal(s.credits, 0);
+}
+
+static void resets_need_a_yes(void **state)
+{
+	struct g_books books = { 5, 6, 7, 8 };
+	const struct map *mp = m_room;
+	struct sim s;
+	(void)state;
+	sim_init_stages(&s, &mp, 1, &base, NULL, &books);
+	s.scores.e[0].score = 99999;
+	press(&s, SERVICE);
+	for (int i = 0; i < MENU_I_RESET_SCORES; i++)
+		press(&s, DOWN);
+	press(&s, FIRE);
+	assert_int_equal(s.menu.page, MENU_CONFIRM);
+	assert_int_equal(s.menu.yes, 0);
+	press(&s, FIRE);                       /* NO */
+	assert_int_equal(s.menu.page, MENU_MAIN);
+	assert_int_equal(s.scores.e[0].score, 99999);
+	press(&s, FIRE);
+	press(&s, RIGHT);                      /* YES */
+	assert_int_equal(s.menu.yes, 1);
+	press(&s, FIRE);
+	assert_int_equal(s.scores.e[0].score, 10000);
+	assert_int_equal(s.scores_gen, 1);
+	assert_int_equal(s.menu.done, MENU_I_RESET_SCORES);
+	assert_int_equal(s.books.coins, 5);
+	press(&s, DOWN);                       /* reset bookkeeping */
+	press(&s, FIRE);
+	press(&s, LEFT);
+	sim_tick(&s, &FIRE);                   /* the tick of the reset */
+	assert_int_equal(s.books.coins, 0);
+	assert_int_equal(s.books.plays, 0);
+	assert_true(s.books.play_ticks == 0);
+	assert_true(s.books.on_ticks == 0);
+}
+
+static void the_exit_item_leaves(void **state)
+{
+	struct sim s;
+	(void)state;
+	in_menu(&s, &base);
+	press(&s, UP);
+	assert_int_equal(s.menu.cursor, MENU_I_EXIT);
+	press(&s, FIRE);
+	assert_int_equal(s.mode, SIM_ATTRACT);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(the_cursor_moves_and_wraps_and_pages_open_and_close),
+		cmocka_unit_test(a_held_direction_repeats),
+		cmocka_unit_test(the_input_test_shows_commands_and_counts_coins),
+		cmocka_unit_test(the_display_test_steps_through_its_screens),
+		cmocka_unit_test(settings_change_with_left_and_right),
+		cmocka_unit_test(resets_need_a_yes),
+		cmocka_unit_test(the_exit_item_leaves),
+	};
+	return cmocka_run_group_tests(tests, setup, teardown);
+}
