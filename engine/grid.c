@@ -118,8 +118,8 @@ static int grid_tok_is(const struct grid_tok *t, const char *s)
 	return t->n == strlen(s) && memcmp(t->s, s, t->n) == 0;
 }
 
-/* Splits a line into blank-separated tokens; returns the count, or -1 when
- * there are more than max. */
+/* Splits a line into blank-separated tokens up to a token starting with
+ * ';' (a comment); returns the count, or -1 when there are more than max. */
 static int grid_split(const char *s, size_t n, struct grid_tok *tok, int max)
 {
 	int k = 0;
@@ -132,6 +132,8 @@ static int grid_split(const char *s, size_t n, struct grid_tok *tok, int max)
 			i++;
 			continue;
 		}
+		if (s[i] == ';')
+			break;
 		if (k == max)
 			return -1;
 		b = i;
@@ -398,7 +400,7 @@ static int grid_header(struct grid_p *p, const char *text, size_t len, size_t *p
 		k = grid_split(s, n, t, GRID_TOKENS);
 		if (k < 0)
 			return grid_fail(p, *line, 0, "too many words on one line");
-		if (k == 0 || t[0].s[0] == ';')
+		if (k == 0)
 			continue;
 		if (t[0].n == 1) {
 			if (grid_legend(p, *line, t, k))

@@ -262,9 +262,10 @@ static void errors_name_line_and_column(void **state)
 		  "'name NAME' (8 chars) or 'map', got 'bogus'");
 }
 
-static void crlf_and_trailing_blank_lines_are_accepted(void **state)
+static void crlf_comments_and_trailing_blank_lines_are_accepted(void **state)
 {
-	struct map *m = parse_ok("name CRLF\r\n# = wall 5\r\n. = open\r\n@ = . player east\r\n"
+	struct map *m = parse_ok("name CRLF ; comment\r\n  ; indented comment\r\n"
+				 "# = wall 5 ;a comment\r\n. = open\r\n@ = . player east\r\n"
 				 "map\r\n###\r\n#@#\r\n###\r\n\r\n\n");
 	(void)state;
 	assert_int_equal(m->num_lines, 4);
@@ -369,7 +370,7 @@ int main(void)
 		cmocka_unit_test(lamps_and_things_sit_at_tile_centres),
 		cmocka_unit_test(names_resolve_through_the_callbacks),
 		cmocka_unit_test(errors_name_line_and_column),
-		cmocka_unit_test(crlf_and_trailing_blank_lines_are_accepted),
+		cmocka_unit_test(crlf_comments_and_trailing_blank_lines_are_accepted),
 		cmocka_unit_test(larger_than_255_tiles_is_refused),
 		cmocka_unit_test(builtin_grid_level_matches_its_file_and_imports),
 	};
