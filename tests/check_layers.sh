@@ -29,7 +29,7 @@ else
 	fi
 fi
 # Backends (one file each) are the only users of kernel and device headers.
-allowed='^(display/dp_fbdev\.c|display/dp_term\.c|input/in_evdev\.c|input/in_tty\.c|input/in_ttykeys\.c|input/in_keys\.c|systemd/svc\.c)$'
+allowed='^(display/dp_fbdev\.c|display/dp_term\.c|input/in_evdev\.c|input/in_tty\.c|input/in_ttykeys\.c|input/in_keys\.c|input/hid_dec\.c|input/in_hid\.c|input/in_gpio\.c|systemd/svc\.c)$'
 for f in $(grep -lE '#[[:space:]]*include[[:space:]]*<(linux/|sys/ioctl|sys/kd|termios|libevdev|systemd/|hidapi|gpiod)' \
 	app/*.c app/*.h input/*.c input/*.h display/*.c display/*.h config/*.c config/*.h 2>/dev/null); do
 	if ! echo "$f" | grep -qE "$allowed"; then
