@@ -29,8 +29,11 @@
 
 struct lmap {
 	uint32_t num_sectors, num_lines;
-	struct lmap_grid *flats;                /* [2 * sector + ceiling] */
-	struct lmap_grid *walls;                /* [2 * line + side] */
+	/* per surface, flats [2 * sector + ceiling] then walls [2 * sectors +
+	 * 2 * line + side]: index into grids, or MAP_NONE */
+	uint32_t *idx;
+	struct lmap_grid *grids;
+	uint32_t ngrids;
 	uint8_t *pool;
 	struct lmap_stats st;
 };
@@ -583,8 +586,14 @@ static void lmap_b_free(struct lmap_b *b)
 	free(b->hi);
 }
 
-/* Which grids some light reaches (w > 0), their sizes, and the pool:
- * grids take consecutive pool ranges, flats then walls. */
+/* The grid of surface g (flats first, then walls), or NULL. */
+static struct lmap_grid *lmap_surface(const struct lmap *lm, uint32_t g)
+{
+	return lm->idx[g] == MAP_NONE ? NULL : &lm->grids[lm->idx[g]];
+}
+
+/* Which surfaces some light reaches, their grids' sizes, and the pool:
+ * grids take consecutive pool ranges in surface order. */
 static int lmap_layout(struct lmap *lm, const struct map *m, const int64_t (*box)[4],
 		       const struct lmap_light *lights, int n)
 {
@@ -592,12 +601,18 @@ static int lmap_layout(struct lmap *lm, const struct map *m, const int64_t (*box
 	uint32_t nf = 2 * m->num_sectors, nw = 2 * m->num_lines;
 
 	for (uint32_t g = 0; g < nf + nw; g++) {
-		struct lmap_grid *gr = g < nf ? &lm->flats[g] : &lm->walls[g - nf];
 		int hit = 0;
 		for (int k = 0; k < n && !hit; k++)
 			hit = g < nf ? lmap_reach_flat(m, box, g / 2, (int)(g & 1), &lights[k])
 				     : lmap_reach_wall(m, (g - nf) / 2, (int)((g - nf) & 1), &lights[k]);
-		if (!hit)
+		lm->idx[g] = hit ? lm->ngrids++ : MAP_NONE;
+	}
+	lm->grids = calloc(lm->ngrids ? lm->ngrids : 1, sizeof *lm->grids);
+	if (!lm->grids)
+		return -ENOMEM;
+	for (uint32_t g = 0; g < nf + nw; g++) {
+		struct lmap_grid *gr = lmap_surface(lm, g);
+		if (!gr)
 			continue;
 		if (g < nf) {
 			const int64_t *bx = box[g / 2];
@@ -615,19 +630,16 @@ static int lmap_layout(struct lmap *lm, const struct map *m, const int64_t (*box
 				  LMAP_TEXEL_SHIFT);
 		}
 		off += (size_t)gr->w * (size_t)gr->h;
-		lm->st.grids++;
 	}
+	lm->st.grids = lm->ngrids;
 	lm->st.texels = off;
 	lm->pool = malloc(off ? off : 1);
 	if (!lm->pool)
 		return -ENOMEM;
 	off = 0;
-	for (uint32_t g = 0; g < nf + nw; g++) {
-		struct lmap_grid *gr = g < nf ? &lm->flats[g] : &lm->walls[g - nf];
-		if (gr->w == 0)
-			continue;
-		gr->t = lm->pool + off;
-		off += (size_t)gr->w * (size_t)gr->h;
+	for (uint32_t k = 0; k < lm->ngrids; k++) {
+		lm->grids[k].t = lm->pool + off;
+		off += (size_t)lm->grids[k].w * (size_t)lm->grids[k].h;
 	}
 	return 0;
 }
@@ -667,11 +679,10 @@ int lmap_new(const struct map *m, const struct lmap_light *lights, int n, struct
 	nw = 2 * m->num_lines;
 	lm->num_sectors = m->num_sectors;
 	lm->num_lines = m->num_lines;
-	lm->flats = calloc(nf ? nf : 1, sizeof *lm->flats);
-	lm->walls = calloc(nw ? nw : 1, sizeof *lm->walls);
+	lm->idx = malloc((nf + nw ? nf + nw : 1) * sizeof *lm->idx);
 	box = malloc((m->num_sectors ? m->num_sectors : 1) * sizeof *box);
 	r = -ENOMEM;
-	if (!lm->flats || !lm->walls || !box)
+	if (!lm->idx || !box)
 		goto fail;
 	lmap_sector_boxes(m, box);
 	r = lmap_layout(lm, m, (const int64_t(*)[4])box, lights, n);
@@ -688,17 +699,17 @@ int lmap_new(const struct map *m, const struct lmap_light *lights, int n, struct
 		const struct lmap_light *li = &lights[k];
 		for (uint32_t s = 0; s < m->num_sectors; s++)
 			for (int c = 0; c < 2; c++) {
-				const struct lmap_grid *g = &lm->flats[2 * s + (uint32_t)c];
-				if (!g->t || !lmap_reach_flat(m, (const int64_t(*)[4])box, s, c, li))
+				const struct lmap_grid *g = lmap_surface(lm, 2 * s + (uint32_t)c);
+				if (!g || !lmap_reach_flat(m, (const int64_t(*)[4])box, s, c, li))
 					continue;
 				lmap_light_flat(&b, li, g, acc + (g->t - lm->pool), box[s],
 						LMAP_SUB(c ? m->sectors[s].ceil_h : m->sectors[s].floor_h));
 			}
 		for (uint32_t i = 0; i < m->num_lines; i++)
 			for (int sd = 0; sd < 2; sd++) {
-				const struct lmap_grid *g = &lm->walls[2 * i + (uint32_t)sd];
+				const struct lmap_grid *g = lmap_surface(lm, nf + 2 * i + (uint32_t)sd);
 				const struct map_sector *f;
-				if (!g->t || !lmap_reach_wall(m, i, sd, li))
+				if (!g || !lmap_reach_wall(m, i, sd, li))
 					continue;
 				f = &m->sectors[m->sides[m->lines[i].side[sd]].sector];
 				lmap_light_wall(&b, li, g, acc + (g->t - lm->pool), i, sd,
@@ -712,7 +723,8 @@ int lmap_new(const struct map *m, const struct lmap_light *lights, int n, struct
 	}
 	lm->st.lights = (uint32_t)n;
 	lm->st.rays = b.rays;
-	lm->st.bytes = sizeof *lm + (nf + nw) * sizeof *lm->flats + (size_t)lm->st.texels;
+	lm->st.bytes = sizeof *lm + (nf + nw) * sizeof *lm->idx +
+		       lm->ngrids * sizeof *lm->grids + (size_t)lm->st.texels;
 	free(acc);
 	free(box);
 	lmap_b_free(&b);
@@ -730,8 +742,8 @@ void lmap_free(struct lmap *lm)
 {
 	if (!lm)
 		return;
-	free(lm->flats);
-	free(lm->walls);
+	free(lm->idx);
+	free(lm->grids);
 	free(lm->pool);
 	free(lm);
 }
@@ -742,8 +754,8 @@ const struct lmap_grid *lmap_flat_grid(const struct lmap *lm, uint32_t sector, i
 
 	if (!lm || sector >= lm->num_sectors)
 		return NULL;
-	g = &lm->flats[2 * sector + (ceiling ? 1u : 0u)];
-	return g->t ? g : NULL;
+	g = lmap_surface(lm, 2 * sector + (ceiling ? 1u : 0u));
+	return g;
 }
 
 const struct lmap_grid *lmap_wall_grid(const struct lmap *lm, uint32_t line, int side)
@@ -752,8 +764,8 @@ const struct lmap_grid *lmap_wall_grid(const struct lmap *lm, uint32_t line, int
 
 	if (!lm || line >= lm->num_lines)
 		return NULL;
-	g = &lm->walls[2 * line + (side ? 1u : 0u)];
-	return g->t ? g : NULL;
+	g = lmap_surface(lm, 2 * lm->num_sectors + 2 * line + (side ? 1u : 0u));
+	return g;
 }
 
 int lmap_flat(const struct lmap *lm, uint32_t sector, int ceiling, fx_t x, fx_t y)
@@ -777,8 +789,8 @@ void lmap_get_stats(const struct lmap *lm, struct lmap_stats *st)
 
 static uint64_t lmap_hash_grid(uint64_t h, const struct lmap_grid *g)
 {
-	h = hash_u8(h, g->t != NULL);
-	if (!g->t)
+	h = hash_u8(h, g != NULL);
+	if (!g)
 		return h;
 	h = hash_i32(h, g->x0);
 	h = hash_i32(h, g->y0);
@@ -794,9 +806,7 @@ uint64_t lmap_hash(const struct lmap *lm)
 
 	h = hash_u32(h, lm->num_sectors);
 	h = hash_u32(h, lm->num_lines);
-	for (uint32_t g = 0; g < 2 * lm->num_sectors; g++)
-		h = lmap_hash_grid(h, &lm->flats[g]);
-	for (uint32_t g = 0; g < 2 * lm->num_lines; g++)
-		h = lmap_hash_grid(h, &lm->walls[g]);
+	for (uint32_t g = 0; g < 2 * lm->num_sectors + 2 * lm->num_lines; g++)
+		h = lmap_hash_grid(h, lmap_surface(lm, g));
 	return h;
 }
