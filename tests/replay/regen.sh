@@ -1,0 +1,20 @@
+#!/bin/sh
+# Regenerates every golden recording and its hashes from its script:
+# tests/replay/golden-NAME.rec and golden-NAME.hashes from NAME.scr, with
+# the built-in defaults (no configuration files). Only after an intended
+# change of the sim, renderer or level, having looked at the frames
+# (README.md); say so in the commit.
+# Usage: tests/replay/regen.sh [path/to/arcaded]
+set -eu
+cd "$(dirname "$0")/../.."
+BIN=${1:-build/arcaded}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+common="--config-dir $tmp/none --state-dir $tmp/state"
+for rec in tests/replay/golden-*.rec; do
+	name=$(basename "$rec" .rec)
+	scr=tests/replay/${name#golden-}.scr
+	"$BIN" $common --script "$scr" --record "$rec" >/dev/null
+	"$BIN" $common --replay "$rec" >"tests/replay/$name.hashes"
+	echo "$name: $(wc -l <"tests/replay/$name.hashes") ticks from $scr"
+done
