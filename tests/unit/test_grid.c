@@ -14,6 +14,7 @@
 
 #include "engine/grid.h"
 #include "engine/map.h"
+#include "engine/r_main.h"
 #include "engine/tex.h"
 #include "engine/th.h"
 
@@ -360,6 +361,61 @@ static void builtin_grid_level_matches_its_file_and_imports(void **state)
 	tex_free(tex);
 }
 
+
+/* The acceptance path: a grid map (no nodes in it: map_finish built them)
+ * renders like any map. From the player start and from the centre of every
+ * open tile in four directions, every pixel is written and none is left
+ * empty (the map is closed), and nothing falls back to the checker. */
+static void builtin_grid_level_renders_without_holes(void **state)
+{
+	size_t len;
+	const char *text = grid_builtin_text(&len);
+	struct tex_set *tex = NULL;
+	struct grid_names names;
+	struct map *m = NULL;
+	struct r_ctx *r = NULL;
+	struct r_frame f;
+	struct r_stats st;
+	char err[256];
+	int views = 0;
+	(void)state;
+	assert_int_equal(tex_builtin(&tex), 0);
+	grid_names_from_tex(&names, tex);
+	assert_int_equal(grid_parse(text, len, "grid1.txt", &names, &m, err, sizeof err), 0);
+	assert_int_equal(r_new(160, 100, &r), 0);
+	f.w = 160;
+	f.h = 100;
+	f.pitch = 160;
+	f.px = malloc(160 * 100);
+	assert_non_null(f.px);
+	/* the level's rows (13 rows of 26 tiles) follow its "map" line;
+	 * wall tiles are '#' and 'O' */
+	const char *rows = strstr(text, "\nmap\n") + 5;
+	for (int row = 1; row < 12; row++)
+		for (int col = 1; col < 25; col++) {
+			fx_t x = tile_x(col), y = tile_y(13, row);
+			const struct map_sector *s = &m->sectors[map_point_sector(m, x, y)];
+			char tile = rows[row * 27 + col];
+			if (tile == '#' || tile == 'O' || s->ceil_h - s->floor_h < fx_from_int(56))
+				continue;      /* walls; the window: no room for an eye */
+			for (int a = 0; a < 4; a++) {
+				struct r_view v = { x, y, s->floor_h + fx_from_int(41),
+						    (ang_t)a * ANG90 + ANG45 / 3, 0 };
+				r_render(r, m, tex, &v, NULL, 0, &f);
+				r_get_stats(r, &st);
+				assert_int_equal(st.pixels_written, 160 * 100);
+				assert_int_equal(st.pixels_empty, 0);
+				assert_int_equal(st.missing, 0);
+				views++;
+			}
+		}
+	assert_true(views > 500);
+	free(f.px);
+	r_free(r);
+	map_free(m);
+	tex_free(tex);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -373,6 +429,7 @@ int main(void)
 		cmocka_unit_test(crlf_comments_and_trailing_blank_lines_are_accepted),
 		cmocka_unit_test(larger_than_255_tiles_is_refused),
 		cmocka_unit_test(builtin_grid_level_matches_its_file_and_imports),
+		cmocka_unit_test(builtin_grid_level_renders_without_holes),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
