@@ -451,4 +451,19 @@ static inline uint8_t *wfx_iwad(size_t *len)
 	return wf_finish(&f, "IWAD", len);
 }
 
+static inline void wfx_no_bsp(struct wbuf *l)
+{
+	l[4].n = l[5].n = l[6].n = 0;
+}
+
+/* A PWAD with MAP01 but no BSP lumps' contents (the node builder's case). */
+static inline uint8_t *wfx_nonodes(size_t *len)
+{
+	struct wfix f;
+
+	wf_init(&f);
+	wfx_map(&f, "MAP01", wfx_no_bsp);
+	return wf_finish(&f, "PWAD", len);
+}
+
 #endif
