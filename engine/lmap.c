@@ -610,26 +610,32 @@ static int lmap_layout(struct lmap *lm, const struct map *m, const int64_t (*box
 	lm->grids = calloc(lm->ngrids ? lm->ngrids : 1, sizeof *lm->grids);
 	if (!lm->grids)
 		return -ENOMEM;
-	for (uint32_t g = 0; g < nf + nw; g++) {
-		struct lmap_grid *gr = lmap_surface(lm, g);
-		if (!gr)
-			continue;
-		if (g < nf) {
-			const int64_t *bx = box[g / 2];
-			gr->x0 = (int32_t)(bx[0] >> 4);
-			gr->y0 = (int32_t)(bx[1] >> 4);
-			lmap_size(gr, bx[2] - (int64_t)gr->x0 * 16, bx[3] - (int64_t)gr->y0 * 16,
-				  LMAP_TEXEL_SHIFT);
-		} else {
-			uint32_t i = (g - nf) / 2;
-			const struct map_sector *f =
-				&m->sectors[m->sides[m->lines[i].side[(g - nf) & 1]].sector];
-			gr->x0 = 0;
-			gr->y0 = fx_to_int(f->floor_h);
-			lmap_size(gr, lmap_side_len(m, i), LMAP_SUB(f->ceil_h) - LMAP_SUB(f->floor_h),
-				  LMAP_TEXEL_SHIFT);
+	/* the finest texels that keep the whole within LMAP_TEXELS_MAX */
+	for (int32_t min_shift = LMAP_TEXEL_SHIFT;; min_shift++) {
+		off = 0;
+		for (uint32_t g = 0; g < nf + nw; g++) {
+			struct lmap_grid *gr = lmap_surface(lm, g);
+			if (!gr)
+				continue;
+			if (g < nf) {
+				const int64_t *bx = box[g / 2];
+				gr->x0 = (int32_t)(bx[0] >> 4);
+				gr->y0 = (int32_t)(bx[1] >> 4);
+				lmap_size(gr, bx[2] - (int64_t)gr->x0 * 16,
+					  bx[3] - (int64_t)gr->y0 * 16, min_shift);
+			} else {
+				uint32_t i = (g - nf) / 2;
+				const struct map_sector *f =
+					&m->sectors[m->sides[m->lines[i].side[(g - nf) & 1]].sector];
+				gr->x0 = 0;
+				gr->y0 = fx_to_int(f->floor_h);
+				lmap_size(gr, lmap_side_len(m, i),
+					  LMAP_SUB(f->ceil_h) - LMAP_SUB(f->floor_h), min_shift);
+			}
+			off += (size_t)gr->w * (size_t)gr->h;
 		}
-		off += (size_t)gr->w * (size_t)gr->h;
+		if (off <= LMAP_TEXELS_MAX || min_shift >= LMAP_SHIFT_MAX)
+			break;
 	}
 	lm->st.grids = lm->ngrids;
 	lm->st.texels = off;

@@ -4,8 +4,10 @@
  * Beyond Doom (the seed thesis): point lights placed in a map brighten
  * walls, floors and ceilings with distance, and walls block them. For every
  * line side and every sector floor and ceiling that some light can reach,
- * lmap_new computes a grid of texels (LMAP_TEXEL = 16 map units square, or
- * coarser for huge surfaces, see lmap_grid.shift). A texel's value is a
+ * lmap_new computes a grid of texels (LMAP_TEXEL = 16 map units square;
+ * doubled for a surface until it has at most LMAP_GRID_MAX texels, and for
+ * every surface until all have at most LMAP_TEXELS_MAX, so memory stays
+ * bounded; see lmap_grid.shift). A texel's value is a
  * colormap-level boost 0..PAL_LIGHTS-1: the drawers use level
  * max(0, level - boost) (docs/lights.md).
  *
@@ -50,6 +52,7 @@ struct map_thing;
 #define LMAP_TEXEL_SHIFT 4             /* 16 map units */
 #define LMAP_TEXEL (1 << LMAP_TEXEL_SHIFT)
 #define LMAP_GRID_MAX 65536            /* texels per surface before coarsening */
+#define LMAP_TEXELS_MAX (16u << 20)    /* texels in all before coarsening all */
 #define LMAP_RADIUS_MAX 2048           /* map units */
 
 /* Lights come from map things (lmap_lights_from_map): arcaded's light

@@ -9,6 +9,7 @@
 #include <setjmp.h>
 #include <stdint.h>
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
@@ -333,6 +334,42 @@ static void only_surfaces_facing_a_light_get_grids(void **state)
 	map_free(m);
 }
 
+
+static void huge_surfaces_get_coarser_texels(void **state)
+{
+	/* one open room of 250 x 250 tiles: its floor is 16000 units square,
+	 * 1000 x 1000 texels of 16 units, past LMAP_GRID_MAX (65536): 32-unit
+	 * texels give 500 x 500, still past; 64-unit ones 250 x 250 = 62500 */
+	size_t n = 64 + 253 * 252, k;
+	char *t = malloc(n);
+	struct map *m = NULL;
+	struct lmap *lm = NULL;
+	struct lmap_light l = light_at(8000, 8000, 64, 128, 512);
+	const struct lmap_grid *g;
+	char err[128];
+	(void)state;
+	assert_non_null(t);
+	k = (size_t)sprintf(t, "# = wall 1\n. = open\n@ = . player east\nmap\n");
+	for (int r = 0; r < 252; r++) {
+		for (int c = 0; c < 252; c++)
+			t[k++] = r == 0 || c == 0 || r == 251 || c == 251 ? '#' : r == 1 && c == 1 ? '@' : '.';
+		t[k++] = '\n';
+	}
+	assert_int_equal(grid_parse(t, k, "big", NULL, &m, err, sizeof err), 0);
+	free(t);
+	assert_int_equal(lmap_new(m, &l, 1, &lm), 0);
+	g = lmap_flat_grid(lm, 0, 0);
+	assert_non_null(g);
+	assert_int_equal(g->shift, 6);
+	assert_int_equal(g->w, 250);
+	assert_int_equal(g->h, 250);
+	/* under the light, lit; 600 units away (radius 512), not */
+	assert_true(lmap_flat(lm, 0, 0, fx_from_int(8000), fx_from_int(8000)) > 0);
+	assert_int_equal(lmap_flat(lm, 0, 0, fx_from_int(8600), fx_from_int(8000)), 0);
+	lmap_free(lm);
+	map_free(m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -344,6 +381,7 @@ int main(void)
 		cmocka_unit_test(lights_come_from_things_half_way_up),
 		cmocka_unit_test(no_lights_and_bad_lights),
 		cmocka_unit_test(only_surfaces_facing_a_light_get_grids),
+		cmocka_unit_test(huge_surfaces_get_coarser_texels),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
