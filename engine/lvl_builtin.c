@@ -42,6 +42,53 @@
  * - The gallery's east edge is a 64-unit drop into the yard.
  * - Player 1 starts at @ (96, 192) facing east: the pillar ahead on the
  *   left, the window straight ahead with the yard and the dais behind it.
+ * - Stage 1 of the game (the easiest): three grunts (g) in the yard and at
+ *   the gallery's east end, a sentry (s) on the dais; a medikit (+), a
+ *   stimpack, a clip and a box of bullets (a); floor lamps (*) in the hall
+ *   and the yard and two point lights (L). Placed away from the paths the
+ *   movement scripts walk (tests/script), which stay valid.
+ *
+ *   gallery: g (600, 960)   a (300, 900)
+ *   yard:    g (720, 960)  g (960, 960)  s on the dais (864, 512)
+ *            + stim (1000, 40)  * (1000, 1000)  L (840, 300)
+ *   hall:    + (320, 96)  a clip (96, 560)  * (40, 600)  L (320, 480)
+ *
+ * ARENA2 (stage 2), a cross of four arms round a square court with a
+ * pillar; the west arm is 16 lower, the east arm 16 higher (both steps
+ * climbable):
+ *
+ *    y
+ *  1024          +-----------+
+ *                |  NORTH    |   f0 c128 l144: g g b, a box of bullets
+ *                |           |
+ *   640 +--------+-----------+--------+
+ *       | WEST   |  COURT  # |  EAST  |  WEST f-16 c112 l128: g b (+g hard)
+ *       |        |   [#]     |        |  COURT f0 c192 l192: pillar, +, lamps
+ *   384 +--------+-----------+--------+  EAST f16 c144 l176: g s (+b hard)
+ *                |  SOUTH    |
+ *                |     @     |   f0 c128 l160: start (512, 64) facing north
+ *     0          +-----------+
+ *       0       384         640      1024
+ *
+ * ARENA3 (stage 3), a ring round a solid central block; the north side is
+ * 32 up, reached by 16-unit steps on the west and east sides:
+ *
+ *    y
+ *  1024 +--------------------------------------------+
+ *       |  NORTH f32 c224 l112 (dark): s s b g,       |
+ *       |  point lights, torches; +g +s on hard       |
+ *   704 +--------+-------------------------+--------+
+ *       | WHIGH  |                         | EHIGH  |  f16 c160 l144: g / g b
+ *   512 +--------+      (solid block)      +--------+
+ *       | WLOW   |                         | ELOW   |  f0 c160 l160: b / s
+ *   320 +--------+-------------------------+--------+
+ *       |  SOUTH f0 c192 l176   [#] pillar            |  g b (+b on hard)
+ *       |  @ (160, 160) facing east                   |
+ *     0 +--------------------------------------------+
+ *       0       384                       896      1280
+ *
+ * Thing flags use Doom's skill bits: 7 on every difficulty, 4 only on
+ * hard and brutal (difficulty 2, 3).
  */
 #include <errno.h>
 #include <string.h>
@@ -64,6 +111,7 @@ struct lvl_thing {
 	int16_t x, y;
 	ang_t angle;
 	uint16_t type;
+	uint16_t flags;                /* Doom's skill bits: 1 easy, 2 normal, 4 hard */
 };
 
 struct lvl {
@@ -172,16 +220,203 @@ static const struct lvl_line arena1_lines[] = {
 	{ 36, 33, A1_YARD, A1_DAIS, T_DAIS },
 };
 
+/* Thing types (Doom's numbers, see engine/th.h and engine/g_thing.c). */
+enum {
+	TT_START = 1, TT_GRUNT = 3004, TT_SHOTGUY = 9, TT_IMP = 3001, TT_DEMON = 3002,
+	TT_CACO = 3005, TT_STIM = 2011, TT_MEDI = 2012, TT_CLIP = 2007, TT_AMMO = 2048,
+	TT_LAMP = 2028, TT_CANDELABRA = 35, TT_TORCH = 46,
+	/* arcaded's point light (th_light): radius 256, intensities 5..7 of 8 */
+	TT_LIGHT_WARM = 15226, TT_LIGHT_WHITE = 15232, TT_LIGHT_ORANGE = 15242,
+};
+
+#define ALL 7                          /* every difficulty */
+#define HARD 4                         /* hard and brutal only */
+#define SW (ANG180 + ANG45)
+#define SE (ANG270 + ANG45)
+
 static const struct lvl_thing arena1_things[] = {
-	{ 96, 192, 0, 1 },                           /* player 1 start, facing east */
+	{ 96, 192, 0, TT_START, ALL },               /* player 1 start, facing east */
+	{ 600, 960, ANG180, TT_GRUNT, ALL },         /* gallery, east end */
+	{ 720, 960, ANG270, TT_GRUNT, ALL },         /* yard, north */
+	{ 960, 960, SW, TT_GRUNT, ALL },
+	{ 864, 512, ANG180, TT_CACO, ALL },          /* on the dais */
+	{ 320, 96, 0, TT_MEDI, ALL },
+	{ 1000, 40, 0, TT_STIM, ALL },
+	{ 96, 560, 0, TT_CLIP, ALL },
+	{ 300, 900, 0, TT_AMMO, ALL },
+	{ 40, 600, 0, TT_LAMP, ALL },
+	{ 1000, 1000, 0, TT_LAMP, ALL },
+	{ 320, 480, 0, TT_LIGHT_WARM, ALL },
+	{ 840, 300, 0, TT_LIGHT_WHITE, ALL },
+};
+
+/* ---- ARENA2 ---------------------------------------------------------- */
+
+enum { A2_SOUTH, A2_COURT, A2_EAST, A2_NORTH, A2_WEST };
+
+static const int16_t arena2_vertices[][2] = {
+	{ 384, 0 }, { 640, 0 }, { 384, 384 }, { 640, 384 },            /* 0 */
+	{ 1024, 384 }, { 1024, 640 }, { 640, 640 }, { 384, 640 },      /* 4 */
+	{ 640, 1024 }, { 384, 1024 }, { 0, 640 }, { 0, 384 },          /* 8 */
+	{ 480, 480 }, { 544, 480 }, { 544, 544 }, { 480, 544 },        /* 12 pillar */
+};
+
+static const struct lvl_sector arena2_sectors[] = {
+	[A2_SOUTH] = { 0, 128, PAL_RGB(PAL_SLATE, 3), PAL_RGB(PAL_GREY, 4), 160 },
+	[A2_COURT] = { 0, 192, PAL_RGB(PAL_TAN, 3), PAL_RGB(PAL_SKY, 1), 192 },
+	[A2_EAST] = { 16, 144, PAL_RGB(PAL_BROWN, 3), PAL_RGB(PAL_GREY, 5), 176 },
+	[A2_NORTH] = { 0, 128, PAL_RGB(PAL_GREEN, 4), PAL_RGB(PAL_GREY, 6), 144 },
+	[A2_WEST] = { -16, 112, PAL_RGB(PAL_BLUE, 4), PAL_RGB(PAL_GREY, 6), 128 },
+};
+
+#define T2_SOUTH PAL_RGB(PAL_SLATE, 1)
+#define T2_COURT PAL_RGB(PAL_TAN, 1)
+#define T2_EAST PAL_RGB(PAL_ORANGE, 2)
+#define T2_NORTH PAL_RGB(PAL_GREEN, 2)
+#define T2_WEST PAL_RGB(PAL_BLUE, 2)
+#define T2_PILLAR PAL_RGB(PAL_RED, 1)
+
+static const struct lvl_line arena2_lines[] = {
+	{ 0, 2, A2_SOUTH, -1, T2_SOUTH },            /* 0 south arm */
+	{ 2, 3, A2_SOUTH, A2_COURT, T2_COURT },
+	{ 3, 1, A2_SOUTH, -1, T2_SOUTH },
+	{ 1, 0, A2_SOUTH, -1, T2_SOUTH },
+	{ 3, 6, A2_EAST, A2_COURT, T2_EAST },        /* 4 east arm: a step up */
+	{ 6, 5, A2_EAST, -1, T2_EAST },
+	{ 5, 4, A2_EAST, -1, T2_EAST },
+	{ 4, 3, A2_EAST, -1, T2_EAST },
+	{ 6, 7, A2_NORTH, A2_COURT, T2_COURT },      /* 8 north arm */
+	{ 7, 9, A2_NORTH, -1, T2_NORTH },
+	{ 9, 8, A2_NORTH, -1, T2_NORTH },
+	{ 8, 6, A2_NORTH, -1, T2_NORTH },
+	{ 7, 2, A2_WEST, A2_COURT, T2_WEST },        /* 12 west arm: a step down */
+	{ 11, 10, A2_WEST, -1, T2_WEST },
+	{ 10, 7, A2_WEST, -1, T2_WEST },
+	{ 2, 11, A2_WEST, -1, T2_WEST },
+	{ 12, 13, A2_COURT, -1, T2_PILLAR },         /* 16 pillar, counter-clockwise */
+	{ 13, 14, A2_COURT, -1, T2_PILLAR },
+	{ 14, 15, A2_COURT, -1, T2_PILLAR },
+	{ 15, 12, A2_COURT, -1, T2_PILLAR },
+};
+
+static const struct lvl_thing arena2_things[] = {
+	{ 512, 64, ANG90, TT_START, ALL },
+	{ 448, 900, ANG270, TT_GRUNT, ALL },         /* north arm */
+	{ 576, 900, ANG270, TT_SHOTGUY, ALL },
+	{ 512, 980, ANG270, TT_IMP, ALL },
+	{ 64, 448, 0, TT_GRUNT, ALL },               /* west arm */
+	{ 64, 576, 0, TT_DEMON, ALL },
+	{ 300, 576, 0, TT_GRUNT, HARD },
+	{ 960, 576, ANG180, TT_GRUNT, ALL },         /* east arm */
+	{ 992, 480, ANG180, TT_CACO, ALL },
+	{ 800, 448, ANG180, TT_IMP, HARD },
+	{ 420, 420, 0, TT_MEDI, ALL },               /* court */
+	{ 600, 300, 0, TT_CLIP, ALL },               /* south arm */
+	{ 512, 1000, 0, TT_AMMO, ALL },              /* north arm's end */
+	{ 32, 512, 0, TT_STIM, ALL },                /* west arm's end */
+	{ 400, 400, 0, TT_LAMP, ALL },
+	{ 624, 624, 0, TT_LAMP, ALL },
+	{ 1000, 400, 0, TT_CANDELABRA, ALL },
+	{ 600, 420, 0, TT_LIGHT_WHITE, ALL },
+	{ 160, 512, 0, TT_LIGHT_WARM, ALL },
+};
+
+/* ---- ARENA3 ---------------------------------------------------------- */
+
+enum { A3_SOUTH, A3_WLOW, A3_WHIGH, A3_ELOW, A3_EHIGH, A3_NORTH };
+
+static const int16_t arena3_vertices[][2] = {
+	{ 0, 0 }, { 0, 320 }, { 384, 320 }, { 896, 320 },              /* 0 */
+	{ 1280, 320 }, { 1280, 0 }, { 0, 512 }, { 384, 512 },          /* 4 */
+	{ 896, 512 }, { 1280, 512 }, { 0, 704 }, { 384, 704 },         /* 8 */
+	{ 896, 704 }, { 1280, 704 }, { 0, 1024 }, { 1280, 1024 },      /* 12 */
+	{ 608, 128 }, { 672, 128 }, { 672, 192 }, { 608, 192 },        /* 16 pillar */
+};
+
+static const struct lvl_sector arena3_sectors[] = {
+	[A3_SOUTH] = { 0, 192, PAL_RGB(PAL_BROWN, 4), PAL_RGB(PAL_GREY, 5), 176 },
+	[A3_WLOW] = { 0, 160, PAL_RGB(PAL_OLIVE, 4), PAL_RGB(PAL_GREY, 6), 160 },
+	[A3_WHIGH] = { 16, 160, PAL_RGB(PAL_OLIVE, 3), PAL_RGB(PAL_GREY, 6), 144 },
+	[A3_ELOW] = { 0, 160, PAL_RGB(PAL_OLIVE, 4), PAL_RGB(PAL_GREY, 6), 160 },
+	[A3_EHIGH] = { 16, 160, PAL_RGB(PAL_OLIVE, 3), PAL_RGB(PAL_GREY, 6), 144 },
+	[A3_NORTH] = { 32, 224, PAL_RGB(PAL_PURPLE, 4), PAL_RGB(PAL_BLACKRAMP, 2), 112 },
+};
+
+#define T3_OUTER PAL_RGB(PAL_BROWN, 1)
+#define T3_BLOCK PAL_RGB(PAL_GREY, 3)
+#define T3_STEP PAL_RGB(PAL_SLATE, 1)
+#define T3_NORTH PAL_RGB(PAL_PURPLE, 2)
+#define T3_PILLAR PAL_RGB(PAL_RED, 2)
+
+static const struct lvl_line arena3_lines[] = {
+	{ 0, 1, A3_SOUTH, -1, T3_OUTER },            /* 0 south */
+	{ 1, 2, A3_SOUTH, A3_WLOW, T3_OUTER },
+	{ 2, 3, A3_SOUTH, -1, T3_BLOCK },
+	{ 3, 4, A3_SOUTH, A3_ELOW, T3_OUTER },
+	{ 4, 5, A3_SOUTH, -1, T3_OUTER },            /* 4 */
+	{ 5, 0, A3_SOUTH, -1, T3_OUTER },
+	{ 1, 6, A3_WLOW, -1, T3_OUTER },             /* 6 west, low half */
+	{ 6, 7, A3_WLOW, A3_WHIGH, T3_STEP },
+	{ 7, 2, A3_WLOW, -1, T3_BLOCK },             /* 8 */
+	{ 6, 10, A3_WHIGH, -1, T3_OUTER },           /* west, high half */
+	{ 10, 11, A3_WHIGH, A3_NORTH, T3_STEP },
+	{ 11, 7, A3_WHIGH, -1, T3_BLOCK },
+	{ 3, 8, A3_ELOW, -1, T3_BLOCK },             /* 12 east, low half */
+	{ 8, 9, A3_ELOW, A3_EHIGH, T3_STEP },
+	{ 9, 4, A3_ELOW, -1, T3_OUTER },
+	{ 8, 12, A3_EHIGH, -1, T3_BLOCK },           /* east, high half */
+	{ 12, 13, A3_EHIGH, A3_NORTH, T3_STEP },     /* 16 */
+	{ 13, 9, A3_EHIGH, -1, T3_OUTER },
+	{ 10, 14, A3_NORTH, -1, T3_NORTH },          /* north */
+	{ 14, 15, A3_NORTH, -1, T3_NORTH },
+	{ 15, 13, A3_NORTH, -1, T3_NORTH },          /* 20 */
+	{ 12, 11, A3_NORTH, -1, T3_BLOCK },
+	{ 16, 17, A3_SOUTH, -1, T3_PILLAR },         /* 22 pillar, counter-clockwise */
+	{ 17, 18, A3_SOUTH, -1, T3_PILLAR },
+	{ 18, 19, A3_SOUTH, -1, T3_PILLAR },
+	{ 19, 16, A3_SOUTH, -1, T3_PILLAR },
+};
+
+static const struct lvl_thing arena3_things[] = {
+	{ 160, 160, 0, TT_START, ALL },
+	{ 900, 100, ANG180, TT_SHOTGUY, ALL },       /* south */
+	{ 1150, 250, ANG180, TT_DEMON, ALL },
+	{ 640, 40, ANG180, TT_DEMON, HARD },
+	{ 192, 420, ANG270, TT_IMP, ALL },           /* west */
+	{ 100, 650, ANG270, TT_GRUNT, ALL },
+	{ 1200, 400, ANG180, TT_CACO, ALL },         /* east */
+	{ 1200, 650, ANG270, TT_GRUNT, ALL },
+	{ 1000, 600, ANG270, TT_IMP, ALL },
+	{ 640, 960, ANG270, TT_CACO, ALL },          /* north */
+	{ 200, 900, SE, TT_CACO, ALL },
+	{ 1000, 900, SW, TT_DEMON, ALL },
+	{ 640, 760, ANG270, TT_SHOTGUY, ALL },
+	{ 300, 960, 0, TT_GRUNT, HARD },
+	{ 1100, 960, ANG180, TT_CACO, HARD },
+	{ 40, 40, 0, TT_MEDI, ALL },
+	{ 1240, 980, 0, TT_MEDI, ALL },
+	{ 640, 280, 0, TT_STIM, ALL },
+	{ 190, 680, 0, TT_CLIP, ALL },
+	{ 1090, 680, 0, TT_CLIP, ALL },
+	{ 640, 1000, 0, TT_AMMO, ALL },
+	{ 40, 984, 0, TT_TORCH, ALL },
+	{ 1240, 984, 0, TT_TORCH, ALL },
+	{ 320, 860, 0, TT_LIGHT_ORANGE, ALL },
+	{ 960, 860, 0, TT_LIGHT_ORANGE, ALL },
+	{ 640, 60, 0, TT_LIGHT_WHITE, ALL },
 };
 
 #define LVL_COUNT(a) ((uint32_t)(sizeof(a) / sizeof((a)[0])))
 
+#define LVL(name, a) { name, a##_vertices, a##_sectors, a##_lines, a##_things, \
+	LVL_COUNT(a##_vertices), LVL_COUNT(a##_sectors), LVL_COUNT(a##_lines), \
+	LVL_COUNT(a##_things) }
+
+/* In the order the game plays them: rising difficulty. */
 static const struct lvl lvl_levels[] = {
-	{ "ARENA1", arena1_vertices, arena1_sectors, arena1_lines, arena1_things,
-	  LVL_COUNT(arena1_vertices), LVL_COUNT(arena1_sectors), LVL_COUNT(arena1_lines),
-	  LVL_COUNT(arena1_things) },
+	LVL("ARENA1", arena1),
+	LVL("ARENA2", arena2),
+	LVL("ARENA3", arena3),
 };
 
 int map_builtin_count(void)
@@ -260,6 +495,7 @@ int map_builtin(int i, struct map **out)
 		m->things[k].y = fx_from_int(lv->things[k].y);
 		m->things[k].angle = lv->things[k].angle;
 		m->things[k].type = lv->things[k].type;
+		m->things[k].flags = lv->things[k].flags;
 	}
 	/* the tables are the project's own: a failure is a bug the unit tests
 	 * catch, reported like any bad map */
