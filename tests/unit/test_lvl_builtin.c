@@ -14,7 +14,7 @@
 
 /* Whether a circle of radius r at (x, y) overlaps a wall that blocks a
  * body standing at z there (same rule as movement). Exact: squared
- * distances to each segment in 64-bit / double-free integer arithmetic. */
+ * distances to each segment in 64-bit integer arithmetic. */
 static int overlaps_wall(const struct map *m, fx_t x, fx_t y, fx_t z, fx_t r)
 {
 	for (uint32_t i = 0; i < m->num_lines; i++) {
