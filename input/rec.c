@@ -709,3 +709,62 @@ int rec_verify_summary(const struct rec_verify *v, char *buf, size_t len)
 			" frame hashes equal%s", v->ticks, v->state_checked, v->frame_checked, note);
 	return ret;
 }
+
+int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen)
+{
+	uint8_t hdr[REC_HEADER_MAX], cnt[4];
+	struct rec_header h;
+	struct stat sb;
+	uint64_t whole;
+	ssize_t got;
+	int fd, ret;
+
+	fd = open(path, O_RDWR | O_CLOEXEC | O_NOFOLLOW);
+	if (fd < 0) {
+		ret = -errno;
+		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		return ret;
+	}
+	if (fstat(fd, &sb) < 0) {
+		ret = -errno;
+		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		goto out;
+	}
+	got = rec_read_all(fd, hdr, sizeof(hdr));
+	if (got < 0) {
+		ret = (int)got;
+		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		goto out;
+	}
+	ret = rec_header_decode(hdr, (size_t)got, &h, err, errlen);
+	if (ret < 0)
+		goto out;
+	if ((uint64_t)sb.st_size < h.header_size) {
+		ret = -EINVAL;
+		rec_msg(err, errlen, "file too short for its header");
+		goto out;
+	}
+	if (h.count != REC_COUNT_UNKNOWN) {
+		*count = h.count;
+		goto out;
+	}
+	whole = ((uint64_t)sb.st_size - h.header_size) / rec_record_size(h.hash_flags);
+	if (whole > REC_COUNT_UNKNOWN - 1)
+		whole = REC_COUNT_UNKNOWN - 1;
+	if (ftruncate(fd, (off_t)(h.header_size + whole * rec_record_size(h.hash_flags))) < 0) {
+		ret = -errno;
+		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		goto out;
+	}
+	rec_put32(cnt, (uint32_t)whole);
+	errno = 0;
+	if (pwrite(fd, cnt, sizeof(cnt), 32) != (ssize_t)sizeof(cnt) || fsync(fd) < 0) {
+		ret = errno ? -errno : -EIO;
+		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		goto out;
+	}
+	*count = (uint32_t)whole;
+out:
+	close(fd);
+	return ret;
+}

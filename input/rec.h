@@ -19,7 +19,7 @@
  *  40  2  render width    42 2 render height (0: unknown)
  *  44  1  hash flags: REC_HAS_STATE, REC_HAS_FRAME
  *  45  1  built-in level number 1..99, 0 for a map loaded from a file
- *  46  2  reserved 0
+ *  46  2  reserved 0 (kept for settings the sim grows: difficulty, lives)
  *  48  4  renderer version (REC_RENDER_VERSION: bumped when frames change)
  *  52  4  reserved 0
  *  56  8  map name, NUL-padded ("MAP01"; empty for a built-in level)
@@ -125,6 +125,13 @@ int rec_writer_put_tick(struct rec_writer *w, const struct rec_tick *t);
 int rec_writer_flush(struct rec_writer *w);
 /* Writes the final count, fsyncs and closes; NULL-safe. 0 or -errno. */
 int rec_writer_close(struct rec_writer *w);
+
+/* Finishes a recording that was cut short (count REC_COUNT_UNKNOWN: a
+ * crash or power cut while recording): drops a partial last record, writes
+ * the count of the whole ones, fsyncs. A finished recording is left as it
+ * is. 0 with *count, -EINVAL (not a readable recording; err says why), or
+ * -errno. */
+int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen);
 
 struct rec_reader;
 /* Opens and checks a recording; 0 or -errno / -EINVAL with reason in err

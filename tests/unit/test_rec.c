@@ -791,6 +791,40 @@ static void test_verify_says_why_frames_are_not_compared(void **state)
 				  "hashes");
 }
 
+static void test_repair_finishes_a_cut_recording_only(void **state)
+{
+	uint8_t buf[80 + 50 * 22];
+	struct stat sb;
+	char path[128], err[256];
+	uint32_t count = 0;
+
+	(void)state;
+	tmp_path(path, sizeof(path), "repair.rec");
+	write_v2(path, 3, 50);
+	/* Finished: left as it is. */
+	assert_int_equal(rec_repair(path, &count, err, sizeof(err)), 0);
+	assert_int_equal(count, 50);
+	assert_int_equal(stat(path, &sb), 0);
+	assert_int_equal(sb.st_size, 80 + 50 * 22);
+	/* Cut: 20 whole records and 21 bytes; the count was never written. */
+	assert_int_equal(read_bytes(path, buf, sizeof(buf)), sizeof(buf));
+	memcpy(buf + 32, "\xff\xff\xff\xff", 4);
+	write_bytes(path, buf, 80 + 20 * 22 + 21);
+	assert_int_equal(rec_repair(path, &count, err, sizeof(err)), 0);
+	assert_int_equal(count, 20);
+	assert_int_equal(stat(path, &sb), 0);
+	assert_int_equal(sb.st_size, 80 + 20 * 22);
+	assert_int_equal(read_bytes(path, buf, 40), 40);
+	assert_memory_equal(buf + 32, "\x14\0\0\0", 4);
+	assert_int_equal(replay_v2(path, 3, 20), 0);
+	/* Not a recording. */
+	write_bytes(path, (const uint8_t *)"ARCD", 4);
+	assert_int_equal(rec_repair(path, &count, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "file too short (4 bytes, the header needs 40)");
+	tmp_path(path, sizeof(path), "none.rec");
+	assert_int_equal(rec_repair(path, &count, err, sizeof(err)), -ENOENT);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -815,6 +849,7 @@ int main(void)
 		cmocka_unit_test(test_check_run_names_each_difference),
 		cmocka_unit_test(test_verify_finds_the_first_difference),
 		cmocka_unit_test(test_verify_says_why_frames_are_not_compared),
+		cmocka_unit_test(test_repair_finishes_a_cut_recording_only),
 	};
 
 	return cmocka_run_group_tests(tests, setup, teardown);
