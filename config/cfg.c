@@ -81,6 +81,8 @@ static const struct cfg_key cfg_keys[] = {
 	CFG_STRKEY(input, evdev, input.evdev, CFG_T_DEVICE),
 	CFG_STRKEY(input, bindings, input.bindings, CFG_T_STR),
 	CFG_STRKEY(paths, state_dir, paths.state_dir, CFG_T_STR),
+	CFG_INTKEY(recorder, keep, recorder.keep, 0, 1000),
+	CFG_INTKEY(recorder, max_mb, recorder.max_mb, 0, 1048576),
 };
 
 #define CFG_NKEYS (sizeof(cfg_keys) / sizeof(cfg_keys[0]))
@@ -131,6 +133,8 @@ void cfg_defaults(struct cfg *c)
 	c->game.render_height = 240;
 	c->game.coins_per_credit = 1;
 	c->game.level = 1;
+	c->recorder.keep = 20;
+	c->recorder.max_mb = 64;
 	cfg_setstr(c->input.evdev, sizeof(c->input.evdev), "auto");
 	/* systemd's StateDirectory= may list several directories, colon-separated:
 	 * arcaded's is the first. */

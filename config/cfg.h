@@ -41,6 +41,10 @@ struct cfg {
 	struct {
 		char state_dir[CFG_PATH_MAX]; /* $STATE_DIRECTORY or /var/lib/arcaded */
 	} paths;
+	struct {
+		int keep;                    /* games kept by the flight recorder, 0 off (20) */
+		int max_mb;                  /* MiB they may take, 0 no cap (64) */
+	} recorder;
 };
 
 /* Reports one problem: file may be "--set" for the command line; line 0

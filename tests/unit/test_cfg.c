@@ -75,6 +75,27 @@ static void test_defaults_match_the_documented_values(void **state)
 	assert_string_equal(c.input.evdev, "auto");
 	assert_string_equal(c.input.bindings, "");
 	assert_string_equal(c.paths.state_dir, "/var/lib/arcaded");
+	assert_int_equal(c.recorder.keep, 20);
+	assert_int_equal(c.recorder.max_mb, 64);
+}
+
+static void test_recorder_keys_and_their_limits(void **state)
+{
+	struct errs e;
+	struct cfg c;
+
+	(void)state;
+	cfg_defaults(&c);
+	memset(&e, 0, sizeof(e));
+	assert_int_equal(cfg_set(&c, "recorder.keep=0", on_err, &e), 0);
+	assert_int_equal(cfg_set(&c, "recorder.max_mb = 1024", on_err, &e), 0);
+	assert_int_equal(c.recorder.keep, 0);
+	assert_int_equal(c.recorder.max_mb, 1024);
+	assert_int_equal(cfg_set(&c, "recorder.keep=1001", on_err, &e), -EINVAL);
+	assert_int_equal(cfg_set(&c, "recorder.max_mb=-1", on_err, &e), -EINVAL);
+	assert_int_equal(c.recorder.keep, 0);
+	assert_int_equal(c.recorder.max_mb, 1024);
+	assert_int_equal(e.count, 2);
 }
 
 static void test_state_dir_is_first_of_state_directory(void **state)
@@ -360,13 +381,13 @@ static void test_format_round_trips_every_key(void **state)
 	assert_non_null(strstr(buf, "\n\n[game]\n"));
 	assert_non_null(strstr(buf, "\nfreeplay = yes\n"));
 	assert_non_null(strstr(buf, "\n[paths]\nstate_dir = "));
-	/* 19 keys, one line each, plus 4 section headers and 3 blank lines. */
+	/* 21 keys, one line each, plus 5 section headers and 4 blank lines. */
 	{
 		int lines = 0;
 
 		for (const char *p = buf; *p; p++)
 			lines += *p == '\n';
-		assert_int_equal(lines, 19 + 4 + 3);
+		assert_int_equal(lines, 21 + 5 + 4);
 	}
 	/* Reading the text back gives the same settings. */
 	memset(&b, 0x55, sizeof(b));
@@ -422,7 +443,7 @@ static void test_shipped_arcaded_ini_lists_every_key_at_its_default(void **state
 		}
 		o += (size_t)snprintf(out + o, sizeof(out) - o, "%s\n", line);
 	}
-	assert_int_equal(keys, 19);
+	assert_int_equal(keys, 21);
 	assert_int_equal(load(&c, out, &e), 0);
 	assert_memory_equal(&c, &d, sizeof(c));
 }
@@ -467,6 +488,7 @@ int main(void)
 		cmocka_unit_test(test_load_file_missing_is_silent_unreadable_is_reported),
 		cmocka_unit_test(test_set_applies_and_reports_as_set_line_0),
 		cmocka_unit_test(test_format_round_trips_every_key),
+		cmocka_unit_test(test_recorder_keys_and_their_limits),
 		cmocka_unit_test(test_shipped_arcaded_ini_lists_every_key_at_its_default),
 		cmocka_unit_test(test_random_bytes_never_crash),
 	};
