@@ -17,6 +17,9 @@ udev
 tmux
 valgrind
 freedoom
+gcc-aarch64-linux-gnu
+libc6-dev-arm64-cross
+qemu-user-static
 "
 
 missing=""
