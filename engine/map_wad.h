@@ -24,6 +24,7 @@
 #define ARCADED_ENGINE_MAP_WAD_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 struct map;
 struct tex_set;
@@ -38,5 +39,17 @@ int map_load_wad(const struct wad *w, const struct tex_set *t, const char *name,
 /* Stores up to max map names found in w (in lump order, each once) into
  * names; returns how many there are in all. */
 int map_list_wad(const struct wad *w, char (*names)[9], int max);
+
+/* Writes n maps (names[i], up to 8 chars, e.g. "MAP01") into one new PWAD
+ * in Doom's format, texture and flat numbers written as the names they have
+ * in t. Only the vertices the lines use are written (a node builder's split
+ * points are not) and SEGS, SSECTORS and NODES are empty, so the loader
+ * builds the BSP again (the same one: nb_build is deterministic); REJECT
+ * and BLOCKMAP are empty. Every coordinate, height and offset must be whole
+ * units within int16, every index below 65535, every texture and flat in t:
+ * else -EINVAL (err names the map and entry). *out is the caller's (free);
+ * 0, -EINVAL or -ENOMEM. */
+int map_wad_write(const struct map *const *maps, const char *const *names, int n,
+		  const struct tex_set *t, uint8_t **out, size_t *len, char *err, size_t errlen);
 
 #endif

@@ -368,6 +368,78 @@ static void other_formats_and_missing_lumps_are_refused(void **state)
 	tex_free(t);
 }
 
+/* ---- writing ------------------------------------------------------------ */
+
+/* Every built-in level, its texture numbers moved into the built-in set,
+ * written as a PWAD and read back: the same level, and the same BSP from
+ * the node builder. */
+static void builtin_levels_round_trip_through_a_wad(void **state)
+{
+	struct tex_set *t;
+
+	(void)state;
+	assert_int_equal(tex_builtin(&t), 0);
+	for (int i = 0; i < map_builtin_count(); i++) {
+		struct map *m, *back;
+		uint8_t *img;
+		size_t len;
+		struct wad *w;
+		char err[160];
+		const char *name = "MAP07";
+		const struct map *maps[1];
+
+		assert_int_equal(map_builtin(i, &m), 0);
+		for (uint32_t k = 0; k < m->num_sides; k++) {
+			struct map_side *s = &m->sides[k];
+			s->top_tex = s->top_tex ? (uint16_t)(1 + s->top_tex % (t->num_textures - 2)) : 0;
+			s->mid_tex = s->mid_tex ? (uint16_t)(1 + s->mid_tex % (t->num_textures - 2)) : 0;
+			s->bot_tex = s->bot_tex ? (uint16_t)(1 + s->bot_tex % (t->num_textures - 2)) : 0;
+		}
+		for (uint32_t k = 0; k < m->num_sectors; k++) {
+			m->sectors[k].floor_tex = (uint16_t)(m->sectors[k].floor_tex % (t->num_flats - 1));
+			m->sectors[k].ceil_tex = (uint16_t)(m->sectors[k].ceil_tex % (t->num_flats - 1));
+		}
+		maps[0] = m;
+		assert_int_equal(map_wad_write(maps, &name, 1, t, &img, &len, err, sizeof err), 0);
+		assert_int_equal(wad_new(&w), 0);
+		assert_int_equal(wad_add(w, img, len, "rt.wad", err, sizeof err), 0);
+		if (map_load_wad(w, t, "MAP07", &back, err, sizeof err))
+			fail_msg("level %d: %s", i, err);
+		assert_int_equal(back->missing_textures, 0);
+		assert_int_equal(back->num_sectors, m->num_sectors);
+		assert_int_equal(back->num_sides, m->num_sides);
+		assert_int_equal(back->num_lines, m->num_lines);
+		assert_int_equal(back->num_things, m->num_things);
+		assert_memory_equal(back->sectors, m->sectors, m->num_sectors * sizeof *m->sectors);
+		assert_memory_equal(back->sides, m->sides, m->num_sides * sizeof *m->sides);
+		assert_memory_equal(back->lines, m->lines, m->num_lines * sizeof *m->lines);
+		for (uint32_t k = 0; k < m->num_things; k++) {
+			uint32_t d = back->things[k].angle - m->things[k].angle;
+			assert_int_equal(back->things[k].x, m->things[k].x);
+			assert_int_equal(back->things[k].y, m->things[k].y);
+			assert_int_equal(back->things[k].type, m->things[k].type);
+			assert_int_equal(back->things[k].flags, m->things[k].flags);
+			/* whole degrees: within a degree, 2^32 / 360 */
+			assert_true(d < 11930465u || d > 0u - 11930465u);
+		}
+		for (uint32_t k = 0; k < back->num_vertices && k < m->num_vertices; k++)
+			assert_memory_equal(&back->vertices[k], &m->vertices[k], sizeof m->vertices[k]);
+		assert_int_equal(back->num_nodes, m->num_nodes);
+		assert_int_equal(back->num_subsectors, m->num_subsectors);
+		map_free(back);
+		wad_free(w);
+		free(img);
+		/* a half-unit vertex cannot be written */
+		m->vertices[m->lines[0].v1].x += FX_HALF;
+		assert_int_equal(map_wad_write(maps, &name, 1, t, &img, &len, err, sizeof err),
+				 -EINVAL);
+		assert_null(img);
+		assert_string_equal(err, "MAP07: vertex 0: not whole units within int16");
+		map_free(m);
+	}
+	tex_free(t);
+}
+
 /* ---- Freedoom ------------------------------------------------------------ */
 
 static uint8_t *slurp(const char *path, size_t *len)
@@ -507,6 +579,7 @@ int main(void)
 		cmocka_unit_test(names_lists_and_missing_maps),
 		cmocka_unit_test(pwad_overrides_a_map),
 		cmocka_unit_test(other_formats_and_missing_lumps_are_refused),
+		cmocka_unit_test(builtin_levels_round_trip_through_a_wad),
 		cmocka_unit_test(freedoom1_every_map_loads),
 		cmocka_unit_test(freedoom2_every_map_loads),
 	};
