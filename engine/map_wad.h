@@ -32,7 +32,8 @@ struct wad;
 
 /* Loads map `name` (case-insensitive). 0, -ENOENT (no such map: err
  * lists the maps there are), -EINVAL (err says what is wrong) or -ENOMEM.
- * The map is the caller's: map_free. */
+ * The map is the caller's (map_free) and owns all its data: the WADs may
+ * be freed after loading. */
 int map_load_wad(const struct wad *w, const struct tex_set *t, const char *name,
 		 struct map **out, char *err, size_t errlen);
 

@@ -99,7 +99,9 @@ struct tex_set {
 	int num_anims;
 };
 
-/* Loads everything from the layered WAD set. Problems that leave a
+/* Loads everything from the layered WAD set. The set owns copies of all it
+ * uses (decoded pictures, flats, names): the WADs and their file images may
+ * be freed once it is loaded. Problems that leave a
  * texture unusable (a missing patch, a bad TEXTURE1 entry) make that
  * texture a fallback checker and are counted, not fatal; a WAD without
  * PLAYPAL or with a truncated one is -EINVAL (err names the lump). */
