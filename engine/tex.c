@@ -402,3 +402,25 @@ int tex_set_finish(struct tex_set *t)
 		t->sky_tex = t->fallback_tex;
 	return 0;
 }
+
+void tex_pick_sky(struct tex_set *t, const char *map)
+{
+	char name[5] = "SKY1";
+	char m[9];
+	int i;
+
+	tex_name(m, map);
+	if (m[0] == 'E' && m[1] >= '1' && m[1] <= '9' && m[2] == 'M') {
+		name[3] = m[1];
+	} else if (memcmp(m, "MAP", 3) == 0 && m[3] >= '0' && m[3] <= '9' && m[4] >= '0' &&
+		   m[4] <= '9') {
+		int n = (m[3] - '0') * 10 + (m[4] - '0');
+
+		name[3] = n < 12 ? '1' : n < 21 ? '2' : '3';
+	} else {
+		return;
+	}
+	i = tex_find(t, name);
+	if (i > 0)
+		t->sky_tex = i;
+}

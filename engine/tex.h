@@ -119,6 +119,11 @@ int tex_find(const struct tex_set *t, const char *name);
 int tex_find_flat(const struct tex_set *t, const char *name);
 int tex_find_sprite(const struct tex_set *t, const char *name);
 
+/* Sets sky_tex for map `map` by Doom's rule, when that texture exists:
+ * ExMy -> SKYx; MAP01-11 -> SKY1, MAP12-20 -> SKY2, MAP21 on -> SKY3;
+ * otherwise (and for other names) sky_tex stays as it is. */
+void tex_pick_sky(struct tex_set *t, const char *map);
+
 /* Advances animations to game tick `tick` (Doom: every 8 tics at 35 Hz;
  * here every TEX_ANIM_TICKS at 60 Hz), updating tex_xlat and flat_xlat:
  * member k (0-based) of an animation of n shows member (tick /

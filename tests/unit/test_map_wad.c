@@ -527,6 +527,20 @@ static void check_freedoom(const char *path, const char *first, const char *last
 	assert_true(t->num_flats > 100);
 	assert_true(t->sky_flat >= 0);
 	assert_int_equal(t->sky_tex, tex_find(t, "SKY1"));
+	/* Doom's sky rule, on map names (E1M1..E4M9, MAP01..MAP32) */
+	for (int k = 0; k < 3; k++) {
+		static const char *const maps[2][3] = { { "E2M1", "E4M9", "E1M5" },
+						       { "MAP12", "MAP32", "MAP11" } };
+		static const char *const skies[2][3] = { { "SKY2", "SKY4", "SKY1" },
+							 { "SKY2", "SKY3", "SKY1" } };
+		int doom2 = count == 32;
+
+		assert_true(tex_find(t, skies[doom2][k]) > 0);
+		tex_pick_sky(t, maps[doom2][k]);
+		assert_int_equal(t->sky_tex, tex_find(t, skies[doom2][k]));
+	}
+	tex_pick_sky(t, "ARENA1");
+	assert_int_equal(t->sky_tex, tex_find(t, "SKY1"));
 	n = map_list_wad(w, names, 64);
 	assert_int_equal(n, count);
 	assert_string_equal(names[0], first);
