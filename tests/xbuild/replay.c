@@ -28,8 +28,8 @@
  * Exit: 0, 1 (verification failed or nothing to verify), 2 (bad usage,
  * unreadable or refused recording).
  *
- * Mirror of app/app.c: setup() (built-in palette, level, settings from the
- * recording, sim_init, r_new) and the loop (rec_reader_next, sim_tick,
+ * Mirror of app/app.c: setup() (level, settings from the recording,
+ * sim_init, r_pal_set_new, r_new) and the loop (rec_reader_next, sim_tick,
  * sim_view, r_render, hash_frame). Keep the two in step: run.sh fails when
  * their hashes differ.
  */
@@ -42,7 +42,6 @@
 
 #include "engine/hash.h"
 #include "engine/map.h"
-#include "engine/pal.h"
 #include "engine/r_main.h"
 #include "engine/sim.h"
 #include "input/rec.h"
@@ -192,7 +191,7 @@ int main(int argc, char **argv)
 	struct r_ctx *r = NULL;
 	struct r_frame f = { 0 };
 	struct map *m = NULL;
-	struct pal pal;
+	struct tex_set *tex = NULL;
 	struct sim sim;
 	char err[512];
 	uint32_t t = 0;
@@ -227,7 +226,6 @@ int main(int argc, char **argv)
 		run.render_w = RP_DEFAULT_W;
 		run.render_h = RP_DEFAULT_H;
 	}
-	pal_builtin(&pal);
 	rc = map_builtin(run.level - 1, &m);
 	if (rc < 0) {
 		fprintf(stderr, "replay: built-in level %u: %s\n", run.level, strerror(-rc));
@@ -248,7 +246,7 @@ int main(int argc, char **argv)
 		f.w = f.pitch = run.render_w;
 		f.h = run.render_h;
 		f.px = calloc((size_t)f.w * (size_t)f.h, 1);
-		if (!f.px || r_new(f.w, f.h, &pal, &r) < 0) {
+		if (!f.px || r_pal_set_new(&tex) < 0 || r_new(f.w, f.h, &r) < 0) {
 			fprintf(stderr, "replay: renderer %dx%d: out of memory\n", f.w, f.h);
 			goto out;
 		}
@@ -287,7 +285,7 @@ int main(int argc, char **argv)
 			struct r_view v;
 
 			sim_view(&sim, &v);
-			r_render(r, m, &v, &f);
+			r_render(r, m, tex, &v, NULL, 0, &f);
 			fh = hash_frame(f.px, f.w, f.h, f.pitch);
 		}
 		sh = sim_hash(&sim);
@@ -322,6 +320,7 @@ out:
 	if (wr && rec_writer_close(wr) < 0 && code == 0)
 		code = 2;
 	r_free(r);
+	r_pal_set_free(tex);
 	free(f.px);
 	map_free(m);
 	rec_reader_close(rd);
