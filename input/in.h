@@ -27,6 +27,14 @@ struct in_event {
 
 struct in_dev;
 
+/* Who a device is, for per-device bindings (config/bind.h): two identical
+ * encoders differ by the USB port they are plugged into. */
+struct in_ident {
+	char port[32];           /* USB port path ("1-1.2"); "" when not on USB */
+	uint16_t vid, pid;       /* 0 when unknown */
+	char name[128];          /* product name, "" when unknown */
+};
+
 struct in_backend {
 	const char *name;
 	/* Opens the device at path (NULL: auto-detect). 0 or -errno with a
@@ -42,9 +50,13 @@ struct in_backend {
 	void (*close)(struct in_dev *d);
 	/* Human-readable name ("AT Translated Set 2 keyboard (/dev/input/event3)"). */
 	const char *(*describe)(struct in_dev *d);
+	/* Optional (NULL: the backend cannot tell): fills id. */
+	void (*ident)(struct in_dev *d, struct in_ident *id);
 };
 
-extern const struct in_backend in_evdev, in_tty;
+/* in_hid: HID devices through hidapi (input/in_hid.h); in_gpio: switches
+ * and coin lines on GPIO through libgpiod (input/in_gpio.h). */
+extern const struct in_backend in_evdev, in_tty, in_hid, in_gpio;
 
 /* in_evdev's auto-detection over DIR/event* instead of /dev/input/event*
  * (in_evdev.open with a NULL path is this with "/dev/input"); for tests.

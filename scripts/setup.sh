@@ -9,6 +9,9 @@ build-essential
 pkg-config
 clang
 libevdev-dev
+libhidapi-dev
+libgpiod-dev
+libusb-1.0-0-dev
 libpng-dev
 libsystemd-dev
 libcmocka-dev

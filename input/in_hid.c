@@ -1,0 +1,694 @@
+/*
+ * in_hid: the hidapi backend. Spec syntax, sysfs lookups and reading rules
+ * are in in_hid.h; parsing and decoding are hid_desc.c and hid_dec.c.
+ */
+#include "input/in_hid.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <wchar.h>
+
+#include <hidapi.h>
+
+#include "input/hid_desc.h"
+#include "input/in.h"
+
+#define HID_SYSFS "/sys"
+#define HID_MAX_READS 256        /* reports per read call: bounds the work of a tick */
+
+struct in_dev {
+	hid_device *h;
+	struct hidd_desc *desc;
+	struct hidr *dec;
+	struct in_event *q;          /* the events of the last report not yet delivered */
+	int qhead, qn, qcap;
+	struct in_ident id;
+	char node[64];
+	char text[400];
+	uint8_t buf[HIDD_MAX_REPORT_BYTES + 1];
+};
+
+/* hidapi keeps global state (hid_init/hid_exit); count the open devices
+ * so the last close releases it. */
+static int hid_users;
+
+__attribute__((format(printf, 3, 4)))
+static void say(char *buf, size_t len, const char *fmt, ...)
+{
+	size_t used = len ? strnlen(buf, len) : 0;
+	va_list ap;
+
+	if (used + 1 >= len)
+		return;
+	va_start(ap, fmt);
+	vsnprintf(buf + used, len - used, fmt, ap);
+	va_end(ap);
+}
+
+static int axis_usage(const char *v)
+{
+	static const char *const names[] = { "x", "y", "z", "rx", "ry", "rz", "slider", "dial",
+					     "wheel" };
+
+	for (int i = 0; i < 9; i++)
+		if (strcasecmp(v, names[i]) == 0)
+			return HIDD_GD_X + i;
+	return -1;
+}
+
+static int number(const char *v, long lo, long hi, long *out)
+{
+	char *end;
+	long n;
+
+	errno = 0;
+	n = strtol(v, &end, 10);
+	if (errno || end == v || *end || n < lo || n > hi)
+		return -1;
+	*out = n;
+	return 0;
+}
+
+static int hex16(const char *v, size_t len)
+{
+	int n = 0;
+
+	if (len == 0 || len > 4)
+		return -1;
+	for (size_t i = 0; i < len; i++) {
+		if (!isxdigit((unsigned char)v[i]))
+			return -1;
+		n = n * 16 + (isdigit((unsigned char)v[i]) ? v[i] - '0' : tolower(v[i]) - 'a' + 10);
+	}
+	return n;
+}
+
+static int copy_term(char *dst, size_t len, const char *v)
+{
+	if (!*v || strlen(v) >= len)
+		return -1;
+	strcpy(dst, v);
+	return 0;
+}
+
+/* One term of a spec (NUL-terminated, blanks trimmed). */
+static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
+{
+	char *eq = strchr(t, '=');
+	const char *v = eq ? eq + 1 : "";
+	const char *colon = strchr(t, ':');
+	long n;
+	int a;
+
+	if (eq)
+		*eq = '\0';
+	if (!eq && t[0] == '/') {
+		if (copy_term(s->node, sizeof(s->node), t) < 0)
+			goto bad;
+		return 0;
+	}
+	if (!eq && colon) {
+		s->vid = hex16(t, (size_t)(colon - t));
+		s->pid = hex16(colon + 1, strlen(colon + 1));
+		if (s->vid < 0 || s->pid < 0)
+			goto bad;
+		return 0;
+	}
+	if (!eq)
+		goto bad;
+	if (strcmp(t, "port") == 0) {
+		if (copy_term(s->port, sizeof(s->port), v) < 0)
+			goto bad;
+	} else if (strcmp(t, "serial") == 0) {
+		if (copy_term(s->serial, sizeof(s->serial), v) < 0)
+			goto bad;
+	} else if (strcmp(t, "node") == 0) {
+		if (copy_term(s->node, sizeof(s->node), v) < 0)
+			goto bad;
+	} else if (strcmp(t, "if") == 0) {
+		if (number(v, 0, 255, &n) < 0)
+			goto bad;
+		s->iface = (int)n;
+	} else if (strcmp(t, "split") == 0) {
+		if (strcmp(v, "auto") == 0)
+			s->opts.split = HIDR_SPLIT_AUTO;
+		else if (strcmp(v, "none") == 0)
+			s->opts.split = HIDR_SPLIT_NONE;
+		else if (strcmp(v, "usage") == 0)
+			s->opts.split = HIDR_SPLIT_USAGE;
+		else
+			goto bad;
+	} else if (strcmp(t, "deadzone") == 0 || strcmp(t, "press") == 0 ||
+		   strcmp(t, "release") == 0) {
+		if (number(v, 0, 1000, &n) < 0)
+			goto bad;
+		if (t[0] == 'd')
+			s->opts.deadzone = (uint16_t)n;
+		else if (t[0] == 'p')
+			s->opts.press = (uint16_t)n;
+		else
+			s->opts.release = (uint16_t)n;
+	} else if (strcmp(t, "p2_button") == 0) {
+		if (number(v, 1, 65535, &n) < 0)
+			goto bad;
+		s->opts.p2_first_button = (uint16_t)n;
+	} else if (strcmp(t, "p2_x") == 0 || strcmp(t, "p2_y") == 0) {
+		a = axis_usage(v);
+		if (a < 0)
+			goto bad;
+		if (t[3] == 'x')
+			s->opts.p2_x = (uint16_t)a;
+		else
+			s->opts.p2_y = (uint16_t)a;
+	} else {
+		goto bad;
+	}
+	return 0;
+bad:
+	if (eq)
+		*eq = '=';
+	say(why, whylen, "bad term '%s' in HID device spec", t);
+	return -EINVAL;
+}
+
+int in_hid_parse_spec(const char *s, struct in_hid_spec *out, char *why, size_t whylen)
+{
+	char buf[256];
+	char *p, *save = NULL;
+
+	if (whylen)
+		why[0] = '\0';
+	memset(out, 0, sizeof(*out));
+	out->vid = out->pid = out->iface = -1;
+	hidr_default_opts(&out->opts);
+	if (!s)
+		return 0;
+	if (strncmp(s, "hid", 3) == 0 && (s[3] == '\0' || s[3] == ':'))
+		s += s[3] ? 4 : 3;
+	if (strlen(s) >= sizeof(buf)) {
+		say(why, whylen, "HID device spec longer than %zu bytes", sizeof(buf) - 1);
+		return -EINVAL;
+	}
+	strcpy(buf, s);
+	for (p = strtok_r(buf, ",", &save); p; p = strtok_r(NULL, ",", &save)) {
+		char *e = p + strlen(p);
+		int rc;
+
+		while (*p == ' ' || *p == '\t')
+			p++;
+		while (e > p && (e[-1] == ' ' || e[-1] == '\t'))
+			*--e = '\0';
+		if (!*p)
+			continue;
+		rc = spec_term(out, p, why, whylen);
+		if (rc < 0)
+			return rc;
+	}
+	if (out->opts.release > out->opts.press) {
+		say(why, whylen, "release (%u) above press (%u)", out->opts.release,
+		    out->opts.press);
+		return -EINVAL;
+	}
+	return 0;
+}
+
+int in_hid_spec_names_device(const struct in_hid_spec *s)
+{
+	return s->vid >= 0 || s->port[0] || s->serial[0] || s->node[0] || s->iface >= 0;
+}
+
+static const char *node_base(const char *node)
+{
+	const char *b = strrchr(node, '/');
+
+	return b ? b + 1 : node;
+}
+
+/* "1-1.2:1.0": a USB interface directory (bus-port[.port...]:config.iface). */
+static bool usb_interface_dir(const char *s, size_t len)
+{
+	size_t i = 0, colon;
+	bool dash = false;
+
+	while (i < len && isdigit((unsigned char)s[i]))
+		i++;
+	if (i == 0 || i == len || s[i] != '-')
+		return false;
+	for (i++; i < len && s[i] != ':'; i++) {
+		if (!isdigit((unsigned char)s[i]) && s[i] != '.')
+			return false;
+		dash = true;
+	}
+	if (!dash || i == len)
+		return false;
+	colon = i;
+	for (i++; i < len; i++)
+		if (!isdigit((unsigned char)s[i]) && s[i] != '.')
+			return false;
+	return colon + 1 < len;
+}
+
+int in_hid_port(const char *sysroot, const char *node, char *port, size_t len)
+{
+	char link[PATH_MAX], real[PATH_MAX];
+	const char *end;
+
+	if (len)
+		port[0] = '\0';
+	if (snprintf(link, sizeof(link), "%s/class/hidraw/%s/device", sysroot, node_base(node)) >=
+	    (int)sizeof(link))
+		return -ENAMETOOLONG;
+	if (!realpath(link, real))
+		return -errno;
+	/* .../1-1.2/1-1.2:1.0/0003:1209:0001.0005: the HID device's parent
+	 * is a USB interface. A Bluetooth pad behind a USB dongle has hci
+	 * directories between: the dongle's port is not the pad's. */
+	end = strrchr(real, '/');
+	if (end) {
+		const char *start = end;
+
+		while (start > real && start[-1] != '/')
+			start--;
+		if (usb_interface_dir(start, (size_t)(end - start))) {
+			size_t n = (size_t)(strchr(start, ':') - start);
+
+			if (n >= len)
+				return -ENAMETOOLONG;
+			memcpy(port, start, n);
+			port[n] = '\0';
+		}
+	}
+	return 0;
+}
+
+int in_hid_read_desc(const char *sysroot, const char *node, uint8_t **buf, size_t *len)
+{
+	char path[PATH_MAX];
+	uint8_t *b;
+	size_t n = 0;
+	int fd, rc = 0;
+
+	*buf = NULL;
+	*len = 0;
+	if (snprintf(path, sizeof(path), "%s/class/hidraw/%s/device/report_descriptor", sysroot,
+		     node_base(node)) >= (int)sizeof(path))
+		return -ENAMETOOLONG;
+	b = malloc(HIDD_MAX_DESC + 1);
+	if (!b)
+		return -ENOMEM;
+	fd = open(path, O_RDONLY | O_CLOEXEC);
+	if (fd < 0) {
+		rc = -errno;
+		goto fail;
+	}
+	for (;;) {
+		ssize_t r = read(fd, b + n, HIDD_MAX_DESC + 1 - n);
+
+		if (r < 0 && errno == EINTR)
+			continue;
+		if (r < 0) {
+			rc = -errno;
+			break;
+		}
+		if (r == 0)
+			break;
+		n += (size_t)r;
+		if (n > HIDD_MAX_DESC) {
+			rc = -E2BIG;
+			break;
+		}
+	}
+	close(fd);
+	if (rc < 0)
+		goto fail;
+	*buf = b;
+	*len = n;
+	return 0;
+fail:
+	free(b);
+	return rc;
+}
+
+/* UTF-8 of a hidapi wide string (UTF-32 on Linux) into buf, appended. */
+static void append_wide(char *buf, size_t len, const wchar_t *w)
+{
+	size_t n = strnlen(buf, len);
+
+	for (; w && *w && n + 5 < len; w++) {
+		uint32_t c = (uint32_t)*w;
+
+		if (c < 0x20 || (c >= 0xd800 && c < 0xe000) || c > 0x10ffff)
+			c = '?';
+		if (c < 0x80) {
+			buf[n++] = (char)c;
+		} else if (c < 0x800) {
+			buf[n++] = (char)(0xc0 | c >> 6);
+			buf[n++] = (char)(0x80 | (c & 0x3f));
+		} else if (c < 0x10000) {
+			buf[n++] = (char)(0xe0 | c >> 12);
+			buf[n++] = (char)(0x80 | ((c >> 6) & 0x3f));
+			buf[n++] = (char)(0x80 | (c & 0x3f));
+		} else {
+			buf[n++] = (char)(0xf0 | c >> 18);
+			buf[n++] = (char)(0x80 | ((c >> 12) & 0x3f));
+			buf[n++] = (char)(0x80 | ((c >> 6) & 0x3f));
+			buf[n++] = (char)(0x80 | (c & 0x3f));
+		}
+	}
+	buf[n] = '\0';
+}
+
+static long node_number(const char *node)
+{
+	const char *b = node_base(node);
+
+	return strncmp(b, "hidraw", 6) == 0 ? strtol(b + 6, NULL, 10) : LONG_MAX;
+}
+
+static int cmp_info(const void *a, const void *b)
+{
+	long x = node_number(((const struct in_hid_info *)a)->node);
+	long y = node_number(((const struct in_hid_info *)b)->node);
+
+	return (x > y) - (x < y);
+}
+
+/* The hidraw devices hidapi enumerates (one entry per node: hidapi 0.13
+ * lists a node once per top-level collection), sorted by node number;
+ * fields are not filled. */
+static int enumerate(struct in_hid_info **out, size_t *count)
+{
+	struct hid_device_info *all = hid_enumerate(0, 0), *e;
+	struct in_hid_info *l = NULL;
+	size_t n = 0, cap = 0;
+
+	for (e = all; e; e = e->next) {
+		bool dup = false;
+
+		if (!e->path || strncmp(e->path, "/dev/hidraw", 11) != 0)
+			continue;
+		for (size_t i = 0; i < n && !dup; i++)
+			dup = strcmp(l[i].node, e->path) == 0;
+		if (dup || strlen(e->path) >= sizeof(l->node))
+			continue;
+		if (n == cap) {
+			struct in_hid_info *nl;
+
+			cap = cap ? cap * 2 : 8;
+			nl = realloc(l, cap * sizeof(*l));
+			if (!nl) {
+				free(l);
+				hid_free_enumeration(all);
+				return -ENOMEM;
+			}
+			l = nl;
+		}
+		memset(&l[n], 0, sizeof(l[n]));
+		strcpy(l[n].node, e->path);
+		l[n].vid = e->vendor_id;
+		l[n].pid = e->product_id;
+		l[n].iface = e->interface_number;
+		append_wide(l[n].name, sizeof(l[n].name), e->manufacturer_string);
+		if (e->product_string && e->product_string[0]) {
+			if (l[n].name[0])
+				say(l[n].name, sizeof(l[n].name), " ");
+			append_wide(l[n].name, sizeof(l[n].name), e->product_string);
+		}
+		append_wide(l[n].serial, sizeof(l[n].serial), e->serial_number);
+		in_hid_port(HID_SYSFS, e->path, l[n].port, sizeof(l[n].port));
+		n++;
+	}
+	hid_free_enumeration(all);
+	if (n > 1)
+		qsort(l, n, sizeof(*l), cmp_info);
+	*out = l;
+	*count = n;
+	return 0;
+}
+
+static bool matches(const struct in_hid_spec *s, const struct in_hid_info *i)
+{
+	return (s->vid < 0 || (s->vid == i->vid && s->pid == i->pid)) &&
+	       (!s->port[0] || strcmp(s->port, i->port) == 0) &&
+	       (!s->serial[0] || strcmp(s->serial, i->serial) == 0) &&
+	       (!s->node[0] || strcmp(node_base(s->node), node_base(i->node)) == 0) &&
+	       (s->iface < 0 || s->iface == i->iface);
+}
+
+/* A joystick or gamepad: the auto-detection rule of in_hid.h. */
+static bool game_device(const struct hidd_desc *d)
+{
+	for (size_t i = 0; i < d->nfield; i++) {
+		const struct hidd_field *f = &d->field[i];
+
+		if ((f->kind == HIDD_BUTTON || f->kind == HIDD_AXIS || f->kind == HIDD_HAT) &&
+		    (f->app_usage == HIDD_USAGE(HIDD_PAGE_DESKTOP, HIDD_GD_JOYSTICK) ||
+		     f->app_usage == HIDD_USAGE(HIDD_PAGE_DESKTOP, HIDD_GD_GAMEPAD)))
+			return true;
+	}
+	return false;
+}
+
+static void hid_close_dev(struct in_dev *d)
+{
+	if (!d)
+		return;
+	if (d->h)
+		hid_close(d->h);
+	hidr_free(d->dec);
+	hidd_free(d->desc);
+	free(d->q);
+	free(d);
+	if (--hid_users == 0)
+		hid_exit();
+}
+
+/* Opens candidate i into d: descriptor, decoder, device. */
+static int open_one(struct in_dev *d, const struct in_hid_info *i, const struct in_hid_spec *s,
+		    bool need_game, char *why, size_t whylen)
+{
+	char err[160];
+	uint8_t *raw;
+	size_t len;
+	int rc = in_hid_read_desc(HID_SYSFS, i->node, &raw, &len);
+
+	if (rc < 0) {
+		say(why, whylen, "%s: report descriptor: %s", i->node, strerror(-rc));
+		return rc;
+	}
+	rc = hidd_parse(raw, len, &d->desc, err, sizeof(err));
+	free(raw);
+	if (rc < 0) {
+		say(why, whylen, "%s: report descriptor refused: %s", i->node, err);
+		return rc;
+	}
+	if (need_game && !game_device(d->desc)) {
+		say(why, whylen, "%s (%04x:%04x): not a joystick or gamepad", i->node, i->vid,
+		    i->pid);
+		rc = -ENODEV;
+		goto fail;
+	}
+	rc = hidr_new(d->desc, &s->opts, &d->dec);
+	if (rc < 0) {
+		say(why, whylen, "%s: decoder: %s", i->node, strerror(-rc));
+		goto fail;
+	}
+	d->qcap = hidr_max_events(d->dec);
+	d->q = calloc((size_t)d->qcap, sizeof(*d->q));
+	if (!d->q) {
+		rc = -ENOMEM;
+		goto fail;
+	}
+	errno = 0;
+	d->h = hid_open_path(i->node);
+	if (!d->h) {
+		rc = errno ? -errno : -EIO;
+		say(why, whylen, "%s: %s", i->node, strerror(-rc));
+		goto fail;
+	}
+	hid_set_nonblocking(d->h, 1);
+	return 0;
+fail:
+	hidr_free(d->dec);
+	hidd_free(d->desc);
+	free(d->q);
+	d->dec = NULL;
+	d->desc = NULL;
+	d->q = NULL;
+	return rc;
+}
+
+static int hid_open_dev(const char *path, struct in_dev **out, char *why, size_t whylen)
+{
+	struct in_hid_spec s;
+	struct in_hid_info *l = NULL;
+	struct in_dev *d;
+	size_t n = 0;
+	bool any = false, need_game;
+	int rc;
+
+	*out = NULL;
+	rc = in_hid_parse_spec(path, &s, why, whylen);
+	if (rc < 0)
+		return rc;
+	need_game = !in_hid_spec_names_device(&s);
+	d = calloc(1, sizeof(*d));
+	if (!d)
+		return -ENOMEM;
+	if (hid_users++ == 0 && hid_init() < 0) {
+		say(why, whylen, "hidapi: initialisation failed");
+		rc = -EIO;
+		goto fail;
+	}
+	rc = enumerate(&l, &n);
+	if (rc < 0)
+		goto fail;
+	rc = -ENODEV;
+	for (size_t k = 0; k < n; k++) {
+		if (!matches(&s, &l[k]))
+			continue;
+		if (any)
+			say(why, whylen, "; ");
+		any = true;
+		rc = open_one(d, &l[k], &s, need_game, why, whylen);
+		if (rc < 0)
+			continue;
+		strcpy(d->node, l[k].node);
+		snprintf(d->id.port, sizeof(d->id.port), "%s", l[k].port);
+		snprintf(d->id.name, sizeof(d->id.name), "%s", l[k].name);
+		d->id.vid = l[k].vid;
+		d->id.pid = l[k].pid;
+		snprintf(d->text, sizeof(d->text), "%s (%04x:%04x, %s%s%s%s)",
+			 l[k].name[0] ? l[k].name : "unnamed", l[k].vid, l[k].pid,
+			 l[k].port[0] ? "port " : "", l[k].port, l[k].port[0] ? ", " : "",
+			 d->node);
+		free(l);
+		if (whylen)
+			why[0] = '\0';
+		*out = d;
+		return 0;
+	}
+	if (!any)
+		say(why, whylen, "no HID device matches '%s' (%zu hidraw device(s) found)",
+		    path ? path : "hid", n);
+	free(l);
+fail:
+	hid_close_dev(d);
+	return rc == -ENOMEM ? rc : -ENODEV;
+}
+
+static int hid_fd(struct in_dev *d)
+{
+	(void)d;
+	return -1;
+}
+
+static int hid_rd(struct in_dev *d, struct in_event *out, int max)
+{
+	int n = 0;
+
+	for (int reads = 0;; reads++) {
+		int k = d->qn < max - n ? d->qn : max - n, r;
+
+		memcpy(out + n, d->q + d->qhead, (size_t)k * sizeof(*out));
+		d->qhead += k;
+		d->qn -= k;
+		n += k;
+		if (n == max || reads == HID_MAX_READS)
+			return n;
+		r = hid_read(d->h, d->buf, sizeof(d->buf));
+		if (r < 0)
+			return n > 0 ? n : -ENODEV;   /* the next call fails again */
+		if (r == 0)
+			return n;
+		k = hidr_decode(d->dec, d->buf, (size_t)r, in_now_ns(), d->q, d->qcap);
+		d->qhead = 0;
+		d->qn = k > 0 ? k : 0;
+	}
+}
+
+static const char *hid_describe(struct in_dev *d)
+{
+	return d->text;
+}
+
+static void hid_ident(struct in_dev *d, struct in_ident *id)
+{
+	*id = d->id;
+}
+
+const struct in_backend in_hid = {
+	.name = "hid",
+	.open = hid_open_dev,
+	.fd = hid_fd,
+	.read = hid_rd,
+	.close = hid_close_dev,
+	.describe = hid_describe,
+	.ident = hid_ident,
+};
+
+int in_hid_list(struct in_hid_info **out, size_t *count)
+{
+	struct in_hid_info *l;
+	size_t n;
+	int rc;
+
+	*out = NULL;
+	*count = 0;
+	if (hid_users++ == 0 && hid_init() < 0) {
+		hid_users--;
+		return -EIO;
+	}
+	rc = enumerate(&l, &n);
+	if (--hid_users == 0)
+		hid_exit();
+	if (rc < 0)
+		return rc;
+	for (size_t i = 0; i < n; i++) {
+		struct hidd_desc *d;
+		uint8_t *raw;
+		size_t len, need;
+		char err[160];
+
+		rc = in_hid_read_desc(HID_SYSFS, l[i].node, &raw, &len);
+		if (rc < 0) {
+			say(l[i].why, sizeof(l[i].why), "report descriptor: %s", strerror(-rc));
+			continue;
+		}
+		rc = hidd_parse(raw, len, &d, err, sizeof(err));
+		free(raw);
+		if (rc < 0) {
+			say(l[i].why, sizeof(l[i].why), "report descriptor refused: %s", err);
+			continue;
+		}
+		need = hidd_describe(d, NULL, 0) + 1;
+		l[i].fields = malloc(need);
+		if (l[i].fields)
+			hidd_describe(d, l[i].fields, need);
+		else
+			say(l[i].why, sizeof(l[i].why), "out of memory");
+		hidd_free(d);
+	}
+	*out = l;
+	*count = n;
+	return 0;
+}
+
+void in_hid_list_free(struct in_hid_info *l, size_t n)
+{
+	if (!l)
+		return;
+	for (size_t i = 0; i < n; i++)
+		free(l[i].fields);
+	free(l);
+}
