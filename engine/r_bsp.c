@@ -131,6 +131,8 @@ static void r_subsector(struct r_ctx *r, uint32_t i)
 	/* the subsector's planes, when seen from their visible side (the sky
 	 * always is); its segs add columns to them */
 	r->front = ss->sector;
+	if (r->seen_ok)
+		r->sec_seen[ss->sector] = r->frame_no;
 	sec = &m->sectors[ss->sector];
 	r->floorplane = sec->floor_h < r->ez ?
 		r_plane_find(r, sec->floor_h, sec->floor_tex, sec->light) : -1;

@@ -181,6 +181,13 @@ struct r_ctx {
 	struct r_vis *vis;
 	int nvis, maxvis;
 	int16_t *cliptop, *clipbot;     /* a sprite's clip, per column */
+	/* per sector: the frame number when the BSP walk last reached it;
+	 * only sprites standing in a reached sector are drawn (Doom adds a
+	 * sector's things when it reaches the sector) */
+	uint32_t *sec_seen;
+	int maxsecs;
+	uint32_t frame_no;
+	int seen_ok;                    /* sec_seen covers this map's sectors */
 
 	/* fallback checker, magenta and black (the palette's nearest) */
 	struct tex_pic fb_pic;

@@ -341,6 +341,7 @@ void r_free(struct r_ctx *r)
 	free(r->dsegs);
 	free(r->open);
 	free(r->vis);
+	free(r->sec_seen);
 	free(r->ceilclip);
 	free(r->floorclip);
 	free(r->cliptop);
@@ -403,6 +404,29 @@ static void r_setup_view(struct r_ctx *r, const struct r_view *v)
 	r_solid_reset(r);
 }
 
+/* Makes sec_seen ready for m: a new frame number, the array grown to the
+ * map's sectors (cleared when the number wraps or the array is new). */
+static void r_sectors_reset(struct r_ctx *r, const struct map *m)
+{
+	int old = r->maxsecs;
+
+	if (m->num_sectors > (uint32_t)INT32_MAX / 2 ||
+	    r_grow((void **)&r->sec_seen, &r->maxsecs, sizeof(*r->sec_seen),
+		   (int)m->num_sectors) < 0) {
+		/* every sprite is then drawn, clipped only by drawsegs */
+		r->seen_ok = 0;
+		r->st.degraded++;
+		return;
+	}
+	if (r->maxsecs > old)
+		memset(&r->sec_seen[old], 0, (size_t)(r->maxsecs - old) * sizeof(*r->sec_seen));
+	if (++r->frame_no == 0) {
+		memset(r->sec_seen, 0, (size_t)r->maxsecs * sizeof(*r->sec_seen));
+		r->frame_no = 1;
+	}
+	r->seen_ok = 1;
+}
+
 void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	      const struct r_view *v, const struct r_sprite *spr, int nspr, struct r_frame *f)
 {
@@ -421,12 +445,13 @@ void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	r->ndsegs = 0;
 	r->nopen = 0;
 	r->nvis = 0;
+	r_sectors_reset(r, m);
 	if (m->num_subsectors > 0) {
 		r_bsp_render(r);
 		r_plane_draw_all(r);
 	}
 	r_draw_finish(r);
-	if (m->num_subsectors > 0 && nspr > 0) {
+	if (m->num_subsectors > 0) {
 		r_things_project(r, spr, nspr);
 		r_things_draw(r);
 	}

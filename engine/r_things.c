@@ -2,8 +2,11 @@
  * r_things: sprites and masked middle textures (Doom's r_things and
  * R_RenderMaskedSegRange), drawn after the opaque pass, back to front.
  *
- * Projection (Doom's R_ProjectSprite): a sprite at depth below R_SPR_NEAR,
- * or more than four times its depth to the side, is skipped. The rotation
+ * Projection (Doom's R_ProjectSprite): only sprites standing in a sector
+ * the BSP walk reached this frame are drawn (Doom adds the things of each
+ * sector it reaches; a thing behind a closed door is never considered, so
+ * silhouettes need not hide it). A sprite at depth below R_SPR_NEAR, or
+ * more than four times its depth to the side, is skipped. The rotation
  * is Doom's: the angle from the eye to the thing minus the thing's facing,
  * in eighths of a turn centred on each direction (rotation 0 = facing the
  * viewer), and the frame says which picture and whether mirrored. The
@@ -113,8 +116,12 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 		struct r_vpt p;
 		int64_t ll, sxl, sxr;
 		unsigned rot, pi;
+		uint32_t sec;
 		int x1, x2;
 
+		sec = map_point_sector(r->map, gx, gy);
+		if (r->seen_ok && r->sec_seen[sec] != r->frame_no)
+			continue;
 		r_to_view(r, gx, gy, &p);
 		if (p.d < R_SPR_NEAR || p.l > 4 * p.d || p.l < -4 * p.d)
 			continue;
@@ -164,13 +171,8 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 		vs->pic = pic;
 		vs->flip = fr->flip[rot] != 0;
 		vs->order = i;
-		if (sp->flags & R_SPR_FULLBRIGHT) {
-			vs->lvl = 0;
-		} else {
-			const struct map_sector *sec = &r->map->sectors[map_point_sector(r->map, gx, gy)];
-
-			vs->lvl = r_scale_level(r, r_light_base(sec->light), vs->scale);
-		}
+		vs->lvl = (sp->flags & R_SPR_FULLBRIGHT) ? 0 :
+			  r_scale_level(r, r_light_base(r->map->sectors[sec].light), vs->scale);
 	}
 }
 

@@ -212,7 +212,8 @@ static inline void t_window(struct tmap *t, int w_floor, int w_ceil)
  */
 enum {
 	TT_COLS = 256,     /* 64 x 64: texel (c, r) = c */
-	TT_ROWS100,        /* 4 x 100 (height not a power of two): texel = r */
+	TT_ROWS100,        /* 4 x 100 (height not a power of two): texel
+			    * r in columns 0 and 2, 100 + r in 1 and 3 */
 	TT_ROWS128,        /* 4 x 128: texel = r */
 	TT_MASK,           /* 8 x 8, only columns 0..3 opaque: colour TT_MASK_C */
 	TT_SKYCOLS,        /* 256 x 128: texel = c */
@@ -281,7 +282,7 @@ static inline struct ttex *tt_new(void)
 	px = tt_pic(&t->textures[TT_ROWS100], "ROWS100", 4, 100);
 	for (int c = 0; c < 4; c++)
 		for (int r = 0; r < 100; r++)
-			px[c * 100 + r] = (uint8_t)r;
+			px[c * 100 + r] = (uint8_t)(r + 100 * (c & 1));
 	px = tt_pic(&t->textures[TT_ROWS128], "ROWS128", 4, 128);
 	for (int c = 0; c < 4; c++)
 		for (int r = 0; r < 128; r++)
