@@ -39,7 +39,7 @@ enum {
 	MW_SECTORS, MW_REJECT, MW_BLOCKMAP, MW_BEHAVIOR, MW_LUMPS
 };
 
-static const char *const mw_names[MW_LUMPS] = {
+static const char mw_names[MW_LUMPS][9] = {
 	"THINGS", "LINEDEFS", "SIDEDEFS", "VERTEXES", "SEGS", "SSECTORS", "NODES",
 	"SECTORS", "REJECT", "BLOCKMAP", "BEHAVIOR",
 };

@@ -17,23 +17,31 @@
 
 #include "engine/tex_local.h"
 
+/* The tables name each picture's maker by kind (no function pointers, so
+ * they stay read-only data); tb_make_* dispatch. */
+enum tb_kind {
+	TB_BRICK, TB_METAL, TB_STONE, TB_TECH, TB_WOOD, TB_DOOR, TB_GRATE, TB_MARBLE, TB_SKY,
+	TB_FLOOR, TB_NOISY, TB_CEIL, TB_WATER, TB_SKYFLAT,
+	TB_BARREL, TB_LAMP, TB_ENEMY, TB_MEDIKIT,
+};
+
 struct tb_tex {
-	const char *name;
-	int w, h;
-	void (*make)(struct tex_pic *p);
+	char name[9];
+	int16_t w, h;
+	uint8_t kind;
 };
 
 struct tb_flat {
-	const char *name;
-	void (*make)(struct tex_flat *f, int arg);
-	int arg;
+	char name[9];
+	uint8_t kind;
+	int16_t arg;
 };
 
 struct tb_spr {
-	const char *name;              /* lump-style: "POSSA2A8" */
-	int w, h;
-	void (*make)(struct tex_pic *p, int arg);
-	int arg;
+	char name[9];                  /* lump-style: "POSSA2A8" */
+	int16_t w, h;
+	uint8_t kind;
+	int16_t arg;
 };
 
 static uint32_t tb_hash(uint32_t a, uint32_t b, uint32_t seed)
@@ -282,7 +290,7 @@ static void tb_noisy(struct tex_flat *f, int arg)
 								    (uint32_t)arg) % 2)));
 }
 
-#define TB_NOISY(ramp, base, spread) ((ramp) | (base) << 4 | (spread) << 8)
+#define TB_NOISE_ARG(ramp, base, spread) ((ramp) | (base) << 4 | (spread) << 8)
 
 static void tb_ceil(struct tex_flat *f, int arg)
 {
@@ -417,34 +425,65 @@ static void tb_medikit(struct tex_pic *p, int arg)
 }
 
 static const struct tb_tex tb_textures[] = {
-	{ "AR_BRICK", 64, 64, tb_brick },   { "AR_METAL", 64, 64, tb_metal },
-	{ "AR_STONE", 64, 64, tb_stone },   { "AR_TECH", 64, 128, tb_tech },
-	{ "AR_WOOD", 64, 64, tb_wood },     { "AR_DOOR", 64, 128, tb_door },
-	{ "AR_GRATE", 64, 64, tb_grate },   { "AR_MARBL", 64, 128, tb_marble },
-	{ "SKY1", 256, 128, tb_sky },
+	{ "AR_BRICK", 64, 64, TB_BRICK },   { "AR_METAL", 64, 64, TB_METAL },
+	{ "AR_STONE", 64, 64, TB_STONE },   { "AR_TECH", 64, 128, TB_TECH },
+	{ "AR_WOOD", 64, 64, TB_WOOD },     { "AR_DOOR", 64, 128, TB_DOOR },
+	{ "AR_GRATE", 64, 64, TB_GRATE },   { "AR_MARBL", 64, 128, TB_MARBLE },
+	{ "SKY1", 256, 128, TB_SKY },
 };
 
 static const struct tb_flat tb_flats[] = {
-	{ "AR_FLOOR", tb_floor, 0 },
-	{ "AR_GRASS", tb_noisy, TB_NOISY(PAL_GREEN, 5, 4) },
-	{ "AR_DIRT", tb_noisy, TB_NOISY(PAL_BROWN, 5, 4) },
-	{ "AR_SLATE", tb_noisy, TB_NOISY(PAL_SLATE, 5, 3) },
-	{ "AR_CEIL", tb_ceil, 0 },
-	{ "AR_LIGHT", tb_ceil, 1 },
-	{ "AR_WAT1", tb_water, 0 },
-	{ "AR_WAT2", tb_water, 1 },
-	{ "AR_WAT3", tb_water, 2 },
-	{ "AR_WAT4", tb_water, 3 },
-	{ "F_SKY1", tb_skyflat, 0 },
+	{ "AR_FLOOR", TB_FLOOR, 0 },
+	{ "AR_GRASS", TB_NOISY, TB_NOISE_ARG(PAL_GREEN, 5, 4) },
+	{ "AR_DIRT", TB_NOISY, TB_NOISE_ARG(PAL_BROWN, 5, 4) },
+	{ "AR_SLATE", TB_NOISY, TB_NOISE_ARG(PAL_SLATE, 5, 3) },
+	{ "AR_CEIL", TB_CEIL, 0 },
+	{ "AR_LIGHT", TB_CEIL, 1 },
+	{ "AR_WAT1", TB_WATER, 0 },
+	{ "AR_WAT2", TB_WATER, 1 },
+	{ "AR_WAT3", TB_WATER, 2 },
+	{ "AR_WAT4", TB_WATER, 3 },
+	{ "F_SKY1", TB_SKYFLAT, 0 },
 };
 
 static const struct tb_spr tb_sprites[] = {
-	{ "BAR1A0", 23, 32, tb_barrel, 0 },   { "BAR1B0", 23, 32, tb_barrel, 1 },
-	{ "COLUA0", 23, 48, tb_lamp, 0 },     { "MEDIA0", 28, 19, tb_medikit, 0 },
-	{ "POSSA1", 32, 56, tb_enemy, 1 },    { "POSSA2A8", 32, 56, tb_enemy, 2 },
-	{ "POSSA3A7", 32, 56, tb_enemy, 3 },  { "POSSA4A6", 32, 56, tb_enemy, 4 },
-	{ "POSSA5", 32, 56, tb_enemy, 5 },
+	{ "BAR1A0", 23, 32, TB_BARREL, 0 },   { "BAR1B0", 23, 32, TB_BARREL, 1 },
+	{ "COLUA0", 23, 48, TB_LAMP, 0 },     { "MEDIA0", 28, 19, TB_MEDIKIT, 0 },
+	{ "POSSA1", 32, 56, TB_ENEMY, 1 },    { "POSSA2A8", 32, 56, TB_ENEMY, 2 },
+	{ "POSSA3A7", 32, 56, TB_ENEMY, 3 },  { "POSSA4A6", 32, 56, TB_ENEMY, 4 },
+	{ "POSSA5", 32, 56, TB_ENEMY, 5 },
 };
+
+static void tb_make_pic(struct tex_pic *p, int kind, int arg)
+{
+	switch (kind) {
+	case TB_BRICK: tb_brick(p); break;
+	case TB_METAL: tb_metal(p); break;
+	case TB_STONE: tb_stone(p); break;
+	case TB_TECH: tb_tech(p); break;
+	case TB_WOOD: tb_wood(p); break;
+	case TB_DOOR: tb_door(p); break;
+	case TB_GRATE: tb_grate(p); break;
+	case TB_MARBLE: tb_marble(p); break;
+	case TB_SKY: tb_sky(p); break;
+	case TB_BARREL: tb_barrel(p, arg); break;
+	case TB_LAMP: tb_lamp(p, arg); break;
+	case TB_ENEMY: tb_enemy(p, arg); break;
+	case TB_MEDIKIT: tb_medikit(p, arg); break;
+	default: break;
+	}
+}
+
+static void tb_make_flat(struct tex_flat *f, int kind, int arg)
+{
+	switch (kind) {
+	case TB_FLOOR: tb_floor(f, arg); break;
+	case TB_NOISY: tb_noisy(f, arg); break;
+	case TB_CEIL: tb_ceil(f, arg); break;
+	case TB_WATER: tb_water(f, arg); break;
+	default: tb_skyflat(f, arg); break;
+	}
+}
 
 #define TB_N(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
@@ -466,7 +505,7 @@ int tex_builtin(struct tex_set **out)
 
 		r = tex_pic_new(p, tb_textures[i].name, tb_textures[i].w, tb_textures[i].h, &budget);
 		if (!r) {
-			tb_textures[i].make(p);
+			tb_make_pic(p, tb_textures[i].kind, 0);
 			tex_pic_seal(p);
 		}
 	}
@@ -476,7 +515,7 @@ int tex_builtin(struct tex_set **out)
 				    cb);
 	for (int i = 0; i < TB_N(tb_flats); i++) {
 		tex_name(t->flats[i].name, tb_flats[i].name);
-		tb_flats[i].make(&t->flats[i], tb_flats[i].arg);
+		tb_make_flat(&t->flats[i], tb_flats[i].kind, tb_flats[i].arg);
 	}
 	t->fallback_flat = nf - 1;
 	tex_flat_checker(&t->flats[nf - 1], "", ca, cb);
@@ -487,7 +526,7 @@ int tex_builtin(struct tex_set **out)
 
 		r = tex_pic_new(p, tb_sprites[i].name, tb_sprites[i].w, tb_sprites[i].h, &budget);
 		if (!r) {
-			tb_sprites[i].make(p, tb_sprites[i].arg);
+			tb_make_pic(p, tb_sprites[i].kind, tb_sprites[i].arg);
 			tex_pic_seal(p);
 			p->left = (int16_t)(p->w / 2);
 			p->top = p->h;

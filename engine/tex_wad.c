@@ -87,7 +87,7 @@ static int tw_palette(struct tw *c, struct pal *p)
 /* TEXTURE1/TEXTURE2 and PNAMES headers; counts must fit their lumps. */
 static int tw_lists(struct tw *c)
 {
-	static const char *const names[2] = { "TEXTURE1", "TEXTURE2" };
+	static const char names[2][9] = { "TEXTURE1", "TEXTURE2" };
 	size_t len;
 	const uint8_t *d;
 	int i;

@@ -33,7 +33,7 @@ struct th_info {
 	char frame;                    /* frame letter drawn when standing */
 	int16_t radius, height;        /* map units */
 	uint16_t flags;                /* enum th_flags */
-	const char *name;              /* for tools and messages */
+	char name[40];                 /* for tools and messages */
 };
 
 /* The description of thing type `type`, or NULL for a type not in the
