@@ -214,8 +214,8 @@ static int grid_texture(struct grid_p *p, int line, const struct grid_tok *t, in
 /* Direction word or degrees (counter-clockwise from east). */
 static int grid_angle(const struct grid_tok *t, ang_t *out)
 {
-	static const char *const words[8] = { "east", "northeast", "north", "northwest",
-					      "west", "southwest", "south", "southeast" };
+	static const char words[8][10] = { "east", "northeast", "north", "northwest",
+					   "west", "southwest", "south", "southeast" };
 	int32_t deg;
 
 	for (int i = 0; i < 8; i++)
@@ -287,8 +287,8 @@ static int grid_open_key(struct grid_p *p, struct grid_def *d, int line, const s
 		if (grid_add_thing(p, d, line, k->col, (uint16_t)a, ang))
 			return -EINVAL;
 	} else if (grid_tok_is(k, "lamp")) {
-		static const char *const colours[8] = { "white", "red",   "orange", "yellow",
-							"green", "cyan", "blue",   "purple" };
+		static const char colours[8][7] = { "white", "red",   "orange", "yellow",
+						     "green", "cyan", "blue",   "purple" };
 		int c = 0;
 		if (grid_int(&t[*i + 1], 32, 256, &a))
 			return grid_fail(p, line, t[*i + 1].col, "lamp intensity must be 32..256");
