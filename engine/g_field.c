@@ -8,7 +8,7 @@
 #include "engine/sim.h"
 
 struct g_field_def {
-	const char *name;
+	char name[12];
 	enum sim_fkind kind;
 };
 

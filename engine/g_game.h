@@ -40,7 +40,7 @@
 enum g_kind { G_GRUNT, G_BRUTE, G_SENTRY, G_KINDS };
 
 struct g_kind_info {
-	const char *name;              /* "grunt" */
+	char name[8];                  /* "grunt" */
 	fx_t radius;                   /* body circle, map units */
 	fx_t eye;                      /* sight height above its feet */
 	int16_t health;
@@ -205,17 +205,24 @@ int g_thing_at_difficulty(uint16_t flags, int d);
 
 /* ---- things to draw --------------------------------------------------- */
 
-/* A billboard for the renderer: position (feet), facing, Doom sprite name
- * and frame letter index (0 = 'A'), and whether it is lit full bright. */
-struct g_sprite {
-	fx_t x, y, z;
-	ang_t angle;
-	char name[5];
-	uint8_t frame;
-	uint8_t bright;
-	uint8_t cls;                   /* enum g_class (colours for fallbacks) */
-	uint8_t kind;                  /* enemy kind / pickup kind */
-	fx_t radius;
-};
+struct sim;
+struct tex_set;
+struct r_sprite;
+
+/* Fills out (up to max) with the sprites of the current tick for
+ * r_render: enemies (frames by state: standing A, walking, attacking with
+ * a full-bright firing frame, pain, dying into the corpse), pickups not
+ * taken, the map's lights and decorations (cycling their frames), and the
+ * puff (PUFF) or blood (BLUD) of the last shot for G_PUFF ticks. Sprite
+ * numbers come from t by Doom's names; a name t lacks is drawn as a
+ * stand-in of t (POSS for enemies, MEDI, CLIP, COLU, BAR1), and failing
+ * that as a number past t's sprites (the renderer's fallback checker); a
+ * corpse frame t lacks is not drawn. Returns how many were written (0 when
+ * t is NULL). */
+int g_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite *out, int max);
+
+/* The most sprites g_sprites can produce for a sim on map m: enemies,
+ * pickups, the map's things and the puff. */
+#define G_SPRITES_MAX(m) (G_MAX_ENEMIES + G_MAX_PICKUPS + (int)(m)->num_things + 1)
 
 #endif

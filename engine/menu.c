@@ -27,7 +27,7 @@ void menu_res_size(int i, int *w, int *h)
 
 const char *menu_difficulty_name(int d)
 {
-	static const char *const names[4] = { "EASY", "NORMAL", "HARD", "BRUTAL" };
+	static const char names[4][8] = { "EASY", "NORMAL", "HARD", "BRUTAL" };
 
 	return d >= 0 && d < 4 ? names[d] : NULL;
 }

@@ -30,6 +30,7 @@
 
 struct sim;
 struct r_frame;
+struct hud_env;
 
 enum menu_page { MENU_MAIN, MENU_INPUT, MENU_DISPLAY, MENU_SETTINGS, MENU_BOOKS, MENU_CONFIRM,
 		 MENU_PAGES };
@@ -86,10 +87,8 @@ void menu_res_size(int i, int *w, int *h);
  * 0..3 (NULL otherwise). */
 const char *menu_difficulty_name(int d);
 
-/* Draws the menu page for s over the whole frame (8-bit indices of the
- * built-in palette layout, pal.h). rotate: the
- * display's rotation setting in degrees, shown on the orientation screen
- * (-1: unknown). */
-void menu_draw(const struct sim *s, struct r_frame *f, int rotate);
+/* Draws the menu page for s over the whole frame (menu_draw.c), with the
+ * HUD's colours and font (engine/hud.h). */
+void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f);
 
 #endif

@@ -34,12 +34,13 @@
 #define SIM_NAV_DELAY 20               /* ticks before a held direction repeats */
 #define SIM_NAV_REPEAT 6               /* ticks between repeats */
 
-static const char *const sim_modes[SIM_MODE_COUNT] = {
+/* Names as arrays, not pointers: the tables stay read-only data. */
+static const char sim_modes[SIM_MODE_COUNT][10] = {
 	[SIM_ATTRACT] = "attract", [SIM_PLAY] = "play", [SIM_GAMEOVER] = "gameover",
 	[SIM_INITIALS] = "initials", [SIM_SERVICE] = "service",
 };
 
-static const char *const sim_pages[SIM_PAGE_COUNT] = {
+static const char sim_pages[SIM_PAGE_COUNT][8] = {
 	[SIM_PAGE_TITLE] = "title", [SIM_PAGE_SCORES] = "scores", [SIM_PAGE_DEMO] = "demo",
 };
 

@@ -1,0 +1,71 @@
+/*
+ * v_video: 2D drawing into the 8-bit frame, for the HUD, the minimap and
+ * the full-screen pages (attract, game over, initials, service menu).
+ *
+ * This is the one file that writes overlay pixels (the 3D renderer has its
+ * own in r_draw.c). Every call clips to the frame (and to a clip rectangle
+ * where it takes one), so callers may pass any coordinates. Integer only:
+ * the same calls give the same bytes everywhere.
+ *
+ * Text uses the built-in 8x8 font (v_font.c, the project's own glyphs):
+ * space to '_' of ASCII, lower case drawn as upper case, other bytes as
+ * '?'. Each character is 8 x 8 pixels at scale 1 (glyphs 7 x 7 and a
+ * blank column and row), scaled by whole numbers.
+ */
+#ifndef ARCADED_ENGINE_V_VIDEO_H
+#define ARCADED_ENGINE_V_VIDEO_H
+
+#include <stdint.h>
+
+struct r_frame;
+struct tex_pic;
+
+#define V_CHAR 8                       /* font cell, pixels at scale 1 */
+
+struct v_rect {
+	int x, y, w, h;
+};
+
+/* Fills the rectangle x, y, w x h. */
+void v_fill(struct r_frame *f, int x, int y, int w, int h, uint8_t c);
+
+/* The outline of the rectangle, one pixel wide. */
+void v_box(struct r_frame *f, int x, int y, int w, int h, uint8_t c);
+
+/* Replaces every pixel p of the rectangle by map[p] (a colormap: darkening
+ * behind text). */
+void v_remap(struct r_frame *f, int x, int y, int w, int h, const uint8_t map[256]);
+
+/* A line from (x0, y0) to (x1, y1), both ends drawn (Bresenham), clipped
+ * to clip (NULL: the frame). Endpoints may be far outside (they are
+ * clipped first, in 64-bit arithmetic); coordinates beyond +/-2^24 are
+ * clamped to it. */
+void v_line(struct r_frame *f, int x0, int y0, int x1, int y1, uint8_t c,
+	    const struct v_rect *clip);
+
+/* A filled triangle: every pixel whose centre is inside or on an edge,
+ * clipped to clip (NULL: the frame). */
+void v_tri(struct r_frame *f, int x0, int y0, int x1, int y1, int x2, int y2, uint8_t c,
+	   const struct v_rect *clip);
+
+/* Text at (x, y) (top left), each font pixel a scale x scale block (scale
+ * 1..64). Returns the width in pixels (V_CHAR * scale per character). */
+int v_text(struct r_frame *f, int x, int y, int scale, uint8_t c, const char *s);
+
+/* Width v_text would draw. */
+int v_text_width(const char *s, int scale);
+
+/* Whether the font has a pixel at column x, row y (0..7) of character ch
+ * (for tests and tools). */
+int v_glyph_bit(char ch, int x, int y);
+
+/* Writes v in decimal into buf (NUL-terminated, at most len - 1
+ * characters), at least `width` digits wide padded with `pad` on the left
+ * ('0' or ' '). Returns the length written. The engine has no stdio. */
+int v_num(char *buf, int len, uint64_t v, int width, char pad);
+
+/* A picture (tex_pic: column-major, transparent where opaque says 0) with
+ * its top left at (x, y), each pixel scale x scale (1..64). */
+void v_pic(struct r_frame *f, const struct tex_pic *p, int x, int y, int scale);
+
+#endif

@@ -1,0 +1,295 @@
+/* Tests for engine/hud.c, hud_page.c and menu_draw.c: what the HUD draws
+ * from the sim state (the minimap arrow, crosshair, warnings, weapon
+ * flash, pages), and that it is a pure function of the state. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "engine/hud.h"
+#include "engine/map.h"
+#include "engine/pal.h"
+#include "engine/r_main.h"
+#include "engine/sim.h"
+#include "engine/tab.h"
+#include "g_fixture.h"
+
+#define W 320
+#define H 240
+#define BG PAL_RGB(PAL_PINK, 8)        /* a colour the HUD never uses */
+
+static struct pal pal;
+static struct hud_colours col;
+static struct map *room;
+static uint8_t pix[W * H];
+static struct r_frame frame = { pix, W, H, W };
+static const struct sim_settings play = { 1, 0, 1, 1, 3 };
+
+static int setup(void **state)
+{
+	static const struct gf_thing t[] = { { 1024, 1024, 0, 1, 0 } };
+	(void)state;
+	pal_builtin(&pal);
+	hud_colours(&pal, &col);
+	room = gf_room(2048, 2048, t, 1, NULL, 0);
+	return room ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	map_free(room);
+	return 0;
+}
+
+static void draw(const struct sim *s)
+{
+	struct hud_env env = { &pal, NULL, 0 };
+	memset(pix, BG, sizeof(pix));
+	hud_draw(s, &env, &frame);
+}
+
+static uint8_t at(int x, int y)
+{
+	return pix[y * W + x];
+}
+
+static int count_in(int x0, int y0, int w, int h, uint8_t c)
+{
+	int n = 0;
+	for (int y = y0; y < y0 + h; y++)
+		for (int x = x0; x < x0 + w; x++)
+			n += at(x, y) == c;
+	return n;
+}
+
+static void colours_are_distinct_and_from_the_palette(void **state)
+{
+	(void)state;
+	assert_int_equal(pal.rgb[col.white][0], 255);
+	assert_true(pal.rgb[col.red][0] > 150 && pal.rgb[col.red][1] < 100);
+	assert_true(col.white != col.red && col.red != col.yellow && col.green != col.white);
+	assert_true(col.white != BG && col.red != BG && col.black != BG);
+}
+
+/* The arrow points along the view, north up: its tip 6 pixels (a twelfth
+ * of the 80-pixel map) from the centre, its tail corners 4.5 pixels back
+ * at 145 degrees, so about 3.7 behind. Its axis runs along pixel edges, so
+ * the pixels tested are 3 ahead (inside) and 5 behind (outside). */
+static void the_minimap_arrow_points_along_the_view(void **state)
+{
+	static const struct { ang_t a; int dx, dy; } dir[4] = {
+		{ 0, 1, 0 }, { ANG90, 0, -1 }, { ANG180, -1, 0 }, { ANG270, 0, 1 },
+	};
+	int mx, my, size, cx, cy;
+	struct sim s;
+	(void)state;
+	hud_minimap_rect(&frame, &mx, &my, &size);
+	assert_int_equal(size, H / 3);
+	cx = mx + size / 2;
+	cy = my + size / 2;
+	for (int i = 0; i < 4; i++) {
+		sim_init(&s, room, &play);
+		s.pl.angle = dir[i].a;
+		draw(&s);
+		assert_int_equal(at(cx + 3 * dir[i].dx, cy + 3 * dir[i].dy), col.white);
+		assert_true(at(cx - 5 * dir[i].dx, cy - 5 * dir[i].dy) != col.white);
+		/* nothing white beyond the tip */
+		assert_true(at(cx + 8 * dir[i].dx, cy + 8 * dir[i].dy) != col.white);
+	}
+}
+
+static void the_minimap_shows_enemies_in_red_at_their_place(void **state)
+{
+	int mx, my, size, cx, cy;
+	struct sim s;
+	(void)state;
+	hud_minimap_rect(&frame, &mx, &my, &size);
+	cx = mx + size / 2;
+	cy = my + size / 2;
+	sim_init(&s, room, &play);
+	s.g.num_enemies = 1;
+	s.g.en[0] = (struct g_enemy){ .x = fx_from_int(1024 + 256), .y = fx_from_int(1024 + 128),
+				      .kind = G_GRUNT, .state = G_E_IDLE };
+	draw(&s);
+	/* 1024 units across 80 pixels: +256 east is +20 x, +128 north is -10 y */
+	assert_int_equal(at(cx + 20, cy - 10), col.red);
+	s.g.en[0].state = G_E_DEAD;
+	draw(&s);
+	assert_true(at(cx + 20, cy - 10) != col.red);
+}
+
+static void the_crosshair_marks_the_centre(void **state)
+{
+	struct sim s;
+	(void)state;
+	sim_init(&s, room, &play);
+	draw(&s);
+	assert_int_equal(at(W / 2, H / 2 - 4), col.white);
+	assert_int_equal(at(W / 2 - 4, H / 2), col.white);
+	assert_int_equal(at(W / 2, H / 2), BG);    /* open in the middle */
+	/* red for a few ticks after a hit */
+	s.g.shot = G_SHOT_ENEMY;
+	s.g.shot_t = 2;
+	draw(&s);
+	assert_int_equal(at(W / 2, H / 2 - 4), col.red);
+}
+
+static void low_health_and_damage_show_in_red(void **state)
+{
+	struct sim s;
+	int bar = 12, normal, low;
+	(void)state;
+	sim_init(&s, room, &play);
+	draw(&s);
+	normal = count_in(0, H - bar, W / 2, bar, col.red);
+	assert_int_equal(at(0, 0), BG);
+	s.pl.health = fx_from_int(20);
+	draw(&s);
+	low = count_in(0, H - bar, W / 2, bar, col.red);
+	assert_true(low > normal + 20);
+	s.pl.hurt = 5;
+	draw(&s);
+	assert_int_equal(at(0, 0), col.red);       /* the damage border */
+	assert_int_equal(at(W - 1, H / 2), col.red);
+}
+
+static void a_shot_flashes_at_the_muzzle(void **state)
+{
+	struct sim s;
+	int idle, fired;
+	(void)state;
+	sim_init(&s, room, &play);
+	draw(&s);
+	idle = count_in(W / 4, H / 2, W / 2, H / 2 - 12, col.yellow);
+	s.g.shot_t = 0;
+	s.g.shot = G_SHOT_WALL;
+	draw(&s);
+	fired = count_in(W / 4, H / 2, W / 2, H / 2 - 12, col.yellow);
+	assert_true(fired > idle + 20);
+}
+
+static void the_score_is_drawn(void **state)
+{
+	struct sim s;
+	uint8_t before[W * 12];
+	(void)state;
+	sim_init(&s, room, &play);
+	draw(&s);
+	memcpy(before, pix, sizeof(before));
+	s.g.score = 123456;
+	draw(&s);
+	assert_true(memcmp(before, pix, sizeof(before)) != 0);
+}
+
+static void hud_is_a_pure_function_of_the_state(void **state)
+{
+	struct hud_env env = { &pal, NULL, 0 };
+	static uint8_t a[W * H];
+	struct sim s;
+	(void)state;
+	sim_init(&s, room, &play);
+	s.g.score = 4242;
+	draw(&s);
+	memcpy(a, pix, sizeof(a));
+	draw(&s);
+	assert_memory_equal(a, pix, sizeof(a));
+	/* pages without the world paint every pixel themselves */
+	s.mode = SIM_INITIALS;
+	s.ini_rank = 2;
+	draw(&s);
+	memcpy(a, pix, sizeof(a));
+	memset(pix, 3, sizeof(pix));
+	hud_draw(&s, &env, &frame);
+	assert_memory_equal(a, pix, sizeof(a));
+}
+
+static void the_world_shows_under_play_gameover_and_attract_only(void **state)
+{
+	struct sim s;
+	(void)state;
+	sim_init(&s, room, &play);
+	assert_true(hud_world(&s));
+	s.mode = SIM_GAMEOVER;
+	assert_true(hud_world(&s));
+	s.mode = SIM_ATTRACT;
+	assert_true(hud_world(&s));
+	s.mode = SIM_INITIALS;
+	assert_false(hud_world(&s));
+	s.mode = SIM_SERVICE;
+	assert_false(hud_world(&s));
+}
+
+static void the_countdown_number_changes_the_picture(void **state)
+{
+	static uint8_t a[W * H];
+	struct sim s;
+	(void)state;
+	sim_init(&s, room, &play);
+	s.mode = SIM_GAMEOVER;
+	s.countdown = 600;
+	draw(&s);
+	memcpy(a, pix, sizeof(a));
+	s.countdown = 599;                     /* still "10" on screen */
+	draw(&s);
+	assert_memory_equal(a, pix, sizeof(a));
+	s.countdown = 540;                     /* "9" */
+	draw(&s);
+	assert_true(memcmp(a, pix, sizeof(a)) != 0);
+}
+
+static void the_input_test_lights_held_controls_green(void **state)
+{
+	struct sim s;
+	int none, held;
+	(void)state;
+	sim_init(&s, room, &play);
+	s.mode = SIM_SERVICE;
+	s.menu.page = MENU_INPUT;
+	draw(&s);
+	none = count_in(0, 0, W, H, col.green);
+	s.cmd.forward = 100;
+	s.cmd.buttons = SIM_BT_FIRE;
+	draw(&s);
+	held = count_in(0, 0, W, H, col.green);
+	assert_true(held > none + 2 * 40);     /* two names and two "ON" */
+}
+
+static void every_menu_page_draws_something(void **state)
+{
+	struct sim s;
+	(void)state;
+	sim_init(&s, room, &play);
+	s.mode = SIM_SERVICE;
+	for (int p = 0; p < MENU_PAGES; p++) {
+		for (int d = 0; d < MENU_D_COUNT; d++) {
+			s.menu.page = (uint8_t)p;
+			s.menu.display = (uint8_t)d;
+			draw(&s);
+			assert_int_equal(count_in(0, 0, W, H, BG), 0);    /* all repainted */
+			assert_true(count_in(0, 0, W, H, col.black) < W * H - 500);
+		}
+	}
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(colours_are_distinct_and_from_the_palette),
+		cmocka_unit_test(the_minimap_arrow_points_along_the_view),
+		cmocka_unit_test(the_minimap_shows_enemies_in_red_at_their_place),
+		cmocka_unit_test(the_crosshair_marks_the_centre),
+		cmocka_unit_test(low_health_and_damage_show_in_red),
+		cmocka_unit_test(a_shot_flashes_at_the_muzzle),
+		cmocka_unit_test(the_score_is_drawn),
+		cmocka_unit_test(hud_is_a_pure_function_of_the_state),
+		cmocka_unit_test(the_world_shows_under_play_gameover_and_attract_only),
+		cmocka_unit_test(the_countdown_number_changes_the_picture),
+		cmocka_unit_test(the_input_test_lights_held_controls_green),
+		cmocka_unit_test(every_menu_page_draws_something),
+	};
+	return cmocka_run_group_tests(tests, setup, teardown);
+}

@@ -1,0 +1,235 @@
+/* Tests for engine/v_video.c: fills, lines, triangles, text from the
+ * built-in font, numbers, pictures; everything clipped. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "engine/r_main.h"
+#include "engine/tex.h"
+#include "engine/v_video.h"
+
+/* A 40 x 30 frame inside a buffer with a 48-byte pitch and guard rows, so
+ * writes outside the frame are seen. */
+#define W 40
+#define H 30
+#define P 48
+
+struct fb {
+	uint8_t buf[P * (H + 2)];
+	struct r_frame f;
+};
+
+static void fb_init(struct fb *b)
+{
+	memset(b->buf, 0, sizeof(b->buf));
+	b->f.px = b->buf + P;
+	b->f.w = W;
+	b->f.h = H;
+	b->f.pitch = P;
+}
+
+static uint8_t px(const struct fb *b, int x, int y)
+{
+	return b->f.px[y * P + x];
+}
+
+/* Pixels of value c inside the frame; asserts nothing outside it changed. */
+static int count(const struct fb *b, uint8_t c)
+{
+	int n = 0;
+	for (int i = 0; i < P; i++) {
+		assert_int_equal(b->buf[i], 0);                  /* guard row above */
+		assert_int_equal(b->buf[P * (H + 1) + i], 0);    /* guard row below */
+	}
+	for (int y = 0; y < H; y++)
+		for (int x = 0; x < P; x++) {
+			if (x >= W)
+				assert_int_equal(px(b, x, y), 0);         /* pitch padding */
+			else
+				n += px(b, x, y) == c;
+		}
+	return n;
+}
+
+static void fill_clips_to_the_frame(void **state)
+{
+	struct fb b;
+	(void)state;
+	fb_init(&b);
+	v_fill(&b.f, -5, -5, 10, 10, 7);
+	assert_int_equal(count(&b, 7), 25);
+	v_fill(&b.f, 35, 25, 100, 100, 8);
+	assert_int_equal(count(&b, 8), 5 * 5);
+	v_fill(&b.f, 100, 0, 5, 5, 9);
+	v_fill(&b.f, 0, 0, 0, 5, 9);
+	v_fill(&b.f, 0, 0, -3, 5, 9);
+	assert_int_equal(count(&b, 9), 0);
+	v_box(&b.f, 10, 10, 5, 4, 3);
+	assert_int_equal(count(&b, 3), 2 * 5 + 2 * 2);
+}
+
+static void a_glyph_is_its_art(void **state)
+{
+	struct fb b;
+	(void)state;
+	/* 'A': a top bar of three over two sides, a middle bar of five */
+	assert_true(v_glyph_bit('A', 2, 0) && v_glyph_bit('A', 3, 0) && v_glyph_bit('A', 4, 0));
+	assert_false(v_glyph_bit('A', 1, 0) || v_glyph_bit('A', 5, 0));
+	for (int x = 1; x <= 5; x++)
+		assert_true(v_glyph_bit('A', x, 3));
+	assert_true(v_glyph_bit('A', 1, 6) && v_glyph_bit('A', 5, 6));
+	assert_false(v_glyph_bit('A', 3, 6));
+	/* column 7 and row 7 are spacing */
+	for (int i = 0; i < 8; i++)
+		assert_false(v_glyph_bit('A', 7, i) || v_glyph_bit('A', i, 7));
+	assert_false(v_glyph_bit('A', 8, 0));
+	/* lower case is upper case; unknown bytes are '?' */
+	for (int y = 0; y < 8; y++)
+		for (int x = 0; x < 8; x++) {
+			assert_int_equal(v_glyph_bit('a', x, y), v_glyph_bit('A', x, y));
+			assert_int_equal(v_glyph_bit('~', x, y), v_glyph_bit('?', x, y));
+		}
+	/* drawn at scale 2: each font pixel a 2x2 block */
+	fb_init(&b);
+	assert_int_equal(v_text(&b.f, 3, 4, 2, 5, "A"), 16);
+	assert_int_equal(px(&b, 3 + 2 * 2, 4), 5);
+	assert_int_equal(px(&b, 3 + 2 * 2 + 1, 4 + 1), 5);
+	assert_int_equal(px(&b, 3 + 2 * 1, 4), 0);
+	{
+		int bits = 0;
+		for (int y = 0; y < 8; y++)
+			for (int x = 0; x < 8; x++)
+				bits += v_glyph_bit('A', x, y);
+		assert_int_equal(count(&b, 5), 4 * bits);
+	}
+	assert_int_equal(v_text_width("AB C", 3), 4 * 8 * 3);
+}
+
+static void text_past_the_edges_is_clipped(void **state)
+{
+	struct fb b;
+	(void)state;
+	fb_init(&b);
+	v_text(&b.f, -12, -3, 1, 4, "HI THERE");
+	v_text(&b.f, 30, 25, 2, 4, "WW");
+	count(&b, 4);                          /* guards intact */
+}
+
+static void lines_are_inclusive_and_clipped(void **state)
+{
+	struct fb b;
+	struct v_rect clip = { 10, 10, 5, 5 };
+	(void)state;
+	fb_init(&b);
+	v_line(&b.f, 2, 3, 12, 3, 1, NULL);
+	assert_int_equal(count(&b, 1), 11);
+	v_line(&b.f, 5, 5, 5, 9, 2, NULL);
+	assert_int_equal(count(&b, 2), 5);
+	v_line(&b.f, 0, 0, 6, 6, 3, NULL);
+	assert_int_equal(count(&b, 3), 7);
+	assert_int_equal(px(&b, 6, 6), 3);
+	/* far outside: only the part in the frame */
+	v_line(&b.f, -100000, 20, 100000, 20, 6, NULL);
+	assert_int_equal(count(&b, 6), W);
+	/* a clip rectangle: the diagonal through it gives its 5 pixels */
+	v_line(&b.f, 0, 0, 29, 29, 7, &clip);
+	assert_int_equal(count(&b, 7), 5);
+	for (int i = 10; i < 15; i++)
+		assert_int_equal(px(&b, i, i), 7);
+	/* wholly outside the clip: nothing */
+	v_line(&b.f, 0, 0, 5, 29, 8, &clip);
+	assert_int_equal(count(&b, 8), 0);
+	v_line(&b.f, -50, -50, -1, -1, 9, NULL);
+	assert_int_equal(count(&b, 9), 0);
+}
+
+static void a_triangle_covers_the_pixel_centres_inside(void **state)
+{
+	struct fb b;
+	(void)state;
+	fb_init(&b);
+	/* (0,0) (4,0) (0,4): centres (x+.5, y+.5) with x + y <= 3 */
+	v_tri(&b.f, 0, 0, 4, 0, 0, 4, 1, NULL);
+	assert_int_equal(count(&b, 1), 4 + 3 + 2 + 1);
+	/* either winding */
+	fb_init(&b);
+	v_tri(&b.f, 0, 0, 0, 4, 4, 0, 1, NULL);
+	assert_int_equal(count(&b, 1), 10);
+	/* degenerate: nothing */
+	v_tri(&b.f, 0, 0, 5, 5, 10, 10, 2, NULL);
+	assert_int_equal(count(&b, 2), 0);
+	/* huge, clipped to the frame: every pixel */
+	v_tri(&b.f, -1000, -1000, 3000, -1000, -1000, 3000, 3, NULL);
+	assert_int_equal(count(&b, 3), W * H);
+}
+
+static void numbers_are_padded_decimal(void **state)
+{
+	char buf[24];
+	(void)state;
+	assert_int_equal(v_num(buf, sizeof(buf), 1234, 6, '0'), 6);
+	assert_string_equal(buf, "001234");
+	v_num(buf, sizeof(buf), 0, 1, '0');
+	assert_string_equal(buf, "0");
+	v_num(buf, sizeof(buf), 7, 3, ' ');
+	assert_string_equal(buf, "  7");
+	v_num(buf, sizeof(buf), 18446744073709551615ull, 1, '0');
+	assert_string_equal(buf, "18446744073709551615");
+	assert_int_equal(v_num(buf, 4, 123456, 1, '0'), 3);   /* truncated, terminated */
+	assert_string_equal(buf, "123");
+}
+
+static void a_picture_draws_its_opaque_pixels_only(void **state)
+{
+	/* 2 x 3, column-major: column 0 = 1 2 3, column 1 = 4 5 6 */
+	uint8_t pix[6] = { 1, 2, 3, 4, 5, 6 }, op[6] = { 1, 0, 1, 1, 1, 0 };
+	struct tex_pic p = { "T", 2, 3, 0, 0, pix, op };
+	struct fb b;
+	(void)state;
+	fb_init(&b);
+	v_pic(&b.f, &p, 10, 20, 1);
+	assert_int_equal(px(&b, 10, 20), 1);
+	assert_int_equal(px(&b, 10, 21), 0);
+	assert_int_equal(px(&b, 10, 22), 3);
+	assert_int_equal(px(&b, 11, 20), 4);
+	assert_int_equal(px(&b, 11, 22), 0);
+	fb_init(&b);
+	v_pic(&b.f, &p, W - 2, H - 2, 2);       /* scale 2, half off the frame */
+	assert_int_equal(px(&b, W - 2, H - 2), 1);
+	assert_int_equal(px(&b, W - 1, H - 1), 1);
+	count(&b, 0);
+}
+
+static void remap_changes_every_pixel_of_the_rectangle(void **state)
+{
+	uint8_t map[256];
+	struct fb b;
+	(void)state;
+	for (int i = 0; i < 256; i++)
+		map[i] = (uint8_t)(i + 1);
+	fb_init(&b);
+	v_fill(&b.f, 0, 0, W, H, 10);
+	v_remap(&b.f, 5, 5, 10, 2, map);
+	v_remap(&b.f, 5, 5, 1, 1, map);
+	assert_int_equal(count(&b, 11), 10 * 2 - 1);
+	assert_int_equal(count(&b, 12), 1);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(fill_clips_to_the_frame),
+		cmocka_unit_test(a_glyph_is_its_art),
+		cmocka_unit_test(text_past_the_edges_is_clipped),
+		cmocka_unit_test(lines_are_inclusive_and_clipped),
+		cmocka_unit_test(a_triangle_covers_the_pixel_centres_inside),
+		cmocka_unit_test(numbers_are_padded_decimal),
+		cmocka_unit_test(a_picture_draws_its_opaque_pixels_only),
+		cmocka_unit_test(remap_changes_every_pixel_of_the_rectangle),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
