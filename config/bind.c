@@ -1,7 +1,8 @@
 /*
  * bind: the [keyboard] section of a bindings file maps each action to up to
- * BIND_MAX key names. Read with cini (config/cini.h); every problem names
- * file:line and the action it concerns keeps what it had.
+ * BIND_MAX key names; [device "ID"] sections do the same for one device.
+ * Read with cini (config/cini.h); every problem names file:line and the
+ * action it concerns keeps what it had.
  */
 #include "config/bind.h"
 
@@ -11,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "config/cini.h"
 #include "input/in.h"
@@ -36,6 +38,8 @@ static const struct {
 
 void bind_defaults(struct bind_table *b)
 {
+	b->ndev = 0;
+	memset(b->dev, 0, sizeof(b->dev));
 	for (int a = 0; a < ACT_COUNT; a++)
 		for (int i = 0; i < BIND_MAX; i++)
 			b->key[a][i] = -1;
@@ -51,6 +55,7 @@ void bind_defaults(struct bind_table *b)
 
 struct bind_ctx {
 	struct bind_table *b;
+	int (*cur)[BIND_MAX];            /* the section being read: [keyboard] or a device's */
 	const char *file;
 	cfg_err_fn fn;
 	void *user;
@@ -127,7 +132,126 @@ static void bind_entry(struct bind_ctx *x, int line, const char *action, const c
 		}
 		keys[n++] = code;
 	}
-	memcpy(x->b->key[a], keys, sizeof(keys));
+	memcpy(x->cur[a], keys, sizeof(keys));
+}
+
+static bool port_path(const char *p)
+{
+	size_t n = strspn(p, "0123456789");
+
+	if (n == 0 || p[n] != '-')
+		return false;
+	p += n + 1;
+	for (;;) {
+		n = strspn(p, "0123456789");
+		if (n == 0)
+			return false;
+		p += n;
+		if (*p == '\0')
+			return true;
+		if (*p != '.')
+			return false;
+		p++;
+	}
+}
+
+int bind_device_id(const char *id, char *out)
+{
+	size_t n = strlen(id);
+
+	if (strncasecmp(id, "usb-", 4) == 0) {
+		if (n >= BIND_ID_MAX || !port_path(id + 4))
+			return -EINVAL;
+		memcpy(out, "usb-", 4);
+		memcpy(out + 4, id + 4, n - 3);
+		return 0;
+	}
+	if (n != 9 || id[4] != ':')
+		return -EINVAL;
+	for (size_t i = 0; i < 9; i++) {
+		char c = id[i];
+
+		if (i == 4) {
+			out[i] = ':';
+			continue;
+		}
+		if (c >= 'A' && c <= 'F')
+			c = (char)(c - 'A' + 'a');
+		if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f')))
+			return -EINVAL;
+		out[i] = c;
+	}
+	out[9] = '\0';
+	return 0;
+}
+
+static struct bind_dev *find_id(struct bind_table *b, const char *id)
+{
+	for (int i = 0; i < b->ndev; i++)
+		if (strcmp(b->dev[i].id, id) == 0)
+			return &b->dev[i];
+	return NULL;
+}
+
+/* The section for normalised id, created with every action unbound. */
+static struct bind_dev *device_section(struct bind_table *b, const char *id)
+{
+	struct bind_dev *d = find_id(b, id);
+
+	if (d)
+		return d;
+	if (b->ndev == BIND_DEVICES)
+		return NULL;
+	d = &b->dev[b->ndev++];
+	snprintf(d->id, sizeof(d->id), "%s", id);
+	for (int a = 0; a < ACT_COUNT; a++)
+		for (int i = 0; i < BIND_MAX; i++)
+			d->key[a][i] = -1;
+	return d;
+}
+
+int bind_set_device(struct bind_table *b, const char *id, const int key[ACT_COUNT][BIND_MAX])
+{
+	char norm[BIND_ID_MAX];
+	struct bind_dev *d;
+
+	if (bind_device_id(id, norm) < 0)
+		return -EINVAL;
+	d = device_section(b, norm);
+	if (!d)
+		return -ENOSPC;
+	memcpy(d->key, key, sizeof(d->key));
+	return 0;
+}
+
+/* "device ID" or "device \"ID\"" (cini has trimmed the ends). */
+static void device_header(struct bind_ctx *x, int line, const char *section)
+{
+	char id[CINI_NAME_MAX], norm[BIND_ID_MAX];
+	const char *p = section + 6;
+	size_t n;
+	struct bind_dev *d;
+
+	x->section_ok = false;
+	p += strspn(p, " \t");
+	n = strlen(p);
+	if (n >= 2 && p[0] == '"' && p[n - 1] == '"') {
+		p++;
+		n -= 2;
+	}
+	memcpy(id, p, n);
+	id[n] = '\0';
+	if (bind_device_id(id, norm) < 0) {
+		bind_report(x, line, "bad device id '%s' (usb-PORT or VVVV:PPPP)", id);
+		return;
+	}
+	d = device_section(x->b, norm);
+	if (!d) {
+		bind_report(x, line, "too many device sections (at most %d)", BIND_DEVICES);
+		return;
+	}
+	x->cur = d->key;
+	x->section_ok = true;
 }
 
 static void bind_ev(void *user, const struct cini_ev *ev)
@@ -140,8 +264,13 @@ static void bind_ev(void *user, const struct cini_ev *ev)
 		break;
 	case CINI_SECTION:
 		x->section_ok = strcmp(ev->section, "keyboard") == 0;
-		if (!x->section_ok)
-			bind_report(x, ev->line, "unknown section [%s] (only [keyboard])",
+		x->cur = x->b->key;
+		if (strncmp(ev->section, "device", 6) == 0 &&
+		    (ev->section[6] == ' ' || ev->section[6] == '\t'))
+			device_header(x, ev->line, ev->section);
+		else if (!x->section_ok)
+			bind_report(x, ev->line,
+				    "unknown section [%s] (only [keyboard] and [device \"ID\"])",
 				    ev->section);
 		break;
 	case CINI_ENTRY:
@@ -156,7 +285,7 @@ static void bind_ev(void *user, const struct cini_ev *ev)
 int bind_load_text(struct bind_table *b, const char *text, size_t len, const char *name,
 		   cfg_err_fn fn, void *user)
 {
-	struct bind_ctx x = { .b = b, .file = name, .fn = fn, .user = user };
+	struct bind_ctx x = { .b = b, .cur = b->key, .file = name, .fn = fn, .user = user };
 
 	cini_parse(text, len, bind_ev, &x);
 	return x.rejected;
@@ -164,7 +293,7 @@ int bind_load_text(struct bind_table *b, const char *text, size_t len, const cha
 
 int bind_load(struct bind_table *b, const char *path, cfg_err_fn fn, void *user)
 {
-	struct bind_ctx x = { .b = b, .file = path, .fn = fn, .user = user };
+	struct bind_ctx x = { .b = b, .cur = b->key, .file = path, .fn = fn, .user = user };
 	char *text;
 	size_t len;
 	int ret;
@@ -193,6 +322,47 @@ int bind_lookup(const struct bind_table *b, int code, int *acts, int max)
 	for (int a = 0; a < ACT_COUNT && n < max; a++) {
 		for (int i = 0; i < BIND_MAX; i++) {
 			if (b->key[a][i] == code) {
+				acts[n++] = a;
+				break;
+			}
+		}
+	}
+	return n;
+}
+
+const struct bind_dev *bind_find_device(const struct bind_table *b, const struct in_ident *id)
+{
+	char want[BIND_ID_MAX];
+
+	if (!id)
+		return NULL;
+	if (id->port[0] && snprintf(want, sizeof(want), "usb-%s", id->port) < (int)sizeof(want)) {
+		for (int i = 0; i < b->ndev; i++)
+			if (strcmp(b->dev[i].id, want) == 0)
+				return &b->dev[i];
+	}
+	if (id->vid || id->pid) {
+		snprintf(want, sizeof(want), "%04x:%04x", id->vid, id->pid);
+		for (int i = 0; i < b->ndev; i++)
+			if (strcmp(b->dev[i].id, want) == 0)
+				return &b->dev[i];
+	}
+	return NULL;
+}
+
+int bind_lookup_dev(const struct bind_table *b, const struct in_ident *id, int code, int *acts,
+		    int max)
+{
+	const struct bind_dev *d = bind_find_device(b, id);
+	int n = 0;
+
+	if (!d)
+		return bind_lookup(b, code, acts, max);
+	if (code < 0)
+		return 0;
+	for (int a = 0; a < ACT_COUNT && n < max; a++) {
+		for (int i = 0; i < BIND_MAX; i++) {
+			if (d->key[a][i] == code) {
 				acts[n++] = a;
 				break;
 			}

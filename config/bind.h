@@ -6,22 +6,47 @@
  *   forward = up, w          # key names as in_key_from_name accepts
  *   fire = leftctrl, space
  *   use =                    # empty: the action has no key
+ *   [device "usb-1-1.2"]     # one device, by USB port path
+ *   fire = BTN_TRIGGER_HAPPY1
+ *   [device "0079:0006"]     # every device with this VID:PID (hex)
+ *   start = BTN_TRIGGER_HAPPY10
  * An action may name up to BIND_MAX keys; a line replaces that action's
  * whole list. A bad key name or action, too many keys, another section or
  * a malformed line gives file:line and a reason through the callback, and
  * the action concerned keeps the binding it had. One key may trigger
  * several actions.
+ *
+ * Device sections: a device with a section of its own uses that section's
+ * bindings and not [keyboard]'s; its port path section wins over its
+ * VID:PID section (two identical encoders on two ports keep their own
+ * bindings, whichever enumerates first). A device section starts with
+ * every action unbound the first time it appears; later lines and files
+ * change it action by action like [keyboard]. Devices without a section
+ * (and every device when the app calls plain bind_lookup) use [keyboard].
+ * Ids are "usb-" and a USB port path (bus-port[.port...], as sysfs names
+ * it and `arcaded devices` prints it) or VID:PID as 4 hex digits each;
+ * the quotes are optional. At most BIND_DEVICES device sections.
  */
 #ifndef ARCADED_CONFIG_BIND_H
 #define ARCADED_CONFIG_BIND_H
 
 #include "config/cfg.h"
 #include "input/act.h"
+#include "input/in.h"
 
 #define BIND_MAX 4
+#define BIND_DEVICES 16
+#define BIND_ID_MAX 40
+
+struct bind_dev {
+	char id[BIND_ID_MAX];            /* "usb-1-1.2" or "0079:0006" (lower-case hex) */
+	int key[ACT_COUNT][BIND_MAX];
+};
 
 struct bind_table {
-	int key[ACT_COUNT][BIND_MAX];    /* key codes, -1 for unused slots */
+	int key[ACT_COUNT][BIND_MAX];    /* [keyboard]: key codes, -1 for unused slots */
+	int ndev;
+	struct bind_dev dev[BIND_DEVICES];
 };
 
 /* Built-in defaults: forward up/w, back down/s, turn left/right arrows,
@@ -40,7 +65,25 @@ int bind_load_text(struct bind_table *b, const char *text, size_t len, const cha
  * reported through fn, other errors are, with line 0). */
 int bind_load(struct bind_table *b, const char *path, cfg_err_fn fn, void *user);
 
-/* Stores in acts up to max actions bound to key code; returns how many. */
+/* Stores in acts up to max actions bound to key code in [keyboard];
+ * returns how many. */
 int bind_lookup(const struct bind_table *b, int code, int *acts, int max);
+
+/* The section for device id (its port path first, then its VID:PID), or
+ * NULL when it has none (it uses [keyboard]). id may be NULL. */
+const struct bind_dev *bind_find_device(const struct bind_table *b, const struct in_ident *id);
+
+/* bind_lookup for a control of device id: its own section's bindings if it
+ * has one, else [keyboard]'s. */
+int bind_lookup_dev(const struct bind_table *b, const struct in_ident *id, int code, int *acts,
+		    int max);
+
+/* Normalises a device section id ("USB-1-1.2", "0079:0006") into out
+ * (BIND_ID_MAX bytes). 0, or -EINVAL when it is neither form. */
+int bind_device_id(const char *id, char *out);
+
+/* Sets device section id (normalised as above) to key, replacing the
+ * whole section. 0, -EINVAL (bad id) or -ENOSPC (BIND_DEVICES sections). */
+int bind_set_device(struct bind_table *b, const char *id, const int key[ACT_COUNT][BIND_MAX]);
 
 #endif

@@ -107,7 +107,8 @@ static void test_errors_name_file_line_and_keep_the_binding(void **state)
 				   "b.ini:4: coin: too many keys (at most 4)\n"
 				   "b.ini:5: use: empty key name in list\n"
 				   "b.ini:6: line is neither [section] nor key = value\n"
-				   "b.ini:7: unknown section [joystick] (only [keyboard])\n";
+				   "b.ini:7: unknown section [joystick] (only [keyboard] and "
+				   "[device \"ID\"])\n";
 	struct bind_table b;
 	struct errs e;
 
@@ -204,12 +205,14 @@ static void test_shipped_bindings_ini_equals_defaults(void **state)
 	for (int a = 0; a < ACT_COUNT; a++)
 		for (int i = 0; i < BIND_MAX; i++)
 			b.key[a][i] = -1;
+	b.ndev = 0;
 	memset(&e, 0, sizeof(e));
 	n = bind_load(&b, "config/bindings.ini", on_err, &e);
 	if (n == -ENOENT)
 		fail_msg("config/bindings.ini: not found (run from the repository root)");
 	assert_int_equal(n, 0);
-	assert_memory_equal(&b, &d, sizeof(b));
+	assert_memory_equal(b.key, d.key, sizeof(b.key));
+	assert_int_equal(b.ndev, 0);
 }
 
 static void test_random_bytes_never_crash(void **state)
@@ -241,6 +244,150 @@ static void test_random_bytes_never_crash(void **state)
 	}
 }
 
+static struct in_ident ident(const char *port, uint16_t vid, uint16_t pid)
+{
+	struct in_ident id;
+
+	memset(&id, 0, sizeof(id));
+	snprintf(id.port, sizeof(id.port), "%s", port);
+	id.vid = vid;
+	id.pid = pid;
+	return id;
+}
+
+/* The one action code triggers on device id, or -1 for none. */
+static int act_of(const struct bind_table *b, const struct in_ident *id, int code)
+{
+	int acts[ACT_COUNT];
+	int n = bind_lookup_dev(b, id, code, acts, ACT_COUNT);
+
+	assert_true(n <= 1);
+	return n ? acts[0] : -1;
+}
+
+static void test_device_sections_bind_by_port_then_vid_pid(void **state)
+{
+	static const char in[] = "[device \"usb-1-1.2\"]\n"
+				 "fire = BTN_TRIGGER_HAPPY1\n"
+				 "[device USB-1-1.3]\n"
+				 "fire = BTN_TRIGGER_HAPPY2\n"
+				 "[device \"0079:0006\"]\n"
+				 "fire = BTN_TRIGGER_HAPPY3\n"
+				 "start = BTN_TRIGGER_HAPPY10\n";
+	struct in_ident p2 = ident("1-1.2", 0x0079, 0x0006), p3 = ident("1-1.3", 0x0079, 0x0006);
+	struct in_ident p4 = ident("1-4", 0x0079, 0x0006), kb = ident("1-5", 0x046d, 0xc31c);
+	struct bind_table b;
+	struct errs e;
+
+	(void)state;
+	bind_defaults(&b);
+	assert_int_equal(load(&b, in, &e), 0);
+	assert_int_equal(b.ndev, 3);
+	assert_string_equal(b.dev[1].id, "usb-1-1.3");
+	/* two identical encoders keep their own bindings by port */
+	assert_int_equal(act_of(&b, &p2, BTN_TRIGGER_HAPPY1), ACT_FIRE);
+	assert_int_equal(act_of(&b, &p2, BTN_TRIGGER_HAPPY2), -1);
+	assert_int_equal(act_of(&b, &p3, BTN_TRIGGER_HAPPY2), ACT_FIRE);
+	/* a third one on another port falls back to its VID:PID */
+	assert_int_equal(act_of(&b, &p4, BTN_TRIGGER_HAPPY3), ACT_FIRE);
+	assert_int_equal(act_of(&b, &p4, BTN_TRIGGER_HAPPY10), ACT_START);
+	/* a device section starts empty: [keyboard] does not apply to it */
+	assert_int_equal(act_of(&b, &p2, KEY_LEFTCTRL), -1);
+	assert_int_equal(act_of(&b, &p2, BTN_TRIGGER_HAPPY10), -1);
+	/* no section: [keyboard], as plain bind_lookup for every device */
+	assert_int_equal(act_of(&b, &kb, KEY_LEFTCTRL), ACT_FIRE);
+	assert_int_equal(act_of(&b, NULL, KEY_5), ACT_COIN);
+	assert_null(bind_find_device(&b, &kb));
+	assert_ptr_equal(bind_find_device(&b, &p3), &b.dev[1]);
+	{
+		int acts[ACT_COUNT];
+
+		assert_int_equal(bind_lookup(&b, BTN_TRIGGER_HAPPY1, acts, ACT_COUNT), 0);
+	}
+}
+
+static void test_device_sections_layer_action_by_action(void **state)
+{
+	struct in_ident p = ident("", 0x16c0, 0x05e1);
+	struct bind_table b;
+	struct errs e;
+
+	(void)state;
+	bind_defaults(&b);
+	assert_int_equal(load(&b, "[device 16C0:05E1]\nfire = BTN_TRIGGER_HAPPY1\n"
+				  "use = BTN_TRIGGER_HAPPY2\n", &e), 0);
+	assert_int_equal(load(&b, "[device \"16c0:05e1\"]\nuse = BTN_TRIGGER_HAPPY3\n", &e), 0);
+	assert_int_equal(b.ndev, 1);
+	assert_string_equal(b.dev[0].id, "16c0:05e1");
+	assert_int_equal(act_of(&b, &p, BTN_TRIGGER_HAPPY1), ACT_FIRE);
+	assert_int_equal(act_of(&b, &p, BTN_TRIGGER_HAPPY2), -1);
+	assert_int_equal(act_of(&b, &p, BTN_TRIGGER_HAPPY3), ACT_USE);
+}
+
+static void test_device_section_errors(void **state)
+{
+	static const char in[] = "[device \"usb-1-x\"]\n"      /* 1 */
+				 "fire = BTN_TRIGGER_HAPPY1\n"    /* 2: ignored */
+				 "[device \"\"]\n"                /* 3 */
+				 "[device 079:0006]\n"            /* 4 */
+				 "[devices]\n"                    /* 5 */
+				 "[device \"0079:0006\"]\n"       /* 6 */
+				 "fire = nosuchkey\n";            /* 7 */
+	static const char want[] =
+		"b.ini:1: bad device id 'usb-1-x' (usb-PORT or VVVV:PPPP)\n"
+		"b.ini:3: bad device id '' (usb-PORT or VVVV:PPPP)\n"
+		"b.ini:4: bad device id '079:0006' (usb-PORT or VVVV:PPPP)\n"
+		"b.ini:5: unknown section [devices] (only [keyboard] and [device \"ID\"])\n"
+		"b.ini:7: fire: unknown key name 'nosuchkey'\n";
+	char many[2048];
+	size_t n = 0;
+	struct bind_table b;
+	struct errs e;
+
+	(void)state;
+	bind_defaults(&b);
+	assert_int_equal(load(&b, in, &e), 5);
+	assert_string_equal(e.text, want);
+	assert_int_equal(b.ndev, 1);
+	for (int i = 0; i <= BIND_DEVICES; i++)
+		n += (size_t)snprintf(many + n, sizeof(many) - n, "[device usb-1-%d]\nfire = x\n",
+				      i + 1);
+	bind_defaults(&b);
+	assert_int_equal(load(&b, many, &e), 1);
+	assert_string_equal(e.text, "b.ini:33: too many device sections (at most 16)\n");
+	assert_int_equal(b.ndev, BIND_DEVICES);
+}
+
+static void test_set_device_replaces_a_section(void **state)
+{
+	int key[ACT_COUNT][BIND_MAX];
+	struct in_ident p = ident("2-1", 0xd209, 0x0410);
+	struct bind_table b;
+	char id[BIND_ID_MAX];
+
+	(void)state;
+	bind_defaults(&b);
+	memset(key, 0xff, sizeof(key));
+	key[ACT_START][0] = KEY_1;
+	assert_int_equal(bind_set_device(&b, "D209:0410", key), 0);
+	assert_int_equal(act_of(&b, &p, KEY_1), ACT_START);
+	key[ACT_START][0] = KEY_2;
+	assert_int_equal(bind_set_device(&b, "d209:0410", key), 0);
+	assert_int_equal(b.ndev, 1);
+	assert_int_equal(act_of(&b, &p, KEY_1), -1);
+	assert_int_equal(act_of(&b, &p, KEY_2), ACT_START);
+	assert_int_equal(bind_set_device(&b, "usb-", key), -EINVAL);
+	assert_int_equal(bind_set_device(&b, "usb-1-2.", key), -EINVAL);
+	for (int i = 1; i < BIND_DEVICES; i++) {
+		snprintf(id, sizeof(id), "usb-9-%d", i);
+		assert_int_equal(bind_set_device(&b, id, key), 0);
+	}
+	assert_int_equal(bind_set_device(&b, "usb-9-99", key), -ENOSPC);
+	assert_int_equal(bind_device_id("usb-1-1.2.3", id), 0);
+	assert_string_equal(id, "usb-1-1.2.3");
+	assert_int_equal(bind_device_id("0079:000G", id), -EINVAL);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -252,6 +399,10 @@ int main(void)
 		cmocka_unit_test(test_load_file_missing_silent_present_applied),
 		cmocka_unit_test(test_shipped_bindings_ini_equals_defaults),
 		cmocka_unit_test(test_random_bytes_never_crash),
+		cmocka_unit_test(test_device_sections_bind_by_port_then_vid_pid),
+		cmocka_unit_test(test_device_sections_layer_action_by_action),
+		cmocka_unit_test(test_device_section_errors),
+		cmocka_unit_test(test_set_device_replaces_a_section),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
