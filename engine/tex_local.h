@@ -17,7 +17,7 @@
 
 /* Limits that keep a hostile WAD from asking for unbounded memory: a side
  * of a picture, and the bytes of all pictures of one set together (px plus
- * opaque masks). Freedoom needs about 20 MB. Past them a picture becomes
+ * opaque masks). Freedoom 2 needs about 30 MB. Past them a picture becomes
  * the fallback, counted in missing. */
 #define TEX_MAX_SIDE 4096
 #define TEX_BUDGET ((uint64_t)256 << 20)
