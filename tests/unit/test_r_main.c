@@ -17,10 +17,16 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include <stdio.h>
+
 #include "engine/map.h"
+#include "engine/map_wad.h"
 #include "engine/pal.h"
 #include "engine/r_local.h"
 #include "engine/r_main.h"
+#include "engine/tex.h"
+#include "engine/th.h"
+#include "engine/wad.h"
 #include "tests/unit/r_testmap.h"
 
 static struct pal pal;
@@ -711,6 +717,226 @@ static void builtin_level_500_views_write_every_pixel_once(void **state)
 	map_free(m);
 }
 
+/* ---- real content: the project's texture set, Freedoom ---- */
+
+/* A room textured by name from tex_builtin: AR_BRICK walls, AR_FLOOR floor,
+ * the sky (F_SKY1) as ceiling, light 255. Facing east from the centre
+ * (eye z 41): the east wall's column 160 at row 100 shows AR_BRICK's texel
+ * (column floor(128.4) mod 64 = 0, row floor(87 - (120 - 100.5) * 0.8) =
+ * 71 mod 64 = 7) through colormap 0 (north-south wall: light 239, base 4,
+ * faded by 10); the floor pixel (200, 200) shows AR_FLOOR's texel at world
+ * (81.49, -20.63): row 20, column 17 (test_r_plane's geometry); the top row
+ * is the sky: SKY1's texel of column ((0 + xtoang) >> 22) mod 256 and row
+ * 4 (test_r_plane), unlit. */
+static void builtin_texture_set_draws_its_named_textures(void **state)
+{
+	struct tex_set *t;
+	struct tmap m;
+	struct shot s;
+	const struct tex_pic *brick, *sky;
+	int tb, tf, ts;
+	(void)state;
+	assert_int_equal(tex_builtin(&t), 0);
+	tb = tex_find(t, "AR_BRICK");
+	tf = tex_find_flat(t, "AR_FLOOR");
+	ts = tex_find(t, "SKY1");
+	assert_true(tb > 0 && tf >= 0 && ts > 0 && t->sky_flat >= 0);
+	brick = &t->textures[tb];
+	sky = &t->textures[ts];
+	assert_int_equal(brick->w, 64);
+	t_room(&m, 255, 1);
+	for (int i = 0; i < 4; i++)
+		m.sd[i].mid_tex = (uint16_t)tb;
+	m.sec[0].floor_tex = (uint16_t)tf;
+	m.sec[0].ceil_tex = (uint16_t)t->sky_flat;
+	shot_open(&s, 320, 240);
+	{
+		struct r_view v = { 0, 0, U(41), 0, 0 };
+
+		memset(s.f.px, 0xee, 320 * 240);
+		r_render(s.r, &m.m, t, &v, NULL, 0, &s.f);
+	}
+	r_get_stats(s.r, &s.st);
+	assert_int_equal(s.st.pixels_written, 320 * 240);
+	assert_int_equal(s.st.missing, 0);
+	assert_int_equal(px(&s, 160, 100), brick->px[0 * brick->h + 7]);
+	assert_int_equal(px(&s, 200, 200), t->flats[tf].px[20 * 64 + 17]);
+	/* column 100's ray is 10.6 degrees left: sky column 30.3 */
+	assert_int_equal(px(&s, 100, 0), sky->px[30 * sky->h + 4]);
+	shot_close(&s);
+	tex_free(t);
+}
+
+struct fwad {
+	uint8_t *data;
+	struct wad *w;
+	struct tex_set *t;
+};
+
+/* Loads a WAD file with its textures; 0, or -1 when the file is absent. */
+static int fwad_open(const char *path, struct fwad *f)
+{
+	FILE *fp = fopen(path, "rbe");
+	char err[256] = "";
+	long n;
+
+	memset(f, 0, sizeof(*f));
+	if (!fp)
+		return -1;
+	assert_int_equal(fseek(fp, 0, SEEK_END), 0);
+	n = ftell(fp);
+	assert_true(n > 0);
+	rewind(fp);
+	f->data = malloc((size_t)n);
+	assert_non_null(f->data);
+	assert_int_equal(fread(f->data, 1, (size_t)n, fp), (size_t)n);
+	fclose(fp);
+	assert_int_equal(wad_new(&f->w), 0);
+	assert_int_equal(wad_add(f->w, f->data, (size_t)n, path, err, sizeof(err)), 0);
+	assert_int_equal(tex_load_wad(f->w, &f->t, err, sizeof(err)), 0);
+	return 0;
+}
+
+static void fwad_close(struct fwad *f)
+{
+	tex_free(f->t);
+	wad_free(f->w);
+	free(f->data);
+}
+
+/* The map's things as sprites, as the game places them (feet on the floor,
+ * hanging ones under the ceiling); players and markers left out. */
+static int map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out)
+{
+	int n = 0;
+
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		const struct map_thing *th = &m->things[i];
+		const struct th_info *in = th_find(th->type);
+		const struct map_sector *sec;
+		int sp;
+
+		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
+			continue;
+		sp = tex_find_sprite(t, in->sprite);
+		if (sp < 0)
+			continue;
+		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
+		out[n].x = th->x;
+		out[n].y = th->y;
+		out[n].z = (in->flags & TH_HANGING) ? sec->ceil_h - in->height * FX_ONE : sec->floor_h;
+		out[n].angle = th->angle;
+		out[n].sprite = (uint16_t)sp;
+		out[n].frame = (uint16_t)(in->frame - 'A');
+		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
+		n++;
+	}
+	return n;
+}
+
+/* Every map of a Freedoom WAD, from its player 1 start and from 50 seeded
+ * views (random points of the map's box, the eye 41 above the floor there,
+ * random angle and shear; some outside every sector), with the map's
+ * things as sprites, at 320x200 (run under ASan/UBSan by the sanitizer
+ * build): every pixel written once, nothing degraded, no texture of the
+ * set missing. From the start (inside the map) no pixel is left black;
+ * a second context gives the same bytes. Returns the number of maps. */
+static int freedoom_views(const char *path)
+{
+	struct fwad f;
+	char names[64][9];
+	struct shot s, s2;
+	uint32_t seed = 4242;
+	int nmaps;
+
+	if (fwad_open(path, &f) < 0)
+		return -1;
+	nmaps = map_list_wad(f.w, names, 64);
+	assert_true(nmaps > 0 && nmaps <= 64);
+	shot_open(&s, 320, 200);
+	shot_open(&s2, 320, 200);
+	for (int i = 0; i < nmaps; i++) {
+		struct map *m;
+		struct r_sprite *spr;
+		char err[256] = "";
+		fx_t x0 = FX_MAX, x1 = FX_MIN, y0 = FX_MAX, y1 = FX_MIN;
+		struct r_view v = { 0 };
+		int nspr, start = 0;
+
+		assert_int_equal(map_load_wad(f.w, f.t, names[i], &m, err, sizeof(err)), 0);
+		spr = calloc(m->num_things + 1, sizeof(*spr));
+		assert_non_null(spr);
+		nspr = map_sprites(m, f.t, spr);
+		for (uint32_t k = 0; k < m->num_vertices; k++) {
+			const struct map_vertex *p = &m->vertices[k];
+
+			x0 = p->x < x0 ? p->x : x0;
+			x1 = p->x > x1 ? p->x : x1;
+			y0 = p->y < y0 ? p->y : y0;
+			y1 = p->y > y1 ? p->y : y1;
+		}
+		for (uint32_t k = 0; k < m->num_things; k++)
+			if (m->things[k].type == 1) {
+				v.x = m->things[k].x;
+				v.y = m->things[k].y;
+				v.angle = m->things[k].angle;
+				start = 1;
+			}
+		assert_true(start);
+		for (int n = 0; n <= 50; n++) {
+			const struct map_sector *sec;
+
+			if (n > 0) {
+				v.x = x0 + (fx_t)((int64_t)lcg(&seed) * ((int64_t)x1 - x0) >> 24);
+				v.y = y0 + (fx_t)((int64_t)lcg(&seed) * ((int64_t)y1 - y0) >> 24);
+				v.angle = lcg(&seed) * 2654435761u;
+				v.shear = (int32_t)(lcg(&seed) % 121) - 60;
+			}
+			sec = &m->sectors[map_point_sector(m, v.x, v.y)];
+			v.z = sec->floor_h + 41 * FX_ONE;
+			memset(s.f.px, 0x11, 320 * 200);
+			r_render(s.r, m, f.t, &v, spr, nspr, &s.f);
+			r_get_stats(s.r, &s.st);
+			if (s.st.pixels_written != 320 * 200 || s.st.degraded || s.st.missing)
+				fail_msg("%s %s view %d: written %u degraded %u missing %u", path,
+					 names[i], n, s.st.pixels_written, s.st.degraded,
+					 s.st.missing);
+			if (n == 0) {
+				if (s.st.pixels_empty != 0)
+					fail_msg("%s %s start: %u empty pixels", path, names[i],
+						 s.st.pixels_empty);
+				memset(s2.f.px, 0x99, 320 * 200);
+				r_render(s2.r, m, f.t, &v, spr, nspr, &s2.f);
+				assert_memory_equal(s.f.px, s2.f.px, 320 * 200);
+			}
+		}
+		free(spr);
+		map_free(m);
+	}
+	shot_close(&s);
+	shot_close(&s2);
+	fwad_close(&f);
+	return nmaps;
+}
+
+static void freedoom1_maps_render_whole_from_51_views_each(void **state)
+{
+	int n = freedoom_views("/usr/share/games/doom/freedoom1.wad");
+	(void)state;
+	if (n < 0)
+		skip();
+	assert_int_equal(n, 36);
+}
+
+static void freedoom2_maps_render_whole_from_51_views_each(void **state)
+{
+	int n = freedoom_views("/usr/share/games/doom/freedoom2.wad");
+	(void)state;
+	if (n < 0)
+		skip();
+	assert_int_equal(n, 32);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -733,6 +959,9 @@ int main(void)
 		cmocka_unit_test(l_shaped_room_has_no_holes),
 		cmocka_unit_test(same_view_gives_identical_bytes),
 		cmocka_unit_test(builtin_level_500_views_write_every_pixel_once),
+		cmocka_unit_test(builtin_texture_set_draws_its_named_textures),
+		cmocka_unit_test(freedoom1_maps_render_whole_from_51_views_each),
+		cmocka_unit_test(freedoom2_maps_render_whole_from_51_views_each),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
