@@ -78,18 +78,11 @@ static void bind_report(struct bind_ctx *x, int line, const char *fmt, ...)
 	x->fn(x->user, x->file, line, msg);
 }
 
-/* Parses "name, name, ..." into keys (BIND_MAX slots, -1 filled); a name
- * given twice counts once. An empty value unbinds the action. */
-static void bind_entry(struct bind_ctx *x, int line, const char *action, const char *value)
+int bind_parse_keys(const char *value, int keys[BIND_MAX], char *why, size_t whylen)
 {
-	int keys[BIND_MAX], n = 0;
-	int a = act_from_name(action);
 	const char *p = value;
+	int n = 0;
 
-	if (a < 0) {
-		bind_report(x, line, "unknown action '%s'", action);
-		return;
-	}
 	for (int i = 0; i < BIND_MAX; i++)
 		keys[i] = -1;
 	while (*p) {
@@ -108,29 +101,47 @@ static void bind_entry(struct bind_ctx *x, int line, const char *action, const c
 		while (len && (b[len - 1] == ' ' || b[len - 1] == '\t'))
 			len--;
 		if (len == 0) {
-			bind_report(x, line, "%s: empty key name in list", action);
-			return;
+			snprintf(why, whylen, "empty key name in list");
+			return -EINVAL;
 		}
 		if (len >= sizeof(name)) {
-			bind_report(x, line, "%s: unknown key name '%.*s...'", action, 40, b);
-			return;
+			snprintf(why, whylen, "unknown key name '%.*s...'", 40, b);
+			return -EINVAL;
 		}
 		memcpy(name, b, len);
 		name[len] = '\0';
 		code = in_key_from_name(name);
 		if (code < 0) {
-			bind_report(x, line, "%s: unknown key name '%s'", action, name);
-			return;
+			snprintf(why, whylen, "unknown key name '%s'", name);
+			return -EINVAL;
 		}
 		for (int i = 0; i < n; i++)
 			dup |= keys[i] == code;
 		if (dup)
 			continue;
 		if (n == BIND_MAX) {
-			bind_report(x, line, "%s: too many keys (at most %d)", action, BIND_MAX);
-			return;
+			snprintf(why, whylen, "too many keys (at most %d)", BIND_MAX);
+			return -EINVAL;
 		}
 		keys[n++] = code;
+	}
+	return 0;
+}
+
+/* "action = name, name, ...": an empty value unbinds the action. */
+static void bind_entry(struct bind_ctx *x, int line, const char *action, const char *value)
+{
+	int keys[BIND_MAX];
+	int a = act_from_name(action);
+	char why[128];
+
+	if (a < 0) {
+		bind_report(x, line, "unknown action '%s'", action);
+		return;
+	}
+	if (bind_parse_keys(value, keys, why, sizeof(why)) < 0) {
+		bind_report(x, line, "%s: %s", action, why);
+		return;
 	}
 	memcpy(x->cur[a], keys, sizeof(keys));
 }

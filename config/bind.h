@@ -78,6 +78,12 @@ const struct bind_dev *bind_find_device(const struct bind_table *b, const struct
 int bind_lookup_dev(const struct bind_table *b, const struct in_ident *id, int code, int *acts,
 		    int max);
 
+/* Parses a list of key names ("up, w"; empty: none) into keys (BIND_MAX
+ * slots, -1 filled; a name given twice counts once). 0, or -EINVAL with the
+ * reason in why ("unknown key name 'x'", "empty key name in list", "too
+ * many keys (at most 4)"). */
+int bind_parse_keys(const char *value, int keys[BIND_MAX], char *why, size_t whylen);
+
 /* Normalises a device section id ("USB-1-1.2", "0079:0006") into out
  * (BIND_ID_MAX bytes). 0, or -EINVAL when it is neither form. */
 int bind_device_id(const char *id, char *out);

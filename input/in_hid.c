@@ -26,8 +26,12 @@
 #define HID_SYSFS "/sys"
 #define HID_MAX_READS 256        /* reports per read call: bounds the work of a tick */
 
+#define HID_MAGIC 0x68696472u       /* "hidr": in_hid_configure checks its device */
+
 struct in_dev {
+	uint32_t magic;
 	hid_device *h;
+	struct hidr_opts opts;
 	struct hidd_desc *desc;
 	struct hidr *dec;
 	struct in_event *q;          /* the events of the last report not yet delivered */
@@ -181,16 +185,12 @@ bad:
 	return -EINVAL;
 }
 
-int in_hid_parse_spec(const char *s, struct in_hid_spec *out, char *why, size_t whylen)
+/* Applies the terms of s (NULL: none) to out. */
+static int apply_terms(const char *s, struct in_hid_spec *out, char *why, size_t whylen)
 {
 	char buf[256];
 	char *p, *save = NULL;
 
-	if (whylen)
-		why[0] = '\0';
-	memset(out, 0, sizeof(*out));
-	out->vid = out->pid = out->iface = -1;
-	hidr_default_opts(&out->opts);
 	if (!s)
 		return 0;
 	if (strncmp(s, "hid", 3) == 0 && (s[3] == '\0' || s[3] == ':'))
@@ -220,6 +220,16 @@ int in_hid_parse_spec(const char *s, struct in_hid_spec *out, char *why, size_t 
 		return -EINVAL;
 	}
 	return 0;
+}
+
+int in_hid_parse_spec(const char *s, struct in_hid_spec *out, char *why, size_t whylen)
+{
+	if (whylen)
+		why[0] = '\0';
+	memset(out, 0, sizeof(*out));
+	out->vid = out->pid = out->iface = -1;
+	hidr_default_opts(&out->opts);
+	return apply_terms(s, out, why, whylen);
 }
 
 int in_hid_spec_names_device(const struct in_hid_spec *s)
@@ -498,6 +508,7 @@ static int open_one(struct in_dev *d, const struct in_hid_info *i, const struct 
 		rc = -ENODEV;
 		goto fail;
 	}
+	d->opts = s->opts;
 	rc = hidr_new(d->desc, &s->opts, &d->dec);
 	if (rc < 0) {
 		say(why, whylen, "%s: decoder: %s", i->node, strerror(-rc));
@@ -545,6 +556,7 @@ static int hid_open_dev(const char *path, struct in_dev **out, char *why, size_t
 	d = calloc(1, sizeof(*d));
 	if (!d)
 		return -ENOMEM;
+	d->magic = HID_MAGIC;
 	if (hid_users++ == 0 && hid_init() < 0) {
 		say(why, whylen, "hidapi: initialisation failed");
 		rc = -EIO;
@@ -585,6 +597,49 @@ static int hid_open_dev(const char *path, struct in_dev **out, char *why, size_t
 fail:
 	hid_close_dev(d);
 	return rc == -ENOMEM ? rc : -ENODEV;
+}
+
+int in_hid_configure(struct in_dev *d, const char *terms, char *why, size_t whylen)
+{
+	struct in_hid_spec s;
+	struct hidr *dec;
+	struct in_event *q;
+	int rc;
+
+	if (whylen)
+		why[0] = '\0';
+	if (!d || d->magic != HID_MAGIC) {
+		say(why, whylen, "not a HID device");
+		return -EINVAL;
+	}
+	memset(&s, 0, sizeof(s));
+	s.vid = s.pid = s.iface = -1;
+	s.opts = d->opts;
+	rc = apply_terms(terms, &s, why, whylen);
+	if (rc < 0)
+		return rc;
+	if (in_hid_spec_names_device(&s)) {
+		say(why, whylen, "'%s' names a device: only decoder options can be changed", terms);
+		return -EINVAL;
+	}
+	rc = hidr_new(d->desc, &s.opts, &dec);
+	if (rc < 0) {
+		say(why, whylen, "decoder options refused");
+		return rc;
+	}
+	q = calloc((size_t)hidr_max_events(dec), sizeof(*q));
+	if (!q) {
+		hidr_free(dec);
+		return -ENOMEM;
+	}
+	hidr_free(d->dec);
+	free(d->q);
+	d->dec = dec;
+	d->q = q;
+	d->qcap = hidr_max_events(dec);
+	d->qhead = d->qn = 0;
+	d->opts = s.opts;
+	return 0;
 }
 
 static int hid_fd(struct in_dev *d)

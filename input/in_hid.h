@@ -61,6 +61,15 @@ int in_hid_parse_spec(const char *s, struct in_hid_spec *out, char *why, size_t 
 /* Whether out names a device (any term but the decoder options). */
 int in_hid_spec_names_device(const struct in_hid_spec *s);
 
+/* Rebuilds the decoder of d (opened by in_hid) with the decoder options in
+ * terms (split, deadzone, press, release, p2_button, p2_x, p2_y, as in a
+ * spec; device terms are refused) on top of those it was opened with: how
+ * a profile's "hid =" options (config/prof.h) are applied once the device
+ * is known. The decoder starts over with every control released and
+ * undelivered events are dropped: call it right after open. 0, -EINVAL
+ * with the reason in why, or -ENOMEM (d keeps its old decoder). */
+int in_hid_configure(struct in_dev *d, const char *terms, char *why, size_t whylen);
+
 /* USB port path of hidraw node ("/dev/hidraw3" or "hidraw3") under sysfs
  * root sysroot ("/sys"): 0 with port "" when the device is not on USB, or
  * -errno when the node has no sysfs entry. */

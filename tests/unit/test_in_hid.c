@@ -228,6 +228,8 @@ static void test_open_matching_nothing_says_why(void **state)
 	assert_int_equal(in_hid.open("hid:bogus", &d, why, sizeof(why)), -EINVAL);
 	assert_string_equal(why, "bad term 'bogus' in HID device spec");
 	in_hid.close(NULL);
+	assert_int_equal(in_hid_configure(NULL, "split=none", why, sizeof(why)), -EINVAL);
+	assert_string_equal(why, "not a HID device");
 }
 
 static void test_list_gives_hidraw_nodes(void **state)
@@ -330,6 +332,8 @@ static void test_uhid_device_reports_buttons_and_unplug(void **state)
 	assert_int_equal(id.pid, 0x7e57);
 	assert_string_equal(id.port, "");
 	assert_int_equal(in_hid.fd(d), -1);
+	assert_int_equal(in_hid_configure(d, "port=1-1", why, sizeof(why)), -EINVAL);
+	assert_int_equal(in_hid_configure(d, "split=none, deadzone=300", why, sizeof(why)), 0);
 	t0 = in_now_ns();
 	assert_int_equal(uhid_input(fd, press, sizeof(press)), 0);
 	t = wait_key(d, BTN_TRIGGER_HAPPY1, 1);
