@@ -154,6 +154,17 @@ static void menu_settings(struct sim *s, uint8_t pressed, uint8_t nav)
 			menu_back(m);
 		return;
 	}
+	if (m->cursor == MENU_S_DEFAULTS) {
+		if (pressed & SIM_BT_FIRE) {
+			s->set.coins_per_credit = 1;
+			s->set.freeplay = 0;
+			s->set.difficulty = MENU_DEFAULT_DIFFICULTY;
+			s->set.lives = G_LIVES_DEFAULT;
+			m->res = 0;
+			s->set_gen++;
+		}
+		return;
+	}
 	if (nav & MENU_NAV_LEFT)
 		menu_change(s, -1);
 	else if ((nav & MENU_NAV_RIGHT) || (pressed & SIM_BT_FIRE))

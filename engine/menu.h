@@ -19,7 +19,8 @@
  *   INPUT     input test: each control's state as the game receives it
  *   DISPLAY   display test: colour bars, convergence grid, orientation
  *             (fire steps through them)
- *   SETTINGS  difficulty, lives, coins per credit, free play, render size
+ *   SETTINGS  difficulty, lives, coins per credit, free play, render size,
+ *             factory defaults
  *   BOOKS     bookkeeping: coins, plays, play time, average, uptime
  *   CONFIRM   reset of the high scores or the bookkeeping: NO / YES
  */
@@ -41,7 +42,11 @@ enum menu_item { MENU_I_INPUT, MENU_I_DISPLAY, MENU_I_SETTINGS, MENU_I_BOOKS,
 
 /* Items of the settings page. */
 enum menu_setting { MENU_S_DIFFICULTY, MENU_S_LIVES, MENU_S_COINS, MENU_S_FREEPLAY,
-		    MENU_S_RES, MENU_S_BACK, MENU_SETTINGS_COUNT };
+		    MENU_S_RES, MENU_S_DEFAULTS, MENU_S_BACK, MENU_SETTINGS_COUNT };
+
+/* The factory settings MENU_S_DEFAULTS restores: 1 coin per credit, no
+ * free play, NORMAL difficulty, 3 lives, the configured render size. */
+#define MENU_DEFAULT_DIFFICULTY 1
 
 /* Display test screens, stepped by fire. */
 enum menu_display { MENU_D_BARS, MENU_D_GRID, MENU_D_ORIENT, MENU_D_COUNT };

@@ -188,6 +188,7 @@ static void menu_settings_page(struct menu_ctx *m)
 	menu_item(m, mn->cursor == MENU_S_COINS, "COINS PER CREDIT", coins);
 	menu_item(m, mn->cursor == MENU_S_FREEPLAY, "FREE PLAY", s->set.freeplay ? "YES" : "NO");
 	menu_item(m, mn->cursor == MENU_S_RES, "RENDER SIZE", res);
+	menu_item(m, mn->cursor == MENU_S_DEFAULTS, "FACTORY DEFAULTS", NULL);
 	menu_item(m, mn->cursor == MENU_S_BACK, "BACK", NULL);
 }
 

@@ -173,6 +173,7 @@ static void settings_change_with_left_and_right(void **state)
 	assert_int_equal(s.menu.res, MENU_RES_COUNT);
 	assert_int_equal(s.set_gen, 8);        /* the size is not a game setting */
 	press(&s, DOWN);
+	press(&s, DOWN);
 	press(&s, FIRE);                       /* BACK */
 	assert_int_equal(s.menu.page, MENU_MAIN);
 	/* the new settings rule the next game: free play, 9 lives */
@@ -181,6 +182,33 @@ static void settings_change_with_left_and_right(void **state)
 	assert_int_equal(s.mode, SIM_PLAY);
 	assert_int_equal(s.g.lives, 9);
 	assert_int_equal(s.credits, 0);
+}
+
+static void factory_defaults_restore_every_setting(void **state)
+{
+	static const struct sim_settings odd = { 7, 1, 0, 3, 9 };
+	struct sim s;
+	(void)state;
+	in_menu(&s, &odd);
+	press(&s, DOWN);
+	press(&s, DOWN);
+	press(&s, FIRE);
+	for (int i = 0; i < MENU_S_RES; i++)
+		press(&s, DOWN);
+	press(&s, RIGHT);                      /* a render size choice */
+	assert_int_equal(s.menu.res, 1);
+	press(&s, DOWN);
+	assert_int_equal(s.menu.cursor, MENU_S_DEFAULTS);
+	press(&s, LEFT);                       /* left/right do nothing here */
+	assert_int_equal(s.set.lives, 9);
+	press(&s, FIRE);
+	assert_int_equal(s.set.coins_per_credit, 1);
+	assert_int_equal(s.set.freeplay, 0);
+	assert_int_equal(s.set.difficulty, 1);
+	assert_int_equal(s.set.lives, 3);
+	assert_int_equal(s.menu.res, 0);
+	assert_int_equal(s.set_gen, 1);
+	assert_int_equal(s.menu.page, MENU_SETTINGS);
 }
 
 static void resets_need_a_yes(void **state)
@@ -237,6 +265,7 @@ int main(void)
 		cmocka_unit_test(the_input_test_shows_commands_and_counts_coins),
 		cmocka_unit_test(the_display_test_steps_through_its_screens),
 		cmocka_unit_test(settings_change_with_left_and_right),
+		cmocka_unit_test(factory_defaults_restore_every_setting),
 		cmocka_unit_test(resets_need_a_yes),
 		cmocka_unit_test(the_exit_item_leaves),
 	};
