@@ -10,9 +10,13 @@
  *   build/rtx/rview --wad /usr/share/games/doom/freedoom1.wad --map E1M1 \
  *       --size 1280x720 --shot /tmp/e1m1 --bench 720
  *
+ *   build/rtx/rview --builtin 1 --size 320x240 --bench 720
+ *
  * Options: --wad FILE (repeatable, later files override), --map NAME,
+ * --builtin N (built-in level N with the palette-colour set, no WAD),
  * --size WxH, --shot PREFIX (PREFIX-A.png for angles 0, 90, 180, 270
- * degrees from the start's facing), --bench N (N frames, one full turn),
+ * degrees from the start's facing), --bench N (N frames, one full turn,
+ * five times: frames per second of the fastest turn),
  * --pos X,Y (map units, instead of the start), --angle DEG, --shear S,
  * --no-sprites. Prints the frame statistics of the first frame.
  */
@@ -93,6 +97,7 @@ int main(int argc, char **argv)
 {
 	const char *wads[MAX_WADS], *mapname = "E1M1", *shot = NULL;
 	int nwads = 0, w = 320, h = 200, bench = 0, sprites = 1, have_pos = 0, shear = 0;
+	int builtin = 0;
 	double px = 0, py = 0, adeg = -1;
 	char err[512] = "";
 	struct wad *wd;
@@ -124,12 +129,21 @@ int main(int argc, char **argv)
 			adeg = atof(argv[++i]);
 		else if (!strcmp(a, "--shear") && b)
 			shear = atoi(argv[++i]);
+		else if (!strcmp(a, "--builtin") && b)
+			builtin = atoi(argv[++i]);
 		else if (!strcmp(a, "--no-sprites"))
 			sprites = 0;
 		else {
 			fprintf(stderr, "rview: bad argument %s\n", a);
 			return 2;
 		}
+	}
+	if (builtin > 0) {
+		wd = NULL;
+		if (map_builtin(builtin - 1, &m) < 0 || r_pal_set_new(&t) < 0)
+			return 1;
+		mapname = "built-in";
+		goto loaded;
 	}
 	if (nwads == 0 || wad_new(&wd) < 0)
 		return 2;
@@ -147,6 +161,7 @@ int main(int argc, char **argv)
 		fprintf(stderr, "rview: %s\n", err);
 		return 1;
 	}
+loaded:
 	spr = calloc(m->num_things + 1, sizeof(*spr));
 	nspr = sprites ? things(m, t, spr) : 0;
 	for (uint32_t i = 0; i < m->num_things; i++)
@@ -190,23 +205,32 @@ int main(int argc, char **argv)
 		}
 	}
 	if (bench > 0) {
-		double t0 = now(), dt;
+		double best = 1e30;
 
-		for (int k = 0; k < bench; k++) {
-			struct r_view vk = v;
+		/* the best of five turns: the least disturbed by other load */
+		for (int rep = 0; rep < 5; rep++) {
+			double t0 = now(), dt;
 
-			vk.angle += (ang_t)((uint64_t)k * 0x100000000ull / (uint64_t)bench);
-			r_render(r, m, t, &vk, spr, nspr, &f);
+			for (int k = 0; k < bench; k++) {
+				struct r_view vk = v;
+
+				vk.angle += (ang_t)((uint64_t)k * 0x100000000ull / (uint64_t)bench);
+				r_render(r, m, t, &vk, spr, nspr, &f);
+			}
+			dt = now() - t0;
+			best = dt < best ? dt : best;
 		}
-		dt = now() - t0;
-		printf("bench %s %dx%d: %d frames turning in place, %.1f frames/s\n", mapname, w, h,
-		       bench, bench / dt);
+		printf("bench %s %dx%d: %d frames turning in place, %.1f frames/s (best of 5)\n",
+		       mapname, w, h, bench, bench / best);
 	}
 	r_free(r);
 	free(f.px);
 	free(spr);
 	map_free(m);
-	tex_free(t);
+	if (builtin > 0)
+		r_pal_set_free(t);
+	else
+		tex_free(t);
 	wad_free(wd);
 	return 0;
 }
