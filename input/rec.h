@@ -25,7 +25,9 @@
  *  56  8  map name, NUL-padded ("MAP01"; empty for a built-in level)
  *  64  8  start time, seconds since 1970 (0: unknown; never read by replay)
  *  72  8  reserved 0
- *  80  ... records: the command, then the state hash (8 bytes) if
+ *  80  ... bytes up to the header size: skipped (room for a later addition,
+ *        e.g. a snapshot of the sim to start from instead of sim_init)
+ *  then records: the command, then the state hash (8 bytes) if
  *        REC_HAS_STATE, then the frame hash (8 bytes) if REC_HAS_FRAME:
  *        sim_hash after the tick ran, and hash_frame of the frame rendered
  *        after it, exactly what `arcaded --replay` prints for that tick.
