@@ -21,11 +21,9 @@
 #define SCR_FILE_MAX (1 << 20)
 #define SCR_PATH_MAX 4096
 
-static const char *const scr_fields[] = {
-	[SCR_F_X] = "x", [SCR_F_Y] = "y", [SCR_F_Z] = "z", [SCR_F_ANGLE] = "angle",
-	[SCR_F_SECTOR] = "sector", [SCR_F_CREDITS] = "credits", [SCR_F_COINS] = "coins",
-	[SCR_F_TICK] = "tick", [SCR_F_MODE] = "mode",
-};
+/* The fields are the sim's named values (sim_field_*, engine/g_field.c):
+ * the first nine are SCR_F_X .. SCR_F_MODE in that order. */
+_Static_assert(SCR_F_MODE == 8, "scr_field follows the sim's field order");
 
 static const char *const scr_cmps[] = {
 	[SCR_EQ] = "==", [SCR_NE] = "!=", [SCR_LT] = "<",
@@ -34,9 +32,7 @@ static const char *const scr_cmps[] = {
 
 const char *scr_field_name(enum scr_field f)
 {
-	if ((unsigned)f >= sizeof(scr_fields) / sizeof(scr_fields[0]))
-		return NULL;
-	return scr_fields[f];
+	return sim_field_name((int)f);
 }
 
 const char *scr_cmp_name(enum scr_cmp c)
@@ -195,17 +191,32 @@ static bool scr_fixed(const struct scr_tok *t, int64_t *out)
 	return true;
 }
 
-/* Mode names are the sim's own (sim_mode_from_name). */
+/* The token as a NUL-terminated word in buf; "" when it does not fit. */
+static const char *scr_word(const struct scr_tok *t, char *buf, size_t len)
+{
+	size_t n = (size_t)(t->e - t->b);
+
+	if (n >= len)
+		n = 0;
+	memcpy(buf, t->b, n);
+	buf[n] = '\0';
+	return buf;
+}
+
+/* Mode and page names are the sim's own (sim_mode_from_name,
+ * sim_page_from_name). */
 static int scr_mode(const struct scr_tok *t)
 {
 	char name[16];
-	size_t n = (size_t)(t->e - t->b);
 
-	if (n >= sizeof(name))
-		return -1;
-	memcpy(name, t->b, n);
-	name[n] = '\0';
-	return sim_mode_from_name(name);
+	return sim_mode_from_name(scr_word(t, name, sizeof(name)));
+}
+
+static int scr_page(const struct scr_tok *t)
+{
+	char name[16];
+
+	return sim_page_from_name(scr_word(t, name, sizeof(name)));
 }
 
 static struct scr_step *scr_add(struct scr_parser *p, uint32_t tick, enum scr_op op)
@@ -254,16 +265,15 @@ static int scr_expect(struct scr_parser *p, uint32_t tick, const char **c, const
 {
 	struct scr_tok f, o, v;
 	struct scr_step *st;
-	int field = -1, cmp = -1, mode;
+	int field, cmp = -1, mode;
 	int64_t val = 0;
 	uint64_t u = 0;
+	char name[32];
 	bool ok;
 
 	if (!scr_next(c, e, &f))
 		return scr_fail(p, "expected FIELD OP VALUE after expect");
-	for (int i = 0; i < (int)(sizeof(scr_fields) / sizeof(scr_fields[0])); i++)
-		if (scr_is(&f, scr_fields[i]))
-			field = i;
+	field = sim_field_find(scr_word(&f, name, sizeof(name)));
 	if (field < 0)
 		return scr_fail(p, "unknown field '" SCR_TOK_FMT "'", SCR_TOK_ARG(&f));
 	if (!scr_next(c, e, &o))
@@ -276,22 +286,22 @@ static int scr_expect(struct scr_parser *p, uint32_t tick, const char **c, const
 				SCR_TOK_ARG(&o));
 	if (!scr_next(c, e, &v))
 		return scr_fail(p, "expected a value");
-	switch (field) {
-	case SCR_F_X:
-	case SCR_F_Y:
-	case SCR_F_Z:
+	switch (sim_field_kind(field)) {
+	case SIM_FK_FX:
 		ok = scr_fixed(&v, &val);
 		break;
-	case SCR_F_ANGLE:
+	case SIM_FK_ANGLE:
 		ok = scr_int32(&v, &val);
 		break;
-	case SCR_F_MODE:
+	case SIM_FK_MODE:
+	case SIM_FK_PAGE:
 		if (cmp != SCR_EQ && cmp != SCR_NE)
-			return scr_fail(p, "mode compares only with == or !=");
-		mode = scr_mode(&v);
+			return scr_fail(p, "%s compares only with == or !=", sim_field_name(field));
+		mode = sim_field_kind(field) == SIM_FK_MODE ? scr_mode(&v) : scr_page(&v);
 		ok = mode >= 0;
 		val = mode;
 		break;
+	case SIM_FK_INT:
 	default:
 		ok = scr_uint(&v, UINT32_MAX, &u);
 		val = (int64_t)u;
@@ -299,7 +309,7 @@ static int scr_expect(struct scr_parser *p, uint32_t tick, const char **c, const
 	}
 	if (!ok)
 		return scr_fail(p, "bad value '" SCR_TOK_FMT "' for %s", SCR_TOK_ARG(&v),
-				scr_fields[field]);
+				sim_field_name(field));
 	st = scr_add(p, tick, SCR_EXPECT);
 	if (!st)
 		return -ENOMEM;

@@ -10,8 +10,12 @@
  *   TICK snapshot              print the frame hash of TICK
  *   TICK screenshot FILE       write TICK's frame as PNG
  *   TICK end                   stop after TICK
- * FIELD: x y z (map units, decimals allowed), angle (degrees, integer),
- * sector, credits, coins, tick, mode (attract|play). OP: == != < <= > >=.
+ * FIELD: the sim's named values (sim_field_*, engine/g_field.c; listed in
+ * docs/game.md): x y z (map units, decimals allowed), angle (degrees,
+ * integer), sector, credits, coins, tick, mode (attract|play|gameover|
+ * initials|service), and the game's: score, lives, health, ammo, stage,
+ * enemies, kills, continues, countdown, page (title|scores|demo), phase,
+ * plays, rank, hiscore, menu, difficulty. OP: == != < <= > >=.
  * Steps run in tick order; steps of one tick in file order. A run without
  * `end` stops after the last step's tick.
  *
@@ -19,8 +23,8 @@
  * and are case-sensitive; hold needs N >= 1 and becomes a press and a
  * release step (tap: N = 1). x/y/z take up to 12 fraction digits and are
  * rounded to the nearest 1/65536 (halves away from zero), range
- * -32768..32767.99998; angle is an int32; sector/credits/coins/tick are
- * 0..4294967295; mode takes == and != only. FILE is the rest of the line,
+ * -32768..32767.99998; angle is an int32; the other numbers are
+ * 0..4294967295; mode and page take == and != only. FILE is the rest of the line,
  * blanks trimmed ('#' still starts a comment). A second `end`, and a
  * press/expect/snapshot/screenshot after `end`, are errors (they would
  * never run); releases after it are allowed.
@@ -32,6 +36,8 @@
 #include <stdint.h>
 
 enum scr_op { SCR_PRESS, SCR_RELEASE, SCR_EXPECT, SCR_SNAPSHOT, SCR_SCREENSHOT, SCR_END };
+/* The first fields by name; a step's field is any sim field index
+ * (0 .. sim_field_count() - 1), these nine being the first. */
 enum scr_field { SCR_F_X, SCR_F_Y, SCR_F_Z, SCR_F_ANGLE, SCR_F_SECTOR, SCR_F_CREDITS,
 		 SCR_F_COINS, SCR_F_TICK, SCR_F_MODE };
 enum scr_cmp { SCR_EQ, SCR_NE, SCR_LT, SCR_LE, SCR_GT, SCR_GE };
@@ -41,9 +47,10 @@ struct scr_step {
 	uint32_t line;           /* source line, for messages */
 	enum scr_op op;
 	int action;              /* press/release: enum act */
-	enum scr_field field;    /* expect */
+	enum scr_field field;    /* expect: a sim field index (sim_field_value) */
 	enum scr_cmp cmp;        /* expect */
-	int64_t value;           /* expect: x/y/z in 16.16, angle in degrees, mode as enum sim_mode, else integer */
+	int64_t value;           /* expect: as sim_field_value gives it (16.16, degrees,
+				  * enum sim_mode / sim_page, else the integer) */
 	char *path;              /* screenshot: owned by the script */
 };
 

@@ -167,7 +167,8 @@ static void test_every_error_names_its_line(void **state)
 	expect_error("1 hold fire 4294967295\n", "t.scr:1: release tick 4294967296 is too large");
 	expect_error("1 tap fire 3\n", "t.scr:1: unexpected '3' after the command");
 	expect_error("1 expect\n", "t.scr:1: expected FIELD OP VALUE after expect");
-	expect_error("1 expect health == 3\n", "t.scr:1: unknown field 'health'");
+	expect_error("1 expect hp == 3\n", "t.scr:1: unknown field 'hp'");
+	expect_error("1 expect Score == 3\n", "t.scr:1: unknown field 'Score'");
 	expect_error("1 expect x\n", "t.scr:1: expected a comparison (== != < <= > >=)");
 	expect_error("1 expect x = 3\n",
 		     "t.scr:1: unknown comparison '=' (== != < <= > >=)");
@@ -176,6 +177,9 @@ static void test_every_error_names_its_line(void **state)
 	expect_error("1 expect sector == -1\n", "t.scr:1: bad value '-1' for sector");
 	expect_error("1 expect mode == pause\n", "t.scr:1: bad value 'pause' for mode");
 	expect_error("1 expect mode < play\n", "t.scr:1: mode compares only with == or !=");
+	expect_error("1 expect page >= demo\n", "t.scr:1: page compares only with == or !=");
+	expect_error("1 expect page == play\n", "t.scr:1: bad value 'play' for page");
+	expect_error("1 expect score > -1\n", "t.scr:1: bad value '-1' for score");
 	expect_error("1 expect angle == 1.5\n", "t.scr:1: bad value '1.5' for angle");
 	expect_error("1 expect tick == 1 2\n", "t.scr:1: unexpected '2' after the command");
 	expect_error("1 screenshot   # no file\n", "t.scr:1: expected a file name");
@@ -269,6 +273,30 @@ static void test_integer_fields_and_ranges(void **state)
 	expect_error("0 expect tick == 4294967296\n", "t.scr:1: bad value '4294967296' for tick");
 	expect_error("0 expect angle == 2147483648\n",
 		     "t.scr:1: bad value '2147483648' for angle");
+}
+
+/* The game's fields come from the sim's table, with their kinds. */
+static void test_game_fields(void **state)
+{
+	struct scr *s = parse_ok("5 expect score >= 1500\n"
+				 "5 expect page == scores\n"
+				 "6 expect mode == initials\n"
+				 "6 expect lives == 0\n"
+				 "7 expect countdown < 10\n");
+	(void)state;
+	assert_int_equal(s->n, 5);
+	check_expect(&s->steps[0], 5, 1, (enum scr_field)sim_field_find("score"), SCR_GE, 1500);
+	check_expect(&s->steps[1], 5, 2, (enum scr_field)sim_field_find("page"), SCR_EQ,
+		     SIM_PAGE_SCORES);
+	check_expect(&s->steps[2], 6, 3, SCR_F_MODE, SCR_EQ, SIM_INITIALS);
+	check_expect(&s->steps[3], 6, 4, (enum scr_field)sim_field_find("lives"), SCR_EQ, 0);
+	check_expect(&s->steps[4], 7, 5, (enum scr_field)sim_field_find("countdown"), SCR_LT, 10);
+	assert_string_equal(scr_field_name(s->steps[0].field), "score");
+	/* the first nine are the built-in enum's, in order */
+	assert_int_equal(sim_field_find("x"), SCR_F_X);
+	assert_int_equal(sim_field_find("tick"), SCR_F_TICK);
+	assert_int_equal(sim_field_find("mode"), SCR_F_MODE);
+	scr_free(s);
 }
 
 static void test_sort_is_stable_by_tick(void **state)
@@ -421,6 +449,7 @@ int main(void)
 		cmocka_unit_test(test_decimals_become_16_16),
 		cmocka_unit_test(test_bad_decimals),
 		cmocka_unit_test(test_integer_fields_and_ranges),
+		cmocka_unit_test(test_game_fields),
 		cmocka_unit_test(test_sort_is_stable_by_tick),
 		cmocka_unit_test(test_huge_lines_and_random_bytes),
 		cmocka_unit_test(test_compare_and_names),
