@@ -119,11 +119,11 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 		uint32_t sec;
 		int x1, x2;
 
-		sec = map_point_sector(r->map, gx, gy);
-		if (r->seen_ok && r->sec_seen[sec] != r->frame_no)
-			continue;
 		r_to_view(r, gx, gy, &p);
 		if (p.d < R_SPR_NEAR || p.l > 4 * p.d || p.l < -4 * p.d)
+			continue;
+		sec = map_point_sector(r->map, gx, gy);
+		if (r->seen_ok && r->sec_seen[sec] != r->frame_no)
 			continue;
 		if (!t->sprites || sp->sprite >= t->num_sprites ||
 		    sp->frame >= t->sprites[sp->sprite].num_frames || !t->sprites[sp->sprite].frames) {
