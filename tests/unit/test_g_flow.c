@@ -105,6 +105,17 @@ static void expect(struct flow *f, const char *field, const char *op, const char
 	say(f, "%u expect %s %s %s", f->s.tick - 1, field, op, value);
 }
 
+/* An expect of the field's value now: what the daemon must reproduce. */
+static void expect_now(struct flow *f, const char *field)
+{
+	int i = sim_field_find(field);
+	char v[24];
+
+	assert_true(i >= 0 && sim_field_kind(i) == SIM_FK_INT);
+	snprintf(v, sizeof(v), "%lld", (long long)sim_field_value(&f->s, i));
+	expect(f, field, "==", v);
+}
+
 /* Signed difference of two angles. */
 static int32_t ang_diff(ang_t to, ang_t from)
 {
@@ -228,6 +239,7 @@ static void play_flow(struct flow *f)
 	say(f, "# numbers on it): factory settings in the service menu, coin, start, clear");
 	say(f, "# stage 1, lose every life on stage 2, continue, lose them again, the");
 	say(f, "# countdown runs out, initials ACE, the new entry in attract.");
+	say(f, "# expect-file: attract-scores.png");
 	/* service menu: GAME SETTINGS, FACTORY DEFAULTS, back, out */
 	idle(f, 2);
 	tap(f, ACT_SERVICE);
@@ -253,21 +265,31 @@ static void play_flow(struct flow *f)
 	assert_int_equal(f->s.mode, SIM_PLAY);
 	f->t_clear = f->s.tick;
 	f->score_clear = f->s.g.score;
+	expect(f, "enemies", "==", "0");
+	expect_now(f, "score");
+	expect_now(f, "kills");
 	idle(f, G_CLEAR_TICKS);
 	assert_int_equal(f->s.g.stage, 1);
 	f->t_stage2 = f->s.tick;
 	expect(f, "mode", "==", "play");
 	expect(f, "x", "==", "512");
 	expect(f, "y", "==", "64");
+	expect(f, "stage", "==", "2");
+	expect_now(f, "enemies");
+	expect(f, "lives", "==", "3");
 	lose_every_life(f);
 	assert_int_equal(f->s.mode, SIM_GAMEOVER);
 	f->t_over1 = f->s.tick;
 	expect(f, "mode", "==", "gameover");
+	expect(f, "lives", "==", "0");
+	expect(f, "countdown", "==", "10");
 	idle(f, 120);
 	tap(f, ACT_COIN);
 	tap(f, ACT_START);
 	expect(f, "mode", "==", "play");
 	expect(f, "coins", "==", "2");
+	expect(f, "continues", "==", "1");
+	expect(f, "lives", "==", "3");
 	f->t_cont = f->s.tick;
 	lose_every_life(f);
 	f->t_over2 = f->s.tick;
@@ -277,6 +299,7 @@ static void play_flow(struct flow *f)
 	assert_int_equal(f->s.mode, SIM_INITIALS);
 	f->t_initials = f->s.tick;
 	expect(f, "mode", "==", "initials");
+	expect_now(f, "score");
 	/* A, then C (two steps on from A), then E (two on from C) */
 	idle(f, 30);
 	tap(f, ACT_FIRE);
@@ -288,6 +311,10 @@ static void play_flow(struct flow *f)
 	tap(f, ACT_FIRE);
 	f->t_attract = f->s.tick;
 	expect(f, "mode", "==", "attract");
+	expect(f, "page", "==", "scores");
+	expect_now(f, "rank");
+	expect(f, "hiscore", "==", "10000");
+	say(f, "%u screenshot attract-scores.png", f->s.tick - 1);
 	f->score_end = f->s.g.score;
 	idle(f, 60);
 	expect(f, "mode", "==", "attract");
@@ -392,13 +419,22 @@ static void the_committed_script_is_the_flow(void **state)
 		mp[i] = f.maps[i];
 	sim_init_stages(&s, mp, 3, &set, NULL, NULL);
 	cmd_reset(&cs);
+	/* as the daemon does: inputs before the tick, checks after it */
 	for (uint32_t tick = 0; tick <= scr->end_tick; tick++) {
 		struct sim_cmd c;
+		size_t k0 = k;
 		for (; k < scr->n && scr->steps[k].tick == tick; k++)
 			if (scr->steps[k].op == SCR_PRESS || scr->steps[k].op == SCR_RELEASE)
 				cmd_action(&cs, scr->steps[k].action, scr->steps[k].op == SCR_PRESS);
 		cmd_build(&cs, &c);
 		sim_tick(&s, &c);
+		for (size_t i = k0; i < k; i++) {
+			const struct scr_step *st = &scr->steps[i];
+			if (st->op == SCR_EXPECT &&
+			    !scr_compare(sim_field_value(&s, (int)st->field), st->cmp, st->value))
+				fail_msg("%s:%u: expect %s failed", FLOW_SCRIPT, st->line,
+					 scr_field_name(st->field));
+		}
 	}
 	assert_true(sim_hash(&s) == sim_hash(&f.s));
 	scr_free(scr);
