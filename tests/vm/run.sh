@@ -1,0 +1,277 @@
+#!/bin/sh
+# The appliance tests (make test-vm; docs/vm.md): QEMU boots Debian's kernel
+# with this machine's own root read-only over virtio-9p, a tmpfs overlay,
+# the project installed as `make install` lays it out, and systemd as PID 1
+# running the real arcaded.service on real kernel devices. Two boots:
+#   fb32  bochs-drm framebuffer, 32 bpp (DRM fbdev emulation): boot time,
+#         screen = the daemon's frame, uinput keyboard, unprivileged user and
+#         device policy, watchdog restart, SIGTERM;
+#   fb16  vesafb, 16 bpp RGB565 (vga=0x317): screen = the daemon's frame.
+# The guest side is tests/vm/guest.sh; this script drives QEMU, serves the
+# guest's screendump requests through QMP and judges the screens.
+#
+# usage: tests/vm/run.sh [BOOT...]   (default: fb32 fb16)
+# Environment: BUILD (build folder, default build), ARCADED_VM_CACHE (kernel cache, default
+# ${XDG_CACHE_HOME:-$HOME/.cache}/arcaded-vm), ARCADED_VM_KERNEL (kernel
+# version instead of linux-image-amd64's), ARCADED_VM_TIMEOUT (seconds per
+# boot, default 300).
+#
+# Exit status: 0 all passed, 1 a failure, 77 skipped (QEMU cannot run here;
+# printed loudly).
+set -u
+cd "$(dirname "$0")/../.."
+top=$(pwd)
+BUILD=${BUILD:-build}
+B=$top/$BUILD/vm
+CACHE=${ARCADED_VM_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/arcaded-vm}
+TIMEOUT=${ARCADED_VM_TIMEOUT:-300}
+boots=${*:-fb32 fb16}
+
+skip() {
+	echo "################################################################"
+	echo "# VM TESTS SKIPPED: $*"
+	echo "################################################################"
+	exit 77
+}
+die() {
+	echo "vm: FAIL: $*"
+	exit 1
+}
+now() { date +%s.%N; }
+# seconds between two timestamps, 2 decimals
+secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", b - a }'; }
+
+if [ "$(id -u)" != 0 ]; then
+	# The root is exported through a bind mount in a private mount
+	# namespace, and the guest's systemd needs files only root can read.
+	if command -v sudo >/dev/null && sudo -n true 2>/dev/null; then
+		exec sudo -n -E "$0" "$@"
+	fi
+	skip "needs root (or password-less sudo) to export the root file system to QEMU"
+fi
+[ "$(uname -m)" = x86_64 ] || skip "the VM tests boot Debian's amd64 kernel; this is $(uname -m)"
+for t in qemu-system-x86_64 unshare cpio depmod apt-get dpkg xz; do
+	command -v "$t" >/dev/null || die "$t missing (scripts/setup.sh installs it)"
+done
+[ -x /bin/busybox ] || die "/bin/busybox missing (package busybox-static; scripts/setup.sh)"
+echo quit | qemu-system-x86_64 -machine pc -accel tcg -display none -nodefaults -S \
+	-monitor stdio > /dev/null 2>&1 ||
+	skip "qemu-system-x86_64 cannot start a TCG machine here"
+
+t_all=$(now)
+mkdir -p "$B"
+echo "vm: building the daemon, its unit tests and the VM helpers"
+make --no-print-directory -s -j"$(nproc)" BUILD="$BUILD" all tests > "$B/build.log" 2>&1 ||
+	{ tail -n 30 "$B/build.log"; die "build"; }
+CFLAGS="-std=c11 -D_GNU_SOURCE -O2 -g -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes"
+# shellcheck disable=SC2086
+cc $CFLAGS $(pkg-config --cflags libevdev) -o "$B/vm_guest" tests/vm/vm_guest.c \
+	$(pkg-config --libs libevdev) || die "vm_guest"
+# shellcheck disable=SC2086
+cc $CFLAGS $(pkg-config --cflags libpng) -o "$B/vm_host" tests/vm/vm_host.c \
+	$(pkg-config --libs libpng) || die "vm_host"
+H=$B/vm_host
+
+t=$(now)
+kdir=$(tests/vm/kernel.sh "$CACHE") || die "kernel"
+version=$(cat "$kdir/version")
+tests/vm/initramfs.sh "$kdir" "$B/initramfs.cpio" || die "initramfs"
+echo "vm: kernel $version, initramfs ready in $(secs "$t" "$(now)") s"
+
+# The stage: what the guest installs and runs (shared read-only). Outside
+# the build folder: the Makefile includes every "*.d" under it, and the
+# install tree has directories named so (tmpfiles.d, rules.d).
+ST=$(mktemp -d "${TMPDIR:-/tmp}/arcaded-vm-stage.XXXXXX") || die "mktemp"
+trap 'rm -rf "$ST"' EXIT
+mkdir -p "$ST/bin"
+make --no-print-directory -s BUILD="$BUILD" install DESTDIR="$ST/destdir" > "$B/install.log" 2>&1 ||
+	{ cat "$B/install.log"; die "make install"; }
+cp "$B/vm_guest" "$BUILD/tests/test_in_evdev" "$BUILD/tests/test_dp_fbdev" "$ST/bin/"
+cp tests/vm/guest.sh "$ST/guest.sh"
+mkdir -p "$ST/overlay/lib/systemd/system"
+cp tests/vm/vm-test.service "$ST/overlay/lib/systemd/system/"
+# The fault-injection switch (off by default) is enabled for the watchdog test.
+mkdir -p "$ST/overlay/etc/systemd/system/arcaded.service.d"
+cp tests/vm/arcaded-vm.conf "$ST/overlay/etc/systemd/system/arcaded.service.d/vm.conf"
+
+# The frame the daemon shows after coin and start: rendered headless by the
+# same binary with the installed configuration.
+ref=$B/ref-play.png
+mkdir -p "$B/refstate"
+# The comparison needs a still picture: with no input the start view of a
+# game must not change (checked at two ticks far apart).
+for n in 30 600; do
+	printf '0 tap coin\n1 tap start\n2 expect mode == play\n%d end\n' "$n" > "$B/ref-$n.scr"
+	"$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --state-dir "$B/refstate" \
+		--script "$B/ref-$n.scr" --screenshot "$B/ref-$n.png" > "$B/ref.log" 2>&1 ||
+		{ cat "$B/ref.log"; die "reference frame"; }
+done
+cmp -s "$B/ref-30.png" "$B/ref-600.png" ||
+	die "the start view of a game changes with no input (ticks 30 and 600 differ): the screen comparison needs a still frame"
+cp "$B/ref-30.png" "$ref"
+render_w=$("$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --print-config |
+	sed -n 's/^render_width *= *//p')
+render_h=$("$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --print-config |
+	sed -n 's/^render_height *= *//p')
+
+passed=0
+failed=0
+failures=""
+result() { # PASS|FAIL name detail
+	echo "$1 $2${3:+: $3}"
+	if [ "$1" = PASS ]; then
+		passed=$((passed + 1))
+	else
+		failed=$((failed + 1))
+		failures="$failures $2"
+	fi
+}
+figures=""
+figure() { # text
+	echo "FIGURE $*"
+	figures="$figures
+  $*"
+}
+
+# Boots one VM and serves it until it powers off. $1: boot name.
+boot() {
+	name=$1
+	res=$B/results-$name
+	rm -rf "$res"
+	mkdir -p "$res/req" "$res/ack" "$B/rootmnt"
+	sock=/tmp/arcaded-vm-$$-$name.qmp
+	base="console=ttyS0 quiet loglevel=3 panic=-1 i8042.nokbd i8042.noaux"
+	base="$base vt.global_cursor_default=0 systemd.unit=multi-user.target"
+	base="$base systemd.show_status=0 arcaded.vm=$name"
+	# Modules udev would load for the emulated PC's other hardware and the
+	# CPU's features: seconds each under emulation, of no use here.
+	base="$base modprobe.blacklist=floppy,ata_piix,pata_acpi,ata_generic,pcspkr,kvm,kvm_amd"
+	base="$base,kvm_intel,powernow_k8,acpi_cpufreq,serio_raw,i2c_piix4,joydev,evbug"
+	case $name in
+	fb32)
+		# PVH entry of the ELF kernel: no firmware, no decompression.
+		kernel=$kdir/vmlinux
+		# Debian allocates the DRM fbdev memory for one page (overalloc
+		# 100%); twice that lets the daemon double-buffer by panning.
+		append="$base drm_kms_helper.drm_fbdev_overalloc=200"
+		;;
+	fb16)
+		# VESA modes are set by the bzImage's real-mode code (vga=);
+		# bochs-drm must not replace vesafb.
+		kernel=$kdir/vmlinuz
+		append="$base vga=0x317 modprobe.blacklist=bochs"
+		;;
+	*) die "unknown boot $name" ;;
+	esac
+	fs() { # tag path [readonly]
+		echo "-fsdev local,id=$1,path=$2,security_model=passthrough${3:+,readonly=on}"
+		echo "-device virtio-9p-pci,fsdev=$1,mount_tag=$1"
+	}
+	qargs="-nodefaults -machine pc -accel tcg,thread=multi -cpu qemu64 -smp 2 -m 512
+		-vga std -display none -no-reboot
+		-serial file:$res/serial.log -qmp unix:$sock,server=on,wait=off
+		-kernel $kernel -initrd $B/initramfs.cpio
+		$(fs root "$B/rootmnt" ro) $(fs kmod "$kdir/root/lib/modules" ro)
+		$(fs stage "$ST" ro) $(fs results "$res")"
+	echo "vm: boot $name: $kernel"
+	echo "qemu-system-x86_64 $qargs -append \"$append\"" > "$res/qemu.cmd"
+	t0=$(now)
+	# The root is exported as a non-recursive read-only bind mount in a
+	# private mount namespace: /proc, /sys, /dev and other mounts stay
+	# out, and the mount goes away with QEMU.
+	# shellcheck disable=SC2086
+	unshare -m --propagation private sh -c '
+		mount --bind / "$1" && mount -o remount,bind,ro "$1" || exit 1
+		shift; exec "$@"' sh "$B/rootmnt" \
+		qemu-system-x86_64 $qargs -append "$append" > "$res/qemu.log" 2>&1 &
+	qpid=$!
+	t_ready=""
+	while kill -0 "$qpid" 2>/dev/null; do
+		for r in "$res"/req/*; do
+			[ -e "$r" ] || continue
+			n=$(basename "$r")
+			[ -e "$res/ack/$n" ] && continue
+			"$H" shot "$sock" "$res/$n.ppm" > "$res/shot-$n.log" 2>&1
+			touch "$res/ack/$n"
+		done
+		if [ -z "$t_ready" ] && grep -q '@@vm-ready' "$res/serial.log" 2>/dev/null; then
+			t_ready=$(now)
+		fi
+		if [ "$(secs "$t0" "$(now)" | cut -d. -f1)" -ge "$TIMEOUT" ]; then
+			echo "vm: boot $name: no power-off after $TIMEOUT s; stopping QEMU"
+			kill "$qpid"
+			break
+		fi
+		sleep 0.1
+	done
+	wait "$qpid"
+	qrc=$?
+	t_end=$(now)
+	rm -f "$sock"
+	echo "vm: boot $name: QEMU ran $(secs "$t0" "$t_end") s, exit status $qrc"
+	figure "$name: whole boot (QEMU start to power-off): $(secs "$t0" "$t_end") s"
+	if [ ! -e "$res/done" ]; then
+		result FAIL "$name-guest-finished" "the guest test did not finish (serial log: $res/serial.log)"
+		tail -n 30 "$res/serial.log"
+		[ -e "$res/guest.log" ] && tail -n 30 "$res/guest.log"
+		return
+	fi
+	result PASS "$name-guest-finished"
+	# Guest results: lines "PASS|FAIL name detail", "FIGURE text".
+	while read -r kind rest; do
+		case $kind in
+		PASS | FAIL) result "$kind" "$name-${rest%%:*}" "$(echo "${rest#*:}" | sed 's/^ //')" ;;
+		FIGURE) figure "$name: $rest" ;;
+		esac
+	done < "$res/results.txt"
+	# QEMU start to READY=1: when the host saw the guest's marker on the
+	# serial line, less how long after READY the guest wrote it.
+	if [ -n "$t_ready" ]; then
+		lag=$(sed -n 's/.*@@vm-ready uptime=\([0-9.]*\) ready=\([0-9.]*\).*/\1 \2/p' \
+			"$res/serial.log" | head -n 1 | awk '{ printf "%.2f", $1 - $2 }')
+		figure "$name: QEMU start to READY=1 (first frame shown): $(awk -v a="$(secs "$t0" "$t_ready")" -v l="${lag:-0}" 'BEGIN { printf "%.2f", a - l }') s"
+	fi
+	judge "$name" "$res"
+}
+
+bpp_of() { case $1 in fb16) echo 16 ;; *) echo 32 ;; esac; }
+
+# Screens: the guest asked for screendumps at these moments.
+judge() {
+	name=$1
+	res=$2
+	bpp=$(bpp_of "$name")
+	for s in "$res"/*.ppm; do
+		[ -e "$s" ] && "$H" topng "$s" "${s%.ppm}.png"
+	done
+	screen() { # test name, command...
+		tn=$1
+		shift
+		if out=$("$@" 2>&1); then
+			result PASS "$name-$tn" "$out"
+		else
+			result FAIL "$name-$tn" "$out"
+		fi
+	}
+	if [ -e "$res/attract-1.ppm" ]; then
+		screen first-frame "$H" picture "$res/attract-1.ppm" "$render_w" "$render_h"
+		screen attract-animates "$H" differ "$res/attract-1.ppm" "$res/attract-2.ppm"
+	fi
+	[ -e "$res/play-start.ppm" ] && screen screen-is-frame "$H" match "$ref" "$res/play-start.ppm" "$bpp"
+	[ -e "$res/play-moved.ppm" ] && screen input-changes-screen "$H" differ "$res/play-start.ppm" "$res/play-moved.ppm"
+	if [ -e "$res/wd-attract-1.ppm" ]; then
+		screen watchdog-back-in-attract "$H" differ "$res/wd-attract-1.ppm" "$res/wd-attract-2.ppm"
+		screen watchdog-screen-is-frame "$H" match "$ref" "$res/wd-play.ppm" "$bpp"
+	fi
+}
+
+for b in $boots; do
+	boot "$b"
+done
+
+echo
+echo "vm: figures:$figures"
+echo "vm: whole VM test $(secs "$t_all" "$(now)") s"
+[ -n "$failures" ] && echo "vm: failed:$failures"
+echo "vm: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,249 @@
+/*
+ * vm_guest: the guest-side helper of the VM tests (tests/vm/guest.sh runs
+ * it inside the VM; it is built on the host, whose root the VM boots).
+ *
+ *   vm_guest kbd FIFO       create a uinput keyboard ("arcaded-vm keyboard",
+ *                           every key code 1..255), then read commands from
+ *                           FIFO, one per line, until end of file:
+ *                             tap KEY MS    press, hold MS ms, release
+ *                             down KEY      press and hold
+ *                             up KEY        release
+ *                           KEY is a libevdev name (KEY_5) or a number.
+ *                           Prints "ready /dev/input/eventN" once created.
+ *   vm_guest kdmode TTY     print the console's display and keyboard mode:
+ *                           "kd text|graphics kb raw|xlate|mediumraw|unicode|off"
+ *   vm_guest open PATH r|w|rw
+ *                           open PATH; print "ok" or the errno name; exit 0
+ *                           if it opened, 1 if not
+ *   vm_guest fbinfo DEV     print the framebuffer's geometry and format
+ *   vm_guest now            CLOCK_MONOTONIC in seconds (9 decimals), the
+ *                           clock of the journal's -o short-monotonic
+ *
+ * Exit status 0 on success, 1 on a failed check or error, 2 on bad usage.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <linux/fb.h>
+#include <linux/kd.h>
+#include <linux/uinput.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/ioctl.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <libevdev/libevdev.h>
+
+static int usage(void)
+{
+	fputs("usage: vm_guest kbd FIFO | kdmode TTY | open PATH r|w|rw | fbinfo DEV | now\n",
+	      stderr);
+	return 2;
+}
+
+static int emit(int fd, int type, int code, int value)
+{
+	struct input_event e;
+
+	memset(&e, 0, sizeof(e));
+	e.type = (unsigned short)type;
+	e.code = (unsigned short)code;
+	e.value = value;
+	return write(fd, &e, sizeof(e)) == (ssize_t)sizeof(e) ? 0 : -1;
+}
+
+static int key(int fd, int code, int down)
+{
+	if (emit(fd, EV_KEY, code, down) < 0 || emit(fd, EV_SYN, SYN_REPORT, 0) < 0)
+		return -1;
+	return 0;
+}
+
+static int key_code(const char *name)
+{
+	char *end;
+	long v = strtol(name, &end, 0);
+
+	if (*end == '\0' && end != name)
+		return v > 0 && v < KEY_CNT ? (int)v : -1;
+	return libevdev_event_code_from_name(EV_KEY, name);
+}
+
+static void sleep_ms(long ms)
+{
+	struct timespec ts = { .tv_sec = ms / 1000, .tv_nsec = (ms % 1000) * 1000000L };
+
+	while (nanosleep(&ts, &ts) < 0 && errno == EINTR)
+		;
+}
+
+/* The event node the kernel made for our uinput device (sysfs name). */
+static void print_node(int fd)
+{
+	char sys[64] = "";
+
+	if (ioctl(fd, UI_GET_SYSNAME(sizeof(sys)), sys) < 0) {
+		printf("ready (sysname: %s)\n", strerror(errno));
+		return;
+	}
+	printf("ready /sys/devices/virtual/input/%s\n", sys);
+}
+
+static int cmd_kbd(const char *fifo)
+{
+	struct uinput_setup us;
+	char line[128];
+	FILE *in;
+	int fd, rc = 0;
+
+	fd = open("/dev/uinput", O_WRONLY | O_CLOEXEC);
+	if (fd < 0) {
+		fprintf(stderr, "vm_guest: /dev/uinput: %s\n", strerror(errno));
+		return 1;
+	}
+	if (ioctl(fd, UI_SET_EVBIT, EV_KEY) < 0) {
+		fprintf(stderr, "vm_guest: UI_SET_EVBIT: %s\n", strerror(errno));
+		close(fd);
+		return 1;
+	}
+	for (int k = 1; k < 256; k++)
+		ioctl(fd, UI_SET_KEYBIT, k);
+	memset(&us, 0, sizeof(us));
+	us.id.bustype = BUS_VIRTUAL;
+	us.id.vendor = 0x1209;
+	us.id.product = 0x0001;
+	snprintf(us.name, sizeof(us.name), "arcaded-vm keyboard");
+	if (ioctl(fd, UI_DEV_SETUP, &us) < 0 || ioctl(fd, UI_DEV_CREATE) < 0) {
+		fprintf(stderr, "vm_guest: uinput create: %s\n", strerror(errno));
+		close(fd);
+		return 1;
+	}
+	print_node(fd);
+	fflush(stdout);
+	in = fopen(fifo, "re");
+	if (!in) {
+		fprintf(stderr, "vm_guest: %s: %s\n", fifo, strerror(errno));
+		rc = 1;
+		goto out;
+	}
+	while (fgets(line, sizeof(line), in)) {
+		char op[16], name[64];
+		long ms = 0;
+		int n = sscanf(line, "%15s %63s %ld", op, name, &ms), code;
+
+		if (n < 2 || (code = key_code(name)) < 0) {
+			fprintf(stderr, "vm_guest: bad command: %s", line);
+			rc = 1;
+			continue;
+		}
+		if (strcmp(op, "tap") == 0 && n == 3) {
+			if (key(fd, code, 1) < 0)
+				rc = 1;
+			sleep_ms(ms);
+			if (key(fd, code, 0) < 0)
+				rc = 1;
+		} else if (strcmp(op, "down") == 0) {
+			rc |= key(fd, code, 1) < 0;
+		} else if (strcmp(op, "up") == 0) {
+			rc |= key(fd, code, 0) < 0;
+		} else {
+			fprintf(stderr, "vm_guest: bad command: %s", line);
+			rc = 1;
+		}
+	}
+	fclose(in);
+out:
+	ioctl(fd, UI_DEV_DESTROY);
+	close(fd);
+	return rc;
+}
+
+static int cmd_kdmode(const char *tty)
+{
+	static const char *const kbn[] = { "raw", "xlate", "mediumraw", "unicode", "off" };
+	int fd = open(tty, O_RDONLY | O_NOCTTY | O_CLOEXEC), kd, kb;
+
+	if (fd < 0) {
+		fprintf(stderr, "vm_guest: %s: %s\n", tty, strerror(errno));
+		return 1;
+	}
+	if (ioctl(fd, KDGETMODE, &kd) < 0 || ioctl(fd, KDGKBMODE, &kb) < 0) {
+		fprintf(stderr, "vm_guest: %s: KDGETMODE/KDGKBMODE: %s\n", tty, strerror(errno));
+		close(fd);
+		return 1;
+	}
+	close(fd);
+	printf("kd %s kb %s\n", kd == KD_TEXT ? "text" : kd == KD_GRAPHICS ? "graphics" : "?",
+	       kb >= 0 && kb <= K_OFF ? kbn[kb] : "?");
+	return 0;
+}
+
+static int cmd_open(const char *path, const char *mode)
+{
+	int flags, fd;
+
+	if (strcmp(mode, "r") == 0)
+		flags = O_RDONLY;
+	else if (strcmp(mode, "w") == 0)
+		flags = O_WRONLY;
+	else if (strcmp(mode, "rw") == 0)
+		flags = O_RDWR;
+	else
+		return usage();
+	fd = open(path, flags | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+	if (fd < 0) {
+		const char *n = strerrorname_np(errno);
+		printf("%s\n", n ? n : strerror(errno));
+		return 1;
+	}
+	close(fd);
+	puts("ok");
+	return 0;
+}
+
+static int cmd_fbinfo(const char *dev)
+{
+	struct fb_var_screeninfo v;
+	struct fb_fix_screeninfo f;
+	int fd = open(dev, O_RDONLY | O_CLOEXEC);
+
+	if (fd < 0 || ioctl(fd, FBIOGET_VSCREENINFO, &v) < 0 ||
+	    ioctl(fd, FBIOGET_FSCREENINFO, &f) < 0) {
+		fprintf(stderr, "vm_guest: %s: %s\n", dev, strerror(errno));
+		if (fd >= 0)
+			close(fd);
+		return 1;
+	}
+	close(fd);
+	printf("id %.16s xres %u yres %u xres_virtual %u yres_virtual %u bpp %u "
+	       "r %u/%u g %u/%u b %u/%u line_length %u smem_len %u ypanstep %u visual %u\n",
+	       f.id, v.xres, v.yres, v.xres_virtual, v.yres_virtual, v.bits_per_pixel,
+	       v.red.offset, v.red.length, v.green.offset, v.green.length, v.blue.offset,
+	       v.blue.length, f.line_length, f.smem_len, f.ypanstep, f.visual);
+	return 0;
+}
+
+static int cmd_now(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	printf("%lld.%09ld\n", (long long)ts.tv_sec, ts.tv_nsec);
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	if (argc == 3 && strcmp(argv[1], "kbd") == 0)
+		return cmd_kbd(argv[2]);
+	if (argc == 3 && strcmp(argv[1], "kdmode") == 0)
+		return cmd_kdmode(argv[2]);
+	if (argc == 4 && strcmp(argv[1], "open") == 0)
+		return cmd_open(argv[2], argv[3]);
+	if (argc == 3 && strcmp(argv[1], "fbinfo") == 0)
+		return cmd_fbinfo(argv[2]);
+	if (argc == 2 && strcmp(argv[1], "now") == 0)
+		return cmd_now();
+	return usage();
+}
