@@ -32,7 +32,8 @@ static struct map *arena(const struct gf_thing *th, int n, const struct gf_box *
 	struct map *m;
 
 	all[0] = (struct gf_thing){ 128, 256, 0, 1, 0 };
-	memcpy(all + 1, th, (size_t)n * sizeof(*th));
+	if (n > 0)
+		memcpy(all + 1, th, (size_t)n * sizeof(*th));
 	m = gf_room(2048, 512, all, n + 1, b, nb);
 	assert_non_null(m);
 	return m;
