@@ -91,7 +91,9 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 	out[28] = h->set.coins_per_credit;
 	out[29] = h->set.freeplay;
 	out[30] = h->set.start_in_play;
+	out[31] = h->set.difficulty;
 	rec_put32(out + 32, h->count);
+	out[36] = h->set.lives;
 	if (size == REC_HEADER_SIZE)
 		return size;
 	rec_put16(out + 40, h->render_w);
@@ -127,7 +129,9 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 	d.set.coins_per_credit = buf[28];
 	d.set.freeplay = buf[29];
 	d.set.start_in_play = buf[30];
+	d.set.difficulty = buf[31];
 	d.count = rec_get32(buf + 32);
+	d.set.lives = buf[36];
 	if (d.version == 0) {
 		rec_msg(err, errlen, "version 0 is not a valid version");
 		return -EINVAL;
@@ -164,6 +168,14 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 	if (d.set.freeplay > 1 || d.set.start_in_play > 1) {
 		rec_msg(err, errlen, "freeplay %u / start_in_play %u is not 0 or 1",
 			d.set.freeplay, d.set.start_in_play);
+		return -EINVAL;
+	}
+	if (d.set.difficulty > 3) {
+		rec_msg(err, errlen, "difficulty %u out of range 0..3", d.set.difficulty);
+		return -EINVAL;
+	}
+	if (d.set.lives > 9) {
+		rec_msg(err, errlen, "lives %u out of range 0..9", d.set.lives);
 		return -EINVAL;
 	}
 	if (d.version >= REC_VERSION_2) {
@@ -599,6 +611,13 @@ int rec_check_run(const struct rec_header *h, const struct rec_run *run, char *e
 		rec_join(buf, sizeof(buf), &n,
 			 "settings differ: start_in_play recording %u, this run %u",
 			 h->set.start_in_play, run->set.start_in_play);
+	if (h->set.difficulty != run->set.difficulty)
+		rec_join(buf, sizeof(buf), &n,
+			 "settings differ: difficulty recording %u, this run %u",
+			 h->set.difficulty, run->set.difficulty);
+	if (h->set.lives != run->set.lives)
+		rec_join(buf, sizeof(buf), &n, "settings differ: lives recording %u, this run %u",
+			 h->set.lives, run->set.lives);
 	if (h->level && h->level != run->level)
 		rec_join(buf, sizeof(buf), &n, "level differs: recording %u, loaded %u", h->level,
 			 run->level);

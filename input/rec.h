@@ -9,9 +9,11 @@
  *  12  4  header size in bytes (REC_HEADER_SIZE for version 1)
  *  16  8  content hash of the map (map.content_hash)
  *  24  4  engine version (REC_ENGINE_VERSION: bumped when the sim changes)
- *  28  1  coins_per_credit   29 1 freeplay   30 1 start_in_play   31 1 reserved 0
+ *  28  1  coins_per_credit   29 1 freeplay   30 1 start_in_play
+ *  31  1  difficulty 0..3 (0 in recordings of engine version 1)
  *  32  4  number of records, or 0xffffffff if the writer did not finish
- *  36  4  reserved 0
+ *  36  1  lives 0..9, 0 meaning the default (0 in engine version 1)
+ *  37  3  reserved 0
  *  40  ... records: the command, REC_CMD_SIZE bytes:
  *        int8 forward, int8 side, int16 turn, uint8 buttons, uint8 coins
  *
@@ -19,7 +21,7 @@
  *  40  2  render width    42 2 render height (0: unknown)
  *  44  1  hash flags: REC_HAS_STATE, REC_HAS_FRAME
  *  45  1  built-in level number 1..99, 0 for a map loaded from a file
- *  46  2  reserved 0 (kept for settings the sim grows: difficulty, lives)
+ *  46  2  reserved 0 (difficulty and lives are bytes 31 and 36, in every version)
  *  48  4  renderer version (REC_RENDER_VERSION: bumped when frames change)
  *  52  4  reserved 0
  *  56  8  map name, NUL-padded ("MAP01"; empty for a built-in level)
@@ -52,7 +54,7 @@
 #define REC_VERSION 1               /* commands only (see REC_VERSION_2) */
 #define REC_VERSION_2 2             /* run description and per-tick hashes */
 #define REC_VERSION_MAX 2           /* newest version this build reads */
-#define REC_ENGINE_VERSION 1
+#define REC_ENGINE_VERSION 2         /* 2: the game: enemies, stages, modes, menu */
 /* Bumped whenever the renderer draws any frame differently (engine/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */
@@ -101,6 +103,7 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h);
  * in err ("file too short (12 bytes, the header needs 40)", "bad magic",
  * "version 7 is newer than this build (2)", "header size 8 is smaller than
  * 40", "tick rate 50 is not 60", "coins_per_credit 0 out of range 1..9",
+ * "difficulty 4 out of range 0..3", "lives 10 out of range 0..9",
  * "hash flags 0x04 unknown", "render size 5000x240 out of range").
  * The map hash and engine version are not judged here: see rec_check. */
 int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char *err,

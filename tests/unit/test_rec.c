@@ -49,7 +49,8 @@ static struct rec_header sample_header(void)
 		.tick_rate = 60,
 		.map_hash = 0x0102030405060708ull,
 		.engine_version = 1,
-		.set = { .coins_per_credit = 3, .freeplay = 1, .start_in_play = 0 },
+		.set = { .coins_per_credit = 3, .freeplay = 1, .start_in_play = 0, .difficulty = 2,
+			 .lives = 5 },
 		.count = 0x11223344u,
 	};
 	return h;
@@ -62,9 +63,9 @@ static const uint8_t sample_bytes[REC_HEADER_SIZE] = {
 	0x28, 0x00, 0x00, 0x00,                 /* 12 header size 40 */
 	0x08, 0x07, 0x06, 0x05, 0x04, 0x03, 0x02, 0x01, /* 16 map hash */
 	0x01, 0x00, 0x00, 0x00,                 /* 24 engine version 1 */
-	0x03, 0x01, 0x00, 0x00,                 /* 28 coins 3, freeplay 1, start 0, 0 */
+	0x03, 0x01, 0x00, 0x02,                 /* 28 coins 3, freeplay 1, start 0, difficulty 2 */
 	0x44, 0x33, 0x22, 0x11,                 /* 32 count */
-	0x00, 0x00, 0x00, 0x00,                 /* 36 reserved */
+	0x05, 0x00, 0x00, 0x00,                 /* 36 lives 5, reserved */
 };
 
 static void write_bytes(const char *path, const uint8_t *p, size_t n)
@@ -116,6 +117,8 @@ static void test_header_decode_round_trip(void **state)
 	assert_int_equal(h.set.coins_per_credit, 3);
 	assert_int_equal(h.set.freeplay, 1);
 	assert_int_equal(h.set.start_in_play, 0);
+	assert_int_equal(h.set.difficulty, 2);
+	assert_int_equal(h.set.lives, 5);
 	assert_int_equal(h.count, 0x11223344u);
 }
 
@@ -162,6 +165,12 @@ static void test_header_errors(void **state)
 	assert_string_equal(err, "coins_per_credit 10 out of range 1..9");
 	assert_int_equal(decode_patched(30, 2, 40, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "freeplay 1 / start_in_play 2 is not 0 or 1");
+	assert_int_equal(decode_patched(31, 4, 40, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "difficulty 4 out of range 0..3");
+	assert_int_equal(decode_patched(36, 10, 40, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "lives 10 out of range 0..9");
+	assert_int_equal(decode_patched(31, 3, 40, err, sizeof(err)), 0);
+	assert_int_equal(decode_patched(36, 0, 40, err, sizeof(err)), 0);
 	/* A larger header from a later minor addition is accepted. */
 	assert_int_equal(decode_patched(12, 48, 40, err, sizeof(err)), 0);
 	/* No room for a message is fine too. */
@@ -418,14 +427,14 @@ static void test_check_names_every_difference(void **state)
 	assert_string_equal(err, "map content differs: recording 0x0102030405060708, "
 				 "loaded 0x0000000000000abc");
 
-	h.engine_version = 2;
+	h.engine_version = 3;
 	assert_int_equal(rec_check(&h, 0x0102030405060708ull, err, sizeof(err)), -EINVAL);
-	assert_string_equal(err, "engine version differs: recording 2, this build 1");
+	assert_string_equal(err, "engine version differs: recording 3, this build 2");
 
 	assert_int_equal(rec_check(&h, 0xabcull, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "map content differs: recording 0x0102030405060708, "
 				 "loaded 0x0000000000000abc; engine version differs: "
-				 "recording 2, this build 1");
+				 "recording 3, this build 2");
 }
 
 /* ---- version 2 ------------------------------------------------------ */
@@ -452,9 +461,9 @@ static const uint8_t sample_bytes_v2[REC_HEADER_SIZE_V2] = {
 	0x50, 0x00, 0x00, 0x00,                 /* 12 header size 80 */
 	0x08, 0x07, 0x06, 0x05, 0x04, 0x03, 0x02, 0x01, /* 16 map hash */
 	0x01, 0x00, 0x00, 0x00,                 /* 24 engine version 1 */
-	0x03, 0x01, 0x00, 0x00,                 /* 28 coins 3, freeplay 1, start 0, 0 */
+	0x03, 0x01, 0x00, 0x02,                 /* 28 coins 3, freeplay 1, start 0, difficulty 2 */
 	0x44, 0x33, 0x22, 0x11,                 /* 32 count */
-	0x00, 0x00, 0x00, 0x00,                 /* 36 reserved */
+	0x05, 0x00, 0x00, 0x00,                 /* 36 lives 5, reserved */
 	0x40, 0x01, 0xf0, 0x00,                 /* 40 render 320 x 240 */
 	0x03, 0x02, 0x00, 0x00,                 /* 44 hash flags 3, level 2, reserved */
 	0x0d, 0x0c, 0x0b, 0x0a,                 /* 48 renderer version */
@@ -677,10 +686,14 @@ static void test_check_run_names_each_difference(void **state)
 	run.set.coins_per_credit = 1;
 	run.set.freeplay = 0;
 	run.set.start_in_play = 1;
+	run.set.difficulty = 1;
+	run.set.lives = 3;
 	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "settings differ: coins_per_credit recording 3, this run 1; "
 				 "settings differ: freeplay recording 1, this run 0; "
-				 "settings differ: start_in_play recording 0, this run 1");
+				 "settings differ: start_in_play recording 0, this run 1; "
+				 "settings differ: difficulty recording 2, this run 1; "
+				 "settings differ: lives recording 5, this run 3");
 
 	run = sample_run(&h);
 	run.level = 1;
@@ -708,7 +721,7 @@ static void test_check_run_names_each_difference(void **state)
 	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "map content differs: recording 0x0102030405060708, loaded "
 				 "0x0000000000000abc; engine version differs: recording 9, this "
-				 "build 1");
+				 "build 2");
 	/* A message longer than the buffer is cut, not overrun. */
 	assert_int_equal(rec_check_run(&h, &run, err, 20), -EINVAL);
 	assert_int_equal(strlen(err), 19);
