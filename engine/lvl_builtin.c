@@ -399,6 +399,7 @@ static const struct lvl_thing arena3_things[] = {
 	{ 190, 680, 0, TT_CLIP, ALL },
 	{ 1090, 680, 0, TT_CLIP, ALL },
 	{ 640, 1000, 0, TT_AMMO, ALL },
+	{ 1200, 40, 0, TT_AMMO, ALL },
 	{ 40, 984, 0, TT_TORCH, ALL },
 	{ 1240, 984, 0, TT_TORCH, ALL },
 	{ 320, 860, 0, TT_LIGHT_ORANGE, ALL },

@@ -329,6 +329,8 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd)
 		sim_player_move(s, cmd);
 		if (g->phase_t >= G_CLEAR_TICKS) {
 			int next = g->stage + 1;
+			if (p->ammo < G_AMMO_START)
+				p->ammo = G_AMMO_START;
 			if (next >= s->num_stages) {
 				next = 0;
 				if (g->loop < UINT8_MAX)

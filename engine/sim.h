@@ -168,7 +168,8 @@ void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set
  * (G_DEAD_TICKS), then a life is lost: the player respawns at the stage
  * start (enemies back at their spawn points, unalerted) or, with no life
  * left, GAMEOVER. When every enemy of the stage is dead: G_STAGE_BONUS
- * times the stage number, G_CLEAR_TICKS, then the next stage.
+ * times the stage number, G_CLEAR_TICKS, then the next stage (health
+ * carried over, ammo topped up to at least G_AMMO_START).
  *
  * GAMEOVER: G_CONTINUE_TICKS countdown (a FIRE press takes a second off);
  * START with a credit (or freeplay) continues: full lives, health and at

@@ -650,12 +650,15 @@ static void clearing_a_stage_scores_a_bonus_and_loads_the_next(void **state)
 	assert_int_equal(s.pl.x, fx_from_int(200));
 	assert_int_equal(s.pl.y, fx_from_int(64));
 	assert_int_equal(s.pl.angle, ANG90);
-	assert_int_equal(s.pl.ammo, G_AMMO_START - 2);    /* carried over */
-	/* clearing the last stage loops to the first, one loop harder */
+	assert_int_equal(s.pl.ammo, G_AMMO_START);        /* topped up to the start's */
+	/* clearing the last stage loops to the first, one loop harder; more
+	 * ammo than the start's is carried over */
+	s.pl.ammo = 120;
 	kill_all(&s);
 	run(&s, &nothing, G_CLEAR_TICKS + 1);
 	assert_int_equal(s.g.stage, 0);
 	assert_int_equal(s.g.loop, 1);
+	assert_int_equal(s.pl.ammo, 120);
 	assert_int_equal(s.g.score, 100 + G_STAGE_BONUS + 200 + 2 * G_STAGE_BONUS);
 	assert_int_equal(g_enemy_damage(&s, G_GRUNT), 5 * FX_ONE * 125 / 100);
 	map_free(a);
