@@ -135,9 +135,11 @@ static void r_subsector(struct r_ctx *r, uint32_t i)
 		r->sec_seen[ss->sector] = r->frame_no;
 	sec = &m->sectors[ss->sector];
 	r->floorplane = sec->floor_h < r->ez ?
-		r_plane_find(r, sec->floor_h, sec->floor_tex, sec->light) : -1;
+		r_plane_find(r, sec->floor_h, sec->floor_tex, sec->light,
+			     lmap_flat_grid(r->lm, ss->sector, 0)) : -1;
 	r->ceilplane = sec->ceil_h > r->ez || r_is_sky(r, sec->ceil_tex) ?
-		r_plane_find(r, sec->ceil_h, sec->ceil_tex, sec->light) : -1;
+		r_plane_find(r, sec->ceil_h, sec->ceil_tex, sec->light,
+			     lmap_flat_grid(r->lm, ss->sector, 1)) : -1;
 	for (uint32_t k = ss->first_seg; k < end && r->nsolid > 1; k++)
 		r_seg_add(r, &m->segs[k]);
 }

@@ -30,6 +30,7 @@
 #include <stdint.h>
 
 #include "engine/fx.h"
+#include "engine/lmap.h"
 #include "engine/map.h"
 #include "engine/pal.h"
 #include "engine/r_main.h"
@@ -40,6 +41,9 @@
 /* Near plane: nothing closer than this depth (map units, 16.16) is drawn.
  * The sim keeps the eye 16 units from solid walls, so it only shows when the
  * eye is within a quarter unit of a portal or outside the map. */
+/* Pixels of a floor or ceiling span lit by one light-map texel. */
+#define R_LMAP_RUN 16
+
 #define R_NEAR (FX_ONE / 4)
 
 /* Sprites nearer than this depth are not drawn (Doom's MINZ). */
@@ -94,6 +98,7 @@ struct r_range {
  * columns minx..maxx. top/bot hold w entries. */
 struct r_plane {
 	fx_t height;
+	const struct lmap_grid *lg;    /* the sector's light map, or NULL */
 	uint16_t pic;                   /* flat number as the sector stores it */
 	uint8_t light, sky;
 	int minx, maxx;
@@ -208,6 +213,7 @@ struct r_ctx {
 	int cy2;                        /* twice the horizon row: h + 2 * shear */
 	int64_t cy32;                   /* horizon, 32.32 pixels */
 	uint32_t front;                 /* sector of the subsector being drawn */
+	const struct lmap *lm;          /* point-light maps, NULL: none */
 	struct r_stats st;
 };
 
@@ -270,7 +276,8 @@ int r_seg_front(const struct map *m, const struct map_seg *sg, fx_t x, fx_t y);
 void r_plane_clear(struct r_ctx *r);
 /* The visplane of key (height, pic, light) to add columns to, or -1 when
  * none could be allocated (degraded). */
-int r_plane_find(struct r_ctx *r, fx_t height, uint16_t pic, int light);
+int r_plane_find(struct r_ctx *r, fx_t height, uint16_t pic, int light,
+		 const struct lmap_grid *lg);
 /* Plane p, or a new plane of the same key when p already has rows in a
  * column of [x1, x2]; its column range then includes [x1, x2]. -1 when
  * p is -1 or none could be allocated. */

@@ -427,6 +427,11 @@ static void r_sectors_reset(struct r_ctx *r, const struct map *m)
 	r->seen_ok = 1;
 }
 
+void r_set_lmap(struct r_ctx *r, const struct lmap *lm)
+{
+	r->lm = lm;
+}
+
 void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	      const struct r_view *v, const struct r_sprite *spr, int nspr, struct r_frame *f)
 {

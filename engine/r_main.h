@@ -22,6 +22,7 @@
 
 #include "engine/fx.h"
 
+struct lmap;
 struct map;
 struct tex_set;
 
@@ -93,6 +94,12 @@ void r_free(struct r_ctx *r);
  * fallback checker (counted in stats.missing). */
 void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	      const struct r_view *v, const struct r_sprite *spr, int nspr, struct r_frame *f);
+
+/* Point-light maps (lmap.h) for the next frames, NULL for none (the
+ * default): borrowed, must be made for the map r_render draws and outlive
+ * its use. A texel's boost subtracts from the colormap level of walls,
+ * floors and ceilings (not the sky, masked middles or sprites). */
+void r_set_lmap(struct r_ctx *r, const struct lmap *lm);
 
 /* Counters of the last r_render. */
 void r_get_stats(const struct r_ctx *r, struct r_stats *st);

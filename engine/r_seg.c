@@ -73,6 +73,8 @@ struct r_wall {
 	int64_t n0, nx, d0, dx;
 	int ushift;
 	int64_t u0;                     /* u at v1: offsets, 16.16 */
+	int64_t xoff;                   /* the side's x offset, 16.16 */
+	const struct lmap_grid *lg;     /* the side's light map, or NULL */
 	uint64_t len;                   /* seg length, 16.16 */
 };
 
@@ -85,8 +87,8 @@ static int r_tex_col(int64_t u, int w)
 	return (int)(u < 0 ? u + w : u);
 }
 
-/* Integer texture u (map units from the texture's left edge) at column x. */
-static int64_t r_wall_u(const struct r_ctx *r, const struct r_wall *w, int x)
+/* Texture u (16.16 map units from the texture's left edge) at column x. */
+static int64_t r_wall_u16(const struct r_ctx *r, const struct r_wall *w, int x)
 {
 	int64_t X = 2 * x + 1 - r->w;
 	int64_t n = (w->n0 + w->nx * X) >> w->ushift;
@@ -102,7 +104,7 @@ static int64_t r_wall_u(const struct r_ctx *r, const struct r_wall *w, int x)
 	else
 		t = ((uint64_t)n << 32) / (uint64_t)d;  /* n < d < 2^31 */
 	/* t <= 2^32, len < 2^31.5: product < 2^64 */
-	return (w->u0 + (int64_t)((t * w->len) >> 32)) >> FX_SHIFT;
+	return w->u0 + (int64_t)((t * w->len) >> 32);
 }
 
 /* Rows y1..y2 of column x from texture p's column col, texel row 0 at
@@ -123,6 +125,31 @@ static void r_wall_part(struct r_ctx *r, int x, int y1, int y2, const struct tex
 		   (uint32_t)v, (uint32_t)(iscale % hf));
 }
 
+/* Rows y1..y2 of a wall part lit through light-map column lc of grid g
+ * (lmap.h): texel row k covers heights [g->y0 + k T, g->y0 + (k + 1) T),
+ * T = 1 << g->shift; each band of rows is drawn with colormap level
+ * max(0, lvl - lc[k]). Bands go top down; row of a height: r_edge_row. */
+static void r_wall_lit(struct r_ctx *r, int x, int y1, int y2, const struct tex_pic *p,
+		       int64_t u, int64_t tm, int64_t iscale, int lvl, int64_t s16,
+		       const struct lmap_grid *g, const uint8_t *lc)
+{
+	int y = y1;
+
+	for (int k = g->h - 1; k >= 0 && y <= y2; k--) {
+		/* first row at or below the band's bottom edge; the lowest band
+		 * takes every row left */
+		int end = k == 0 ? y2 + 1 :
+			r_edge_row(r, ((int64_t)g->y0 + ((int64_t)k << g->shift)) * FX_ONE - r->ez,
+				   s16, y, y2 + 1);
+		int l = lvl - lc[k];
+
+		if (end > y) {
+			r_wall_part(r, x, y, end - 1, p, u, tm, iscale, r->cmap[l < 0 ? 0 : l]);
+			y = end;
+		}
+	}
+}
+
 /* Plane rows y1..y2 of column x into visplane p, or black when there is
  * none (seen from behind, or out of memory). */
 static void r_plane_rows(struct r_ctx *r, int p, int x, int y1, int y2)
@@ -137,14 +164,25 @@ static void r_plane_rows(struct r_ctx *r, int p, int x, int y1, int y2)
 	r->planes[p].bot[x] = (uint16_t)y2;
 }
 
+/* A wall part: lit by the light-map column lc when there is one. */
+static void r_part(struct r_ctx *r, const struct r_wall *w, int x, int y1, int y2,
+		   const struct tex_pic *p, int64_t u, int64_t tm, int64_t iscale, int lvl,
+		   int64_t s16, const uint8_t *lc)
+{
+	if (lc)
+		r_wall_lit(r, x, y1, y2, p, u, tm, iscale, lvl, s16, w->lg, lc);
+	else
+		r_wall_part(r, x, y1, y2, p, u, tm, iscale, r->cmap[lvl]);
+}
+
 /* Column x. mc: where to store its masked texture column, or NULL. */
 static void r_column(struct r_ctx *r, const struct r_wall *w, int x, int16_t *mc)
 {
 	int64_t s = w->s0 + w->step * (x - w->x1);
 	int64_t s16, iscale = 0, u = 0;
 	int top = r->ceilclip[x] + 1, bot = r->floorclip[x] - 1;
-	int a, b, m, k, newtop, newbot, markc, markf;
-	const uint8_t *cm;
+	int a, b, m, k, newtop, newbot, markc, markf, lvl;
+	const uint8_t *lc = NULL;
 
 	if (top > bot) {
 		if (mc)
@@ -156,12 +194,17 @@ static void r_column(struct r_ctx *r, const struct r_wall *w, int x, int16_t *mc
 	if (s > w->smax)
 		s = w->smax;
 	s16 = s >> 16;
-	cm = r->cmap[r_scale_level(r, w->wall_base, s)];
+	lvl = r_scale_level(r, w->wall_base, s);
 	r->st.columns++;
 	if (w->need_u) {
-		u = r_wall_u(r, w, x);
+		int64_t u16 = r_wall_u16(r, w, x);
+
+		u = u16 >> FX_SHIFT;
 		/* s >= 2^14 (depth < 2^33): iscale < 2^34 */
 		iscale = ((int64_t)1 << 48) / s;
+		/* light maps run along the side from its start, offsets aside */
+		if (w->lg)
+			lc = lmap_grid_column(w->lg, (fx_t)(u16 - w->xoff));
 	}
 
 	/* rows [top, a - 1] ceiling, [a, b] middle, [b + 1, bot] floor */
@@ -177,7 +220,7 @@ static void r_column(struct r_ctx *r, const struct r_wall *w, int x, int16_t *mc
 		r_plane_rows(r, r->floorplane, x, b + 1, bot);
 	if (!w->two_sided) {
 		if (w->mid)
-			r_wall_part(r, x, a, b, w->mid, u, w->tm_mid, iscale, cm);
+			r_part(r, w, x, a, b, w->mid, u, w->tm_mid, iscale, lvl, s16, lc);
 		else
 			r_draw_fill(r, x, a, b, r->black);
 		r->ceilclip[x] = (int16_t)r->h;
@@ -191,7 +234,7 @@ static void r_column(struct r_ctx *r, const struct r_wall *w, int x, int16_t *mc
 	if (w->upper) {
 		m = r_edge_row(r, w->hbc, s16, a, b + 1) - 1;
 		if (w->top) {
-			r_wall_part(r, x, a, m, w->top, u, w->tm_top, iscale, cm);
+			r_part(r, w, x, a, m, w->top, u, w->tm_top, iscale, lvl, s16, lc);
 			newtop = m;
 		}
 	}
@@ -199,7 +242,7 @@ static void r_column(struct r_ctx *r, const struct r_wall *w, int x, int16_t *mc
 	if (w->lower) {
 		k = r_edge_row(r, w->hbf, s16, m + 1, b + 1);
 		if (w->bot) {
-			r_wall_part(r, x, k, b, w->bot, u, w->tm_bot, iscale, cm);
+			r_part(r, w, x, k, b, w->bot, u, w->tm_bot, iscale, lvl, s16, lc);
 			newbot = k;
 		}
 	}
@@ -225,6 +268,8 @@ static void r_wall_surfaces(struct r_ctx *r, const struct map_seg *sg, struct r_
 	else if (v1->x == v2->x)
 		light -= R_CONTRAST;
 	w->wall_base = r_light_base(light);
+	w->lg = lmap_wall_grid(r->lm, sg->line, sg->side);
+	w->xoff = sd->xoff;
 	w->hfc = (int64_t)fs->ceil_h - r->ez;
 	w->hff = (int64_t)fs->floor_h - r->ez;
 	w->two_sided = sg->back != MAP_NONE;
@@ -253,6 +298,11 @@ static void r_wall_surfaces(struct r_ctx *r, const struct map_seg *sg, struct r_
 	w->markceil = w->hbc != w->hfc || bs->ceil_tex != fs->ceil_tex || bs->light != fs->light;
 	if (bs->ceil_h <= fs->floor_h || bs->floor_h >= fs->ceil_h)
 		w->markceil = w->markfloor = 1;   /* closed door */
+	/* planes of sectors with light maps are their own (r_plane_find) */
+	if (lmap_flat_grid(r->lm, r->front, 0) != lmap_flat_grid(r->lm, sg->back, 0))
+		w->markfloor = 1;
+	if (lmap_flat_grid(r->lm, r->front, 1) != lmap_flat_grid(r->lm, sg->back, 1))
+		w->markceil = 1;
 	/* a missing upper or lower texture draws nothing: what lies behind
 	 * shows, as in Doom */
 	if (w->upper && (w->top = r_wall_pic(r, sd->top_tex)) != NULL)
@@ -293,7 +343,9 @@ static int r_seg_invisible(const struct r_ctx *r, const struct map_seg *sg)
 	b = &m->sectors[sg->back];
 	return f->ceil_h == b->ceil_h && f->floor_h == b->floor_h &&
 	       f->ceil_tex == b->ceil_tex && f->floor_tex == b->floor_tex &&
-	       f->light == b->light && m->sides[m->lines[sg->line].side[sg->side]].mid_tex == 0;
+	       f->light == b->light && m->sides[m->lines[sg->line].side[sg->side]].mid_tex == 0 &&
+	       lmap_flat_grid(r->lm, r->front, 0) == lmap_flat_grid(r->lm, sg->back, 0) &&
+	       lmap_flat_grid(r->lm, r->front, 1) == lmap_flat_grid(r->lm, sg->back, 1);
 }
 
 int r_seg_front(const struct map *m, const struct map_seg *sg, fx_t x, fx_t y)

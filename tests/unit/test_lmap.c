@@ -17,6 +17,7 @@
 #include "engine/grid.h"
 #include "engine/lmap.h"
 #include "engine/map.h"
+#include "engine/r_main.h"
 #include "engine/tex.h"
 
 static struct map *grid(const char *text)
@@ -370,6 +371,68 @@ static void huge_surfaces_get_coarser_texels(void **state)
 	map_free(m);
 }
 
+
+/* The renderer with light maps: GRID1 seen from room 2's doorway towards
+ * its lamp. Without an lmap (or after setting NULL) the frame is the plain
+ * one; with it the lamp brightens many pixels (lower colormap levels: the
+ * palette's total brightness rises) and every pixel is still written once
+ * with nothing left empty. */
+static void renderer_applies_light_maps(void **state)
+{
+	size_t len;
+	const char *text = grid_builtin_text(&len);
+	struct tex_set *tex = NULL;
+	struct grid_names names;
+	struct map *m = NULL;
+	struct lmap *lm = NULL;
+	struct lmap_light lights[16];
+	struct r_ctx *r = NULL;
+	struct r_stats st;
+	enum { W = 160, H = 100 };
+	uint8_t *plain = malloc(W * H), *lit = malloc(W * H);
+	struct r_frame f = { plain, W, H, W };
+	/* room 2's west doorway (row 3, column 7 of 13 rows) facing east */
+	struct r_view v = { fx_from_int(7 * 64 + 32), fx_from_int(64 * 10 - 32), fx_from_int(41), 0, 0 };
+	uint64_t sum_plain = 0, sum_lit = 0;
+	int changed = 0, n;
+	char err[256];
+	(void)state;
+	assert_non_null(plain);
+	assert_non_null(lit);
+	assert_int_equal(tex_builtin(&tex), 0);
+	grid_names_from_tex(&names, tex);
+	assert_int_equal(grid_parse(text, len, "grid1", &names, &m, err, sizeof err), 0);
+	n = lmap_lights_from_map(m, 0, lights, 16);
+	assert_int_equal(lmap_new(m, lights, n, &lm), 0);
+	assert_int_equal(r_new(W, H, &r), 0);
+	r_render(r, m, tex, &v, NULL, 0, &f);
+	r_set_lmap(r, lm);
+	f.px = lit;
+	r_render(r, m, tex, &v, NULL, 0, &f);
+	r_get_stats(r, &st);
+	assert_int_equal(st.pixels_written, W * H);
+	assert_int_equal(st.pixels_empty, 0);
+	for (int i = 0; i < W * H; i++) {
+		changed += plain[i] != lit[i];
+		for (int c = 0; c < 3; c++) {
+			sum_plain += tex->pal.rgb[plain[i]][c];
+			sum_lit += tex->pal.rgb[lit[i]][c];
+		}
+	}
+	assert_true(changed > W * H / 10);
+	assert_true(sum_lit > sum_plain);
+	/* NULL: the plain frame again, byte for byte */
+	r_set_lmap(r, NULL);
+	r_render(r, m, tex, &v, NULL, 0, &f);
+	assert_memory_equal(lit, plain, W * H);
+	r_free(r);
+	lmap_free(lm);
+	map_free(m);
+	tex_free(tex);
+	free(plain);
+	free(lit);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -382,6 +445,7 @@ int main(void)
 		cmocka_unit_test(no_lights_and_bad_lights),
 		cmocka_unit_test(only_surfaces_facing_a_light_get_grids),
 		cmocka_unit_test(huge_surfaces_get_coarser_texels),
+		cmocka_unit_test(renderer_applies_light_maps),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
