@@ -39,6 +39,15 @@ int deb_poll(struct deb *d, uint64_t now, struct deb_ev *out)
 	return report(d, d->raw_ns, out);
 }
 
+int deb_settle(struct deb *d, uint64_t now, int level, struct deb_ev *out)
+{
+	if ((level != 0) != d->raw) {
+		d->raw = level != 0;
+		d->raw_ns = now;
+	}
+	return deb_poll(d, now, out);
+}
+
 int deb_level(const struct deb *d)
 {
 	return d->level;
@@ -89,6 +98,15 @@ int deb_coin_poll(struct deb_coin *c, uint64_t now, uint64_t *credit_ns)
 	struct deb_ev e;
 
 	if (!deb_poll(&c->d, now, &e))
+		return 0;
+	return coin_change(c, &e, credit_ns);
+}
+
+int deb_coin_settle(struct deb_coin *c, uint64_t now, int level, uint64_t *credit_ns)
+{
+	struct deb_ev e;
+
+	if (!deb_settle(&c->d, now, level, &e))
 		return 0;
 	return coin_change(c, &e, credit_ns);
 }

@@ -68,6 +68,12 @@ int deb_edge(struct deb *d, uint64_t t, int level, struct deb_ev out[2]);
  * line's last level differs from the reported one (see above), else 0. */
 int deb_poll(struct deb *d, uint64_t now, struct deb_ev *out);
 
+/* The line's level read directly at time now (for sources whose events
+ * may merge or carry a stale level, like GPIO v1 edge events): it replaces
+ * the last edge's level (keeping that edge's time when they agree, else
+ * taking now), then acts as deb_poll. */
+int deb_settle(struct deb *d, uint64_t now, int level, struct deb_ev *out);
+
 /* The reported level. */
 int deb_level(const struct deb *d);
 
@@ -89,5 +95,8 @@ int deb_coin_edge(struct deb_coin *c, uint64_t t, int level, uint64_t *credit_ns
 
 /* Time passes (once per tick at least); same return as deb_coin_edge. */
 int deb_coin_poll(struct deb_coin *c, uint64_t now, uint64_t *credit_ns);
+
+/* deb_settle for the coin line; same return as deb_coin_edge. */
+int deb_coin_settle(struct deb_coin *c, uint64_t now, int level, uint64_t *credit_ns);
 
 #endif

@@ -388,7 +388,8 @@ static struct gpiod_line *find_line(struct in_dev *d, const struct in_gpio_line 
 	}
 	if (!line) {
 		line_text(l, name, sizeof(name));
-		say(why, whylen, "line %s: %s", name, errno ? strerror(errno) : "not found");
+		say(why, whylen, "line %s: %s", name,
+		    errno && errno != ENOENT ? strerror(errno) : "not found");
 	}
 	return line;
 }
@@ -645,18 +646,33 @@ static int gpio_read(struct in_dev *d, struct in_event *out, int max)
 
 	for (int i = 0; i < d->nin; i++) {
 		struct gpio_in *g = &d->in[i];
+		struct deb *db = g->coin ? &g->cd.d : &g->deb;
 		struct deb_ev e;
 		uint64_t when;
+		int v = -1, got;
 
 		if (read_line(d, g, now) < 0)
 			return -ENODEV;
 		if (GPIO_QUEUE - d->qn < 2)
 			continue;
-		if (g->coin && deb_coin_poll(&g->cd, now, &when)) {
-			queue(d, when, g->code, 1);
-			queue(d, when, g->code, 0);
-		} else if (!g->coin && deb_poll(&g->deb, now, &e)) {
-			queue(d, e.time_ns, g->code, e.level);
+		now = in_now_ns();   /* not before the edges just read */
+		/* The v1 interface samples the level when its IRQ thread runs,
+		 * and close edges can merge: the last event may not carry the
+		 * level the line settled at. Once the hold-off is over, the
+		 * line's own level is the truth. */
+		if (now >= db->until_ns)
+			v = gpiod_line_get_value(g->line);
+		if (g->coin) {
+			got = v >= 0 ? deb_coin_settle(&g->cd, now, v, &when)
+				     : deb_coin_poll(&g->cd, now, &when);
+			if (got) {
+				queue(d, when, g->code, 1);
+				queue(d, when, g->code, 0);
+			}
+		} else {
+			got = v >= 0 ? deb_settle(&g->deb, now, v, &e) : deb_poll(&g->deb, now, &e);
+			if (got)
+				queue(d, e.time_ns, g->code, e.level);
 		}
 	}
 	while (n < max && d->qn > 0) {

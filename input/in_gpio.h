@@ -36,7 +36,14 @@
  * (CLOCK_MONOTONIC since Linux 5.7; a stamp more than 10 s from
  * in_now_ns() is replaced by in_now_ns()). Each edge goes through the
  * software debounce of input/deb.h (first edge reported at once, no added
- * latency). A coin line reports nothing while the pulse runs: each pulse
+ * latency). The v1 interface samples a line's level when its IRQ thread
+ * runs, so edges close together can merge and the last event may not
+ * carry the level the line settled at: once a line's hold-off is over,
+ * each read also reads the line's level and takes it as the truth
+ * (deb_settle: a change is stamped with its edge's time when the last
+ * event agrees, else with the time of the read), so a lost edge costs at
+ * most one tick and never leaves a button stuck. A coin line reports
+ * nothing while the pulse runs: each pulse
  * within the accepted widths gives one press and one release of its key,
  * both stamped at the pulse's end; others are counted as rejected (in
  * describe). A line that is active when the device opens (a held button)

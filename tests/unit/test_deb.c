@@ -175,6 +175,36 @@ static void test_holdoff_is_configurable(void **state)
 	assert_int_equal(deb_level(&d), 1);
 }
 
+static void test_settle_trusts_the_line_level_over_a_stale_event(void **state)
+{
+	/* The last edge event inside the hold-off says released, but the
+	 * line reads pressed when the hold-off ends: nothing changes. */
+	struct deb d;
+	struct log l = { .n = 0 };
+	struct deb_ev e;
+
+	(void)state;
+	deb_init(&d, 0, 0);
+	edge(&d, T0, 1, &l);
+	edge(&d, T0 + MS(1), 0, &l);
+	assert_int_equal(deb_settle(&d, T0 + MS(5), 1, &e), 0);
+	assert_int_equal(deb_level(&d), 1);
+	/* released with an event that agrees: stamped with the event's time */
+	edge(&d, T0 + MS(100), 0, &l);
+	edge(&d, T0 + MS(101), 1, &l);
+	edge(&d, T0 + MS(102), 0, &l);
+	assert_int_equal(deb_settle(&d, T0 + MS(110), 0, &e), 0);   /* reported at 100 */
+	assert_int_equal(l.n, 2);
+	expect(&l, 1, T0 + MS(100), 0);
+	/* a press whose event was lost: stamped with the time it was read */
+	assert_int_equal(deb_settle(&d, T0 + MS(200), 1, &e), 1);
+	assert_true(e.time_ns == T0 + MS(200) && e.level == 1);
+	/* inside a hold-off the level read changes nothing yet */
+	assert_int_equal(deb_settle(&d, T0 + MS(202), 0, &e), 0);
+	assert_int_equal(deb_settle(&d, T0 + MS(205), 0, &e), 1);
+	assert_true(e.time_ns == T0 + MS(202) && e.level == 0);
+}
+
 struct coins {
 	int n;
 	uint64_t t[8];
@@ -284,6 +314,7 @@ int main(void)
 		cmocka_unit_test(test_settled_change_is_reported_before_the_next_edge),
 		cmocka_unit_test(test_repeated_level_changes_nothing),
 		cmocka_unit_test(test_holdoff_is_configurable),
+		cmocka_unit_test(test_settle_trusts_the_line_level_over_a_stale_event),
 		cmocka_unit_test(test_bouncing_50ms_coin_pulse_is_one_coin),
 		cmocka_unit_test(test_noise_spike_and_jam_are_rejected),
 		cmocka_unit_test(test_pulse_width_limits_are_inclusive),
