@@ -15,6 +15,7 @@
 #include <time.h>
 
 #include "app/cmd.h"
+#include "app/content.h"
 #include "app/lat.h"
 #include "config/bind.h"
 #include "display/dp.h"
@@ -22,6 +23,7 @@
 #include "engine/hash.h"
 #include "engine/map.h"
 #include "engine/pal.h"
+#include "engine/tex.h"
 #include "engine/r_main.h"
 #include "engine/sim.h"
 #include "input/in.h"
@@ -52,12 +54,12 @@ struct app_in {
 struct app {
 	const struct cfg *cfg;
 	const struct app_opts *o;
-	struct pal pal;
-	struct map *map;
 	struct sim sim;
 	struct sim_settings set;
 	struct r_ctx *r;
-	struct tex_set *tex;       /* what r draws with (r_pal_set_new) */
+	struct ct ct;              /* map, texture set, light maps */
+	const struct map *map;     /* = ct.map */
+	struct tex_set *tex;       /* = ct.tex: what r draws with */
 	struct r_frame frame;
 	const struct dp_backend *dpb;
 	struct dp *dp;
@@ -402,7 +404,7 @@ static void script_checks(struct app *a, uint32_t t)
 			break;
 		case SCR_SCREENSHOT: {
 			int rc = shot_png(st->path, a->frame.px, a->frame.w, a->frame.h,
-					  a->frame.pitch, a->pal.rgb);
+					  a->frame.pitch, a->tex->pal.rgb);
 			if (rc < 0) {
 				logf_("%s:%u: screenshot %s: %s", a->o->script, st->line, st->path,
 				      strerror(-rc));
@@ -451,7 +453,7 @@ static int open_display(struct app *a)
 	logf_("display: %s", a->dpb->describe(a->dp));
 	if (why[0])
 		logf_("display: skipped %s", why);
-	a->dpb->set_palette(a->dp, a->pal.rgb);
+	a->dpb->set_palette(a->dp, a->tex->pal.rgb);
 	return 0;
 }
 
@@ -461,13 +463,16 @@ static int setup(struct app *a)
 	char err[512] = "";
 	int rc;
 
-	pal_builtin(&a->pal);
-	rc = map_builtin(c->game.level - 1, &a->map);
+	rc = ct_load(&a->ct, &a->o->content, err, sizeof(err));
 	if (rc < 0) {
-		logf_("built-in level %d: %s (there are %d)", c->game.level, strerror(-rc),
-		      map_builtin_count());
+		logf_("%s", err);
 		return rc;
 	}
+	a->map = a->ct.map;
+	a->tex = a->ct.tex;
+	logf_("content: %s, %u sectors, %u lines, %d light(s)%s", a->ct.what, a->map->num_sectors,
+	      a->map->num_lines, a->ct.nlights,
+	      a->map->missing_textures ? ", some textures missing (drawn as a checker)" : "");
 	a->set.coins_per_credit = (uint8_t)c->game.coins_per_credit;
 	a->set.freeplay = (uint8_t)c->game.freeplay;
 	a->set.start_in_play = (uint8_t)c->game.start_in_play;
@@ -502,13 +507,12 @@ static int setup(struct app *a)
 	a->frame.px = calloc((size_t)a->frame.w * (size_t)a->frame.h, 1);
 	if (!a->frame.px)
 		return -ENOMEM;
-	rc = r_pal_set_new(&a->tex);
-	if (rc == 0)
-		rc = r_new(a->frame.w, a->frame.h, &a->r);
+	rc = r_new(a->frame.w, a->frame.h, &a->r);
 	if (rc < 0) {
 		logf_("renderer %dx%d: %s", a->frame.w, a->frame.h, strerror(-rc));
 		return rc;
 	}
+	r_set_lmap(a->r, a->ct.lm);
 	rc = open_display(a);
 	if (rc < 0)
 		return rc;
@@ -589,9 +593,8 @@ static void teardown(struct app *a)
 	rec_reader_close(a->rep);
 	scr_free(a->scr);
 	r_free(a->r);
-	r_pal_set_free(a->tex);
 	free(a->frame.px);
-	map_free(a->map);
+	ct_free(&a->ct);
 }
 
 /* ---- the loop ------------------------------------------------------- */
@@ -631,6 +634,8 @@ static int render_and_present(struct app *a)
 	int rc;
 
 	sim_view(&a->sim, &v);
+	/* Animated textures follow the game tick, so replays see the same. */
+	tex_animate(a->tex, a->sim.tick);
 	r_render(a->r, a->map, a->tex, &v, NULL, 0, &a->frame);
 	rc = a->dpb->present(a->dp, a->frame.px, a->frame.w, a->frame.h, a->frame.pitch);
 	t1 = in_now_ns();
@@ -739,7 +744,7 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 	loop(a);
 	if (o->screenshot) {
 		rc = shot_png(o->screenshot, a->frame.px, a->frame.w, a->frame.h, a->frame.pitch,
-			      a->pal.rgb);
+			      a->tex->pal.rgb);
 		if (rc < 0) {
 			logf_("%s: %s", o->screenshot, strerror(-rc));
 			code = APP_SETUP_FAILED;

@@ -11,6 +11,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "app/content.h"
 #include "config/cfg.h"
 
 struct app_opts {
@@ -25,6 +26,7 @@ struct app_opts {
 	int no_render;           /* replay without rendering (state hashes only) */
 	int quiet;               /* replay without printing per-tick hashes */
 	FILE *out;               /* hashes, snapshots and summaries (stdout) */
+	struct ct_spec content;  /* what to play on (level set from the config) */
 };
 
 /* Exit codes of app_run. */

@@ -23,6 +23,11 @@ static void usage(FILE *f)
 	      "  --set S.K=V        set one configuration key (repeatable; last layer)\n"
 	      "  --display NAME     auto, fbdev, file, term or null (= --set display.backend=NAME)\n"
 	      "  --level N          built-in level N (= --set game.level=N)\n"
+	      "  --wad FILE         play Doom-format maps from FILE (repeatable: IWAD first,\n"
+	      "                     then PWADs, later ones override)\n"
+	      "  --map NAME         the map to play from the WADs (E1M1, MAP01; default: the first)\n"
+	      "  --grid FILE        play a grid (tile) map; \"builtin\" is the built-in GRID1\n"
+	      "  --no-lights        no shadowed point-light maps\n"
 	      "  --play             start in play, skipping attract (= --set game.start_in_play=1)\n"
 	      "  --bindings FILE    extra key bindings file, applied last\n"
 	      "  --script FILE      run a test script headless, as fast as possible\n"
@@ -53,7 +58,7 @@ int main(int argc, char **argv)
 {
 	enum { O_CONFIG_DIR = 256, O_STATE_DIR, O_SET, O_DISPLAY, O_LEVEL, O_PLAY, O_BINDINGS,
 	       O_SCRIPT, O_RECORD, O_REPLAY, O_NO_RENDER, O_QUIET, O_TICKS, O_FAST, O_SCREENSHOT,
-	       O_PRINT_CONFIG, O_VERSION, O_HELP };
+	       O_PRINT_CONFIG, O_VERSION, O_HELP, O_WAD, O_MAP, O_GRID, O_NO_LIGHTS };
 	static const struct option opts[] = {
 		{ "config-dir", required_argument, NULL, O_CONFIG_DIR },
 		{ "state-dir", required_argument, NULL, O_STATE_DIR },
@@ -71,6 +76,10 @@ int main(int argc, char **argv)
 		{ "fast", no_argument, NULL, O_FAST },
 		{ "screenshot", required_argument, NULL, O_SCREENSHOT },
 		{ "print-config", no_argument, NULL, O_PRINT_CONFIG },
+		{ "wad", required_argument, NULL, O_WAD },
+		{ "map", required_argument, NULL, O_MAP },
+		{ "grid", required_argument, NULL, O_GRID },
+		{ "no-lights", no_argument, NULL, O_NO_LIGHTS },
 		{ "version", no_argument, NULL, O_VERSION },
 		{ "help", no_argument, NULL, O_HELP },
 		{ NULL, 0, NULL, 0 },
@@ -80,7 +89,7 @@ int main(int argc, char **argv)
 	static char sets[MAX_SETS][CFG_PATH_MAX + 32];
 	struct app_opts o = { .out = stdout, .config_dir = "/etc/arcaded" };
 	const char *state_dir = NULL;
-	int nsets = 0, print_config = 0, opt;
+	int nsets = 0, print_config = 0, no_lights = 0, opt;
 	struct cfg c;
 
 	while ((opt = getopt_long(argc, argv, "", opts, NULL)) != -1) {
@@ -113,6 +122,16 @@ int main(int argc, char **argv)
 		case O_FAST: o.fast = 1; break;
 		case O_SCREENSHOT: o.screenshot = optarg; break;
 		case O_PRINT_CONFIG: print_config = 1; break;
+		case O_WAD:
+			if (o.content.nwads == CT_MAX_WADS) {
+				fprintf(stderr, "arcaded: more than %d --wad files\n", CT_MAX_WADS);
+				return 2;
+			}
+			o.content.wads[o.content.nwads++] = optarg;
+			break;
+		case O_MAP: o.content.map = optarg; break;
+		case O_GRID: o.content.grid = optarg; break;
+		case O_NO_LIGHTS: no_lights = 1; break;
 		case O_VERSION: puts("arcaded " ARCADED_VERSION); return 0;
 		case O_HELP: usage(stdout); return 0;
 		default: usage(stderr); return 2;
@@ -162,6 +181,12 @@ int main(int argc, char **argv)
 		fputs(buf, stdout);
 		free(buf);
 		return 0;
+	}
+	o.content.level = c.game.level;
+	o.content.lights = !no_lights;
+	if (o.content.map && o.content.nwads == 0) {
+		fprintf(stderr, "arcaded: --map goes with --wad\n");
+		return 2;
 	}
 	return app_run(&c, &o);
 }

@@ -1,0 +1,203 @@
+#include "app/content.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "engine/grid.h"
+#include "engine/lmap.h"
+#include "engine/map.h"
+#include "engine/map_wad.h"
+#include "engine/r_main.h"
+#include "engine/tex.h"
+#include "engine/wad.h"
+
+/* Freedoom 2 is 28 MiB; anything far larger is not a WAD meant for us. */
+#define CT_FILE_MAX (512u << 20)
+
+/* Reads a whole file into a new buffer (caller frees). 0 or -errno. */
+static int read_file(const char *path, uint8_t **buf, size_t *len)
+{
+	struct stat st;
+	size_t got = 0;
+	int fd, rc = 0;
+
+	fd = open(path, O_RDONLY | O_CLOEXEC);
+	if (fd < 0)
+		return -errno;
+	if (fstat(fd, &st) < 0) {
+		rc = -errno;
+		goto out;
+	}
+	if (!S_ISREG(st.st_mode) || (uint64_t)st.st_size > CT_FILE_MAX) {
+		rc = S_ISREG(st.st_mode) ? -EFBIG : -EINVAL;
+		goto out;
+	}
+	*buf = malloc(st.st_size ? (size_t)st.st_size : 1);
+	if (!*buf) {
+		rc = -ENOMEM;
+		goto out;
+	}
+	while (got < (size_t)st.st_size) {
+		ssize_t n = read(fd, *buf + got, (size_t)st.st_size - got);
+		if (n < 0 && errno == EINTR)
+			continue;
+		if (n <= 0) {
+			rc = n < 0 ? -errno : -EIO;
+			free(*buf);
+			*buf = NULL;
+			goto out;
+		}
+		got += (size_t)n;
+	}
+	*len = got;
+out:
+	close(fd);
+	return rc;
+}
+
+static int load_wads(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
+{
+	uint8_t *bufs[CT_MAX_WADS] = { 0 };
+	char names[64][9];
+	struct wad *w = NULL;
+	const char *name;
+	int rc, i;
+
+	rc = wad_new(&w);
+	for (i = 0; rc == 0 && i < s->nwads; i++) {
+		size_t len = 0;
+		rc = read_file(s->wads[i], &bufs[i], &len);
+		if (rc < 0)
+			snprintf(err, errlen, "%s: %s", s->wads[i], strerror(-rc));
+		else
+			rc = wad_add(w, bufs[i], len, s->wads[i], err, errlen);
+	}
+	if (rc == 0)
+		rc = tex_load_wad(w, &c->tex, err, errlen);
+	if (rc == 0) {
+		name = s->map;
+		if (!name) {
+			if (map_list_wad(w, names, 64) < 1) {
+				snprintf(err, errlen, "%s: no maps in the WADs", s->wads[0]);
+				rc = -ENOENT;
+			}
+			name = names[0];
+		}
+		if (rc == 0 && !s->grid)
+			rc = map_load_wad(w, c->tex, name, &c->map, err, errlen);
+		if (rc == 0) {
+			tex_pick_sky(c->tex, name);
+			snprintf(c->what, sizeof(c->what), "%s%s %s", s->wads[s->nwads - 1],
+				 s->nwads > 1 ? " (layered)" : "", s->grid ? "textures" : name);
+		}
+	}
+	/* The texture set and the map copy what they need: the file images
+	 * can go now (28 MiB for Freedoom 2). */
+	wad_free(w);
+	for (i = 0; i < CT_MAX_WADS; i++)
+		free(bufs[i]);
+	return rc;
+}
+
+static int load_grid(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
+{
+	struct grid_names names;
+	uint8_t *buf = NULL;
+	const char *text;
+	size_t len = 0;
+	int rc;
+
+	if (!c->tex) {
+		rc = tex_builtin(&c->tex);
+		if (rc < 0) {
+			snprintf(err, errlen, "built-in textures: %s", strerror(-rc));
+			return rc;
+		}
+	}
+	if (strcmp(s->grid, "builtin") == 0) {
+		text = grid_builtin_text(&len);
+	} else {
+		rc = read_file(s->grid, &buf, &len);
+		if (rc < 0) {
+			snprintf(err, errlen, "%s: %s", s->grid, strerror(-rc));
+			return rc;
+		}
+		text = (const char *)buf;
+	}
+	grid_names_from_tex(&names, c->tex);
+	rc = grid_parse(text, len, s->grid, &names, &c->map, err, errlen);
+	free(buf);
+	if (rc == 0)
+		snprintf(c->what, sizeof(c->what), "grid map %s", s->grid);
+	return rc;
+}
+
+static int load_lights(struct ct *c, char *err, size_t errlen)
+{
+	struct lmap_light *lights;
+	int n, rc;
+
+	n = lmap_lights_from_map(c->map, LMAP_DECOR, NULL, 0);
+	c->nlights = n;
+	if (n <= 0)
+		return 0;
+	lights = calloc((size_t)n, sizeof(*lights));
+	if (!lights)
+		return -ENOMEM;
+	lmap_lights_from_map(c->map, LMAP_DECOR, lights, n);
+	rc = lmap_new(c->map, lights, n, &c->lm);
+	free(lights);
+	if (rc < 0)
+		snprintf(err, errlen, "light maps of %s: %s", c->what, strerror(-rc));
+	return rc;
+}
+
+int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
+{
+	int rc;
+
+	memset(c, 0, sizeof(*c));
+	if (s->nwads > 0)
+		rc = load_wads(c, s, err, errlen);
+	else
+		rc = 0;
+	if (rc == 0 && s->grid) {
+		rc = load_grid(c, s, err, errlen);
+	} else if (rc == 0 && s->nwads == 0) {
+		/* The built-in arena levels name palette colours as textures:
+		 * they are drawn with the palette set. */
+		rc = map_builtin(s->level - 1, &c->map);
+		if (rc < 0)
+			snprintf(err, errlen, "built-in level %d: %s (there are %d)", s->level,
+				 strerror(-rc), map_builtin_count());
+		else
+			rc = r_pal_set_new(&c->tex);
+		if (rc == 0) {
+			c->tex_is_pal = 1;
+			snprintf(c->what, sizeof(c->what), "built-in level %d (%s)", s->level,
+				 c->map->name);
+		}
+	}
+	if (rc == 0 && s->lights)
+		rc = load_lights(c, err, errlen);
+	if (rc < 0)
+		ct_free(c);
+	return rc;
+}
+
+void ct_free(struct ct *c)
+{
+	lmap_free(c->lm);
+	if (c->tex_is_pal)
+		r_pal_set_free(c->tex);
+	else
+		tex_free(c->tex);
+	map_free(c->map);
+	memset(c, 0, sizeof(*c));
+}

@@ -1,0 +1,43 @@
+/*
+ * content: what the game is played on: a map, the texture set it is drawn
+ * with, and its shadowed light maps. From the built-in levels, a grid map
+ * (--grid), or Doom-format WADs (--wad, repeatable, later files override
+ * earlier ones; --map picks the map).
+ */
+#ifndef ARCADED_APP_CONTENT_H
+#define ARCADED_APP_CONTENT_H
+
+#include <stddef.h>
+
+struct lmap;
+struct map;
+struct tex_set;
+
+#define CT_MAX_WADS 8
+
+struct ct_spec {
+	const char *wads[CT_MAX_WADS];
+	int nwads;
+	const char *map;        /* map name in the WADs; NULL: the first one */
+	const char *grid;       /* grid map file, or "builtin" for GRID1 */
+	int level;              /* built-in level, 1-based (no WAD, no grid) */
+	int lights;             /* build light maps (arcaded lights + Doom lamps) */
+};
+
+struct ct {
+	struct map *map;
+	struct tex_set *tex;
+	int tex_is_pal;         /* tex from r_pal_set_new (built-in levels) */
+	struct lmap *lm;        /* NULL when the map has no lights */
+	int nlights;
+	char what[160];         /* "freedoom1.wad E1M1", "built-in level 1 (ARENA1)" */
+};
+
+/* Loads the content s names. 0, or -errno with err naming the file, lump
+ * or entry. On error c holds nothing (ct_free is still safe). */
+int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen);
+
+/* NULL-safe members; frees everything ct_load made. */
+void ct_free(struct ct *c);
+
+#endif
