@@ -15,14 +15,28 @@
  *   vm_guest open PATH r|w|rw
  *                           open PATH; print "ok" or the errno name; exit 0
  *                           if it opened, 1 if not
+ *   vm_guest probe CGROUP USER PATH:MODE:WANT...
+ *                           move into the cgroup (its directory under
+ *                           /sys/fs/cgroup), become USER (name; "root"
+ *                           stays root) with USER's group and no others,
+ *                           then open each PATH (MODE r|w|rw); WANT is
+ *                           "ok" or the errno name expected. Prints one
+ *                           line per path; exit 0 if every WANT was met
+ *   vm_guest waitfd PID PATH SECONDS
+ *                           wait until process PID has PATH open; prints
+ *                           how long it took; exit 1 on timeout
  *   vm_guest fbinfo DEV     print the framebuffer's geometry and format
  *   vm_guest now            CLOCK_MONOTONIC in seconds (9 decimals), the
  *                           clock of the journal's -o short-monotonic
  *
  * Exit status 0 on success, 1 on a failed check or error, 2 on bad usage.
  */
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <grp.h>
+#include <limits.h>
+#include <pwd.h>
 #include <linux/fb.h>
 #include <linux/kd.h>
 #include <linux/uinput.h>
@@ -37,9 +51,19 @@
 
 static int usage(void)
 {
-	fputs("usage: vm_guest kbd FIFO | kdmode TTY | open PATH r|w|rw | fbinfo DEV | now\n",
+	fputs("usage: vm_guest kbd FIFO | kdmode TTY | open PATH r|w|rw |\n"
+	      "       probe CGROUP USER PATH:MODE:WANT... | waitfd PID PATH SECONDS |\n"
+	      "       fbinfo DEV | now\n",
 	      stderr);
 	return 2;
+}
+
+static double mono(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
 }
 
 static int emit(int fd, int type, int code, int value)
@@ -179,9 +203,11 @@ static int cmd_kdmode(const char *tty)
 	return 0;
 }
 
-static int cmd_open(const char *path, const char *mode)
+/* Opens path with mode r|w|rw; "ok", the errno name, or NULL (bad mode). */
+static const char *try_open(const char *path, const char *mode)
 {
 	int flags, fd;
+	const char *n;
 
 	if (strcmp(mode, "r") == 0)
 		flags = O_RDONLY;
@@ -190,15 +216,113 @@ static int cmd_open(const char *path, const char *mode)
 	else if (strcmp(mode, "rw") == 0)
 		flags = O_RDWR;
 	else
-		return usage();
+		return NULL;
 	fd = open(path, flags | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
 	if (fd < 0) {
-		const char *n = strerrorname_np(errno);
-		printf("%s\n", n ? n : strerror(errno));
+		n = strerrorname_np(errno);
+		return n ? n : "error";
+	}
+	close(fd);
+	return "ok";
+}
+
+static int cmd_open(const char *path, const char *mode)
+{
+	const char *r = try_open(path, mode);
+
+	if (!r)
+		return usage();
+	puts(r);
+	return strcmp(r, "ok") == 0 ? 0 : 1;
+}
+
+static int cmd_probe(const char *cg, const char *user, char **specs, int n)
+{
+	char procs[PATH_MAX];
+	int fd, bad = 0;
+
+	snprintf(procs, sizeof(procs), "%s/cgroup.procs", cg);
+	fd = open(procs, O_WRONLY | O_CLOEXEC);
+	if (fd < 0 || write(fd, "0\n", 2) != 2) {
+		fprintf(stderr, "vm_guest: %s: %s\n", procs, strerror(errno));
 		return 1;
 	}
 	close(fd);
-	puts("ok");
+	if (strcmp(user, "root") != 0) {
+		struct passwd *pw = getpwnam(user);
+
+		if (!pw) {
+			fprintf(stderr, "vm_guest: no user %s\n", user);
+			return 1;
+		}
+		if (setgroups(0, NULL) < 0 || setgid(pw->pw_gid) < 0 || setuid(pw->pw_uid) < 0) {
+			fprintf(stderr, "vm_guest: become %s: %s\n", user, strerror(errno));
+			return 1;
+		}
+	}
+	for (int i = 0; i < n; i++) {
+		char spec[PATH_MAX], *mode, *want;
+		const char *got;
+
+		snprintf(spec, sizeof(spec), "%s", specs[i]);
+		want = strrchr(spec, ':');
+		if (!want)
+			return usage();
+		*want++ = '\0';
+		mode = strrchr(spec, ':');
+		if (!mode)
+			return usage();
+		*mode++ = '\0';
+		got = try_open(spec, mode);
+		if (!got)
+			return usage();
+		printf("%s %s %s %s: %s %s\n", user, spec, mode, got,
+		       strcmp(got, want) == 0 ? "as wanted" : "WANTED", want);
+		bad |= strcmp(got, want) != 0;
+	}
+	return bad;
+}
+
+/* Does process pid have path open? */
+static int holds(const char *pid, const char *path)
+{
+	char dir[64], link[PATH_MAX], target[PATH_MAX];
+	struct dirent *de;
+	DIR *d;
+	int found = 0;
+
+	snprintf(dir, sizeof(dir), "/proc/%s/fd", pid);
+	d = opendir(dir);
+	if (!d)
+		return 0;
+	while (!found && (de = readdir(d)) != NULL) {
+		ssize_t n;
+
+		if (de->d_name[0] == '.')
+			continue;
+		snprintf(link, sizeof(link), "%s/%s", dir, de->d_name);
+		n = readlink(link, target, sizeof(target) - 1);
+		if (n <= 0)
+			continue;
+		target[n] = '\0';
+		found = strcmp(target, path) == 0;
+	}
+	closedir(d);
+	return found;
+}
+
+static int cmd_waitfd(const char *pid, const char *path, const char *secs)
+{
+	double t0 = mono(), limit = atof(secs);
+
+	while (!holds(pid, path)) {
+		if (mono() - t0 > limit) {
+			printf("%.2f (timeout)\n", mono() - t0);
+			return 1;
+		}
+		sleep_ms(20);
+	}
+	printf("%.2f\n", mono() - t0);
 	return 0;
 }
 
@@ -241,6 +365,10 @@ int main(int argc, char **argv)
 		return cmd_kdmode(argv[2]);
 	if (argc == 4 && strcmp(argv[1], "open") == 0)
 		return cmd_open(argv[2], argv[3]);
+	if (argc >= 5 && strcmp(argv[1], "probe") == 0)
+		return cmd_probe(argv[2], argv[3], argv + 4, argc - 4);
+	if (argc == 5 && strcmp(argv[1], "waitfd") == 0)
+		return cmd_waitfd(argv[2], argv[3], argv[4]);
 	if (argc == 3 && strcmp(argv[1], "fbinfo") == 0)
 		return cmd_fbinfo(argv[2]);
 	if (argc == 2 && strcmp(argv[1], "now") == 0)
