@@ -734,3 +734,83 @@ const struct in_backend in_gpio = {
 	.describe = gpio_describe,
 	.ident = gpio_ident,
 };
+
+struct gpio_text {
+	char *buf;
+	size_t len, cap;
+	int failed;
+};
+
+__attribute__((format(printf, 2, 3)))
+static void text_add(struct gpio_text *t, const char *fmt, ...)
+{
+	va_list ap;
+	int n;
+
+	if (t->failed)
+		return;
+	for (;;) {
+		va_start(ap, fmt);
+		n = vsnprintf(t->buf ? t->buf + t->len : NULL, t->buf ? t->cap - t->len : 0, fmt,
+			      ap);
+		va_end(ap);
+		if (n < 0) {
+			t->failed = 1;
+			return;
+		}
+		if (t->buf && t->len + (size_t)n < t->cap) {
+			t->len += (size_t)n;
+			return;
+		}
+		{
+			size_t cap = (t->cap ? t->cap : 1024) * 2 + (size_t)n;
+			char *b = realloc(t->buf, cap);
+
+			if (!b) {
+				t->failed = 1;
+				return;
+			}
+			t->buf = b;
+			t->cap = cap;
+		}
+	}
+}
+
+int in_gpio_list(char **text)
+{
+	struct gpio_text t = { NULL, 0, 0, 0 };
+	struct gpiod_chip_iter *it = gpiod_chip_iter_new();
+	struct gpiod_chip *chip;
+
+	*text = NULL;
+	text_add(&t, "%s", "");
+	if (it) {
+		while ((chip = gpiod_chip_iter_next(it)) != NULL) {
+			unsigned n = gpiod_chip_num_lines(chip);
+
+			text_add(&t, "%s [%s] %u lines\n", gpiod_chip_name(chip),
+				 gpiod_chip_label(chip) ? gpiod_chip_label(chip) : "", n);
+			for (unsigned i = 0; i < n; i++) {
+				struct gpiod_line *l = gpiod_chip_get_line(chip, i);
+				const char *name = l ? gpiod_line_name(l) : NULL;
+				const char *user = l ? gpiod_line_consumer(l) : NULL;
+
+				if (!l)
+					continue;
+				text_add(&t, "  %u %s %s", i, name ? name : "-",
+					 gpiod_line_direction(l) == GPIOD_LINE_DIRECTION_OUTPUT ? "output"
+												: "input");
+				if (gpiod_line_is_used(l))
+					text_add(&t, ", used by %s", user ? user : "the kernel");
+				text_add(&t, "\n");
+			}
+		}
+		gpiod_chip_iter_free(it);
+	}
+	if (t.failed) {
+		free(t.buf);
+		return -ENOMEM;
+	}
+	*text = t.buf;
+	return 0;
+}

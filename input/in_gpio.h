@@ -101,6 +101,13 @@ struct in_gpio_spec {
  * in why. */
 int in_gpio_parse_spec(const char *s, struct in_gpio_spec *out, char *why, size_t whylen);
 
+/* Lists every GPIO chip and its lines for `arcaded devices`, one chip per
+ * line ("gpiochip0 [pinctrl-bcm2711] 58 lines") and one line per GPIO line
+ * ("  5 COIN1 input, used by arcaded"; an unnamed line shows "-"), into a
+ * new NUL-terminated *text (free()); "" when there is no chip. 0 or
+ * -ENOMEM. */
+int in_gpio_list(char **text);
+
 /* Drives d's output lines for the game state s at time now_ns (call once
  * per tick; d must come from in_gpio.open). 0, or -ENODEV when a line
  * could not be set (the chip went away). */

@@ -17,6 +17,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
@@ -171,6 +172,13 @@ static void test_open_missing_chip_says_why(void **state)
 	assert_int_equal(in_gpio.open("gpio:c:5=jump", &d, why, sizeof(why)), -EINVAL);
 	assert_int_equal(in_gpio_update(NULL, &st, 0), -EINVAL);
 	in_gpio.close(NULL);
+	{
+		char *text;
+
+		assert_int_equal(in_gpio_list(&text), 0);
+		assert_non_null(text);
+		free(text);
+	}
 }
 
 /* ---- with gpio-sim ------------------------------------------------------- */
@@ -402,6 +410,16 @@ static void test_sim_line_by_name_and_held_at_open(void **state)
 	in_gpio.close(d);
 	assert_int_equal(in_gpio.open("gpio:COIN1=coin", &d, why, sizeof(why)), 0);
 	assert_non_null(strstr(in_gpio.describe(d), "COIN1=KEY_5 (coin)"));
+	{
+		char *text, want[64];
+
+		assert_int_equal(in_gpio_list(&text), 0);
+		snprintf(want, sizeof(want), "%s [arcaded-test] 24 lines\n", sim_chip);
+		assert_non_null(strstr(text, want));
+		assert_non_null(strstr(text, "  20 COIN1 input, used by arcaded\n"));
+		assert_non_null(strstr(text, "  19 - input\n"));
+		free(text);
+	}
 	in_gpio.close(d);
 }
 
