@@ -7,6 +7,8 @@
 #         screen = the daemon's frame, uinput keyboard, unprivileged user and
 #         device policy, watchdog restart, SIGTERM;
 #   fb16  vesafb, 16 bpp RGB565 (vga=0x317): screen = the daemon's frame.
+# fb32 also runs the unit tests that need real devices (uinput, fbdev,
+# uhid, gpio-sim); the boot "units" runs only those (quicker, to debug them).
 # The guest side is tests/vm/guest.sh; this script drives QEMU, serves the
 # guest's screendump requests through QMP and judges the screens.
 #
@@ -76,6 +78,7 @@ t=$(now)
 kdir=$(tests/vm/kernel.sh "$CACHE") || die "kernel"
 version=$(cat "$kdir/version")
 tests/vm/initramfs.sh "$kdir" "$B/initramfs.cpio" || die "initramfs"
+gpio_ko=$(tests/vm/gpio-sim.sh "$kdir") || gpio_ko=""
 echo "vm: kernel $version, initramfs ready in $(secs "$t" "$(now)") s"
 
 # The stage: what the guest installs and runs (shared read-only). Outside
@@ -86,10 +89,19 @@ trap 'rm -rf "$ST"' EXIT
 mkdir -p "$ST/bin"
 make --no-print-directory -s BUILD="$BUILD" install DESTDIR="$ST/destdir" > "$B/install.log" 2>&1 ||
 	{ cat "$B/install.log"; die "make install"; }
-cp "$B/vm_guest" "$BUILD/tests/test_in_evdev" "$BUILD/tests/test_dp_fbdev" "$ST/bin/"
+cp "$B/vm_guest" "$ST/bin/"
+# Unit tests that need real devices (they skip on this machine).
+mkdir -p "$ST/tests" "$ST/modules"
+for t in test_in_evdev test_dp_fbdev test_in_hid test_in_gpio; do
+	[ -x "$BUILD/tests/$t" ] && cp "$BUILD/tests/$t" "$ST/tests/"
+done
+# They read fixtures by paths relative to the repository root.
+mkdir -p "$ST/repo/tests"
+cp -r tests/data "$ST/repo/tests/"
 cp tests/vm/guest.sh "$ST/guest.sh"
 mkdir -p "$ST/overlay/lib/systemd/system"
 cp tests/vm/vm-test.service "$ST/overlay/lib/systemd/system/"
+[ -n "$gpio_ko" ] && cp "$gpio_ko" "$ST/modules/"
 # The fault-injection switch (off by default) is enabled for the watchdog test.
 mkdir -p "$ST/overlay/etc/systemd/system/arcaded.service.d"
 cp tests/vm/arcaded-vm.conf "$ST/overlay/etc/systemd/system/arcaded.service.d/vm.conf"
@@ -148,7 +160,7 @@ boot() {
 	base="$base modprobe.blacklist=floppy,ata_piix,pata_acpi,ata_generic,pcspkr,kvm,kvm_amd"
 	base="$base,kvm_intel,powernow_k8,acpi_cpufreq,serio_raw,i2c_piix4,joydev,evbug"
 	case $name in
-	fb32)
+	fb32 | units)
 		# PVH entry of the ELF kernel: no firmware, no decompression.
 		kernel=$kdir/vmlinux
 		# Debian allocates the DRM fbdev memory for one page (overalloc
@@ -267,6 +279,11 @@ judge() {
 	fi
 }
 
+if [ -n "$gpio_ko" ]; then
+	result PASS gpio-sim-module "built $gpio_ko"
+else
+	result FAIL gpio-sim-module "tests/vm/gpio-sim.sh failed: test_in_gpio will skip its gpio-sim cases"
+fi
 for b in $boots; do
 	boot "$b"
 done
