@@ -17,10 +17,15 @@
 #include "app/cmd.h"
 #include "app/content.h"
 #include "app/lat.h"
+#include "app/view.h"
 #include "config/bind.h"
 #include "display/dp.h"
 #include "display/shot.h"
+#include "config/st.h"
+#include "engine/g_game.h"
 #include "engine/hash.h"
+#include "engine/hud.h"
+#include "engine/menu.h"
 #include "engine/map.h"
 #include "engine/pal.h"
 #include "engine/tex.h"
@@ -57,9 +62,14 @@ struct app {
 	struct sim sim;
 	struct sim_settings set;
 	struct r_ctx *r;
-	struct ct ct;              /* map, texture set, light maps */
-	const struct map *map;     /* = ct.map */
+	struct ct ct;              /* stage maps, texture set, light maps */
+	const struct map *map;     /* = ct.map, the first stage */
 	struct tex_set *tex;       /* = ct.tex: what r draws with */
+	uint64_t map_hash;         /* of every stage: what recordings are tied to */
+	struct view view;          /* draws the sim's frame */
+	uint32_t set_gen, scores_gen, books_gen;  /* last persisted generations */
+	uint8_t res;               /* render size choice in effect (menu) */
+	int persist;               /* live cabinet: save settings, scores, books */
 	struct r_frame frame;
 	const struct dp_backend *dpb;
 	struct dp *dp;
@@ -327,33 +337,34 @@ static void read_inputs(struct app *a)
 
 static int64_t field_value(const struct sim *s, enum scr_field f)
 {
-	switch (f) {
-	case SCR_F_X: return s->pl.x;
-	case SCR_F_Y: return s->pl.y;
-	case SCR_F_Z: return s->pl.z;
-	case SCR_F_ANGLE: return (int64_t)(((uint64_t)s->pl.angle * 360u) >> 32);
-	case SCR_F_SECTOR: return s->pl.sector;
-	case SCR_F_CREDITS: return s->credits;
-	case SCR_F_COINS: return s->coins_total;
-	case SCR_F_TICK: return s->tick;
-	case SCR_F_MODE: return s->mode;
-	}
-	return 0;
+	return sim_field_value(s, (int)f);
 }
 
 /* Renders a script value the way the script wrote it. */
 static void format_value(enum scr_field f, int64_t v, char *buf, size_t len)
 {
-	if (f == SCR_F_X || f == SCR_F_Y || f == SCR_F_Z) {
+	switch (sim_field_kind((int)f)) {
+	case SIM_FK_FX: {
 		/* 16.16 to decimal with 4 places, exact enough to read */
 		int64_t m = v < 0 ? -v : v;
 		snprintf(buf, len, "%s%" PRId64 ".%04" PRId64, v < 0 ? "-" : "", m >> 16,
 			 ((m & 0xffff) * 10000) >> 16);
-	} else if (f == SCR_F_MODE) {
+		break;
+	}
+	case SIM_FK_MODE: {
 		const char *n = sim_mode_name((enum sim_mode)v);
 		snprintf(buf, len, "%s", n ? n : "?");
-	} else {
+		break;
+	}
+	case SIM_FK_PAGE: {
+		const char *n = sim_page_name((int)v);
+		snprintf(buf, len, "%s", n ? n : "?");
+		break;
+	}
+	case SIM_FK_INT:
+	case SIM_FK_ANGLE:
 		snprintf(buf, len, "%" PRId64, v);
+		break;
 	}
 }
 
@@ -392,8 +403,8 @@ static void script_checks(struct app *a, uint32_t t)
 				format_value(st->field, v, got, sizeof(got));
 				format_value(st->field, st->value, want, sizeof(want));
 				logf_("%s:%u: expect %s %s %s failed: %s is %s", a->o->script,
-				      st->line, scr_field_name(st->field), scr_cmp_name(st->cmp),
-				      want, scr_field_name(st->field), got);
+				      st->line, sim_field_name((int)st->field), scr_cmp_name(st->cmp),
+				      want, sim_field_name((int)st->field), got);
 				a->failures++;
 			}
 			break;
@@ -457,13 +468,167 @@ static int open_display(struct app *a)
 	return 0;
 }
 
+/* ---- persistence -------------------------------------------------- */
+
+/* Loads a state file's payload; NULL when missing or unusable (reported). */
+static void *load_state(struct app *a, const char *name, size_t *len)
+{
+	char msg[256] = "";
+	void *buf = NULL;
+	int rc = st_load(a->cfg->paths.state_dir, name, &buf, len, NULL, msg, sizeof(msg));
+
+	if (msg[0] && rc != -ENOENT)
+		logf_("%s/%s: %s", a->cfg->paths.state_dir, name, msg);
+	if (rc < 0) {
+		if (rc != -ENOENT)
+			logf_("%s/%s: %s; using defaults", a->cfg->paths.state_dir, name,
+			      strerror(-rc));
+		return NULL;
+	}
+	return buf;
+}
+
+static void save_state(struct app *a, const char *name, const void *data, size_t len)
+{
+	int rc = st_save(a->cfg->paths.state_dir, name, data, len);
+	if (rc < 0)
+		logf_("%s/%s: not saved: %s (the previous copy is intact)", a->cfg->paths.state_dir,
+		      name, strerror(-rc));
+}
+
+/* Starts the sim on every stage, with the cabinet's high scores and
+ * bookkeeping when it keeps them. */
+static void start_sim(struct app *a)
+{
+	struct g_scores scores, *sp = NULL;
+	struct g_books books, *bp = NULL;
+	size_t len = 0;
+	void *buf;
+
+	if (a->persist) {
+		buf = load_state(a, "scores", &len);
+		if (buf && g_scores_decode(buf, len, &scores) == 0)
+			sp = &scores;
+		else if (buf)
+			logf_("%s/scores: not a high-score table; using the defaults",
+			      a->cfg->paths.state_dir);
+		free(buf);
+		buf = load_state(a, "books", &len);
+		if (buf && g_books_decode(buf, len, &books) == 0)
+			bp = &books;
+		else if (buf)
+			logf_("%s/books: not bookkeeping; starting from zero", a->cfg->paths.state_dir);
+		free(buf);
+	}
+	sim_init_stages(&a->sim, (const struct map *const *)a->ct.maps, a->ct.nmaps, &a->set, sp,
+			bp);
+	a->set_gen = a->sim.set_gen;
+	a->scores_gen = a->sim.scores_gen;
+	a->books_gen = a->sim.books_gen;
+}
+
+/* Settings changed in the service menu go to the state directory's
+ * settings.ini (a state file whose payload is INI text), the layer main.c
+ * reads after /etc/arcaded. */
+static void save_settings(struct app *a)
+{
+	const struct sim_settings *st = &a->sim.set;
+	char ini[256];
+	int n = snprintf(ini, sizeof(ini),
+			 "[game]\ncoins_per_credit = %u\nfreeplay = %s\ndifficulty = %u\nlives = %u\n"
+			 "render_width = %d\nrender_height = %d\n",
+			 st->coins_per_credit, st->freeplay ? "yes" : "no", st->difficulty,
+			 st->lives, a->frame.w, a->frame.h);
+	save_state(a, "settings.ini", ini, (size_t)n);
+}
+
+/* (Re)allocates the frame and the renderer for w x h. */
+static int resize(struct app *a, int w, int h)
+{
+	struct r_ctx *r = NULL;
+	uint8_t *px;
+	int rc = r_new(w, h, &r);
+
+	if (rc < 0) {
+		logf_("renderer %dx%d: %s", w, h, strerror(-rc));
+		return rc;
+	}
+	px = calloc((size_t)w * (size_t)h, 1);
+	if (!px) {
+		r_free(r);
+		return -ENOMEM;
+	}
+	r_free(a->r);
+	free(a->frame.px);
+	a->r = r;
+	a->frame.px = px;
+	a->frame.w = a->frame.pitch = w;
+	a->frame.h = h;
+	view_set_renderer(&a->view, r);
+	return 0;
+}
+
+/* After each tick: what the service menu or the game changed that a live
+ * cabinet keeps. */
+static void persist_tick(struct app *a)
+{
+	uint8_t buf[G_SCORES_BYTES > G_BOOKS_BYTES ? G_SCORES_BYTES : G_BOOKS_BYTES];
+
+	if (a->sim.menu.res != a->res) {
+		int w = a->cfg->game.render_width, h = a->cfg->game.render_height;
+		a->res = a->sim.menu.res;
+		if (a->res)
+			menu_res_size(a->res, &w, &h);
+		if (resize(a, w, h) == 0)
+			logf_("render size %dx%d", w, h);
+		if (a->persist)
+			save_settings(a);
+	}
+	if (!a->persist)
+		return;
+	if (a->sim.set_gen != a->set_gen) {
+		a->set_gen = a->sim.set_gen;
+		save_settings(a);
+	}
+	if (a->sim.scores_gen != a->scores_gen) {
+		a->scores_gen = a->sim.scores_gen;
+		g_scores_encode(&a->sim.scores, buf);
+		save_state(a, "scores", buf, G_SCORES_BYTES);
+	}
+	if (a->sim.books_gen != a->books_gen) {
+		a->books_gen = a->sim.books_gen;
+		g_books_encode(&a->sim.books, buf);
+		save_state(a, "books", buf, G_BOOKS_BYTES);
+	}
+}
+
 static int setup(struct app *a)
 {
 	const struct cfg *c = a->cfg;
 	char err[512] = "";
 	int rc;
 
-	rc = ct_load(&a->ct, &a->o->content, err, sizeof(err));
+	struct ct_spec spec = a->o->content;
+	int rw = c->game.render_width, rh = c->game.render_height;
+
+	if (a->o->replay) {
+		struct rec_run run;
+		rc = rec_reader_open(a->o->replay, &a->rep, err, sizeof(err));
+		if (rc < 0) {
+			logf_("%s", err[0] ? err : strerror(-rc));
+			return rc;
+		}
+		/* A recording says which built-in level and frame size it was
+		 * made with (format 2); the replay uses them. */
+		rec_run_from_header(rec_reader_header(a->rep), &run);
+		if (run.level && spec.nwads == 0 && !spec.grid)
+			spec.level = run.level;
+		if (run.render_w && run.render_h) {
+			rw = run.render_w;
+			rh = run.render_h;
+		}
+	}
+	rc = ct_load(&a->ct, &spec, err, sizeof(err));
 	if (rc < 0) {
 		logf_("%s", err);
 		return rc;
@@ -473,17 +638,18 @@ static int setup(struct app *a)
 	logf_("content: %s, %u sectors, %u lines, %d light(s)%s", a->ct.what, a->map->num_sectors,
 	      a->map->num_lines, a->ct.nlights,
 	      a->map->missing_textures ? ", some textures missing (drawn as a checker)" : "");
+	a->map_hash = sim_stages_hash((const struct map *const *)a->ct.maps, a->ct.nmaps);
 	a->set.coins_per_credit = (uint8_t)c->game.coins_per_credit;
 	a->set.freeplay = (uint8_t)c->game.freeplay;
 	a->set.start_in_play = (uint8_t)c->game.start_in_play;
+	a->set.difficulty = (uint8_t)c->game.difficulty;
+	a->set.lives = (uint8_t)c->game.lives;
+	/* Scripts and replays start from the defaults, so they replay the
+	 * same anywhere; only a live cabinet keeps its tables. */
+	a->persist = !headless(a) && c->paths.state_dir[0];
 
-	if (a->o->replay) {
-		rc = rec_reader_open(a->o->replay, &a->rep, err, sizeof(err));
-		if (rc < 0) {
-			logf_("%s", err[0] ? err : strerror(-rc));
-			return rc;
-		}
-		rc = rec_check(rec_reader_header(a->rep), a->map->content_hash, err, sizeof(err));
+	if (a->rep) {
+		rc = rec_check(rec_reader_header(a->rep), a->map_hash, err, sizeof(err));
 		if (rc < 0) {
 			logf_("%s: refused: %s", a->o->replay, err);
 			return rc;
@@ -499,20 +665,13 @@ static int setup(struct app *a)
 			return rc;
 		}
 	}
-	sim_init(&a->sim, a->map, &a->set);
+	start_sim(a);
 
-	a->frame.w = c->game.render_width;
-	a->frame.h = c->game.render_height;
-	a->frame.pitch = a->frame.w;
-	a->frame.px = calloc((size_t)a->frame.w * (size_t)a->frame.h, 1);
-	if (!a->frame.px)
-		return -ENOMEM;
-	rc = r_new(a->frame.w, a->frame.h, &a->r);
-	if (rc < 0) {
-		logf_("renderer %dx%d: %s", a->frame.w, a->frame.h, strerror(-rc));
+	rc = view_init(&a->view, &a->ct, NULL, c->display.rotate);
+	if (rc == 0)
+		rc = resize(a, rw, rh);
+	if (rc < 0)
 		return rc;
-	}
-	r_set_lmap(a->r, a->ct.lm);
 	rc = open_display(a);
 	if (rc < 0)
 		return rc;
@@ -545,7 +704,7 @@ static int setup(struct app *a)
 		struct rec_header h = {
 			.version = REC_VERSION,
 			.tick_rate = SIM_TICRATE,
-			.map_hash = a->map->content_hash,
+			.map_hash = a->map_hash,
 			.engine_version = REC_ENGINE_VERSION,
 			.set = a->set,
 			.count = REC_COUNT_UNKNOWN,
@@ -592,8 +751,15 @@ static void teardown(struct app *a)
 	}
 	rec_reader_close(a->rep);
 	scr_free(a->scr);
+	if (a->persist && a->ticks_run) {
+		/* play and power-on time count up without a generation bump */
+		uint8_t buf[G_BOOKS_BYTES];
+		g_books_encode(&a->sim.books, buf);
+		save_state(a, "books", buf, G_BOOKS_BYTES);
+	}
 	r_free(a->r);
 	free(a->frame.px);
+	view_free(&a->view);
 	ct_free(&a->ct);
 }
 
@@ -630,13 +796,9 @@ static int next_cmd(struct app *a, uint32_t t, struct sim_cmd *cmd)
 static int render_and_present(struct app *a)
 {
 	uint64_t t0 = in_now_ns(), t1;
-	struct r_view v;
 	int rc;
 
-	sim_view(&a->sim, &v);
-	/* Animated textures follow the game tick, so replays see the same. */
-	tex_animate(a->tex, a->sim.tick);
-	r_render(a->r, a->map, a->tex, &v, NULL, 0, &a->frame);
+	view_draw(&a->view, &a->sim, &a->frame);
 	rc = a->dpb->present(a->dp, a->frame.px, a->frame.w, a->frame.h, a->frame.pitch);
 	t1 = in_now_ns();
 	a->frames++;
@@ -695,6 +857,7 @@ static int loop(struct app *a)
 		}
 		sim_tick(&a->sim, &cmd);
 		a->ticks_run++;
+		persist_tick(a);
 
 		if (!a->o->no_render) {
 			int rc = render_and_present(a);

@@ -89,8 +89,10 @@ static int load_wads(struct ct *c, const struct ct_spec *s, char *err, size_t er
 			}
 			name = names[0];
 		}
-		if (rc == 0 && !s->grid)
-			rc = map_load_wad(w, c->tex, name, &c->map, err, errlen);
+		if (rc == 0 && !s->grid) {
+			rc = map_load_wad(w, c->tex, name, &c->maps[0], err, errlen);
+			c->nmaps = rc == 0;
+		}
 		if (rc == 0) {
 			tex_pick_sky(c->tex, name);
 			snprintf(c->what, sizeof(c->what), "%s%s %s", s->wads[s->nwads - 1],
@@ -131,31 +133,72 @@ static int load_grid(struct ct *c, const struct ct_spec *s, char *err, size_t er
 		text = (const char *)buf;
 	}
 	grid_names_from_tex(&names, c->tex);
-	rc = grid_parse(text, len, s->grid, &names, &c->map, err, errlen);
+	rc = grid_parse(text, len, s->grid, &names, &c->maps[0], err, errlen);
+	c->nmaps = rc == 0;
 	free(buf);
 	if (rc == 0)
 		snprintf(c->what, sizeof(c->what), "grid map %s", s->grid);
 	return rc;
 }
 
-static int load_lights(struct ct *c, char *err, size_t errlen)
+static int load_lights(struct ct *c, int i, char *err, size_t errlen)
 {
 	struct lmap_light *lights;
 	int n, rc;
 
-	n = lmap_lights_from_map(c->map, LMAP_DECOR, NULL, 0);
-	c->nlights = n;
+	n = lmap_lights_from_map(c->maps[i], LMAP_DECOR, NULL, 0);
+	if (i == 0)
+		c->nlights = n;
 	if (n <= 0)
 		return 0;
 	lights = calloc((size_t)n, sizeof(*lights));
 	if (!lights)
 		return -ENOMEM;
-	lmap_lights_from_map(c->map, LMAP_DECOR, lights, n);
-	rc = lmap_new(c->map, lights, n, &c->lm);
+	lmap_lights_from_map(c->maps[i], LMAP_DECOR, lights, n);
+	rc = lmap_new(c->maps[i], lights, n, &c->lms[i]);
 	free(lights);
 	if (rc < 0)
-		snprintf(err, errlen, "light maps of %s: %s", c->what, strerror(-rc));
+		snprintf(err, errlen, "light maps of %s: %s", c->maps[i]->name, strerror(-rc));
 	return rc;
+}
+
+/* The built-in stages: level `first` and every one after it. */
+static int load_builtin(struct ct *c, int first, char *err, size_t errlen)
+{
+	int n = map_builtin_count(), rc = 0;
+
+	if (first < 1 || first > n) {
+		snprintf(err, errlen, "built-in level %d: no such level (there are %d)", first, n);
+		return -EINVAL;
+	}
+	for (int i = first - 1; i < n && c->nmaps < CT_MAX_STAGES && rc == 0; i++) {
+		rc = map_builtin(i, &c->maps[c->nmaps]);
+		if (rc < 0)
+			snprintf(err, errlen, "built-in level %d: %s", i + 1, strerror(-rc));
+		else
+			c->nmaps++;
+	}
+	if (rc < 0)
+		return rc;
+	/* The built-in arena levels name palette colours as textures: they
+	 * are drawn with the palette set, which borrows the built-in set's
+	 * sprites (same palette) for enemies and pickups. */
+	rc = r_pal_set_new(&c->tex);
+	if (rc == 0) {
+		c->tex_is_pal = 1;
+		rc = tex_builtin(&c->spr_src);
+	}
+	if (rc < 0) {
+		snprintf(err, errlen, "built-in textures: %s", strerror(-rc));
+		return rc;
+	}
+	c->tex->sprpics = c->spr_src->sprpics;
+	c->tex->num_sprpics = c->spr_src->num_sprpics;
+	c->tex->sprites = c->spr_src->sprites;
+	c->tex->num_sprites = c->spr_src->num_sprites;
+	snprintf(c->what, sizeof(c->what), "built-in levels %d..%d (%s first)", first,
+		 first + c->nmaps - 1, c->maps[0]->name);
+	return 0;
 }
 
 int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
@@ -167,37 +210,36 @@ int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
 		rc = load_wads(c, s, err, errlen);
 	else
 		rc = 0;
-	if (rc == 0 && s->grid) {
+	if (rc == 0 && s->grid)
 		rc = load_grid(c, s, err, errlen);
-	} else if (rc == 0 && s->nwads == 0) {
-		/* The built-in arena levels name palette colours as textures:
-		 * they are drawn with the palette set. */
-		rc = map_builtin(s->level - 1, &c->map);
-		if (rc < 0)
-			snprintf(err, errlen, "built-in level %d: %s (there are %d)", s->level,
-				 strerror(-rc), map_builtin_count());
-		else
-			rc = r_pal_set_new(&c->tex);
-		if (rc == 0) {
-			c->tex_is_pal = 1;
-			snprintf(c->what, sizeof(c->what), "built-in level %d (%s)", s->level,
-				 c->map->name);
-		}
-	}
-	if (rc == 0 && s->lights)
-		rc = load_lights(c, err, errlen);
+	else if (rc == 0 && s->nwads == 0)
+		rc = load_builtin(c, s->level, err, errlen);
+	for (int i = 0; rc == 0 && s->lights && i < c->nmaps; i++)
+		rc = load_lights(c, i, err, errlen);
+	c->map = c->maps[0];
 	if (rc < 0)
 		ct_free(c);
 	return rc;
 }
 
+struct lmap *ct_lmap_for(const struct ct *c, const struct map *m)
+{
+	for (int i = 0; i < c->nmaps; i++)
+		if (c->maps[i] == m)
+			return c->lms[i];
+	return NULL;
+}
+
 void ct_free(struct ct *c)
 {
-	lmap_free(c->lm);
+	for (int i = 0; i < c->nmaps; i++) {
+		lmap_free(c->lms[i]);
+		map_free(c->maps[i]);
+	}
 	if (c->tex_is_pal)
-		r_pal_set_free(c->tex);
+		r_pal_set_free(c->tex);   /* frees the set only, not borrowed sprites */
 	else
 		tex_free(c->tex);
-	map_free(c->map);
+	tex_free(c->spr_src);
 	memset(c, 0, sizeof(*c));
 }

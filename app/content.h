@@ -14,6 +14,7 @@ struct map;
 struct tex_set;
 
 #define CT_MAX_WADS 8
+#define CT_MAX_STAGES 8
 
 struct ct_spec {
 	const char *wads[CT_MAX_WADS];
@@ -25,17 +26,25 @@ struct ct_spec {
 };
 
 struct ct {
-	struct map *map;
+	/* The game's stages, played in order: every built-in level starting
+	 * with the chosen one, or the one WAD/grid map. */
+	struct map *maps[CT_MAX_STAGES];
+	struct lmap *lms[CT_MAX_STAGES];   /* per stage; NULL: no lights */
+	int nmaps;
+	struct map *map;        /* = maps[0] */
 	struct tex_set *tex;
 	int tex_is_pal;         /* tex from r_pal_set_new (built-in levels) */
-	struct lmap *lm;        /* NULL when the map has no lights */
-	int nlights;
+	struct tex_set *spr_src; /* tex_builtin lending its sprites to a palette set */
+	int nlights;            /* lights of the first stage */
 	char what[160];         /* "freedoom1.wad E1M1", "built-in level 1 (ARENA1)" */
 };
 
 /* Loads the content s names. 0, or -errno with err naming the file, lump
  * or entry. On error c holds nothing (ct_free is still safe). */
 int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen);
+
+/* The light maps of stage map m (NULL if none or unknown). */
+struct lmap *ct_lmap_for(const struct ct *c, const struct map *m);
 
 /* NULL-safe members; frees everything ct_load made. */
 void ct_free(struct ct *c);

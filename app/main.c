@@ -9,6 +9,7 @@
 
 #include "app/app.h"
 #include "config/cfg.h"
+#include "config/st.h"
 
 #define ARCADED_VERSION "0.1.0"
 #define MAX_SETS 64
@@ -165,9 +166,22 @@ int main(int argc, char **argv)
 	if (o.config_dir)
 		cfg_load_dir(&c, o.config_dir, report, NULL);
 	if (c.paths.state_dir[0]) {
-		char path[CFG_PATH_MAX + 32];
-		snprintf(path, sizeof(path), "%s/settings.ini", c.paths.state_dir);
-		cfg_load_file(&c, path, report, NULL);
+		/* Settings changed in the service menu: a power-cut-safe state
+		 * file (config/st.h) whose payload is INI text. */
+		char msg[256] = "", name[CFG_PATH_MAX + 32];
+		size_t len = 0;
+		void *buf = NULL;
+		int rc = st_load(c.paths.state_dir, "settings.ini", &buf, &len, NULL, msg,
+				 sizeof(msg));
+		snprintf(name, sizeof(name), "%s/settings.ini", c.paths.state_dir);
+		if (msg[0] && rc != -ENOENT)
+			fprintf(stderr, "arcaded: %s: %s\n", name, msg);
+		if (rc == 0)
+			cfg_load_text(&c, buf, len, name, report, NULL);
+		else if (rc != -ENOENT)
+			fprintf(stderr, "arcaded: %s: %s; using the other layers\n", name,
+				strerror(-rc));
+		free(buf);
 	}
 	for (int i = 0; i < nsets; i++)
 		cfg_set(&c, sets[i], report, NULL);

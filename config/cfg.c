@@ -78,6 +78,8 @@ static const struct cfg_key cfg_keys[] = {
 	CFG_BOOLKEY(game, freeplay, game.freeplay),
 	CFG_BOOLKEY(game, start_in_play, game.start_in_play),
 	CFG_INTKEY(game, level, game.level, 1, 99),
+	CFG_INTKEY(game, difficulty, game.difficulty, 0, 3),
+	CFG_INTKEY(game, lives, game.lives, 1, 9),
 	CFG_STRKEY(input, evdev, input.evdev, CFG_T_DEVICE),
 	CFG_STRKEY(input, bindings, input.bindings, CFG_T_STR),
 	CFG_STRKEY(paths, state_dir, paths.state_dir, CFG_T_STR),
@@ -133,6 +135,8 @@ void cfg_defaults(struct cfg *c)
 	c->game.render_height = 240;
 	c->game.coins_per_credit = 1;
 	c->game.level = 1;
+	c->game.difficulty = 1;
+	c->game.lives = 3;
 	c->recorder.keep = 20;
 	c->recorder.max_mb = 64;
 	cfg_setstr(c->input.evdev, sizeof(c->input.evdev), "auto");

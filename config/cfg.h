@@ -33,6 +33,8 @@ struct cfg {
 		int freeplay;                /* 0 */
 		int start_in_play;           /* 0 */
 		int level;                   /* built-in level, 1-based */
+		int difficulty;              /* 0 easy .. 3 brutal (1) */
+		int lives;                   /* 1..9 (3) */
 	} game;
 	struct {
 		char evdev[CFG_PATH_MAX];    /* auto | none | /dev/input/eventN */

@@ -69,6 +69,8 @@ unit unit-clang build/clang CC=clang
 step build-O0 make --no-print-directory -j"$JOBS" BUILD=build/O0 OPT="-O0 -g" all
 step script-tests tests/script/run.sh build/arcaded
 step replay-tests tests/replay/run.sh build/arcaded build/O0/arcaded
+step powercut tests/powercut/run.sh
+step xbuild tests/xbuild/run.sh build/arcaded
 step terminal-preview tests/term/run.sh build/arcaded
 step fuzz make --no-print-directory fuzz FUZZ_SECONDS="${FUZZ_SECONDS:-60}"
 

@@ -28,10 +28,11 @@
  * Exit: 0, 1 (verification failed or nothing to verify), 2 (bad usage,
  * unreadable or refused recording).
  *
- * Mirror of app/app.c: setup() (level, settings from the recording,
- * sim_init, r_pal_set_new, r_new) and the loop (rec_reader_next, sim_tick,
- * sim_view, r_render, hash_frame). Keep the two in step: run.sh fails when
- * their hashes differ.
+ * It loads content and draws frames with the daemon's own code
+ * (app/content.c ct_load, app/view.c view_draw), and mirrors app/app.c's
+ * replay set-up (level, render size and settings from the recording,
+ * sim_init_stages with the default tables) and loop (rec_reader_next_tick,
+ * sim_tick, view_draw, hash_frame). run.sh fails when their hashes differ.
  */
 #include <errno.h>
 #include <inttypes.h>
@@ -44,6 +45,8 @@
 #include "engine/map.h"
 #include "engine/r_main.h"
 #include "engine/sim.h"
+#include "app/content.h"
+#include "app/view.h"
 #include "input/rec.h"
 
 #define RP_DEFAULT_W 320
@@ -190,8 +193,9 @@ int main(int argc, char **argv)
 	struct rec_run run;
 	struct r_ctx *r = NULL;
 	struct r_frame f = { 0 };
-	struct map *m = NULL;
-	struct tex_set *tex = NULL;
+	struct ct ct = { 0 };
+	struct ct_spec spec = { .lights = 1 };
+	struct view view = { 0 };
 	struct sim sim;
 	char err[512];
 	uint32_t t = 0;
@@ -226,12 +230,15 @@ int main(int argc, char **argv)
 		run.render_w = RP_DEFAULT_W;
 		run.render_h = RP_DEFAULT_H;
 	}
-	rc = map_builtin(run.level - 1, &m);
+	/* The same content the daemon loads (app/content.c): the built-in
+	 * stages from run.level on, with their light maps. */
+	spec.level = run.level;
+	rc = ct_load(&ct, &spec, err, sizeof(err));
 	if (rc < 0) {
-		fprintf(stderr, "replay: built-in level %u: %s\n", run.level, strerror(-rc));
+		fprintf(stderr, "replay: %s\n", err);
 		goto out;
 	}
-	run.map_hash = m->content_hash;
+	run.map_hash = sim_stages_hash((const struct map *const *)ct.maps, ct.nmaps);
 	if (!o.render)
 		run.render_w = run.render_h = 0;
 	rc = o.verify ? rec_check_run(h, &run, err, sizeof(err))
@@ -241,12 +248,12 @@ int main(int argc, char **argv)
 		goto out;
 	}
 	rec_verify_init(&ver, h, &run);
-	sim_init(&sim, m, &run.set);
+	sim_init_stages(&sim, (const struct map *const *)ct.maps, ct.nmaps, &run.set, NULL, NULL);
 	if (o.render) {
 		f.w = f.pitch = run.render_w;
 		f.h = run.render_h;
 		f.px = calloc((size_t)f.w * (size_t)f.h, 1);
-		if (!f.px || r_pal_set_new(&tex) < 0 || r_new(f.w, f.h, &r) < 0) {
+		if (!f.px || r_new(f.w, f.h, &r) < 0 || view_init(&view, &ct, r, 0) < 0) {
 			fprintf(stderr, "replay: renderer %dx%d: out of memory\n", f.w, f.h);
 			goto out;
 		}
@@ -282,10 +289,8 @@ int main(int argc, char **argv)
 			break;
 		sim_tick(&sim, &rt.cmd);
 		if (o.render) {
-			struct r_view v;
-
-			sim_view(&sim, &v);
-			r_render(r, m, tex, &v, NULL, 0, &f);
+			/* the daemon's own drawing (app/view.c) */
+			view_draw(&view, &sim, &f);
 			fh = hash_frame(f.px, f.w, f.h, f.pitch);
 		}
 		sh = sim_hash(&sim);
@@ -319,10 +324,10 @@ int main(int argc, char **argv)
 out:
 	if (wr && rec_writer_close(wr) < 0 && code == 0)
 		code = 2;
+	view_free(&view);
 	r_free(r);
-	r_pal_set_free(tex);
 	free(f.px);
-	map_free(m);
+	ct_free(&ct);
 	rec_reader_close(rd);
 	return code;
 }

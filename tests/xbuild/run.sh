@@ -46,7 +46,7 @@ fi
 # ---- builds --------------------------------------------------------------
 WARN="-std=c11 -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes"
 FLAGS="$WARN -fno-strict-aliasing -I. -D_GNU_SOURCE"
-SRC="tests/xbuild/replay.c $(ls engine/*.c | tr '\n' ' ') input/rec.c"
+SRC="tests/xbuild/replay.c $(ls engine/*.c | tr '\n' ' ') input/rec.c app/content.c app/view.c"
 build() { # $1 name; rest: compiler and flags
 	name=$1; shift
 	# shellcheck disable=SC2086

@@ -1,0 +1,59 @@
+#include "app/view.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "app/content.h"
+#include "engine/g_game.h"
+#include "engine/hud.h"
+#include "engine/map.h"
+#include "engine/r_main.h"
+#include "engine/sim.h"
+#include "engine/tex.h"
+
+int view_init(struct view *v, const struct ct *ct, struct r_ctx *r, int rotate)
+{
+	memset(v, 0, sizeof(*v));
+	v->ct = ct;
+	v->r = r;
+	v->rotate = rotate;
+	for (int i = 0; i < ct->nmaps; i++)
+		if (G_SPRITES_MAX(ct->maps[i]) > v->spr_max)
+			v->spr_max = G_SPRITES_MAX(ct->maps[i]);
+	v->spr = calloc((size_t)v->spr_max, sizeof(*v->spr));
+	return v->spr ? 0 : -ENOMEM;
+}
+
+void view_set_renderer(struct view *v, struct r_ctx *r)
+{
+	v->r = r;
+	v->lit = NULL;
+}
+
+void view_draw(struct view *v, const struct sim *s, struct r_frame *f)
+{
+	struct tex_set *tex = v->ct->tex;
+	struct hud_env env = { &tex->pal, tex, v->rotate };
+	struct r_view rv;
+
+	if (s->map != v->lit) {
+		/* a new stage: its own light maps */
+		r_set_lmap(v->r, ct_lmap_for(v->ct, s->map));
+		v->lit = s->map;
+	}
+	/* Animated textures follow the game tick, so replays see the same. */
+	tex_animate(tex, s->tick);
+	if (hud_world(s)) {
+		int n = g_sprites(s, tex, v->spr, v->spr_max);
+		sim_view(s, &rv);
+		r_render(v->r, s->map, tex, &rv, v->spr, n, f);
+	}
+	hud_draw(s, &env, f);
+}
+
+void view_free(struct view *v)
+{
+	free(v->spr);
+	v->spr = NULL;
+}

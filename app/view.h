@@ -1,0 +1,40 @@
+/*
+ * view: draws one frame of the game from the sim state: the current
+ * stage's 3D view with its light maps and sprites (when the mode shows
+ * the world), then the HUD, page or service menu over it. The daemon and
+ * the cross-build replayer (tests/xbuild/replay.c) both draw through here,
+ * so their frames are the same by construction. Only engine code is
+ * called: no platform headers.
+ */
+#ifndef ARCADED_APP_VIEW_H
+#define ARCADED_APP_VIEW_H
+
+struct ct;
+struct map;
+struct r_ctx;
+struct r_frame;
+struct r_sprite;
+struct sim;
+
+struct view {
+	struct r_ctx *r;           /* borrowed; its size is the frame's */
+	const struct ct *ct;       /* borrowed: texture set and light maps */
+	struct r_sprite *spr;      /* owned: room for the largest stage's sprites */
+	int spr_max;
+	const struct map *lit;     /* the stage whose light maps r has */
+	int rotate;                /* the display's rotation (service menu) */
+};
+
+/* Prepares v for the content's stages. 0 or -ENOMEM. */
+int view_init(struct view *v, const struct ct *ct, struct r_ctx *r, int rotate);
+
+/* A new renderer context (after a resize): light maps are set again. */
+void view_set_renderer(struct view *v, struct r_ctx *r);
+
+/* Draws s into f (f's size must be r's). Animated textures are advanced to
+ * the sim's tick first. */
+void view_draw(struct view *v, const struct sim *s, struct r_frame *f);
+
+void view_free(struct view *v);
+
+#endif
