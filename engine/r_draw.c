@@ -1,12 +1,15 @@
 /*
  * r_draw: the inner loops, and the only code that writes frame pixels.
  *
- * Callers pass runs inside the frame (asserted) and texture positions that
- * stay inside the texture (stated per function in r_local.h), so the loops
- * do no clamping: per pixel a texel fetch, a colormap lookup, a store and
- * an add. Writes of the opaque pass (walls, planes, sky, black fill) are
- * counted in stats.pixels_written, which the tests compare with w * h;
- * masked writes (sprites, masked middles) in stats.pixels_masked.
+ * Every function draws for one strip (r_strip.c) and writes only inside
+ * its columns, so strips can be drawn by several threads at once. Callers
+ * pass runs inside the frame (asserted) and texture positions that stay
+ * inside the texture (stated per function in r_local.h), so the loops do
+ * no clamping: per pixel a texel fetch, a colormap lookup, a store and an
+ * add, no division, no floating point. Writes of the opaque pass (walls,
+ * planes, sky, black fill) are counted in the strip's written, which the
+ * tests compare with w * h; masked writes (sprites, masked middles) in its
+ * masked.
  */
 #include <assert.h>
 #include <stddef.h>
@@ -14,62 +17,124 @@
 
 #include "engine/r_local.h"
 
-void r_draw_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour)
+/* Rows from p down, n of them, texel rows frac >> 16 & mask stepping by
+ * step: a power-of-two height divides 2^16, so the 16.16 position wraps
+ * by itself. Returns the position after the last row. */
+static uint32_t r_col_pow2(uint8_t *p, size_t pitch, int n, const uint8_t *col,
+			   const uint8_t *cm, uint32_t mask, uint32_t frac, uint32_t step)
 {
-	uint8_t *p;
-	size_t pitch = (size_t)r->pitch;
+	for (; n >= 4; n -= 4) {
+		uint32_t f1 = frac + step, f2 = f1 + step, f3 = f2 + step;
 
-	if (y2 < y1)
-		return;
-	assert(x >= 0 && x < r->w && y1 >= 0 && y2 < r->h);
-	p = r->px + (size_t)y1 * pitch + (size_t)x;
-	for (int y = y1; y <= y2; y++, p += pitch)
-		*p = colour;
-	r->st.pixels_written += (uint32_t)(y2 - y1 + 1);
+		p[0] = cm[col[(frac >> 16) & mask]];
+		p[pitch] = cm[col[(f1 >> 16) & mask]];
+		p[2 * pitch] = cm[col[(f2 >> 16) & mask]];
+		p[3 * pitch] = cm[col[(f3 >> 16) & mask]];
+		frac = f3 + step;
+		p += 4 * pitch;
+	}
+	for (; n > 0; n--) {
+		*p = cm[col[(frac >> 16) & mask]];
+		frac += step;
+		p += pitch;
+	}
+	return frac;
 }
 
-void r_draw_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col, int h,
-		const uint8_t *cm, uint32_t frac, uint32_t step)
+/* The same for any height: the position is kept below hf = h << 16 by one
+ * subtraction per row (step < hf). */
+static uint32_t r_col_any(uint8_t *p, size_t pitch, int n, const uint8_t *col, const uint8_t *cm,
+			  uint32_t hf, uint32_t frac, uint32_t step)
+{
+	for (; n > 0; n--) {
+		*p = cm[col[frac >> 16]];
+		p += pitch;
+		frac += step;
+		if (frac >= hf)
+			frac -= hf;
+	}
+	return frac;
+}
+
+void r_draw_run(const struct r_ctx *r, struct r_strip *s, struct r_col *c, int y2)
 {
 	size_t pitch = (size_t)r->pitch;
 	uint8_t *p;
-	int n;
+	int n = y2 - c->y1 + 1;
 
-	if (y2 < y1)
+	if (n <= 0)
 		return;
-	assert(x >= 0 && x < r->w && y1 >= 0 && y2 < r->h && h >= 1);
-	assert(frac < ((uint32_t)h << 16) && step < ((uint32_t)h << 16));
-	p = r->px + (size_t)y1 * pitch + (size_t)x;
-	n = y2 - y1 + 1;
-	r->st.pixels_written += (uint32_t)n;
-	if ((h & (h - 1)) == 0) {
-		/* h divides 2^16: the 16.16 position wraps by itself */
-		uint32_t mask = (uint32_t)h - 1;
+	assert(c->x >= s->x0 && c->x <= s->x1 && c->y1 >= 0 && y2 <= c->y2 && y2 < r->h);
+	p = r->px + (size_t)c->y1 * pitch + (size_t)c->x;
+	s->written += (uint32_t)n;
+	c->y1 = (int16_t)(y2 + 1);
+	if (!c->src) {
+		uint8_t v = c->colour;
 
-		for (; n >= 2; n -= 2) {
-			p[0] = cm[col[(frac >> 16) & mask]];
-			frac += step;
-			p[pitch] = cm[col[(frac >> 16) & mask]];
-			frac += step;
-			p += 2 * pitch;
-		}
-		if (n)
-			*p = cm[col[(frac >> 16) & mask]];
+		for (; n > 0; n--, p += pitch)
+			*p = v;
+		return;
+	}
+	/* a power-of-two height's position runs on modulo 2^32 between bands;
+	 * any other stays below h << 16 */
+	assert(c->h >= 1 && c->step < ((uint32_t)c->h << 16));
+	if ((c->h & (c->h - 1)) == 0) {
+		c->frac = r_col_pow2(p, pitch, n, c->src, c->cm, (uint32_t)c->h - 1, c->frac, c->step);
 	} else {
-		uint32_t hf = (uint32_t)h << 16;   /* < 2^31: no overflow below */
-
-		while (n--) {
-			*p = cm[col[frac >> 16]];
-			p += pitch;
-			frac += step;
-			if (frac >= hf)
-				frac -= hf;
-		}
+		assert(c->frac < ((uint32_t)c->h << 16));
+		c->frac = r_col_any(p, pitch, n, c->src, c->cm, (uint32_t)c->h << 16, c->frac,
+				    c->step);
 	}
 }
 
-void r_draw_masked(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col,
-		   const uint8_t *op, const uint8_t *cm, uint32_t frac, uint32_t step)
+void r_draw_span(const struct r_ctx *r, struct r_strip *s, const struct r_span *sp)
+{
+	const uint8_t *flat = sp->flat, *cm = sp->cm;
+	uint32_t xf = sp->xf, yf = sp->yf, xs = sp->xs, ys = sp->ys;
+	int x1 = sp->x1, x2 = sp->x2, n;
+	uint8_t *p;
+
+	if (x1 < s->x0) {
+		/* the position at the strip's first column, exactly as the
+		 * loop would have stepped it there (uint32 wraps alike) */
+		uint32_t k = (uint32_t)(s->x0 - x1);
+
+		xf += k * xs;
+		yf += k * ys;
+		x1 = s->x0;
+	}
+	if (x2 > s->x1)
+		x2 = s->x1;
+	if (x2 < x1)
+		return;
+	assert(sp->y >= 0 && sp->y < r->h && x1 >= 0 && x2 < r->w);
+	p = r->px + (size_t)sp->y * (size_t)r->pitch + (size_t)x1;
+	n = x2 - x1 + 1;
+	s->written += (uint32_t)n;
+	/* texel (row yf >> 26, column xf >> 26) of the row-major 64x64 flat */
+	for (; n >= 4; n -= 4) {
+		uint32_t xf1 = xf + xs, yf1 = yf + ys;
+		uint32_t xf2 = xf1 + xs, yf2 = yf1 + ys;
+		uint32_t xf3 = xf2 + xs, yf3 = yf2 + ys;
+
+		p[0] = cm[flat[((yf >> 20) & 0xfc0) | (xf >> 26)]];
+		p[1] = cm[flat[((yf1 >> 20) & 0xfc0) | (xf1 >> 26)]];
+		p[2] = cm[flat[((yf2 >> 20) & 0xfc0) | (xf2 >> 26)]];
+		p[3] = cm[flat[((yf3 >> 20) & 0xfc0) | (xf3 >> 26)]];
+		xf = xf3 + xs;
+		yf = yf3 + ys;
+		p += 4;
+	}
+	for (; n > 0; n--) {
+		*p++ = cm[flat[((yf >> 20) & 0xfc0) | (xf >> 26)]];
+		xf += xs;
+		yf += ys;
+	}
+}
+
+void r_draw_masked(const struct r_ctx *r, struct r_strip *s, int x, int y1, int y2,
+		   const uint8_t *col, const uint8_t *op, const uint8_t *cm, uint32_t frac,
+		   uint32_t step)
 {
 	size_t pitch = (size_t)r->pitch;
 	uint8_t *p;
@@ -77,7 +142,7 @@ void r_draw_masked(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col,
 
 	if (y2 < y1)
 		return;
-	assert(x >= 0 && x < r->w && y1 >= 0 && y2 < r->h);
+	assert(x >= s->x0 && x <= s->x1 && y1 >= 0 && y2 < r->h);
 	p = r->px + (size_t)y1 * pitch + (size_t)x;
 	if (!op) {
 		for (int y = y1; y <= y2; y++, p += pitch, frac += step)
@@ -93,43 +158,23 @@ void r_draw_masked(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col,
 			}
 		}
 	}
-	r->st.pixels_masked += n;
+	s->masked += n;
 }
 
-void r_draw_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat,
-		 const uint8_t *cm, uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys)
+void r_draw_finish(const struct r_ctx *r, struct r_strip *s)
 {
-	uint8_t *p;
-	int n;
+	size_t pitch = (size_t)r->pitch;
 
-	if (x2 < x1)
-		return;
-	assert(y >= 0 && y < r->h && x1 >= 0 && x2 < r->w);
-	p = r->px + (size_t)y * (size_t)r->pitch + (size_t)x1;
-	n = x2 - x1 + 1;
-	r->st.pixels_written += (uint32_t)n;
-	/* texel (row yf >> 26, column xf >> 26) of the row-major 64x64 flat */
-	for (; n >= 2; n -= 2) {
-		p[0] = cm[flat[((yf >> 20) & 0xfc0) | (xf >> 26)]];
-		xf += xs;
-		yf += ys;
-		p[1] = cm[flat[((yf >> 20) & 0xfc0) | (xf >> 26)]];
-		xf += xs;
-		yf += ys;
-		p += 2;
-	}
-	if (n)
-		*p = cm[flat[((yf >> 20) & 0xfc0) | (xf >> 26)]];
-}
-
-void r_draw_finish(struct r_ctx *r)
-{
-	for (int x = 0; x < r->w; x++) {
+	for (int x = s->x0; x <= s->x1; x++) {
 		int y1 = r->ceilclip[x] + 1, y2 = r->floorclip[x] - 1;
+		uint8_t *p;
 
-		if (y2 >= y1) {
-			r_draw_fill(r, x, y1, y2, r->black);
-			r->st.pixels_empty += (uint32_t)(y2 - y1 + 1);
-		}
+		if (y2 < y1)
+			continue;
+		p = r->px + (size_t)y1 * pitch + (size_t)x;
+		for (int y = y1; y <= y2; y++, p += pitch)
+			*p = r->black;
+		s->written += (uint32_t)(y2 - y1 + 1);
+		s->empty += (uint32_t)(y2 - y1 + 1);
 	}
 }

@@ -8,8 +8,19 @@
  * the solid-column list; r_seg.c turns one seg into wall columns, plane
  * marks and a drawseg; r_plane.c keeps the visplanes and draws them as
  * spans (and the sky as columns); r_things.c projects sprites and draws
- * them and the masked middle textures back to front; r_draw.c is the only
- * code that writes frame pixels.
+ * them and the masked middle textures back to front; r_strip.c records what
+ * those stages draw and runs the drawing by column strips; r_draw.c is the
+ * only code that writes frame pixels.
+ *
+ * A frame has two phases. The walk (one thread): BSP traversal, walls,
+ * plane marks, spans, sky, sprite projection; every pixel run it decides is
+ * recorded (struct r_col, struct r_span), none drawn. Then the strips:
+ * disjoint ranges of columns, each drawn by one job, in any order and on
+ * any thread (struct r_par): its recorded column runs, the parts of the
+ * spans inside it, the black fill, then sprites and masked middles clipped
+ * to it. A pixel's value depends only on what was recorded for it, never on
+ * which strip or thread drew it, so frames are the same bytes whatever the
+ * number of threads.
  *
  * Number formats (all integer):
  *  - map and view-space coordinates: 16.16 map units, view space in int64;
@@ -45,6 +56,16 @@
 #define R_LMAP_RUN 16
 
 #define R_NEAR (FX_ONE / 4)
+
+/* Strips are R_STRIP_MIN columns wide or a power-of-two multiple of it,
+ * at most R_STRIP_MAX of them per frame: a cache line (64 bytes) or more,
+ * so that two threads never write one line. */
+#define R_STRIP_MIN 64
+#define R_STRIP_MAX 32
+/* A strip draws its column runs in bands of this many rows: one band of a
+ * strip is a few KiB, so a wall column reuses the cache lines the column
+ * before it loaded. */
+#define R_BAND_SHIFT 7
 
 /* Sprites nearer than this depth are not drawn (Doom's MINZ). */
 #define R_SPR_NEAR (4 * FX_ONE)
@@ -142,8 +163,50 @@ struct r_vis {
 	int order;                      /* index in the caller's list: ties */
 };
 
+/* A run of rows y1..y2 of column x recorded by the walk: a wall part or
+ * the sky (texture column src of h texels, r_draw_col's frac and step,
+ * through colormap cm), or a fill with colour when src is NULL. Drawing a
+ * band of it advances y1 and frac. */
+struct r_col {
+	const uint8_t *src, *cm;
+	uint32_t frac, step;
+	int32_t h;
+	int16_t x, y1, y2;
+	uint8_t colour;
+};
+
+/* A span of a flat recorded by the walk: row y, columns x1..x2, the flat's
+ * 64x64 pixels, colormap, and 6.26 positions at x1's centre plus steps. */
+struct r_span {
+	const uint8_t *flat, *cm;
+	uint32_t xf, yf, xs, ys;
+	int16_t y, x1, x2;
+};
+
+/* One strip: columns x0..x1, its recorded runs and spans, scratch, and the
+ * pixel counters of its drawing (summed into the frame's stats). Only the
+ * job drawing the strip touches it during the strip phase. */
+struct r_strip {
+	int x0, x1;
+	struct r_col *cols;
+	int ncols, maxcols;
+	int32_t *order, *act, *next;    /* band scratch, maxcols entries each */
+	int32_t *band;                  /* nbands + 1 counts */
+	int32_t *spans;                 /* indices into ctx.spans crossing it */
+	int nspans, maxspans;
+	uint32_t written, empty, masked;
+};
+
 struct r_ctx {
 	int w, h;
+
+	/* the strips (r_strip.c), fixed per size; the shift turns a column
+	 * into its strip */
+	struct r_strip *strips;
+	int nstrips, strip_shift, nbands;
+	struct r_span *spans;           /* this frame's spans */
+	int nspans, maxspans;
+	struct r_par par;               /* run == NULL: strips drawn in turn */
 
 	/* per column: rows [ceilclip + 1, floorclip - 1] are still unwritten;
 	 * everything outside that interval has been written exactly once */
@@ -282,34 +345,54 @@ int r_plane_find(struct r_ctx *r, fx_t height, uint16_t pic, int light,
  * column of [x1, x2]; its column range then includes [x1, x2]. -1 when
  * p is -1 or none could be allocated. */
 int r_plane_check(struct r_ctx *r, int p, int x1, int x2);
-/* Draws every visplane (spans; the sky by columns). */
+/* Records every visplane (spans; the sky by columns). */
 void r_plane_draw_all(struct r_ctx *r);
 
 /* r_things.c: sprites and masked middle textures */
+/* Projects the sprites and sorts them farthest first. */
 void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr);
-/* Draws the projected sprites and masked middles back to front. */
-void r_things_draw(struct r_ctx *r);
+/* Draws the projected sprites and masked middles back to front, in strip
+ * s's columns only. */
+void r_things_draw(struct r_ctx *r, struct r_strip *s);
 
-/* r_draw.c: the only writers of frame pixels. Rows y1..y2 inclusive of
- * column x (or columns x1..x2 of row y); nothing when the range is
- * empty. */
-void r_draw_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour);
-/* A wall or sky column: texture column col of h texels (h >= 1), texel
- * row frac >> 16 at row y1, frac + step at the next row, wrapping at h;
- * requires frac, step < h << 16. Through colormap cm. */
-void r_draw_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col, int h,
-		const uint8_t *cm, uint32_t frac, uint32_t step);
-/* A masked column (sprites, masked middles): like r_draw_col without
- * wrapping, and only texels whose op entry is nonzero (op NULL: all);
- * requires (frac + (y2 - y1) * step) >> 16 within the column. Counted in
- * pixels_masked. */
-void r_draw_masked(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col,
-		   const uint8_t *op, const uint8_t *cm, uint32_t frac, uint32_t step);
-/* A span of a flat: row y, columns x1..x2; flat position (6.26 texels in
- * x and y, wrapping at 64) xf, yf at x1's centre, plus xs, ys per pixel. */
-void r_draw_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat,
-		 const uint8_t *cm, uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys);
-/* Fills every still unwritten pixel with black (counted as empty). */
-void r_draw_finish(struct r_ctx *r);
+/* r_strip.c: recording by the walk and the strip phase. The r_rec_*
+ * functions take what r_draw draws (same requirements); when a list cannot
+ * grow they draw at once instead (counted in stats.degraded). */
+int r_strip_new(struct r_ctx *r);
+void r_strip_free(struct r_ctx *r);
+/* Empties the strips' lists for a new frame. */
+void r_strip_reset(struct r_ctx *r);
+/* Rows y1..y2 of column x from texture column col of h texels (h >= 1),
+ * texel row frac >> 16 at row y1, frac + step at the next, wrapping at h;
+ * requires frac, step < h << 16; through colormap cm. */
+void r_rec_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col, int h,
+	       const uint8_t *cm, uint32_t frac, uint32_t step);
+/* Rows y1..y2 of column x in one colour. */
+void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour);
+/* A span of a flat: row y, columns x1..x2; flat position (6.26 texels in x
+ * and y, wrapping at 64) xf, yf at x1's centre, plus xs, ys per pixel. */
+void r_rec_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat, const uint8_t *cm,
+		uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys);
+/* Draws every strip (through r->par when set) and adds their counters to
+ * the frame's stats. */
+void r_strip_draw_all(struct r_ctx *r);
+
+/* r_draw.c: the only writers of frame pixels; s is the strip drawn, every
+ * write stays inside its columns. */
+/* Rows c->y1..y2 of run c (y2 <= c->y2); then c->y1 is y2 + 1 and c->frac
+ * the position there. Counted in written. */
+void r_draw_run(const struct r_ctx *r, struct r_strip *s, struct r_col *c, int y2);
+/* The part of span sp inside the strip. Counted in written. */
+void r_draw_span(const struct r_ctx *r, struct r_strip *s, const struct r_span *sp);
+/* A masked column (sprites, masked middles): rows y1..y2 of column x (in
+ * the strip) from picture column col, no wrapping, only texels whose op
+ * entry is nonzero (op NULL: all); requires (frac + (y2 - y1) * step) >> 16
+ * within the column. Counted in masked. */
+void r_draw_masked(const struct r_ctx *r, struct r_strip *s, int x, int y1, int y2,
+		   const uint8_t *col, const uint8_t *op, const uint8_t *cm, uint32_t frac,
+		   uint32_t step);
+/* Fills every still unwritten pixel of the strip with black (counted in
+ * written and empty). */
+void r_draw_finish(const struct r_ctx *r, struct r_strip *s);
 
 #endif

@@ -307,7 +307,7 @@ int r_new(int w, int h, struct r_ctx **out)
 	r->span_sy = malloc((size_t)h * sizeof(*r->span_sy));
 	if (!r->ceilclip || !r->floorclip || !r->cliptop || !r->clipbot || !r->xtoang ||
 	    !r->solid || !r->rowv || !r->yslope || !r->spanstart || !r->span_h || !r->span_fx ||
-	    !r->span_fy || !r->span_sx || !r->span_sy)
+	    !r->span_fy || !r->span_sx || !r->span_sy || r_strip_new(r) < 0)
 		goto fail;
 	r->rowv_cy2 = INT32_MIN;
 	/* fade = R_FADE_DIST * scale / focal with focal = w / 2 and scale16 =
@@ -333,6 +333,7 @@ void r_free(struct r_ctx *r)
 {
 	if (!r)
 		return;
+	r_strip_free(r);
 	for (int i = 0; i < r->maxplanes; i++) {
 		free(r->planes[i].top);
 		free(r->planes[i].bot);
@@ -427,10 +428,19 @@ static void r_sectors_reset(struct r_ctx *r, const struct map *m)
 	r->seen_ok = 1;
 }
 
+void r_set_par(struct r_ctx *r, const struct r_par *par)
+{
+	if (par)
+		r->par = *par;
+	else
+		memset(&r->par, 0, sizeof(r->par));
+}
+
 void r_set_lmap(struct r_ctx *r, const struct lmap *lm)
 {
 	r->lm = lm;
 }
+
 
 void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	      const struct r_view *v, const struct r_sprite *spr, int nspr, struct r_frame *f)
@@ -451,15 +461,14 @@ void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	r->nopen = 0;
 	r->nvis = 0;
 	r_sectors_reset(r, m);
+	r_strip_reset(r);
+	/* the walk records, then the strips draw (r_strip.c) */
 	if (m->num_subsectors > 0) {
 		r_bsp_render(r);
 		r_plane_draw_all(r);
-	}
-	r_draw_finish(r);
-	if (m->num_subsectors > 0) {
 		r_things_project(r, spr, nspr);
-		r_things_draw(r);
 	}
+	r_strip_draw_all(r);
 	r->st.planes = (uint32_t)r->nplanes;
 	r->st.drawsegs = (uint32_t)r->ndsegs;
 	r->st.sprites = (uint32_t)r->nvis;

@@ -14,6 +14,11 @@
  * as a frame needs them and are kept for the next frame, so there is no
  * fixed limit a map can overflow. Several contexts may coexist.
  * The frame is row-major 8-bit palette indices.
+ *
+ * Threads: a frame is drawn in two phases, the BSP walk on the calling
+ * thread, then strips of columns that a worker pool may draw at once
+ * (r_set_par). The engine starts no thread itself: the pool is the
+ * caller's. The frame's bytes do not depend on the pool or its size.
  */
 #ifndef ARCADED_ENGINE_R_MAIN_H
 #define ARCADED_ENGINE_R_MAIN_H
@@ -94,6 +99,23 @@ void r_free(struct r_ctx *r);
  * fallback checker (counted in stats.missing). */
 void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	      const struct r_view *v, const struct r_sprite *spr, int nspr, struct r_frame *f);
+
+/* A pool of threads to draw strips on, provided by the caller (the engine
+ * has no threads of its own; app/pool.h makes one).
+ * run(pool, n, job, arg) calls job(arg, i) exactly once for every i in
+ * 0..n-1, any number at a time on any threads (the caller's included), and
+ * returns when every call has returned; calls for different i touch
+ * disjoint memory, and run's return must make their writes visible to the
+ * caller (a full barrier). */
+struct r_par {
+	void (*run)(void *pool, int n, void (*job)(void *arg, int i), void *arg);
+	void *pool;
+};
+
+/* Draws the next frames' strips through par (copied; the pool must outlive
+ * its use), or one after another on the calling thread when par is NULL
+ * (the default). Frames are identical either way. */
+void r_set_par(struct r_ctx *r, const struct r_par *par);
 
 /* Point-light maps (lmap.h) for the next frames, NULL for none (the
  * default): borrowed, must be made for the map r_render draws and outlive

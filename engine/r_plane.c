@@ -22,7 +22,8 @@
  * column's view angle, texel rows at a fixed scale around the horizon, full
  * bright.
  *
- * Lists grow as needed and are kept between frames; when memory runs out a
+ * Nothing is drawn here: spans and sky columns are recorded for the strips
+ * (r_strip.c). Lists grow as needed and are kept between frames; when memory runs out a
  * seg marks nothing and its rows are filled black instead (counted in
  * stats.degraded).
  */
@@ -203,7 +204,7 @@ static void r_map_span(struct r_ctx *r, const struct r_spanset *ps, int y, int x
 	/* 6.26 positions: the 32.32 value's bits 6..37, i.e. modulo 64 units;
 	 * flat rows run along -y (Doom) */
 	if (!ps->lg) {
-		r_draw_span(r, y, x1, x2, ps->flat, r->cmap[lvl], (uint32_t)(px >> 6),
+		r_rec_span(r, y, x1, x2, ps->flat, r->cmap[lvl], (uint32_t)(px >> 6),
 			    (uint32_t)(-py >> 6), (uint32_t)(r->span_sx[y] >> 6),
 			    (uint32_t)(-r->span_sy[y] >> 6));
 		r->st.spans++;
@@ -224,7 +225,7 @@ static void r_map_span(struct r_ctx *r, const struct r_spanset *ps, int y, int x
 		mx = mx < -MAP_COORD_MAX ? -MAP_COORD_MAX : mx > MAP_COORD_MAX ? MAP_COORD_MAX : mx;
 		my = my < -MAP_COORD_MAX ? -MAP_COORD_MAX : my > MAP_COORD_MAX ? MAP_COORD_MAX : my;
 		l = lvl - lmap_grid_flat_at(ps->lg, (fx_t)mx, (fx_t)my);
-		r_draw_span(r, y, a, b, ps->flat, r->cmap[l < 0 ? 0 : l],
+		r_rec_span(r, y, a, b, ps->flat, r->cmap[l < 0 ? 0 : l],
 			    (uint32_t)(px >> 6) + o * xs, (uint32_t)(-py >> 6) + o * ys, xs, ys);
 		r->st.spans++;
 	}
@@ -312,12 +313,12 @@ static void r_plane_sky(struct r_ctx *r, const struct r_plane *p)
 			int64_t n = (-v + step - 1) / step;
 			int ye = n > y2 - y1 + 1 ? y2 : y1 + (int)n - 1;
 
-			r_draw_fill(r, x, y1, ye, cm[src[0]]);
+			r_rec_fill(r, x, y1, ye, cm[src[0]]);
 			v += n * step;
 			y1 = ye + 1;
 		}
 		if (y1 <= y2)
-			r_draw_col(r, x, y1, y2, src, sky->h, cm, (uint32_t)(v % hf),
+			r_rec_col(r, x, y1, y2, src, sky->h, cm, (uint32_t)(v % hf),
 				   (uint32_t)(step % hf));
 	}
 }

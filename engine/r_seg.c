@@ -121,7 +121,7 @@ static void r_wall_part(struct r_ctx *r, int x, int y1, int y2, const struct tex
 	v = (tm + (((int64_t)(2 * y1 + 1 - r->cy2) * iscale) >> 1)) % hf;
 	if (v < 0)
 		v += hf;
-	r_draw_col(r, x, y1, y2, p->px + (size_t)r_tex_col(u, p->w) * (size_t)p->h, p->h, cm,
+	r_rec_col(r, x, y1, y2, p->px + (size_t)r_tex_col(u, p->w) * (size_t)p->h, p->h, cm,
 		   (uint32_t)v, (uint32_t)(iscale % hf));
 }
 
@@ -157,7 +157,7 @@ static void r_plane_rows(struct r_ctx *r, int p, int x, int y1, int y2)
 	if (y2 < y1)
 		return;
 	if (p < 0) {
-		r_draw_fill(r, x, y1, y2, r->black);
+		r_rec_fill(r, x, y1, y2, r->black);
 		return;
 	}
 	r->planes[p].top[x] = (uint16_t)y1;
@@ -222,7 +222,7 @@ static void r_column(struct r_ctx *r, const struct r_wall *w, int x, int16_t *mc
 		if (w->mid)
 			r_part(r, w, x, a, b, w->mid, u, w->tm_mid, iscale, lvl, s16, lc);
 		else
-			r_draw_fill(r, x, a, b, r->black);
+			r_rec_fill(r, x, a, b, r->black);
 		r->ceilclip[x] = (int16_t)r->h;
 		r->floorclip[x] = -1;
 		return;

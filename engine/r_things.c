@@ -43,8 +43,9 @@ static fx_t r_clamp(fx_t v)
 /* Rows y1..y2 of column x, restricted to those where the picture column
  * (h texels, texel row 0 at height tm above the eye, iscale 16.16 texels
  * per pixel) exists: no wrapping. */
-static void r_masked_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col,
-			 const uint8_t *op, int h, int64_t tm, int64_t iscale, const uint8_t *cm)
+static void r_masked_col(const struct r_ctx *r, struct r_strip *s, int x, int y1, int y2,
+			 const uint8_t *col, const uint8_t *op, int h, int64_t tm, int64_t iscale,
+			 const uint8_t *cm)
 {
 	int64_t hf = (int64_t)h << 16, v, last;
 
@@ -70,7 +71,8 @@ static void r_masked_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *
 	if (last < y2)
 		y2 = (int)last;
 	/* more than one row only when iscale < hf < 2^31 */
-	r_draw_masked(r, x, y1, y2, col, op, cm, (uint32_t)v, (uint32_t)(y2 > y1 ? iscale : 0));
+	r_draw_masked(r, s, x, y1, y2, col, op, cm, (uint32_t)v,
+		      (uint32_t)(y2 > y1 ? iscale : 0));
 }
 
 /* Clip value of a drawseg reference at column x; def for R_CLIP_ALL. */
@@ -80,11 +82,15 @@ static int r_clip_at(const struct r_ctx *r, const struct r_dseg *ds, int32_t ref
 }
 
 /* Doom's R_RenderMaskedSegRange: the masked middle of ds in columns
- * x1..x2 not yet drawn. */
-static void r_masked_range(struct r_ctx *r, struct r_dseg *ds, int x1, int x2)
+ * x1..x2 not yet drawn, within strip s. */
+static void r_masked_range(struct r_ctx *r, struct r_strip *st, struct r_dseg *ds, int x1, int x2)
 {
 	const struct tex_pic *p = ds->mid;
 
+	if (x1 < st->x0)
+		x1 = st->x0;
+	if (x2 > st->x1)
+		x2 = st->x1;
 	for (int x = x1; x <= x2; x++) {
 		int16_t *mc = &r->open[ds->maskcol + x - ds->x1];
 		int64_t s = ds->s0 + ds->step * (x - ds->sx);
@@ -94,12 +100,21 @@ static void r_masked_range(struct r_ctx *r, struct r_dseg *ds, int x1, int x2)
 			continue;
 		s = s < ds->smin ? ds->smin : s > ds->smax ? ds->smax : s;
 		off = (size_t)*mc * (size_t)p->h;
-		r_masked_col(r, x, r_clip_at(r, ds, ds->topclip, x, r->h) + 1,
+		r_masked_col(r, st, x, r_clip_at(r, ds, ds->topclip, x, r->h) + 1,
 			     r_clip_at(r, ds, ds->botclip, x, -1) - 1, p->px + off,
 			     p->opaque ? p->opaque + off : NULL, p->h, ds->mid_tmid,
 			     ((int64_t)1 << 48) / s, r->cmap[r_scale_level(r, ds->light_base, s)]);
 		*mc = R_MASK_DONE;
 	}
+}
+
+static int r_vis_cmp(const void *a, const void *b)
+{
+	const struct r_vis *va = a, *vb = b;
+
+	if (va->scale != vb->scale)
+		return va->scale < vb->scale ? -1 : 1;
+	return va->order < vb->order ? -1 : va->order > vb->order;
 }
 
 void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
@@ -155,7 +170,7 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 		if (r->nvis == r->maxvis &&
 		    r_grow((void **)&r->vis, &r->maxvis, sizeof(*r->vis), r->nvis + 1) < 0) {
 			r->st.degraded++;
-			return;
+			break;
 		}
 		vs = &r->vis[r->nvis++];
 		vs->x1 = x1;
@@ -174,39 +189,34 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 		vs->lvl = (sp->flags & R_SPR_FULLBRIGHT) ? 0 :
 			  r_scale_level(r, r_light_base(r->map->sectors[sec].light), vs->scale);
 	}
+	if (r->nvis > 1)
+		qsort(r->vis, (size_t)r->nvis, sizeof(*r->vis), r_vis_cmp);
 }
 
-static int r_vis_cmp(const void *a, const void *b)
-{
-	const struct r_vis *va = a, *vb = b;
-
-	if (va->scale != vb->scale)
-		return va->scale < vb->scale ? -1 : 1;
-	return va->order < vb->order ? -1 : va->order > vb->order;
-}
-
-/* Doom's R_DrawSprite. */
-static void r_draw_vis(struct r_ctx *r, const struct r_vis *vs)
+/* Doom's R_DrawSprite, in columns vx1..vx2 (the sprite's inside strip
+ * s). */
+static void r_draw_vis(struct r_ctx *r, struct r_strip *s, const struct r_vis *vs, int vx1,
+		       int vx2)
 {
 	int16_t *ct = r->cliptop, *cb = r->clipbot;
 	const struct tex_pic *p = vs->pic;
 	const uint8_t *cm = r->cmap[vs->lvl];
 
-	for (int x = vs->x1; x <= vs->x2; x++)
+	for (int x = vx1; x <= vx2; x++)
 		ct[x] = cb[x] = -2;
 	for (int i = r->ndsegs - 1; i >= 0; i--) {
 		struct r_dseg *ds = &r->dsegs[i];
 		int x1, x2, sil;
 
-		if (ds->x1 > vs->x2 || ds->x2 < vs->x1 || (!ds->sil && ds->maskcol == R_CLIP_NONE))
+		if (ds->x1 > vx2 || ds->x2 < vx1 || (!ds->sil && ds->maskcol == R_CLIP_NONE))
 			continue;
-		x1 = ds->x1 > vs->x1 ? ds->x1 : vs->x1;
-		x2 = ds->x2 < vs->x2 ? ds->x2 : vs->x2;
+		x1 = ds->x1 > vx1 ? ds->x1 : vx1;
+		x2 = ds->x2 < vx2 ? ds->x2 : vx2;
 		if (ds->hi < vs->scale ||
 		    (ds->lo < vs->scale && r_seg_front(r->map, &r->map->segs[ds->seg], vs->gx, vs->gy))) {
 			/* behind the sprite */
 			if (ds->maskcol != R_CLIP_NONE)
-				r_masked_range(r, ds, x1, x2);
+				r_masked_range(r, s, ds, x1, x2);
 			continue;
 		}
 		sil = ds->sil;
@@ -223,13 +233,13 @@ static void r_draw_vis(struct r_ctx *r, const struct r_vis *vs)
 				if (ct[x] == -2)
 					ct[x] = (int16_t)r_clip_at(r, ds, ds->topclip, x, r->h);
 	}
-	for (int x = vs->x1; x <= vs->x2; x++) {
+	for (int x = vx1; x <= vx2; x++) {
 		if (cb[x] == -2)
 			cb[x] = (int16_t)r->h;
 		if (ct[x] == -2)
 			ct[x] = -1;
 	}
-	for (int x = vs->x1; x <= vs->x2; x++) {
+	for (int x = vx1; x <= vx2; x++) {
 		/* (column centre - left edge) < 2^31 and u within the picture:
 		 * the product is below 2^47 */
 		int64_t u = (((int64_t)x * FX_ONE + FX_HALF - vs->sxl) * vs->iscale) >> 32;
@@ -242,19 +252,25 @@ static void r_draw_vis(struct r_ctx *r, const struct r_vis *vs)
 		if (vs->flip)
 			u = p->w - 1 - u;
 		off = (size_t)u * (size_t)p->h;
-		r_masked_col(r, x, ct[x] + 1, cb[x] - 1,
+		r_masked_col(r, s, x, ct[x] + 1, cb[x] - 1,
 			     p->px + off, p->opaque ? p->opaque + off : NULL, p->h, vs->tmid,
 			     vs->iscale, cm);
 	}
 }
 
-void r_things_draw(struct r_ctx *r)
+void r_things_draw(struct r_ctx *r, struct r_strip *s)
 {
-	if (r->nvis > 1)
-		qsort(r->vis, (size_t)r->nvis, sizeof(*r->vis), r_vis_cmp);
-	for (int i = 0; i < r->nvis; i++)
-		r_draw_vis(r, &r->vis[i]);
-	for (int i = r->ndsegs - 1; i >= 0; i--)
-		if (r->dsegs[i].maskcol != R_CLIP_NONE)
-			r_masked_range(r, &r->dsegs[i], r->dsegs[i].x1, r->dsegs[i].x2);
+	for (int i = 0; i < r->nvis; i++) {
+		const struct r_vis *vs = &r->vis[i];
+		int x1 = vs->x1 > s->x0 ? vs->x1 : s->x0, x2 = vs->x2 < s->x1 ? vs->x2 : s->x1;
+
+		if (x1 <= x2)
+			r_draw_vis(r, s, vs, x1, x2);
+	}
+	for (int i = r->ndsegs - 1; i >= 0; i--) {
+		struct r_dseg *ds = &r->dsegs[i];
+
+		if (ds->maskcol != R_CLIP_NONE && ds->x1 <= s->x1 && ds->x2 >= s->x0)
+			r_masked_range(r, s, ds, ds->x1, ds->x2);
+	}
 }

@@ -1,0 +1,254 @@
+/*
+ * r_strip: what the walk records, and the strip phase that draws it.
+ *
+ * The frame's columns are cut into strips (R_STRIP_MIN columns or a
+ * power-of-two multiple, at most R_STRIP_MAX strips). The walk records each
+ * column run (wall part, sky, fill) into the strip of its column, and each
+ * span once, with its index in every strip it crosses. Then each strip is
+ * one job: its column runs in bands of rows (every run that reaches a band
+ * is drawn there before the next band starts, so the few KiB of frame a
+ * band covers stay in the cache while the strip's columns are drawn one
+ * after the other), the parts of its spans, the black fill of what is left,
+ * then sprites and masked middles clipped to its columns. A span cut by a
+ * strip edge starts at the position the whole span's loop reaches there,
+ * and a run cut by a band edge resumes at the position it stopped at, so a
+ * strip draws the bytes a single pass over the frame would.
+ *
+ * The jobs run through the caller's pool (struct r_par) or one after the
+ * other. A list that cannot grow makes the walk draw that run at once: the
+ * frame stays whole and the same (counted in stats.degraded).
+ */
+#include <assert.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine/r_local.h"
+
+int r_strip_new(struct r_ctx *r)
+{
+	int shift = 6;
+
+	/* R_STRIP_MIN = 1 << 6 */
+	while (((r->w + (1 << shift) - 1) >> shift) > R_STRIP_MAX)
+		shift++;
+	r->strip_shift = shift;
+	r->nstrips = (r->w + (1 << shift) - 1) >> shift;
+	r->nbands = (r->h + (1 << R_BAND_SHIFT) - 1) >> R_BAND_SHIFT;
+	r->strips = calloc((size_t)r->nstrips, sizeof(*r->strips));
+	if (!r->strips)
+		return -1;
+	for (int i = 0; i < r->nstrips; i++) {
+		struct r_strip *s = &r->strips[i];
+
+		s->x0 = i << shift;
+		s->x1 = s->x0 + (1 << shift) - 1 < r->w - 1 ? s->x0 + (1 << shift) - 1 : r->w - 1;
+		s->band = malloc((size_t)(r->nbands + 1) * sizeof(*s->band));
+		if (!s->band)
+			return -1;
+	}
+	return 0;
+}
+
+void r_strip_free(struct r_ctx *r)
+{
+	for (int i = 0; r->strips && i < r->nstrips; i++) {
+		struct r_strip *s = &r->strips[i];
+
+		free(s->cols);
+		free(s->order);
+		free(s->act);
+		free(s->next);
+		free(s->band);
+		free(s->spans);
+	}
+	free(r->strips);
+	free(r->spans);
+}
+
+void r_strip_reset(struct r_ctx *r)
+{
+	r->nspans = 0;
+	for (int i = 0; i < r->nstrips; i++) {
+		struct r_strip *s = &r->strips[i];
+
+		s->ncols = s->nspans = 0;
+		s->written = s->empty = s->masked = 0;
+	}
+}
+
+/* Room for one more run in s: the runs and their three scratch arrays grow
+ * together. 0 or -1. */
+static int r_strip_room(struct r_strip *s)
+{
+	int cap = s->maxcols, c;
+
+	if (s->ncols < s->maxcols)
+		return 0;
+	c = cap;
+	if (r_grow((void **)&s->cols, &c, sizeof(*s->cols), cap + 1) < 0)
+		return -1;
+	c = cap;
+	if (r_grow((void **)&s->order, &c, sizeof(*s->order), cap + 1) < 0)
+		return -1;
+	c = cap;
+	if (r_grow((void **)&s->act, &c, sizeof(*s->act), cap + 1) < 0)
+		return -1;
+	c = cap;
+	if (r_grow((void **)&s->next, &c, sizeof(*s->next), cap + 1) < 0)
+		return -1;
+	s->maxcols = c;
+	return 0;
+}
+
+static void r_rec(struct r_ctx *r, const struct r_col *c)
+{
+	struct r_strip *s = &r->strips[c->x >> r->strip_shift];
+
+	if (r_strip_room(s) < 0) {
+		struct r_col now = *c;
+
+		r->st.degraded++;
+		r_draw_run(r, s, &now, now.y2);
+		return;
+	}
+	s->cols[s->ncols++] = *c;
+}
+
+void r_rec_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col, int h,
+	       const uint8_t *cm, uint32_t frac, uint32_t step)
+{
+	struct r_col c;
+
+	if (y2 < y1)
+		return;
+	assert(h >= 1 && frac < ((uint32_t)h << 16) && step < ((uint32_t)h << 16));
+	c.src = col;
+	c.cm = cm;
+	c.frac = frac;
+	c.step = step;
+	c.h = h;
+	c.x = (int16_t)x;
+	c.y1 = (int16_t)y1;
+	c.y2 = (int16_t)y2;
+	c.colour = 0;
+	r_rec(r, &c);
+}
+
+void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour)
+{
+	struct r_col c;
+
+	if (y2 < y1)
+		return;
+	memset(&c, 0, sizeof(c));
+	c.h = 1;
+	c.x = (int16_t)x;
+	c.y1 = (int16_t)y1;
+	c.y2 = (int16_t)y2;
+	c.colour = colour;
+	r_rec(r, &c);
+}
+
+void r_rec_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat, const uint8_t *cm,
+		uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys)
+{
+	struct r_span sp = { flat, cm, xf, yf, xs, ys, (int16_t)y, (int16_t)x1, (int16_t)x2 };
+	int32_t at = r->nspans;
+
+	if (x2 < x1)
+		return;
+	if (r->nspans == r->maxspans &&
+	    r_grow((void **)&r->spans, &r->maxspans, sizeof(*r->spans), r->nspans + 1) < 0) {
+		r->st.degraded++;
+		for (int i = x1 >> r->strip_shift; i <= x2 >> r->strip_shift; i++)
+			r_draw_span(r, &r->strips[i], &sp);
+		return;
+	}
+	r->spans[r->nspans++] = sp;
+	for (int i = x1 >> r->strip_shift; i <= x2 >> r->strip_shift; i++) {
+		struct r_strip *s = &r->strips[i];
+
+		if (s->nspans == s->maxspans &&
+		    r_grow((void **)&s->spans, &s->maxspans, sizeof(*s->spans), s->nspans + 1) < 0) {
+			r->st.degraded++;
+			r_draw_span(r, s, &sp);
+			continue;
+		}
+		s->spans[s->nspans++] = at;
+	}
+}
+
+/* The strip's column runs, band by band: runs are bucketed by the band
+ * they start in (counting sort into order), and a run that goes on past a
+ * band's last row is carried into the next band's active list. */
+static void r_strip_cols(const struct r_ctx *r, struct r_strip *s)
+{
+	int32_t *cnt = s->band, *act = s->act, *next = s->next;
+	int na = 0, start = 0;
+
+	memset(cnt, 0, (size_t)(r->nbands + 1) * sizeof(*cnt));
+	for (int i = 0; i < s->ncols; i++)
+		cnt[(s->cols[i].y1 >> R_BAND_SHIFT) + 1]++;
+	for (int b = 0; b < r->nbands; b++)
+		cnt[b + 1] += cnt[b];
+	/* after this, cnt[b] is the end of band b's runs in order */
+	for (int i = 0; i < s->ncols; i++)
+		s->order[cnt[s->cols[i].y1 >> R_BAND_SHIFT]++] = i;
+	for (int b = 0; b < r->nbands; b++) {
+		int yend = ((b + 1) << R_BAND_SHIFT) - 1;
+		int nn = 0;
+		int32_t *t;
+
+		if (yend > r->h - 1)
+			yend = r->h - 1;
+		for (int k = 0; k < na; k++) {
+			struct r_col *c = &s->cols[act[k]];
+
+			r_draw_run(r, s, c, c->y2 < yend ? c->y2 : yend);
+			if (c->y2 > yend)
+				next[nn++] = act[k];
+		}
+		for (int k = start; k < cnt[b]; k++) {
+			struct r_col *c = &s->cols[s->order[k]];
+
+			r_draw_run(r, s, c, c->y2 < yend ? c->y2 : yend);
+			if (c->y2 > yend)
+				next[nn++] = s->order[k];
+		}
+		start = cnt[b];
+		t = act;
+		act = next;
+		next = t;
+		na = nn;
+	}
+}
+
+/* One job: everything strip i shows. */
+static void r_strip_job(void *arg, int i)
+{
+	struct r_ctx *r = arg;
+	struct r_strip *s = &r->strips[i];
+
+	r_strip_cols(r, s);
+	for (int k = 0; k < s->nspans; k++)
+		r_draw_span(r, s, &r->spans[s->spans[k]]);
+	r_draw_finish(r, s);
+	r_things_draw(r, s);
+}
+
+void r_strip_draw_all(struct r_ctx *r)
+{
+	if (r->par.run && r->nstrips > 1)
+		r->par.run(r->par.pool, r->nstrips, r_strip_job, r);
+	else
+		for (int i = 0; i < r->nstrips; i++)
+			r_strip_job(r, i);
+	for (int i = 0; i < r->nstrips; i++) {
+		const struct r_strip *s = &r->strips[i];
+
+		r->st.pixels_written += s->written;
+		r->st.pixels_empty += s->empty;
+		r->st.pixels_masked += s->masked;
+	}
+}
