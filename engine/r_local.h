@@ -203,7 +203,7 @@ struct r_ctx {
 	/* the strips (r_strip.c), fixed per size; the shift turns a column
 	 * into its strip */
 	struct r_strip *strips;
-	int nstrips, strip_shift, nbands;
+	int nstrips, strip_shift, band_shift, nbands;
 	struct r_span *spans;           /* this frame's spans */
 	int nspans, maxspans;
 	struct r_par par;               /* run == NULL: strips drawn in turn */
@@ -358,7 +358,13 @@ void r_things_draw(struct r_ctx *r, struct r_strip *s);
 /* r_strip.c: recording by the walk and the strip phase. The r_rec_*
  * functions take what r_draw draws (same requirements); when a list cannot
  * grow they draw at once instead (counted in stats.degraded). */
-int r_strip_new(struct r_ctx *r);
+/* (Re)makes the strips: 1 << strip_shift columns each (0: the default,
+ * R_STRIP_MIN or more, at most R_STRIP_MAX strips), bands of
+ * 1 << band_shift rows (R_BAND_SHIFT by default). r_new uses the defaults;
+ * tests pick others to show that the frame does not depend on them. 0 or
+ * -ENOMEM (the context then needs r_strip_layout again or r_free). */
+int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift);
+/* The strips (not the spans); NULL-safe in its fields. */
 void r_strip_free(struct r_ctx *r);
 /* Empties the strips' lists for a new frame. */
 void r_strip_reset(struct r_ctx *r);

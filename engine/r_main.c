@@ -307,7 +307,7 @@ int r_new(int w, int h, struct r_ctx **out)
 	r->span_sy = malloc((size_t)h * sizeof(*r->span_sy));
 	if (!r->ceilclip || !r->floorclip || !r->cliptop || !r->clipbot || !r->xtoang ||
 	    !r->solid || !r->rowv || !r->yslope || !r->spanstart || !r->span_h || !r->span_fx ||
-	    !r->span_fy || !r->span_sx || !r->span_sy || r_strip_new(r) < 0)
+	    !r->span_fy || !r->span_sx || !r->span_sy || r_strip_layout(r, 0, R_BAND_SHIFT) < 0)
 		goto fail;
 	r->rowv_cy2 = INT32_MIN;
 	/* fade = R_FADE_DIST * scale / focal with focal = w / 2 and scale16 =
@@ -334,6 +334,7 @@ void r_free(struct r_ctx *r)
 	if (!r)
 		return;
 	r_strip_free(r);
+	free(r->spans);
 	for (int i = 0; i < r->maxplanes; i++) {
 		free(r->planes[i].top);
 		free(r->planes[i].bot);

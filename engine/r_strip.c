@@ -19,33 +19,41 @@
  * frame stays whole and the same (counted in stats.degraded).
  */
 #include <assert.h>
+#include <errno.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "engine/r_local.h"
 
-int r_strip_new(struct r_ctx *r)
+int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
 {
-	int shift = 6;
+	int shift = strip_shift;
 
-	/* R_STRIP_MIN = 1 << 6 */
-	while (((r->w + (1 << shift) - 1) >> shift) > R_STRIP_MAX)
-		shift++;
+	r_strip_free(r);
+	if (shift <= 0) {
+		/* R_STRIP_MIN = 1 << 6 */
+		shift = 6;
+		while (((r->w + (1 << shift) - 1) >> shift) > R_STRIP_MAX)
+			shift++;
+	}
 	r->strip_shift = shift;
+	r->band_shift = band_shift;
 	r->nstrips = (r->w + (1 << shift) - 1) >> shift;
-	r->nbands = (r->h + (1 << R_BAND_SHIFT) - 1) >> R_BAND_SHIFT;
+	r->nbands = (r->h + (1 << band_shift) - 1) >> band_shift;
 	r->strips = calloc((size_t)r->nstrips, sizeof(*r->strips));
 	if (!r->strips)
-		return -1;
+		return -ENOMEM;
 	for (int i = 0; i < r->nstrips; i++) {
 		struct r_strip *s = &r->strips[i];
+		int x1;
 
 		s->x0 = i << shift;
-		s->x1 = s->x0 + (1 << shift) - 1 < r->w - 1 ? s->x0 + (1 << shift) - 1 : r->w - 1;
+		x1 = s->x0 + (1 << shift) - 1;
+		s->x1 = x1 < r->w - 1 ? x1 : r->w - 1;
 		s->band = malloc((size_t)(r->nbands + 1) * sizeof(*s->band));
 		if (!s->band)
-			return -1;
+			return -ENOMEM;
 	}
 	return 0;
 }
@@ -63,7 +71,8 @@ void r_strip_free(struct r_ctx *r)
 		free(s->spans);
 	}
 	free(r->strips);
-	free(r->spans);
+	r->strips = NULL;
+	r->nstrips = 0;
 }
 
 void r_strip_reset(struct r_ctx *r)
@@ -189,14 +198,14 @@ static void r_strip_cols(const struct r_ctx *r, struct r_strip *s)
 
 	memset(cnt, 0, (size_t)(r->nbands + 1) * sizeof(*cnt));
 	for (int i = 0; i < s->ncols; i++)
-		cnt[(s->cols[i].y1 >> R_BAND_SHIFT) + 1]++;
+		cnt[(s->cols[i].y1 >> r->band_shift) + 1]++;
 	for (int b = 0; b < r->nbands; b++)
 		cnt[b + 1] += cnt[b];
 	/* after this, cnt[b] is the end of band b's runs in order */
 	for (int i = 0; i < s->ncols; i++)
-		s->order[cnt[s->cols[i].y1 >> R_BAND_SHIFT]++] = i;
+		s->order[cnt[s->cols[i].y1 >> r->band_shift]++] = i;
 	for (int b = 0; b < r->nbands; b++) {
-		int yend = ((b + 1) << R_BAND_SHIFT) - 1;
+		int yend = ((b + 1) << r->band_shift) - 1;
 		int nn = 0;
 		int32_t *t;
 

@@ -1,0 +1,206 @@
+/*
+ * pool: worker threads for batches of jobs (contracts in pool.h).
+ *
+ * One 64-bit ticket says which batch is current (high half: its generation)
+ * and which job index is handed out next (low half). A thread claims index
+ * i of generation g by compare-and-swap from (g, i) to (g, i + 1), so a
+ * thread that wakes late, after its batch ended, can never claim a job of
+ * the next batch with the previous batch's function: its swap fails on the
+ * generation. The batch's function and argument are read only after a
+ * claim succeeded, and the caller cannot publish the next batch before
+ * every claimed job has returned (left reaches 0), so they are the claim's.
+ *
+ * Sleeping: a worker that saw no new generation for POOL_SPIN polls takes
+ * the lock, counts itself in sleepers and waits; pool_run stores the new
+ * ticket and then wakes the sleepers if there are any. Both are sequentially
+ * consistent atomics, so either pool_run sees the sleeper or the sleeper
+ * sees the new ticket before it waits: no lost wake-up.
+ */
+#include "app/pool.h"
+
+#include <errno.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include "engine/r_main.h"
+
+/* Polls before sleeping, between batches and while waiting for the last
+ * job: a few tens of microseconds. */
+#define POOL_SPIN 4000
+
+struct pool {
+	pthread_mutex_t mu;
+	pthread_cond_t wake, done;
+	pthread_t th[POOL_MAX_THREADS];
+	int nth;                        /* workers started */
+	_Atomic uint64_t ticket;        /* generation << 32 | next index */
+	atomic_int left;                /* jobs of the batch not yet returned */
+	atomic_int sleepers;
+	atomic_int stop;
+	/* the current batch, written by pool_run before the ticket */
+	void (*job)(void *arg, int i);
+	void *arg;
+	atomic_int n;                   /* atomic: a late worker may read it while
+					 * the next batch is published */
+	uint32_t gen;                   /* pool_run's side: the last generation */
+};
+
+static inline void pool_relax(void)
+{
+#if defined(__x86_64__) || defined(__i386__)
+	__builtin_ia32_pause();
+#elif defined(__aarch64__) || defined(__arm__)
+	__asm__ __volatile__("yield");
+#endif
+}
+
+int pool_cpus(void)
+{
+	long n = sysconf(_SC_NPROCESSORS_ONLN);
+
+	if (n < 1)
+		return 1;
+	return n > POOL_MAX_THREADS ? POOL_MAX_THREADS : (int)n;
+}
+
+/* Claims and runs jobs of generation g until none is left. */
+static void pool_work(struct pool *p, uint32_t g)
+{
+	for (;;) {
+		uint64_t v = atomic_load(&p->ticket);
+		uint32_t i = (uint32_t)v;
+
+		if ((uint32_t)(v >> 32) != g || i >= (uint32_t)atomic_load(&p->n))
+			return;
+		if (!atomic_compare_exchange_weak(&p->ticket, &v, v + 1))
+			continue;
+		p->job(p->arg, (int)i);
+		if (atomic_fetch_sub(&p->left, 1) == 1) {
+			pthread_mutex_lock(&p->mu);
+			pthread_cond_signal(&p->done);
+			pthread_mutex_unlock(&p->mu);
+		}
+	}
+}
+
+static void *pool_main(void *arg)
+{
+	struct pool *p = arg;
+	uint32_t seen = 0;
+
+	for (;;) {
+		uint32_t g = (uint32_t)(atomic_load(&p->ticket) >> 32);
+
+		for (int k = 0; g == seen && k < POOL_SPIN && !atomic_load(&p->stop); k++) {
+			pool_relax();
+			g = (uint32_t)(atomic_load(&p->ticket) >> 32);
+		}
+		if (g == seen) {
+			pthread_mutex_lock(&p->mu);
+			atomic_fetch_add(&p->sleepers, 1);
+			while ((g = (uint32_t)(atomic_load(&p->ticket) >> 32)) == seen &&
+			       !atomic_load(&p->stop))
+				pthread_cond_wait(&p->wake, &p->mu);
+			atomic_fetch_sub(&p->sleepers, 1);
+			pthread_mutex_unlock(&p->mu);
+		}
+		if (atomic_load(&p->stop))
+			return NULL;
+		seen = g;
+		pool_work(p, g);
+	}
+}
+
+int pool_new(int threads, struct pool **out)
+{
+	struct pool *p;
+	int rc;
+
+	*out = NULL;
+	if (threads < 1 || threads > POOL_MAX_THREADS)
+		return -EINVAL;
+	p = calloc(1, sizeof(*p));
+	if (!p)
+		return -ENOMEM;
+	pthread_mutex_init(&p->mu, NULL);
+	pthread_cond_init(&p->wake, NULL);
+	pthread_cond_init(&p->done, NULL);
+	atomic_init(&p->ticket, 0);
+	atomic_init(&p->left, 0);
+	atomic_init(&p->sleepers, 0);
+	atomic_init(&p->stop, 0);
+	atomic_init(&p->n, 0);
+	for (int i = 0; i < threads - 1; i++) {
+		rc = pthread_create(&p->th[i], NULL, pool_main, p);
+		if (rc != 0) {
+			pool_free(p);
+			return -rc;
+		}
+		p->nth++;
+	}
+	*out = p;
+	return 0;
+}
+
+void pool_free(struct pool *p)
+{
+	if (!p)
+		return;
+	pthread_mutex_lock(&p->mu);
+	atomic_store(&p->stop, 1);
+	pthread_cond_broadcast(&p->wake);
+	pthread_mutex_unlock(&p->mu);
+	for (int i = 0; i < p->nth; i++)
+		pthread_join(p->th[i], NULL);
+	pthread_cond_destroy(&p->done);
+	pthread_cond_destroy(&p->wake);
+	pthread_mutex_destroy(&p->mu);
+	free(p);
+}
+
+int pool_threads(const struct pool *p)
+{
+	return p->nth + 1;
+}
+
+void pool_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
+{
+	struct pool *p = pool;
+
+	if (n <= 0)
+		return;
+	if (p->nth == 0 || n == 1) {
+		for (int i = 0; i < n; i++)
+			job(arg, i);
+		return;
+	}
+	p->job = job;
+	p->arg = arg;
+	atomic_store(&p->n, n);
+	atomic_store(&p->left, n);
+	p->gen++;
+	atomic_store(&p->ticket, (uint64_t)p->gen << 32);
+	if (atomic_load(&p->sleepers) > 0) {
+		pthread_mutex_lock(&p->mu);
+		pthread_cond_broadcast(&p->wake);
+		pthread_mutex_unlock(&p->mu);
+	}
+	pool_work(p, p->gen);
+	for (int k = 0; k < POOL_SPIN && atomic_load(&p->left) > 0; k++)
+		pool_relax();
+	if (atomic_load(&p->left) > 0) {
+		pthread_mutex_lock(&p->mu);
+		while (atomic_load(&p->left) > 0)
+			pthread_cond_wait(&p->done, &p->mu);
+		pthread_mutex_unlock(&p->mu);
+	}
+}
+
+void pool_r_par(struct pool *p, struct r_par *out)
+{
+	out->run = pool_run;
+	out->pool = p;
+}

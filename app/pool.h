@@ -1,0 +1,45 @@
+/*
+ * pool: a persistent pool of worker threads that runs batches of jobs, for
+ * the renderer's strips (engine/r_main.h struct r_par; the engine has no
+ * threads of its own).
+ *
+ * A pool of t threads is the caller plus t - 1 workers started once. A
+ * batch (pool_run) hands out job indices 0..n-1 one at a time to whoever
+ * asks first, the caller included, and returns when all have returned.
+ * Between batches a worker spins briefly (the next frame's batch usually
+ * comes within a fraction of a millisecond), then sleeps on a condition
+ * variable. One thread at a time may call pool_run on a pool.
+ */
+#ifndef ARCADED_APP_POOL_H
+#define ARCADED_APP_POOL_H
+
+struct pool;
+struct r_par;
+
+/* Largest pool. */
+#define POOL_MAX_THREADS 64
+
+/* Online CPUs (at least 1, at most POOL_MAX_THREADS): what "auto" means. */
+int pool_cpus(void);
+
+/* New pool of threads (1..POOL_MAX_THREADS) threads, the caller counted:
+ * starts threads - 1 workers. 0, -EINVAL or -errno of the thread start
+ * (nothing left running). Owned by the caller: pool_free. */
+int pool_new(int threads, struct pool **out);
+
+/* Stops and joins the workers. NULL-safe. Not during a pool_run. */
+void pool_free(struct pool *p);
+
+/* Threads of the pool, the caller counted. */
+int pool_threads(const struct pool *p);
+
+/* Calls job(arg, i) exactly once for each i in 0..n-1 (n >= 0) on the
+ * pool's threads and the calling one, and returns when every call has
+ * returned; their writes are then visible to the caller. Blocks. p is a
+ * struct pool * (void * to fit struct r_par). */
+void pool_run(void *p, int n, void (*job)(void *arg, int i), void *arg);
+
+/* The renderer's view of the pool: out->run = pool_run, out->pool = p. */
+void pool_r_par(struct pool *p, struct r_par *out);
+
+#endif

@@ -1,0 +1,164 @@
+/*
+ * Tests for app/pool.c: every job of a batch runs exactly once, batches
+ * follow each other without mixing, jobs do run at the same time on
+ * several threads, and the edge cases (no jobs, one thread, bad sizes).
+ */
+#include <errno.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stdatomic.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include <time.h>
+
+#include <cmocka.h>
+
+#include "app/pool.h"
+#include "engine/r_main.h"
+
+enum { MAXJ = 300 };
+
+struct batch {
+	atomic_int runs[MAXJ];
+	int tag;                        /* which batch wrote it */
+	int seen_tag[MAXJ];
+};
+
+static void count_job(void *arg, int i)
+{
+	struct batch *b = arg;
+
+	atomic_fetch_add(&b->runs[i], 1);
+	b->seen_tag[i] = b->tag;
+}
+
+static void new_rejects_bad_sizes_and_free_takes_null(void **state)
+{
+	struct pool *p = (struct pool *)1;
+	(void)state;
+
+	assert_int_equal(pool_new(0, &p), -EINVAL);
+	assert_null(p);
+	assert_int_equal(pool_new(POOL_MAX_THREADS + 1, &p), -EINVAL);
+	pool_free(NULL);
+	assert_true(pool_cpus() >= 1 && pool_cpus() <= POOL_MAX_THREADS);
+}
+
+/* 2000 batches of 0..299 jobs on pools of 1, 2 and 4 threads: each index
+ * once per batch, none beyond n, and each job saw its own batch's tag. */
+static void every_job_runs_exactly_once_per_batch(void **state)
+{
+	static const int sizes[] = { 1, 2, 4 };
+	static struct batch b;
+	(void)state;
+
+	for (size_t z = 0; z < 3; z++) {
+		struct pool *p;
+
+		assert_int_equal(pool_new(sizes[z], &p), 0);
+		assert_int_equal(pool_threads(p), sizes[z]);
+		for (int k = 0; k < 2000; k++) {
+			int n = (k * 37) % MAXJ;
+
+			for (int i = 0; i < MAXJ; i++) {
+				atomic_store(&b.runs[i], 0);
+				b.seen_tag[i] = -1;
+			}
+			b.tag = k;
+			pool_run(p, n, count_job, &b);
+			for (int i = 0; i < MAXJ; i++) {
+				if (atomic_load(&b.runs[i]) != (i < n ? 1 : 0))
+					fail_msg("pool %d batch %d (n %d): job %d ran %d times",
+						 sizes[z], k, n, i, atomic_load(&b.runs[i]));
+				if (i < n && b.seen_tag[i] != k)
+					fail_msg("job %d of batch %d saw batch %d", i, k,
+						 b.seen_tag[i]);
+			}
+		}
+		pool_free(p);
+	}
+}
+
+struct meet {
+	atomic_int in[2];
+	int met[2];
+};
+
+/* Job i announces itself and waits (at most 5 s) for the other: both can
+ * only meet if they run at the same time. */
+static void meet_job(void *arg, int i)
+{
+	struct meet *m = arg;
+	struct timespec t0, t;
+
+	atomic_store(&m->in[i], 1);
+	clock_gettime(CLOCK_MONOTONIC, &t0);
+	do {
+		if (atomic_load(&m->in[1 - i])) {
+			m->met[i] = 1;
+			return;
+		}
+		clock_gettime(CLOCK_MONOTONIC, &t);
+	} while (t.tv_sec - t0.tv_sec < 5);
+}
+
+static void two_threads_run_two_jobs_at_once(void **state)
+{
+	struct pool *p;
+	(void)state;
+
+	assert_int_equal(pool_new(2, &p), 0);
+	/* several times, after sleeps long enough for the worker to go from
+	 * spinning to waiting on the condition variable */
+	for (int k = 0; k < 5; k++) {
+		struct meet m;
+		struct timespec nap = { 0, 20 * 1000 * 1000 };
+
+		memset(&m, 0, sizeof(m));
+		nanosleep(&nap, NULL);
+		pool_run(p, 2, meet_job, &m);
+		assert_true(m.met[0] && m.met[1]);
+	}
+	pool_free(p);
+}
+
+static void nothing_to_do_returns_at_once(void **state)
+{
+	struct pool *p;
+	static struct batch b;
+	(void)state;
+
+	assert_int_equal(pool_new(2, &p), 0);
+	pool_run(p, 0, count_job, &b);
+	assert_int_equal(atomic_load(&b.runs[0]), 0);
+	pool_free(p);
+}
+
+static void r_par_points_at_the_pool(void **state)
+{
+	struct pool *p;
+	struct r_par par;
+	static struct batch b;
+	(void)state;
+
+	assert_int_equal(pool_new(2, &p), 0);
+	pool_r_par(p, &par);
+	assert_ptr_equal(par.pool, p);
+	par.run(par.pool, 3, count_job, &b);
+	assert_int_equal(atomic_load(&b.runs[0]) + atomic_load(&b.runs[1]) +
+			 atomic_load(&b.runs[2]), 3);
+	pool_free(p);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(new_rejects_bad_sizes_and_free_takes_null),
+		cmocka_unit_test(every_job_runs_exactly_once_per_batch),
+		cmocka_unit_test(two_threads_run_two_jobs_at_once),
+		cmocka_unit_test(nothing_to_do_returns_at_once),
+		cmocka_unit_test(r_par_points_at_the_pool),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,312 @@
+/*
+ * Tests for engine/r_strip.c: the frame does not depend on how it is cut
+ * into strips and bands, nor on how many threads draw the strips.
+ *
+ * The reference is one strip as wide as the frame with one band as tall as
+ * it, drawn on the calling thread: every recorded run and span is then
+ * drawn whole, in the order the walk recorded them, which is the single
+ * pass the renderer made before it had strips. Every other layout (the
+ * default, narrow strips with short bands, strips that leave a narrower
+ * last one) and pools of 2 and 3 threads must give the same bytes and the
+ * same counters, over many seeded views of the built-in levels and of
+ * Freedoom maps, with sprites.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "app/pool.h"
+#include "engine/map.h"
+#include "engine/map_wad.h"
+#include "engine/r_local.h"
+#include "engine/r_main.h"
+#include "engine/tex.h"
+#include "engine/th.h"
+#include "engine/wad.h"
+
+static uint32_t lcg(uint32_t *s)
+{
+	*s = *s * 1664525u + 1013904223u;
+	return *s >> 8;
+}
+
+/* One way of drawing: a context with a strip layout, and a pool or none. */
+struct way {
+	struct r_ctx *r;
+	struct pool *pool;
+	uint8_t *px;
+	struct r_frame f;
+	struct r_stats st;
+	const char *name;
+};
+
+enum { WAYS = 5 };
+
+/* 0: the reference (one strip, one band, no pool); 1: defaults; 2: 64-
+ * column strips, 8-row bands, 2 threads; 3: defaults, 3 threads; 4:
+ * 64-column strips, 1-row bands, 2 threads. */
+static void ways_open(struct way *w, int width, int height)
+{
+	static const char *names[WAYS] = { "reference", "default", "64x8, 2 threads",
+					   "default, 3 threads", "64x1, 2 threads" };
+
+	for (int i = 0; i < WAYS; i++) {
+		struct r_par par;
+
+		memset(&w[i], 0, sizeof(w[i]));
+		w[i].name = names[i];
+		assert_int_equal(r_new(width, height, &w[i].r), 0);
+		w[i].px = malloc((size_t)width * (size_t)height);
+		assert_non_null(w[i].px);
+		w[i].f = (struct r_frame){ w[i].px, width, height, width };
+		if (i == 0)
+			assert_int_equal(r_strip_layout(w[i].r, 12, 12), 0);
+		if (i == 2)
+			assert_int_equal(r_strip_layout(w[i].r, 6, 3), 0);
+		if (i == 4)
+			assert_int_equal(r_strip_layout(w[i].r, 6, 0), 0);
+		if (i >= 2) {
+			assert_int_equal(pool_new(i == 3 ? 3 : 2, &w[i].pool), 0);
+			pool_r_par(w[i].pool, &par);
+			r_set_par(w[i].r, &par);
+		}
+	}
+	assert_int_equal(w[0].r->nstrips, 1);
+	assert_int_equal(w[0].r->nbands, 1);
+}
+
+static void ways_close(struct way *w)
+{
+	for (int i = 0; i < WAYS; i++) {
+		r_free(w[i].r);
+		pool_free(w[i].pool);
+		free(w[i].px);
+	}
+}
+
+/* Renders v with every way; all must match the reference byte for byte
+ * and counter for counter. Returns the reference's stats. */
+static struct r_stats ways_render(struct way *w, const struct map *m, const struct tex_set *t,
+				  const struct r_view *v, const struct r_sprite *spr, int nspr,
+				  const char *what, int n)
+{
+	size_t bytes = (size_t)w[0].f.w * (size_t)w[0].f.h;
+
+	for (int i = 0; i < WAYS; i++) {
+		memset(w[i].px, 0x5a + i, bytes);
+		r_render(w[i].r, m, t, v, spr, nspr, &w[i].f);
+		r_get_stats(w[i].r, &w[i].st);
+	}
+	for (int i = 1; i < WAYS; i++) {
+		if (memcmp(w[0].px, w[i].px, bytes) != 0) {
+			size_t k = 0;
+
+			while (w[0].px[k] == w[i].px[k])
+				k++;
+			fail_msg("%s view %d %dx%d: %s differs from the reference at (%zu, %zu)",
+				 what, n, w[0].f.w, w[0].f.h, w[i].name, k % (size_t)w[0].f.w,
+				 k / (size_t)w[0].f.w);
+		}
+		if (memcmp(&w[0].st, &w[i].st, sizeof(w[0].st)) != 0)
+			fail_msg("%s view %d: %s counters differ (written %u/%u masked %u/%u "
+				 "spans %u/%u)", what, n, w[i].name, w[0].st.pixels_written,
+				 w[i].st.pixels_written, w[0].st.pixels_masked,
+				 w[i].st.pixels_masked, w[0].st.spans, w[i].st.spans);
+	}
+	assert_int_equal(w[0].st.pixels_written, (uint32_t)bytes);
+	return w[0].st;
+}
+
+static void layout_sets_strips_of_whole_cache_lines(void **state)
+{
+	static const int widths[] = { 1, 63, 64, 65, 320, 333, 1280, 1920, 2047, 4096 };
+	(void)state;
+
+	for (size_t i = 0; i < sizeof(widths) / sizeof(widths[0]); i++) {
+		struct r_ctx *r;
+		int w = widths[i], covered = 0;
+
+		assert_int_equal(r_new(w, 50, &r), 0);
+		assert_true(r->nstrips >= 1 && r->nstrips <= R_STRIP_MAX);
+		for (int k = 0; k < r->nstrips; k++) {
+			const struct r_strip *s = &r->strips[k];
+
+			/* contiguous, in order, 64-column aligned starts */
+			assert_int_equal(s->x0, covered);
+			assert_int_equal(s->x0 % R_STRIP_MIN, 0);
+			assert_true(s->x1 >= s->x0);
+			if (k < r->nstrips - 1)
+				assert_true(s->x1 - s->x0 + 1 >= R_STRIP_MIN);
+			covered = s->x1 + 1;
+		}
+		assert_int_equal(covered, w);
+		assert_int_equal(r->nbands, (50 + (1 << R_BAND_SHIFT) - 1) >> R_BAND_SHIFT);
+		r_free(r);
+	}
+}
+
+/* Views of every built-in level: seeded points of the map's box (some
+ * outside every sector), angles and shears, at two sizes. */
+static void builtin_levels_same_frame_every_way(void **state)
+{
+	static const int sizes[][2] = { { 320, 240 }, { 333, 199 } };
+	struct tex_set *t;
+	uint32_t seed = 777;
+	(void)state;
+
+	assert_int_equal(r_pal_set_new(&t), 0);
+	for (size_t z = 0; z < 2; z++) {
+		struct way w[WAYS];
+
+		ways_open(w, sizes[z][0], sizes[z][1]);
+		for (int lv = 0; lv < map_builtin_count(); lv++) {
+			struct map *m;
+
+			assert_int_equal(map_builtin(lv, &m), 0);
+			for (int n = 0; n < 60; n++) {
+				struct r_view v = { 0 };
+				const struct map_vertex *a = &m->vertices[lcg(&seed) % m->num_vertices];
+				const struct map_vertex *b = &m->vertices[lcg(&seed) % m->num_vertices];
+
+				/* a point between two vertices: inside or outside */
+				v.x = a->x / 2 + b->x / 2 + (fx_t)(lcg(&seed) % 64) * FX_ONE;
+				v.y = a->y / 2 + b->y / 2 + (fx_t)(lcg(&seed) % 64) * FX_ONE;
+				v.z = m->sectors[map_point_sector(m, v.x, v.y)].floor_h +
+				      (fx_t)(8 + lcg(&seed) % 80) * FX_ONE;
+				v.angle = lcg(&seed) * 2654435761u;
+				v.shear = (int32_t)(lcg(&seed) % 201) - 100;
+				ways_render(w, m, t, &v, NULL, 0, "built-in", n);
+			}
+			map_free(m);
+		}
+		ways_close(w);
+	}
+	r_pal_set_free(t);
+}
+
+static uint8_t *slurp(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "rbe");
+	uint8_t *d;
+	long n;
+
+	if (!f)
+		return NULL;
+	assert_int_equal(fseek(f, 0, SEEK_END), 0);
+	n = ftell(f);
+	assert_true(n > 0);
+	rewind(f);
+	d = malloc((size_t)n);
+	assert_non_null(d);
+	assert_int_equal(fread(d, 1, (size_t)n, f), (size_t)n);
+	fclose(f);
+	*len = (size_t)n;
+	return d;
+}
+
+/* The map's things as sprites (feet on the floor, hanging ones under the
+ * ceiling), players and markers left out. */
+static int map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out)
+{
+	int n = 0;
+
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		const struct map_thing *th = &m->things[i];
+		const struct th_info *in = th_find(th->type);
+		const struct map_sector *sec;
+		int sp;
+
+		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
+			continue;
+		sp = tex_find_sprite(t, in->sprite);
+		if (sp < 0)
+			continue;
+		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
+		out[n].x = th->x;
+		out[n].y = th->y;
+		out[n].z = (in->flags & TH_HANGING) ? sec->ceil_h - in->height * FX_ONE : sec->floor_h;
+		out[n].angle = th->angle;
+		out[n].sprite = (uint16_t)sp;
+		out[n].frame = (uint16_t)(in->frame - 'A');
+		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
+		n++;
+	}
+	return n;
+}
+
+/* Freedoom maps E1M1..E1M4 with their things as sprites: the player start
+ * and seeded views from near things (where sprites, masked middles and
+ * their clipping are), at 320x200 and 1280x720. */
+static void freedoom_maps_same_frame_every_way(void **state)
+{
+	static const char *maps[] = { "E1M1", "E1M2", "E1M3", "E1M4" };
+	static const int sizes[][2] = { { 320, 200 }, { 1280, 720 } };
+	const char *path = "/usr/share/games/doom/freedoom1.wad";
+	char err[256] = "";
+	uint32_t seed = 99;
+	struct tex_set *t;
+	struct wad *wd;
+	uint8_t *data;
+	size_t len = 0;
+	uint32_t masked = 0;
+	(void)state;
+
+	data = slurp(path, &len);
+	if (!data)
+		skip();
+	assert_int_equal(wad_new(&wd), 0);
+	assert_int_equal(wad_add(wd, data, len, path, err, sizeof(err)), 0);
+	assert_int_equal(tex_load_wad(wd, &t, err, sizeof(err)), 0);
+	for (size_t z = 0; z < 2; z++) {
+		struct way w[WAYS];
+
+		ways_open(w, sizes[z][0], sizes[z][1]);
+		for (size_t i = 0; i < sizeof(maps) / sizeof(maps[0]); i++) {
+			struct map *m;
+			struct r_sprite *spr;
+			int nspr;
+
+			assert_int_equal(map_load_wad(wd, t, maps[i], &m, err, sizeof(err)), 0);
+			spr = calloc(m->num_things + 1, sizeof(*spr));
+			assert_non_null(spr);
+			nspr = map_sprites(m, t, spr);
+			for (int n = 0; n < (z == 0 ? 40 : 12); n++) {
+				const struct map_thing *th = &m->things[lcg(&seed) % m->num_things];
+				struct r_view v = { 0 };
+				struct r_stats st;
+
+				v.x = th->x + (fx_t)((int32_t)(lcg(&seed) % 257) - 128) * FX_ONE;
+				v.y = th->y + (fx_t)((int32_t)(lcg(&seed) % 257) - 128) * FX_ONE;
+				v.z = m->sectors[map_point_sector(m, v.x, v.y)].floor_h + 41 * FX_ONE;
+				v.angle = lcg(&seed) * 2654435761u;
+				v.shear = (int32_t)(lcg(&seed) % 81) - 40;
+				st = ways_render(w, m, t, &v, spr, nspr, maps[i], n);
+				masked += st.pixels_masked;
+			}
+			free(spr);
+			map_free(m);
+		}
+		ways_close(w);
+	}
+	/* the views did show sprites or masked middles */
+	assert_true(masked > 0);
+	tex_free(t);
+	wad_free(wd);
+	free(data);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(layout_sets_strips_of_whole_cache_lines),
+		cmocka_unit_test(builtin_levels_same_frame_every_way),
+		cmocka_unit_test(freedoom_maps_same_frame_every_way),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
