@@ -100,7 +100,7 @@ mkdir -p "$ST/repo/tests"
 cp -r tests/data "$ST/repo/tests/"
 cp tests/vm/guest.sh "$ST/guest.sh"
 mkdir -p "$ST/overlay/lib/systemd/system"
-cp tests/vm/vm-test.service "$ST/overlay/lib/systemd/system/"
+cp tests/vm/vm-test.service tests/vm/vm-late-fb.service "$ST/overlay/lib/systemd/system/"
 [ -n "$gpio_ko" ] && cp "$gpio_ko" "$ST/modules/"
 # The fault-injection switch (off by default) is enabled for the watchdog test.
 mkdir -p "$ST/overlay/etc/systemd/system/arcaded.service.d"
@@ -166,6 +166,12 @@ boot() {
 		# Debian allocates the DRM fbdev memory for one page (overalloc
 		# 100%); twice that lets the daemon double-buffer by panning.
 		append="$base drm_kms_helper.drm_fbdev_overalloc=200"
+		;;
+	latefb)
+		# bochs-drm loaded only once the daemon is starting (vm-late-fb.service)
+		kernel=$kdir/vmlinux
+		append="$base drm_kms_helper.drm_fbdev_overalloc=200"
+		append=$(echo "$append" | sed 's/modprobe.blacklist=/modprobe.blacklist=bochs,/')
 		;;
 	fb16)
 		# VESA modes are set by the bzImage's real-mode code (vga=);
@@ -273,6 +279,7 @@ judge() {
 	fi
 	[ -e "$res/play-start.ppm" ] && screen screen-is-frame "$H" match "$ref" "$res/play-start.ppm" "$bpp"
 	[ -e "$res/play-moved.ppm" ] && screen input-changes-screen "$H" differ "$res/play-start.ppm" "$res/play-moved.ppm"
+	[ -e "$res/late-screen.ppm" ] && screen late-fb-picture "$H" picture "$res/late-screen.ppm" "$render_w" "$render_h"
 	if [ -e "$res/wd-attract-1.ppm" ]; then
 		screen watchdog-back-in-attract "$H" differ "$res/wd-attract-1.ppm" "$res/wd-attract-2.ppm"
 		screen watchdog-screen-is-frame "$H" match "$ref" "$res/wd-play.ppm" "$bpp"
