@@ -1,13 +1,16 @@
 /*
  * tex_builtin: the project's own texture set, made by integer code so the
  * game needs no WAD: pal_builtin's palette, wall textures, flats, a sky and
- * a few sprites. Every pixel comes from integer hashing and patterns of
+ * sprites (tex_bspr.c). Every pixel comes from integer hashing and patterns of
  * the coordinates (tiling: every noise lattice wraps at the picture size),
  * so the set is identical on every build.
  *
- * Names are Doom-style. The sprites use Doom's sprite names (BAR1 barrel,
- * COLU lamp, POSS enemy, MEDI medikit) so that the thing table (th.h)
- * finds pictures for those thing types in a map drawn with this set.
+ * Names are Doom-style. The sprites use Doom's sprite names (tex_bspr.c
+ * lists them) so that the thing table (th.h) finds pictures for the thing
+ * types the game uses in a map drawn with this set.
+ *
+ * Numbering (what the built-in levels' texture numbers mean, map.h): the
+ * order of the tables below, the same on every call and every build.
  */
 #include "engine/tex.h"
 
@@ -16,13 +19,13 @@
 #include <string.h>
 
 #include "engine/tex_local.h"
+#include "engine/tex_paint.h"
 
 /* The tables name each picture's maker by kind (no function pointers, so
  * they stay read-only data); tb_make_* dispatch. */
 enum tb_kind {
 	TB_BRICK, TB_METAL, TB_STONE, TB_TECH, TB_WOOD, TB_DOOR, TB_GRATE, TB_MARBLE, TB_SKY,
 	TB_FLOOR, TB_NOISY, TB_CEIL, TB_WATER, TB_SKYFLAT,
-	TB_BARREL, TB_LAMP, TB_ENEMY, TB_MEDIKIT,
 };
 
 struct tb_tex {
@@ -37,25 +40,6 @@ struct tb_flat {
 	int16_t arg;
 };
 
-struct tb_spr {
-	char name[9];                  /* lump-style: "POSSA2A8" */
-	int16_t w, h;
-	uint8_t kind;
-	int16_t arg;
-};
-
-static uint32_t tb_hash(uint32_t a, uint32_t b, uint32_t seed)
-{
-	uint32_t h = a * 0x9E3779B1u ^ b * 0x85EBCA77u ^ seed * 0xC2B2AE3Du;
-
-	h ^= h >> 15;
-	h *= 0x2C1B3C6Du;
-	h ^= h >> 12;
-	h *= 0x297A2D39u;
-	h ^= h >> 15;
-	return h;
-}
-
 /* Value noise 0..255 on a lattice of `cell` pixels that wraps every
  * `period` pixels (a multiple of cell), bilinear between lattice points. */
 static int tb_noise(int x, int y, int cell, int period, uint32_t seed)
@@ -63,28 +47,13 @@ static int tb_noise(int x, int y, int cell, int period, uint32_t seed)
 	int n = period / cell;
 	int cx = x / cell, cy = y / cell, fx = x % cell, fy = y % cell;
 	int x0 = cx % n, x1 = (cx + 1) % n, y0 = cy % n, y1 = (cy + 1) % n;
-	int a = (int)(tb_hash((uint32_t)x0, (uint32_t)y0, seed) & 255);
-	int b = (int)(tb_hash((uint32_t)x1, (uint32_t)y0, seed) & 255);
-	int c = (int)(tb_hash((uint32_t)x0, (uint32_t)y1, seed) & 255);
-	int d = (int)(tb_hash((uint32_t)x1, (uint32_t)y1, seed) & 255);
+	int a = (int)(tp_hash((uint32_t)x0, (uint32_t)y0, seed) & 255);
+	int b = (int)(tp_hash((uint32_t)x1, (uint32_t)y0, seed) & 255);
+	int c = (int)(tp_hash((uint32_t)x0, (uint32_t)y1, seed) & 255);
+	int d = (int)(tp_hash((uint32_t)x1, (uint32_t)y1, seed) & 255);
 	int top = a * (cell - fx) + b * fx, bot = c * (cell - fx) + d * fx;
 
 	return (top * (cell - fy) + bot * fy) / (cell * cell);
-}
-
-/* Palette index of a ramp's shade, clamped to the ramp. */
-static uint8_t tb_c(int ramp, int shade)
-{
-	return PAL_RGB(ramp, shade < 0 ? 0 : shade > PAL_SHADES - 1 ? PAL_SHADES - 1 : shade);
-}
-
-static void tb_set(struct tex_pic *p, int x, int y, uint8_t c)
-{
-	if (x < 0 || y < 0 || x >= p->w || y >= p->h)
-		return;
-	p->px[(size_t)x * (size_t)p->h + (size_t)y] = c;
-	if (p->opaque)
-		p->opaque[(size_t)x * (size_t)p->h + (size_t)y] = 1;
 }
 
 /* ---- wall textures ---------------------------------------------------- */
@@ -95,13 +64,13 @@ static void tb_brick(struct tex_pic *p)
 		for (int x = 0; x < p->w; x++) {
 			int row = y / 16, sx = (x + (row & 1) * 16) % p->w;
 			int id = row * 2 + sx / 32;
-			int shade = 5 + (int)(tb_hash((uint32_t)id, 1, 11) % 3) +
-				    (int)(tb_hash((uint32_t)x, (uint32_t)y, 12) % 3) - 1;
+			int shade = 5 + (int)(tp_hash((uint32_t)id, 1, 11) % 3) +
+				    (int)(tp_hash((uint32_t)x, (uint32_t)y, 12) % 3) - 1;
 
 			if (y % 16 == 15 || sx % 32 == 31)
-				tb_set(p, x, y, tb_c(PAL_GREY, 9 + (int)(tb_hash((uint32_t)x, (uint32_t)y, 13) % 2)));
+				tp_set(p, x, y, tp_c(PAL_GREY, 9 + (int)(tp_hash((uint32_t)x, (uint32_t)y, 13) % 2)));
 			else
-				tb_set(p, x, y, tb_c(PAL_RED, y % 16 == 0 ? shade - 2 : shade + 1));
+				tp_set(p, x, y, tp_c(PAL_RED, y % 16 == 0 ? shade - 2 : shade + 1));
 		}
 	}
 }
@@ -120,7 +89,7 @@ static void tb_metal(struct tex_pic *p)
 				shade = 2;
 			else if (rx * rx + ry * ry <= 2)
 				shade = rx + ry < 0 ? 1 : 9;
-			tb_set(p, x, y, tb_c(PAL_SLATE, shade));
+			tp_set(p, x, y, tp_c(PAL_SLATE, shade));
 		}
 	}
 }
@@ -135,7 +104,7 @@ static void tb_stone(struct tex_pic *p)
 			for (int j = -1; j <= 1; j++) {
 				for (int i = -1; i <= 1; i++) {
 					int cx = ((x / 16 + i) + 4) % 4, cy = ((y / 16 + j) + 4) % 4;
-					uint32_t h = tb_hash((uint32_t)cx, (uint32_t)cy, 31);
+					uint32_t h = tp_hash((uint32_t)cx, (uint32_t)cy, 31);
 					int ox = (x / 16 + i) * 16 + 2 + (int)(h % 12);
 					int oy = (y / 16 + j) * 16 + 2 + (int)((h >> 8) % 12);
 					int d = (x - ox) * (x - ox) + (y - oy) * (y - oy);
@@ -150,10 +119,10 @@ static void tb_stone(struct tex_pic *p)
 				}
 			}
 			if (d2 - d1 < 24)
-				tb_set(p, x, y, tb_c(PAL_GREY, 12));
+				tp_set(p, x, y, tp_c(PAL_GREY, 12));
 			else
-				tb_set(p, x, y, tb_c(PAL_GREY, 6 + (int)(tb_hash((uint32_t)id, 0, 32) % 3) +
-						     (int)(tb_hash((uint32_t)x, (uint32_t)y, 33) % 2)));
+				tp_set(p, x, y, tp_c(PAL_GREY, 6 + (int)(tp_hash((uint32_t)id, 0, 32) % 3) +
+						     (int)(tp_hash((uint32_t)x, (uint32_t)y, 33) % 2)));
 		}
 	}
 }
@@ -164,22 +133,22 @@ static void tb_tech(struct tex_pic *p)
 
 	for (int y = 0; y < p->h; y++) {
 		for (int x = 0; x < p->w; x++) {
-			int shade = 8 + (int)(tb_hash((uint32_t)x, (uint32_t)y, 41) % 2);
+			int shade = 8 + (int)(tp_hash((uint32_t)x, (uint32_t)y, 41) % 2);
 			uint8_t c;
 
 			if (x % 16 == 0)
 				shade = 12;
 			if (y % 32 == 0)
 				shade = 3;
-			c = tb_c(PAL_TEAL, shade);
+			c = tp_c(PAL_TEAL, shade);
 			if (x >= 12 && x < 52 && y >= 40 && y < 80) {
-				c = tb_c(PAL_BLACKRAMP, 13);
-				if (y % 4 == 0 && (int)(tb_hash((uint32_t)y, 0, 42) % 32) > x - 12)
-					c = tb_c(PAL_CYAN, 3);
+				c = tp_c(PAL_BLACKRAMP, 13);
+				if (y % 4 == 0 && (int)(tp_hash((uint32_t)y, 0, 42) % 32) > x - 12)
+					c = tp_c(PAL_CYAN, 3);
 			}
 			if (y >= 10 && y < 14 && x % 8 >= 2 && x % 8 < 6)
-				c = tb_c(lights[(x / 8) % 4], 1);
-			tb_set(p, x, y, c);
+				c = tp_c(lights[(x / 8) % 4], 1);
+			tp_set(p, x, y, c);
 		}
 	}
 }
@@ -190,11 +159,11 @@ static void tb_wood(struct tex_pic *p)
 		for (int x = 0; x < p->w; x++) {
 			int plank = x / 16;
 			int grain = tb_noise(x * 4, y, 16, 256, 51 + (uint32_t)plank) / 64;
-			int shade = 4 + (int)(tb_hash((uint32_t)plank, 0, 52) % 3) + grain;
+			int shade = 4 + (int)(tp_hash((uint32_t)plank, 0, 52) % 3) + grain;
 
 			if (x % 16 == 15 || (y + plank * 23) % 64 == 0)
 				shade = 12;
-			tb_set(p, x, y, tb_c(PAL_BROWN, shade));
+			tp_set(p, x, y, tp_c(PAL_BROWN, shade));
 		}
 	}
 }
@@ -210,10 +179,10 @@ static void tb_door(struct tex_pic *p)
 				shade = 10;
 			if (y % 32 == 31 || x == p->w / 2)
 				shade = 12;
-			c = tb_c(PAL_SLATE, shade);
+			c = tp_c(PAL_SLATE, shade);
 			if (y >= p->h - 16 && x >= 4 && x < p->w - 4)
-				c = ((x + y) / 8) & 1 ? tb_c(PAL_YELLOW, 3) : tb_c(PAL_BLACKRAMP, 12);
-			tb_set(p, x, y, c);
+				c = ((x + y) / 8) & 1 ? tp_c(PAL_YELLOW, 3) : tp_c(PAL_BLACKRAMP, 12);
+			tp_set(p, x, y, c);
 		}
 	}
 }
@@ -225,7 +194,7 @@ static void tb_grate(struct tex_pic *p)
 	for (int y = 0; y < p->h; y++)
 		for (int x = 0; x < p->w; x++)
 			if (x < 4 || x >= p->w - 4 || y < 4 || y >= p->h - 4 || x % 16 < 2)
-				tb_set(p, x, y, tb_c(PAL_GREY, 9 - (x % 16 == 0 || x < 2 || y < 2)));
+				tp_set(p, x, y, tp_c(PAL_GREY, 9 - (x % 16 == 0 || x < 2 || y < 2)));
 }
 
 static void tb_marble(struct tex_pic *p)
@@ -235,7 +204,7 @@ static void tb_marble(struct tex_pic *p)
 			int n = tb_noise(x, y, 16, 64, 71) + tb_noise(x, y, 4, 64, 72) / 4;
 			int vein = (n + x * 2 + y) % 64;
 
-			tb_set(p, x, y, vein < 4 ? tb_c(PAL_RED, 8) : tb_c(PAL_TAN, 2 + n / 64));
+			tp_set(p, x, y, vein < 4 ? tp_c(PAL_RED, 8) : tp_c(PAL_TAN, 2 + n / 64));
 		}
 	}
 }
@@ -248,13 +217,13 @@ static void tb_sky(struct tex_pic *p)
 		for (int x = 0; x < p->w; x++) {
 			int n = tb_noise(x, y * 2, 32, 256, 81) + tb_noise(x, y * 2, 8, 256, 82) / 2;
 			int cloud = n - 250 + y / 4;
-			uint8_t c = tb_c(PAL_SKY, 6 - y * 6 / p->h);
+			uint8_t c = tp_c(PAL_SKY, 6 - y * 6 / p->h);
 
 			if (cloud > 24)
-				c = tb_c(PAL_GREY, 1 + (int)(tb_hash((uint32_t)x, (uint32_t)y, 83) % 2));
+				c = tp_c(PAL_GREY, 1 + (int)(tp_hash((uint32_t)x, (uint32_t)y, 83) % 2));
 			else if (cloud > 0)
-				c = tb_c(PAL_SLATE, 1);
-			tb_set(p, x, y, c);
+				c = tp_c(PAL_SLATE, 1);
+			tp_set(p, x, y, c);
 		}
 	}
 }
@@ -272,9 +241,9 @@ static void tb_floor(struct tex_flat *f, int arg)
 	for (int y = 0; y < TEX_FLAT_SIZE; y++)
 		for (int x = 0; x < TEX_FLAT_SIZE; x++)
 			tb_fset(f, x, y, x % 32 == 0 || y % 32 == 0
-				? tb_c(PAL_GREY, 11)
-				: tb_c(PAL_TAN, 4 + ((x / 32 + y / 32) & 1) * 2 +
-						(int)(tb_hash((uint32_t)x, (uint32_t)y, 91) % 2)));
+				? tp_c(PAL_GREY, 11)
+				: tp_c(PAL_TAN, 4 + ((x / 32 + y / 32) & 1) * 2 +
+						(int)(tp_hash((uint32_t)x, (uint32_t)y, 91) % 2)));
 }
 
 /* Noise of one ramp: ramp, base shade and spread packed in arg. */
@@ -284,9 +253,9 @@ static void tb_noisy(struct tex_flat *f, int arg)
 
 	for (int y = 0; y < TEX_FLAT_SIZE; y++)
 		for (int x = 0; x < TEX_FLAT_SIZE; x++)
-			tb_fset(f, x, y, tb_c(ramp, base + tb_noise(x, y, 8, 64, (uint32_t)arg) *
+			tb_fset(f, x, y, tp_c(ramp, base + tb_noise(x, y, 8, 64, (uint32_t)arg) *
 						      spread / 256 +
-						      (int)(tb_hash((uint32_t)x, (uint32_t)y,
+						      (int)(tp_hash((uint32_t)x, (uint32_t)y,
 								    (uint32_t)arg) % 2)));
 }
 
@@ -303,10 +272,10 @@ static void tb_ceil(struct tex_flat *f, int arg)
 				shade = 11;
 			/* a light panel: a pale glowing disc in each square */
 			if (arg && cx * cx + cy * cy < 40) {
-				tb_fset(f, x, y, tb_c(PAL_YELLOW, (cx * cx + cy * cy) / 20));
+				tb_fset(f, x, y, tp_c(PAL_YELLOW, (cx * cx + cy * cy) / 20));
 				continue;
 			}
-			tb_fset(f, x, y, tb_c(PAL_GREY, shade));
+			tb_fset(f, x, y, tp_c(PAL_GREY, shade));
 		}
 	}
 }
@@ -320,108 +289,14 @@ static void tb_water(struct tex_flat *f, int arg)
 			int n = tb_noise((x + arg * 16) % 64, y, 16, 64, 101) +
 				tb_noise(x, (y + 64 - arg * 16) % 64, 16, 64, 102);
 
-			tb_fset(f, x, y, tb_c(PAL_BLUE, 4 + n / 64));
+			tb_fset(f, x, y, tp_c(PAL_BLUE, 4 + n / 64));
 		}
 }
 
 static void tb_skyflat(struct tex_flat *f, int arg)
 {
 	(void)arg;
-	memset(f->px, tb_c(PAL_SKY, 3), sizeof f->px);
-}
-
-/* ---- sprites -------------------------------------------------------------- */
-
-/* A barrel: a shaded cylinder with two bands; arg 1 makes its top glow. */
-static void tb_barrel(struct tex_pic *p, int arg)
-{
-	int cx = p->w / 2;
-
-	for (int y = 0; y < p->h; y++) {
-		for (int x = 0; x < p->w; x++) {
-			int d = x - cx < 0 ? cx - x : x - cx;
-			int shade = 4 + d * 8 / cx;
-
-			if ((y < 3 || y >= p->h - 2) && d > cx - 2)
-				continue;
-			if (y < 3)
-				tb_set(p, x, y, arg ? tb_c(PAL_GREEN, 1) : tb_c(PAL_GREEN, 6));
-			else if (y == 6 || y == p->h - 6)
-				tb_set(p, x, y, tb_c(PAL_GREY, shade + 2));
-			else
-				tb_set(p, x, y, tb_c(PAL_OLIVE, shade));
-		}
-	}
-}
-
-static void tb_lamp(struct tex_pic *p, int arg)
-{
-	int cx = p->w / 2;
-
-	(void)arg;
-	for (int y = 0; y < p->h; y++) {
-		for (int x = 0; x < p->w; x++) {
-			int dx = x - cx, dy = y - 7;
-
-			if (dx * dx + dy * dy <= 36)
-				tb_set(p, x, y, tb_c(PAL_YELLOW, (dx * dx + dy * dy) / 12));
-			else if (y > 12 && dx >= -1 && dx <= 1)
-				tb_set(p, x, y, tb_c(PAL_GREY, 7 + dx));
-			else if (y >= p->h - 4 && dx >= -5 && dx <= 5)
-				tb_set(p, x, y, tb_c(PAL_GREY, 9));
-		}
-	}
-}
-
-static void tb_rect(struct tex_pic *p, int x0, int y0, int w, int h, uint8_t c)
-{
-	for (int y = y0; y < y0 + h; y++)
-		for (int x = x0; x < x0 + w; x++)
-			tb_set(p, x, y, c);
-}
-
-/* The enemy, rotation arg 1 (facing the viewer) .. 5 (its back); 6..8 are
- * 4..2 mirrored by the sprite names. The gun arm is on its right hand,
- * which the viewer sees on the left at rotation 1. */
-static void tb_enemy(struct tex_pic *p, int rot)
-{
-	static const int half[6] = { 0, 8, 7, 5, 7, 8 };  /* torso half width */
-	int cx = p->w / 2, hw = half[rot];
-	uint8_t skin = tb_c(PAL_TAN, 4), body = tb_c(PAL_GREEN, 7), dark = tb_c(PAL_GREEN, 11);
-
-	tb_rect(p, cx - hw + 1, 40, hw - 2, 16, dark);                 /* legs */
-	tb_rect(p, cx + 1, 40, hw - 2, 16, dark);
-	tb_rect(p, cx - hw, 14, 2 * hw, 27, body);                     /* torso */
-	tb_rect(p, cx - hw, 38, 2 * hw, 3, tb_c(PAL_BROWN, 8));        /* belt */
-	for (int y = 0; y < 13; y++)                                   /* head */
-		for (int x = -5; x <= 5; x++)
-			if (x * x + (y - 6) * (y - 6) <= 30)
-				tb_set(p, cx + x, y + 1, rot == 5 ? tb_c(PAL_BROWN, 9) : skin);
-	if (rot == 1) {                                                /* eyes */
-		tb_set(p, cx - 2, 6, tb_c(PAL_RED, 3));
-		tb_set(p, cx + 2, 6, tb_c(PAL_RED, 3));
-	} else if (rot == 2) {
-		tb_set(p, cx - 3, 6, tb_c(PAL_RED, 3));
-		tb_set(p, cx + 1, 6, tb_c(PAL_RED, 3));
-	} else if (rot == 3) {
-		tb_set(p, cx - 4, 6, tb_c(PAL_RED, 3));
-	}
-	/* the gun: held forward, so it points at the viewer's left in side
-	 * views and is hidden behind the body from the back */
-	if (rot <= 3)
-		tb_rect(p, rot == 3 ? 0 : cx - hw - 3, 24, rot == 3 ? cx : 4, 4,
-			tb_c(PAL_BLACKRAMP, 6));
-	if (rot == 4)
-		tb_rect(p, cx - hw - 2, 22, 3, 3, tb_c(PAL_BLACKRAMP, 6));
-}
-
-static void tb_medikit(struct tex_pic *p, int arg)
-{
-	(void)arg;
-	tb_rect(p, 0, 0, p->w, p->h, tb_c(PAL_GREY, 1));
-	tb_rect(p, 0, p->h - 2, p->w, 2, tb_c(PAL_GREY, 8));
-	tb_rect(p, p->w / 2 - 2, 3, 4, p->h - 6, tb_c(PAL_RED, 4));
-	tb_rect(p, p->w / 2 - 7, p->h / 2 - 2, 14, 4, tb_c(PAL_RED, 4));
+	memset(f->px, tp_c(PAL_SKY, 3), sizeof f->px);
 }
 
 static const struct tb_tex tb_textures[] = {
@@ -446,15 +321,7 @@ static const struct tb_flat tb_flats[] = {
 	{ "F_SKY1", TB_SKYFLAT, 0 },
 };
 
-static const struct tb_spr tb_sprites[] = {
-	{ "BAR1A0", 23, 32, TB_BARREL, 0 },   { "BAR1B0", 23, 32, TB_BARREL, 1 },
-	{ "COLUA0", 23, 48, TB_LAMP, 0 },     { "MEDIA0", 28, 19, TB_MEDIKIT, 0 },
-	{ "POSSA1", 32, 56, TB_ENEMY, 1 },    { "POSSA2A8", 32, 56, TB_ENEMY, 2 },
-	{ "POSSA3A7", 32, 56, TB_ENEMY, 3 },  { "POSSA4A6", 32, 56, TB_ENEMY, 4 },
-	{ "POSSA5", 32, 56, TB_ENEMY, 5 },
-};
-
-static void tb_make_pic(struct tex_pic *p, int kind, int arg)
+static void tb_make_pic(struct tex_pic *p, int kind)
 {
 	switch (kind) {
 	case TB_BRICK: tb_brick(p); break;
@@ -466,10 +333,6 @@ static void tb_make_pic(struct tex_pic *p, int kind, int arg)
 	case TB_GRATE: tb_grate(p); break;
 	case TB_MARBLE: tb_marble(p); break;
 	case TB_SKY: tb_sky(p); break;
-	case TB_BARREL: tb_barrel(p, arg); break;
-	case TB_LAMP: tb_lamp(p, arg); break;
-	case TB_ENEMY: tb_enemy(p, arg); break;
-	case TB_MEDIKIT: tb_medikit(p, arg); break;
 	default: break;
 	}
 }
@@ -492,7 +355,7 @@ int tex_builtin(struct tex_set **out)
 	struct tex_set *t;
 	uint64_t budget = TEX_BUDGET;
 	uint8_t ca = PAL_RGB(PAL_PINK, 3), cb = PAL_BLACK;
-	int r, nt = TB_N(tb_textures) + 2, nf = TB_N(tb_flats) + 1, ns = TB_N(tb_sprites) + 1;
+	int r, nt = TB_N(tb_textures) + 2, nf = TB_N(tb_flats) + 1, ns = tex_bspr_count() + 1;
 
 	*out = NULL;
 	r = tex_set_alloc(&t, nt, nf, ns);
@@ -505,7 +368,7 @@ int tex_builtin(struct tex_set **out)
 
 		r = tex_pic_new(p, tb_textures[i].name, tb_textures[i].w, tb_textures[i].h, &budget);
 		if (!r) {
-			tb_make_pic(p, tb_textures[i].kind, 0);
+			tb_make_pic(p, tb_textures[i].kind);
 			tex_pic_seal(p);
 		}
 	}
@@ -521,17 +384,8 @@ int tex_builtin(struct tex_set **out)
 	tex_flat_checker(&t->flats[nf - 1], "", ca, cb);
 	if (!r)
 		r = tex_pic_checker(&t->sprpics[0], "", 8, 8, ca, cb);
-	for (int i = 0; !r && i < TB_N(tb_sprites); i++) {
-		struct tex_pic *p = &t->sprpics[i + 1];
-
-		r = tex_pic_new(p, tb_sprites[i].name, tb_sprites[i].w, tb_sprites[i].h, &budget);
-		if (!r) {
-			tb_make_pic(p, tb_sprites[i].kind, tb_sprites[i].arg);
-			tex_pic_seal(p);
-			p->left = (int16_t)(p->w / 2);
-			p->top = p->h;
-		}
-	}
+	if (!r)
+		r = tex_bspr_make(&t->sprpics[1], &budget);
 	if (!r)
 		r = tex_set_finish(t);
 	if (r) {

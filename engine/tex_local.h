@@ -72,4 +72,10 @@ void tex_flat_checker(struct tex_flat *f, const char *name, uint8_t a, uint8_t b
  * fallback_tex / fallback_flat must be set. 0 or -ENOMEM. */
 int tex_set_finish(struct tex_set *t);
 
+/* The built-in set's sprite pictures (tex_bspr.c): how many there are,
+ * and making them into pics[0 .. count-1] (names, pixels, offsets),
+ * charging *budget. 0 or a negative errno from tex_pic_new. */
+int tex_bspr_count(void);
+int tex_bspr_make(struct tex_pic *pics, uint64_t *budget);
+
 #endif

@@ -388,7 +388,8 @@ static void builtin_set_is_complete_and_deterministic(void **state)
 					     "AR_WOOD", "AR_DOOR", "AR_GRATE", "SKY1" };
 	static const char *const flats[] = { "AR_FLOOR", "AR_GRASS", "AR_CEIL", "AR_WAT1",
 					     "F_SKY1" };
-	static const char *const sprites[] = { "BAR1", "COLU", "POSS", "MEDI" };
+	static const char *const sprites[] = { "BAR1", "COLU", "POSS", "MEDI", "SPOS", "TROO",
+						 "SARG", "HEAD" };
 
 	(void)state;
 	assert_int_equal(tex_builtin(&a), 0);
@@ -430,6 +431,44 @@ static void builtin_set_is_complete_and_deterministic(void **state)
 	tex_free(NULL);
 }
 
+/* The built-in set's one-view sprites: pickups, decorations, the shot's
+ * puff and blood (4 frames each, as g_sprite.c shows them), and the HUD
+ * pistol, whose every frame reaches the bottom of Doom's 320x168 view
+ * (hud.c draws a picture's top left at (1 - left, 32 - top)) with the
+ * recoil frames higher than the ready one. */
+static void builtin_set_has_pickups_effects_and_the_pistol(void **state)
+{
+	static const struct { const char *name; int frames; } one[] = {
+		{ "STIM", 1 }, { "CLIP", 1 }, { "AMMO", 1 }, { "CBRA", 1 }, { "TRED", 1 },
+		{ "PUFF", 4 }, { "BLUD", 4 }, { "PISG", 5 }, { "PISF", 1 },
+	};
+	struct tex_set *t;
+	int g, top_a = 0;
+
+	(void)state;
+	assert_int_equal(tex_builtin(&t), 0);
+	for (size_t i = 0; i < sizeof one / sizeof one[0]; i++) {
+		int k = tex_find_sprite(t, one[i].name);
+		assert_true(k >= 0);
+		assert_int_equal(t->sprites[k].num_frames, one[i].frames);
+		for (int f = 0; f < one[i].frames; f++)
+			for (int r = 0; r < 8; r++)
+				assert_int_equal(t->sprites[k].frames[f].pic[r],
+						 t->sprites[k].frames[f].pic[0]);
+	}
+	g = tex_find_sprite(t, "PISG");
+	for (int f = 0; f < 5; f++) {
+		const struct tex_pic *p = &t->sprpics[t->sprites[g].frames[f].pic[0]];
+		assert_int_equal(32 - p->top + p->h, 168);
+		if (f == 0)
+			top_a = 32 - p->top;
+		else
+			assert_true(32 - p->top < top_a);
+	}
+	assert_int_equal(t->missing, 0);
+	tex_free(t);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -446,6 +485,7 @@ int main(void)
 		cmocka_unit_test(bad_palette_and_lists_are_errors),
 		cmocka_unit_test(no_playpal_is_an_error),
 		cmocka_unit_test(builtin_set_is_complete_and_deterministic),
+		cmocka_unit_test(builtin_set_has_pickups_effects_and_the_pistol),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

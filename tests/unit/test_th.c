@@ -104,7 +104,8 @@ static void light_things_encode_radius_intensity_colour(void **state)
 
 static void builtin_set_draws_its_thing_types(void **state)
 {
-	static const uint16_t types[] = { 2035, 2028, 3004, 2012 };
+	static const uint16_t types[] = { 2035, 2028, 3004, 2012, 9, 3001, 3002,
+					  3005, 2011, 2007, 2048, 35, 46 };
 	struct tex_set *t;
 
 	(void)state;
