@@ -137,18 +137,21 @@ static int rp_make_random(const char *out, uint32_t ticks, uint32_t seed)
 		.set = { .coins_per_credit = 1 },
 	};
 	struct sim_cmd c = { 0 };
+	struct ct_spec spec = { .level = 1 };
 	struct rec_writer *w;
-	struct map *m;
+	struct ct ct;
+	char err[256];
 	uint32_t span = 0;
 	int rc;
 
 	if (!seed)
 		seed = 1;
-	rc = map_builtin(0, &m);
+	/* tied to every built-in stage, as the daemon's recordings are */
+	rc = ct_load(&ct, &spec, err, sizeof(err));
 	if (rc < 0)
 		return rc;
-	h.map_hash = m->content_hash;
-	map_free(m);
+	h.map_hash = sim_stages_hash((const struct map *const *)ct.maps, ct.nmaps);
+	ct_free(&ct);
 	rc = rec_writer_open(out, &h, &w);
 	if (rc < 0)
 		return rc;
