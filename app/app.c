@@ -79,6 +79,7 @@ struct app {
 	struct cmd_state cs;
 	struct rec_writer *rec;
 	struct rec_reader *rep;
+	struct rec_verify verify;  /* --verify: stored hashes against the replay's */
 	struct scr *scr;
 	size_t scr_next;
 	struct lat_series frame_time, latency;
@@ -381,14 +382,6 @@ static void script_inputs(struct app *a, uint32_t t)
 	}
 }
 
-static uint64_t frame_hash(const struct r_frame *f)
-{
-	uint64_t h = HASH_INIT;
-	for (int y = 0; y < f->h; y++)
-		h = hash_bytes(h, f->px + (size_t)y * (size_t)f->pitch, (size_t)f->w);
-	return h;
-}
-
 /* Runs the checks and outputs of tick t (after the tick ran). */
 static void script_checks(struct app *a, uint32_t t)
 {
@@ -411,7 +404,8 @@ static void script_checks(struct app *a, uint32_t t)
 		}
 		case SCR_SNAPSHOT:
 			fprintf(a->o->out, "snapshot tick %u frame %016" PRIx64 " state %016" PRIx64 "\n",
-				t, frame_hash(&a->frame), sim_hash(&a->sim));
+				t, hash_frame(a->frame.px, a->frame.w, a->frame.h, a->frame.pitch),
+				sim_hash(&a->sim));
 			break;
 		case SCR_SCREENSHOT: {
 			int rc = shot_png(st->path, a->frame.px, a->frame.w, a->frame.h,
@@ -609,7 +603,7 @@ static int setup(struct app *a)
 	int rc;
 
 	struct ct_spec spec = a->o->content;
-	int rw = c->game.render_width, rh = c->game.render_height;
+	int rw = c->game.render_width, rh_h = c->game.render_height;
 
 	if (a->o->replay) {
 		struct rec_run run;
@@ -625,7 +619,7 @@ static int setup(struct app *a)
 			spec.level = run.level;
 		if (run.render_w && run.render_h) {
 			rw = run.render_w;
-			rh = run.render_h;
+			rh_h = run.render_h;
 		}
 	}
 	rc = ct_load(&a->ct, &spec, err, sizeof(err));
@@ -649,11 +643,25 @@ static int setup(struct app *a)
 	a->persist = !headless(a) && c->paths.state_dir[0];
 
 	if (a->rep) {
-		rc = rec_check(rec_reader_header(a->rep), a->map_hash, err, sizeof(err));
+		const struct rec_header *rh = rec_reader_header(a->rep);
+		struct rec_run run = {
+			.map_hash = a->map_hash,
+			.set = rh->set,
+			.render_w = (uint16_t)(a->o->no_render ? 0 : rw),
+			.render_h = (uint16_t)(a->o->no_render ? 0 : rh_h),
+			.level = (uint8_t)(a->o->content.nwads || a->o->content.grid ? 0 : spec.level),
+			.map_name = a->o->content.map,
+		};
+		/* --verify wants the very run the recording was made with;
+		 * a plain replay needs the same map and engine only. */
+		rc = a->o->verify ? rec_check_run(rh, &run, err, sizeof(err))
+				  : rec_check(rh, a->map_hash, err, sizeof(err));
 		if (rc < 0) {
 			logf_("%s: refused: %s", a->o->replay, err);
 			return rc;
 		}
+		if (a->o->verify)
+			rec_verify_init(&a->verify, rh, &run);
 		/* The game's rules come from the recording, not from this
 		 * cabinet's settings. */
 		a->set = rec_reader_header(a->rep)->set;
@@ -669,7 +677,7 @@ static int setup(struct app *a)
 
 	rc = view_init(&a->view, &a->ct, NULL, c->display.rotate);
 	if (rc == 0)
-		rc = resize(a, rw, rh);
+		rc = resize(a, rw, rh_h);
 	if (rc < 0)
 		return rc;
 	rc = open_display(a);
@@ -701,14 +709,25 @@ static int setup(struct app *a)
 	open_inputs(a);
 
 	if (a->o->record) {
+		/* Format 2: the run it was made with and every tick's state
+		 * and frame hashes, so `--verify` can prove a replay. */
 		struct rec_header h = {
-			.version = REC_VERSION,
+			.version = REC_VERSION_2,
 			.tick_rate = SIM_TICRATE,
 			.map_hash = a->map_hash,
 			.engine_version = REC_ENGINE_VERSION,
 			.set = a->set,
 			.count = REC_COUNT_UNKNOWN,
+			.render_w = (uint16_t)a->frame.w,
+			.render_h = (uint16_t)a->frame.h,
+			.render_version = REC_RENDER_VERSION,
+			.hash_flags = REC_HAS_STATE | REC_HAS_FRAME,
+			.level = (uint8_t)(a->o->content.nwads || a->o->content.grid ? 0
+										 : a->o->content.level),
+			.start_time = (int64_t)time(NULL),
 		};
+		if (a->o->content.map)
+			snprintf(h.map_name, sizeof(h.map_name), "%s", a->o->content.map);
 		rc = rec_writer_open(a->o->record, &h, &a->rec);
 		if (rc < 0) {
 			logf_("%s: %s", a->o->record, strerror(-rc));
@@ -777,19 +796,24 @@ static void sleep_until(uint64_t deadline_ns)
 }
 
 /* Gets the command of the next tick. Returns 0 at the end of a replay. */
-static int next_cmd(struct app *a, uint32_t t, struct sim_cmd *cmd)
+/* Gets the next tick: its command and, from a recording, the hashes it
+ * stored. Returns 0 at the end of a replay. */
+static int next_tick(struct app *a, uint32_t t, struct rec_tick *rt)
 {
+	memset(rt, 0, sizeof(*rt));
 	if (a->rep) {
-		int rc = rec_reader_next(a->rep, cmd);
+		int rc = rec_reader_next_tick(a->rep, rt);
 		if (rc < 0)
-			logf_("%s: tick %u: %s", a->o->replay, t, strerror(-rc));
+			logf_("%s: tick %u: %s", a->o->replay, t,
+			      rc == -EIO ? "the recording ends before its header's count" :
+			      strerror(-rc));
 		return rc > 0;
 	}
 	if (a->scr)
 		script_inputs(a, t);
 	else
 		read_inputs(a);
-	cmd_build(&a->cs, cmd);
+	cmd_build(&a->cs, &rt->cmd);
 	return 1;
 }
 
@@ -821,7 +845,7 @@ static int loop(struct app *a)
 
 	a->start_ns = base;
 	for (;; t++) {
-		struct sim_cmd cmd;
+		struct rec_tick rt;
 
 		if (app_stop_sig) {
 			logf_("signal %d: stopping", (int)app_stop_sig);
@@ -848,14 +872,9 @@ static int loop(struct app *a)
 				sleep_until(deadline);
 			}
 		}
-		if (!next_cmd(a, t, &cmd))
+		if (!next_tick(a, t, &rt))
 			break;
-		if (a->rec && rec_writer_put(a->rec, &cmd) < 0) {
-			logf_("%s: write failed; recording stopped", a->o->record);
-			rec_writer_close(a->rec);
-			a->rec = NULL;
-		}
-		sim_tick(&a->sim, &cmd);
+		sim_tick(&a->sim, &rt.cmd);
 		a->ticks_run++;
 		persist_tick(a);
 
@@ -864,9 +883,23 @@ static int loop(struct app *a)
 			if (rc < 0 && present_errors++ == 0)
 				logf_("display %s: present: %s", a->dpb->name, strerror(-rc));
 		}
-		if (a->rep && !a->o->quiet)
-			fprintf(a->o->out, "%u %016" PRIx64 " %016" PRIx64 "\n", t,
-				sim_hash(&a->sim), a->o->no_render ? 0 : frame_hash(&a->frame));
+		if (a->rep || a->rec) {
+			uint64_t sh = sim_hash(&a->sim);
+			uint64_t fh = a->o->no_render ? 0 : hash_frame(a->frame.px, a->frame.w,
+								     a->frame.h, a->frame.pitch);
+			if (a->rep && !a->o->quiet)
+				fprintf(a->o->out, "%u %016" PRIx64 " %016" PRIx64 "\n", t, sh, fh);
+			if (a->o->verify)
+				rec_verify_tick(&a->verify, t, &rt, sh, fh);
+			if (a->rec) {
+				struct rec_tick nt = { rt.cmd, sh, fh };
+				if (rec_writer_put_tick(a->rec, &nt) < 0) {
+					logf_("%s: write failed; recording stopped", a->o->record);
+					rec_writer_close(a->rec);
+					a->rec = NULL;
+				}
+			}
+		}
 		if (a->scr)
 			script_checks(a, t);
 		if (!a->ready && !headless(a)) {
@@ -912,6 +945,13 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 			logf_("%s: %s", o->screenshot, strerror(-rc));
 			code = APP_SETUP_FAILED;
 		}
+	}
+	if (o->verify && a->rep) {
+		char sum[512];
+		int bad = rec_verify_summary(&a->verify, sum, sizeof(sum));
+		logf_("%s: %s", o->replay, sum);
+		if (bad)
+			code = APP_EXPECT_FAILED;
 	}
 	if (a->scr) {
 		if (a->failures)

@@ -25,6 +25,7 @@ struct app_opts {
 	int fast;                /* do not wait for the tick clock */
 	int no_render;           /* replay without rendering (state hashes only) */
 	int quiet;               /* replay without printing per-tick hashes */
+	int verify;              /* replay: compare with the recording's stored hashes */
 	FILE *out;               /* hashes, snapshots and summaries (stdout) */
 	struct ct_spec content;  /* what to play on (level set from the config) */
 };

@@ -17,6 +17,7 @@
 static void usage(FILE *f)
 {
 	fputs("usage: arcaded [options]\n"
+	      "       arcaded replay FILE [options]   (same as --replay FILE)\n"
 	      "Runs the arcade cabinet daemon: input, game, framebuffer.\n"
 	      "\n"
 	      "  --config-dir DIR   read DIR/*.ini in name order (default /etc/arcaded)\n"
@@ -35,6 +36,9 @@ static void usage(FILE *f)
 	      "  --record FILE      record every tick's command to FILE\n"
 	      "  --replay FILE      replay a recording headless; print per-tick hashes\n"
 	      "  --no-render        with --replay: state hashes only, no rendering\n"
+	      "  --verify           with --replay: compare with the hashes the recording stores;\n"
+	      "                     exit 1 at a difference (prints the first)\n"
+	      "  --until TICK       stop after tick TICK (with --screenshot: that tick's frame)\n"
 	      "  --quiet            with --replay: print no per-tick hashes (benchmarks)\n"
 	      "  --ticks N          stop after N ticks\n"
 	      "  --fast             do not wait for the 60 Hz clock\n"
@@ -59,7 +63,8 @@ int main(int argc, char **argv)
 {
 	enum { O_CONFIG_DIR = 256, O_STATE_DIR, O_SET, O_DISPLAY, O_LEVEL, O_PLAY, O_BINDINGS,
 	       O_SCRIPT, O_RECORD, O_REPLAY, O_NO_RENDER, O_QUIET, O_TICKS, O_FAST, O_SCREENSHOT,
-	       O_PRINT_CONFIG, O_VERSION, O_HELP, O_WAD, O_MAP, O_GRID, O_NO_LIGHTS };
+	       O_PRINT_CONFIG, O_VERSION, O_HELP, O_WAD, O_MAP, O_GRID, O_NO_LIGHTS, O_VERIFY,
+	       O_UNTIL };
 	static const struct option opts[] = {
 		{ "config-dir", required_argument, NULL, O_CONFIG_DIR },
 		{ "state-dir", required_argument, NULL, O_STATE_DIR },
@@ -81,6 +86,8 @@ int main(int argc, char **argv)
 		{ "map", required_argument, NULL, O_MAP },
 		{ "grid", required_argument, NULL, O_GRID },
 		{ "no-lights", no_argument, NULL, O_NO_LIGHTS },
+		{ "verify", no_argument, NULL, O_VERIFY },
+		{ "until", required_argument, NULL, O_UNTIL },
 		{ "version", no_argument, NULL, O_VERSION },
 		{ "help", no_argument, NULL, O_HELP },
 		{ NULL, 0, NULL, 0 },
@@ -108,18 +115,22 @@ int main(int argc, char **argv)
 		case O_REPLAY: o.replay = optarg; break;
 		case O_NO_RENDER: o.no_render = 1; break;
 		case O_QUIET: o.quiet = 1; break;
-		case O_TICKS: {
+		case O_TICKS:
+		case O_UNTIL: {
 			char *end;
 			unsigned long v;
 			errno = 0;
 			v = strtoul(optarg, &end, 10);
-			if (errno || *end || end == optarg || v > 0xffffffffu) {
-				fprintf(stderr, "arcaded: --ticks: '%s' is not a tick count\n", optarg);
+			if (errno || *end || end == optarg || v >= 0xffffffffu) {
+				fprintf(stderr, "arcaded: --%s: '%s' is not a tick number\n",
+					opt == O_TICKS ? "ticks" : "until", optarg);
 				return 2;
 			}
-			o.ticks = (uint32_t)v;
+			/* --until T: stop after tick T has run (T + 1 ticks) */
+			o.ticks = (uint32_t)v + (opt == O_UNTIL);
 			break;
 		}
+		case O_VERIFY: o.verify = 1; break;
 		case O_FAST: o.fast = 1; break;
 		case O_SCREENSHOT: o.screenshot = optarg; break;
 		case O_PRINT_CONFIG: print_config = 1; break;
@@ -145,9 +156,18 @@ int main(int argc, char **argv)
 			snprintf(sets[nsets++], sizeof(sets[0]), "%s%s", prefix, optarg);
 		}
 	}
+	/* Subcommand form: `arcaded replay FILE [options]`. */
+	if (optind + 2 == argc && strcmp(argv[optind], "replay") == 0 && !o.replay) {
+		o.replay = argv[optind + 1];
+		optind += 2;
+	}
 	if (optind < argc) {
 		fprintf(stderr, "arcaded: unexpected argument '%s'\n", argv[optind]);
 		usage(stderr);
+		return 2;
+	}
+	if (o.verify && !o.replay) {
+		fprintf(stderr, "arcaded: --verify goes with --replay\n");
 		return 2;
 	}
 	if (o.script && o.replay) {

@@ -1,24 +1,241 @@
 #!/bin/sh
-# Benchmarks (not tests): headless frames per second of the whole loop
-# (sim + render + null present) replaying a scripted walk through the
-# built-in level, at several render sizes, and the peak RSS of each run.
-# Usage: tests/bench.sh path/to/arcaded
+# make bench: speed of the software renderer beside OSMesa and two Doom
+# engines, measured in one run (not a test: speed is reported, never
+# asserted; only frames that differ between thread counts fail it).
+#
+# Camera paths are recorded from scripts first: the built-in level walk
+# (tests/replay/walk.scr, ARENA1) and a walk through Freedoom's E1M1
+# (tests/bench/e1m1.scr). tests/bench/rbench.c replays each at 320x240,
+# 640x480, 1280x720 and 1920x1080 and draws every frame as the daemon does
+# (world, sprites, light maps, HUD) then presents it into an xrgb8888 panel
+# in memory: frames/s on one thread and on all cores, ms per frame p50/p99,
+# peak RSS; then the same path drawn by the OSMesa renderer with
+# LP_NUM_THREADS=1 and with llvmpipe's default threads (every 8th frame),
+# when engine/gl/ and OSMesa are there. The peers, chocolate-doom and
+# dsda-doom (installed here with apt-get when missing and run as root), play
+# freedoom1's DEMO1 with -timedemo under Xvfb at the same sizes; their
+# steady-state rate is (tics of a 1000-tic cut - tics of a 200-tic cut) /
+# (wall time difference), which removes start-up and the real-time screen
+# wipe (shared/notes/peers.md). chocolate-doom renders 320x200 only, with
+# -noblit (no present); dsda-doom's figure includes its SDL present.
+#
+# Output: a table on stdout, build/bench/bench.csv, build/bench/bench.png.
+# Usage: tests/bench.sh path/to/arcaded   (BENCH_SECONDS: timed seconds per
+# run, default 1; BENCH_PEERS=0 skips the peers)
 set -eu
 BIN=$1
 cd "$(dirname "$0")/.."
+B=$(dirname "$BIN")
+OUT=build/bench
+WAD=/usr/share/games/doom/freedoom1.wad
+SECS=${BENCH_SECONDS:-1}
+NCPU=$(nproc)
+SIZES="320x240 640x480 1280x720 1920x1080"
+mkdir -p "$OUT"
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+xpid=
+cleanup() {
+	[ -n "$xpid" ] && kill "$xpid" 2>/dev/null
+	rm -rf "$tmp"
+}
+trap cleanup EXIT
+CC=${CC:-cc}
+CFL="-O2 -g -I. -D_GNU_SOURCE -std=c11 -Wall -Wextra -Werror"
+LIBS="$(pkg-config --libs libevdev libpng libsystemd hidapi-hidraw libgpiod) -lpthread -lm"
+
+# ---- tools --------------------------------------------------------------
+$CC $CFL -o "$tmp/rbench" tests/bench/rbench.c "$B/libarcaded.a" $LIBS
+$CC $CFL -o "$tmp/chart" tests/bench/chart.c "$B/libarcaded.a" $LIBS
+$CC $CFL -o "$tmp/demo" tests/bench/demo.c
+$CC $CFL -o "$tmp/runstat" tests/bench/runstat.c
+gl=0
+if [ -f engine/gl/r_gl.h ] && pkg-config --exists osmesa &&
+	$CC $CFL -DRBENCH_GL -o "$tmp/rbench-gl" tests/bench/rbench.c engine/gl/*.c \
+		"$B/libarcaded.a" $LIBS $(pkg-config --libs osmesa) 2>"$tmp/gl.err"; then
+	gl=1
+else
+	echo "bench: no OSMesa renderer (engine/gl/ or libosmesa6-dev missing): its columns stay empty"
+fi
+
+# ---- camera paths ---------------------------------------------------------
 common="--config-dir $tmp/etc --state-dir $tmp/state"
-"$BIN" $common --script tests/replay/walk.scr --record "$tmp/walk.rec" >/dev/null 2>&1
-ticks=$(( ($(stat -c %s "$tmp/walk.rec") - 40) / 6 ))
-printf '%-10s %8s %10s %12s %12s %10s\n' size ticks frames/s "p50 ms" "p99 ms" "RSS KiB"
-for size in 320x240 640x480 1280x720 1920x1080; do
-	w=${size%x*}; h=${size#*x}
-	ARCADED_SUMMARY=1 "$BIN" $common --replay "$tmp/walk.rec" --quiet \
-		--set game.render_width="$w" --set game.render_height="$h" 2>"$tmp/err" >/dev/null
-	fps=$(sed -n 's/.*(\([0-9.]*\) frames\/s).*/\1/p' "$tmp/err")
-	rss=$(sed -n 's/.*peak RSS \([0-9]*\) KiB.*/\1/p' "$tmp/err")
-	p50=$(sed -n 's/.*frame time (render+present) p50 \([0-9.]*\) ms p99 \([0-9.]*\) ms.*/\1/p' "$tmp/err")
-	p99=$(sed -n 's/.*frame time (render+present) p50 \([0-9.]*\) ms p99 \([0-9.]*\) ms.*/\2/p' "$tmp/err")
-	printf '%-10s %8s %10s %12s %12s %10s\n' "$size" "$ticks" "$fps" "$p50" "$p99" "$rss"
+"$BIN" $common --script tests/replay/walk.scr --record "$tmp/arena1.rec" >/dev/null 2>&1
+paths="arena1"
+if [ -f "$WAD" ]; then
+	"$BIN" $common --wad "$WAD" --map E1M1 --script tests/bench/e1m1.scr \
+		--record "$tmp/e1m1.rec" >/dev/null 2>&1
+	paths="arena1 e1m1"
+else
+	echo "bench: $WAD missing (apt-get install freedoom): E1M1 left out"
+fi
+content() { # path -> rbench content options
+	case $1 in
+	arena1) echo "--level 1" ;;
+	e1m1) echo "--wad $WAD --map E1M1" ;;
+	esac
+}
+
+CSV=$OUT/bench.csv
+echo "path,size,engine,threads,frames,fps,render_fps,p50_ms,p99_ms,rss_kib,note" >"$CSV"
+kv() { # key line -> value
+	echo "$2" | tr ' ' '\n' | sed -n "s/^$1=//p"
+}
+identical=1
+threads=1
+[ "$NCPU" -gt 1 ] && threads="1 $NCPU"
+# rgl LP_THREADS args...: the OSMesa run, llvmpipe on one thread or its default
+rgl() {
+	if [ "$1" = 1 ]; then
+		shift
+		LP_NUM_THREADS=1 "$tmp/rbench-gl" "$@"
+	else
+		shift
+		"$tmp/rbench-gl" "$@"
+	fi
+}
+for p in $paths; do
+	for size in $SIZES; do
+		h1=
+		for t in $threads; do
+			l=$("$tmp/rbench" --rec "$tmp/$p.rec" $(content $p) --size "$size" \
+				--threads "$t" --seconds "$SECS")
+			echo "$p,$size,arcaded,$t,$(kv frames "$l"),$(kv fps "$l"),$(kv render_fps "$l"),$(kv p50_ms "$l"),$(kv p99_ms "$l"),$(kv rss_kib "$l")," >>"$CSV"
+			if [ "$t" = 1 ]; then
+				h1=$(kv hash "$l")
+			elif [ "$(kv hash "$l")" != "$h1" ]; then
+				echo "FAIL $p $size: frames on $t threads differ from one thread"
+				identical=0
+			fi
+		done
+		if [ "$gl" = 1 ]; then
+			for t in 1 default; do
+				l=$(rgl "$t" --rec "$tmp/$p.rec" $(content $p) --size "$size" \
+					--renderer gl --stride 8 --seconds "$SECS")
+				echo "$p,$size,osmesa,$([ "$t" = 1 ] && echo 1 || echo "$NCPU"),$(kv frames "$l"),$(kv fps "$l"),$(kv render_fps "$l"),$(kv p50_ms "$l"),$(kv p99_ms "$l"),$(kv rss_kib "$l"),every 8th frame LP_NUM_THREADS=$t" >>"$CSV"
+			done
+		fi
+	done
 done
+
+# ---- peers ------------------------------------------------------------------
+peers=${BENCH_PEERS:-1}
+DSDA=/usr/games/dsda-doom
+CHOC=/usr/games/chocolate-doom
+if [ "$peers" = 1 ] && { [ ! -x $DSDA ] || [ ! -x $CHOC ] || ! command -v Xvfb >/dev/null; }; then
+	if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null; then
+		echo "bench: installing the peers (dsda-doom chocolate-doom xvfb)"
+		DEBIAN_FRONTEND=noninteractive apt-get install -y -qq dsda-doom chocolate-doom xvfb \
+			>"$tmp/apt.log" 2>&1 ||
+			{ apt-get update -qq >/dev/null 2>&1 &&
+			  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq dsda-doom chocolate-doom \
+				xvfb >"$tmp/apt.log" 2>&1; } ||
+			echo "bench: apt-get could not install them: peers left out"
+	else
+		echo "bench: dsda-doom, chocolate-doom or Xvfb missing (not root): peers left out"
+	fi
+fi
+if [ "$peers" = 1 ] && [ -f "$WAD" ] && command -v Xvfb >/dev/null; then
+	Xvfb -displayfd 3 -screen 0 2048x1200x24 -nolisten tcp 3>"$tmp/dpy" >/dev/null 2>&1 &
+	xpid=$!
+	for i in $(seq 50); do [ -s "$tmp/dpy" ] && break; sleep 0.1; done
+	export DISPLAY=":$(cat "$tmp/dpy")"
+	export HOME="$tmp/home"
+	mkdir -p "$HOME"
+	"$tmp/demo" "$WAD" DEMO1 "$tmp/long.lmp" 1000 >/dev/null
+	"$tmp/demo" "$WAD" DEMO1 "$tmp/short.lmp" 200 >/dev/null
+	# peer NAME SIZE CMD...: runs CMD with the long and the short demo
+	# (DEMO replaced), writes the steady-state row
+	peer() {
+		name=$1 size=$2
+		shift 2
+		for cut in long short; do
+			args=
+			for a in "$@"; do
+				[ "$a" = DEMO ] && a="$tmp/$cut.lmp"
+				args="$args $a"
+			done
+			r=$("$tmp/runstat" "$tmp/$cut.out" $args)
+			eval "w_$cut=$(kv wall_ns "$r") m_$cut=$(kv rss_kib "$r")"
+			eval "f_$cut=$(sed -n 's/.*[Tt]imed \([0-9]*\) gametics.*/\1/p' "$tmp/$cut.out" | head -1)"
+		done
+		if [ -z "$f_long" ] || [ -z "$f_short" ] || [ "$w_long" -le "$w_short" ]; then
+			echo "bench: $name $size gave no timedemo figure (see its output below)"
+			tail -3 "$tmp/long.out"
+			return 0
+		fi
+		fps=$(awk -v a="$f_long" -v b="$f_short" -v x="$w_long" -v y="$w_short" \
+			'BEGIN { printf "%.1f", (a - b) * 1e9 / (x - y) }')
+		note="DEMO1 steady state ($f_long - $f_short tics)"
+		[ "$name" = chocolate-doom ] && note="$note; 320x200 -noblit"
+		echo "demo1,$size,$name,1,$((f_long - f_short)),$fps,,,,$m_long,$note" >>"$CSV"
+	}
+	if [ -x $DSDA ]; then
+		for size in $SIZES; do
+			peer dsda-doom "$size" $DSDA -iwad "$WAD" -timedemo DEMO -geom "$size" -window \
+				-nosound -nomusic
+		done
+	fi
+	if [ -x $CHOC ]; then
+		peer chocolate-doom 320x240 $CHOC -iwad "$WAD" -timedemo DEMO -nogui -noblit \
+			-nosound -nomusic
+	fi
+fi
+
+# ---- report -----------------------------------------------------------------
+"$tmp/chart" "$CSV" "$OUT/bench.png" || echo "bench: no chart"
+awk -F, -v ncpu="$NCPU" -v identical="$identical" '
+NR == 1 { next }
+{
+	key = $1 SUBSEP $2 SUBSEP $3 SUBSEP ($4 == 1 ? 1 : "n")
+	fps[key] = $6; p50[key] = $8; p99[key] = $9; rss[key] = $10
+	if (!($1 in seenp)) { seenp[$1] = 1; if ($1 != "demo1") order[np++] = $1 }
+	if (!($2 in seens)) { seens[$2] = 1; sizes[ns++] = $2 }
+}
+function f(k) { return (k in fps) ? fps[k] : "-" }
+function ratio(a, b) { return (a == "-" || b == "-" || b == 0) ? "-" : sprintf("%.1fx", a / b) }
+END {
+	printf "%-7s %-10s %9s %9s %7s %15s %9s %8s %8s %9s %9s\n", "path", "size", "sw 1T", \
+		"sw " ncpu "T", "speedup", "p50/p99 ms", "RSS MiB", "gl 1T", "gl " ncpu "T", "dsda", \
+		"choc"
+	for (i = 0; i < np; i++) for (j = 0; j < ns; j++) {
+		p = order[i]; s = sizes[j]
+		one = f(p SUBSEP s SUBSEP "arcaded" SUBSEP 1)
+		all = f(p SUBSEP s SUBSEP "arcaded" SUBSEP "n")
+		if (all == "-") all = one
+		k = p SUBSEP s SUBSEP "arcaded" SUBSEP (ncpu > 1 ? "n" : 1)
+		printf "%-7s %-10s %9s %9s %7s %15s %9.1f %8s %8s %9s %9s\n", p, s, one, all, \
+			ratio(all, one), p50[k] "/" p99[k], rss[k] / 1024, \
+			f(p SUBSEP s SUBSEP "osmesa" SUBSEP 1), f(p SUBSEP s SUBSEP "osmesa" SUBSEP "n"), \
+			f("demo1" SUBSEP s SUBSEP "dsda-doom" SUBSEP 1), \
+			f("demo1" SUBSEP s SUBSEP "chocolate-doom" SUBSEP 1)
+	}
+	print ""
+	print "targets (software renderer, each path; dsda-doom on DEMO1):"
+	for (i = 0; i < np; i++) {
+		p = order[i]
+		for (j = 0; j < ns; j++) {
+			s = sizes[j]
+			one = f(p SUBSEP s SUBSEP "arcaded" SUBSEP 1)
+			all = f(p SUBSEP s SUBSEP "arcaded" SUBSEP "n")
+			d = f("demo1" SUBSEP s SUBSEP "dsda-doom" SUBSEP 1)
+			g1 = f(p SUBSEP s SUBSEP "osmesa" SUBSEP 1)
+			if (s == "1280x720" || s == "1920x1080") {
+				target(p " " s ": all cores vs dsda-doom", all, d, 2.0)
+				target(p " " s ": one core vs dsda-doom", one, d, 1.0)
+			}
+			target(p " " s ": one core vs OSMesa one thread", one, g1, 5.0)
+			if (s == "1920x1080")
+				printf "  %-52s %9s fps   >= 60      %s\n", p " " s ": all cores", all, \
+					(all == "-" ? "not measured" : (all >= 60 ? "met" : "NOT MET"))
+		}
+	}
+	printf "  %-52s %9s           %s\n", "frames identical on 1 and " ncpu " threads", "", \
+		(identical ? "met" : "NOT MET")
+}
+function target(what, a, b, want) {
+	if (a == "-" || b == "-") { printf "  %-52s %9s         >= %.1fx   not measured\n", what, "-", want; return }
+	printf "  %-52s %8.1fx         >= %.1fx   %s\n", what, a / b, want, (a / b >= want ? "met" : "NOT MET")
+}' "$CSV"
+echo
+echo "CSV: $CSV  chart: $OUT/bench.png"
+[ "$identical" = 1 ]

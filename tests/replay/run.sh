@@ -65,8 +65,12 @@ rc=$?
 check "newer format refused (exit $rc): $(head -n 1 "$tmp/newer.err")" \
 	$([ "$rc" -eq 2 ] && grep -q "version" "$tmp/newer.err"; echo $?)
 
-# 4. cut after 100 whole commands and half of the next one
-head -c $((40 + 6 * 100 + 3)) "$tmp/walk.rec" >"$tmp/cut.rec"
+# --record writes format 2: an 80-byte header, then per tick the 6-byte
+# command, the state hash and the frame hash (22 bytes).
+HDR=80
+TICK=22
+# 4. cut after 100 whole ticks and half of the next one
+head -c $((HDR + TICK * 100 + 3)) "$tmp/walk.rec" >"$tmp/cut.rec"
 $BIN $common --replay "$tmp/cut.rec" >"$tmp/cut" 2>/dev/null
 n=$(wc -l < "$tmp/cut")
 head -n 100 "$tmp/a" | cmp -s - "$tmp/cut"
@@ -74,11 +78,37 @@ check "cut recording replays its 100 whole commands ($n ticks)" $?
 
 # 5. flip tick 150's forward byte: hashes equal before, differ at 150
 cp "$tmp/walk.rec" "$tmp/flip.rec"
-printf '\201' | dd of="$tmp/flip.rec" bs=1 seek=$((40 + 6 * 150)) conv=notrunc 2>/dev/null
+printf '\201' | dd of="$tmp/flip.rec" bs=1 seek=$((HDR + TICK * 150)) conv=notrunc 2>/dev/null
 $BIN $common --replay "$tmp/flip.rec" >"$tmp/f" 2>/dev/null
 head -n 150 "$tmp/a" > "$tmp/a150"; head -n 150 "$tmp/f" > "$tmp/f150"
 cmp -s "$tmp/a150" "$tmp/f150"; before=$?
 s1=$(sed -n 151p "$tmp/a" | cut -d' ' -f2); s2=$(sed -n 151p "$tmp/f" | cut -d' ' -f2)
 check "a changed command changes the state hash at its tick, not before" \
 	$([ "$before" -eq 0 ] && [ "$s1" != "$s2" ]; echo $?)
+# 6. --verify: the replay proves itself against the stored hashes
+$BIN $common replay "$tmp/walk.rec" --verify --quiet >/dev/null 2>"$tmp/v.err"
+rc=$?
+check "replay --verify of an untouched recording passes (exit $rc): $(tail -n 1 "$tmp/v.err" | sed 's/^arcaded: [^:]*: //')" \
+	$([ "$rc" -eq 0 ]; echo $?)
+# corrupt tick 300's stored state hash (byte 6 of its record)
+cp "$tmp/walk.rec" "$tmp/bad.rec"
+printf '\377' | dd of="$tmp/bad.rec" bs=1 seek=$((HDR + TICK * 300 + 6)) conv=notrunc 2>/dev/null
+$BIN $common replay "$tmp/bad.rec" --verify --quiet >/dev/null 2>"$tmp/v2.err"
+rc=$?
+check "a wrong stored hash fails --verify at its tick (exit $rc)" \
+	$([ "$rc" -eq 1 ] && grep -q "first difference at tick 300" "$tmp/v2.err"; echo $?)
+# --verify at another render size is refused, saying what differs
+$BIN $common replay "$tmp/walk.rec" --verify --set game.render_width=640 \
+	--set game.render_height=480 --quiet >/dev/null 2>"$tmp/v3.err"
+rc=$?
+check "a plain replay takes the recorded frame size; --no-render verifies states only (exit $rc)" \
+	$([ "$rc" -eq 0 ]; echo $?)
+$BIN $common replay "$tmp/walk.rec" --verify --no-render --quiet >/dev/null 2>"$tmp/v4.err"
+rc=$?
+check "--verify --no-render checks state hashes only (exit $rc): $(tail -n 1 "$tmp/v4.err" | sed 's/^arcaded: [^:]*: //')" \
+	$([ "$rc" -eq 0 ]; echo $?)
+# --until with --screenshot: the frame of that tick
+$BIN $common replay "$tmp/walk.rec" --until 299 --screenshot "$tmp/u.png" >"$tmp/u.txt" 2>/dev/null
+check "--until 299 stops after tick 299 ($(wc -l < "$tmp/u.txt") lines) and writes its frame" \
+	$([ "$(wc -l < "$tmp/u.txt")" -eq 300 ] && head -c 8 "$tmp/u.png" | grep -q PNG; echo $?)
 exit "$fail"
