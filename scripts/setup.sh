@@ -23,6 +23,11 @@ freedoom
 gcc-aarch64-linux-gnu
 libc6-dev-arm64-cross
 qemu-user-static
+qemu-system-x86
+busybox-static
+cpio
+kmod
+xz-utils
 "
 
 missing=""

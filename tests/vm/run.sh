@@ -2,20 +2,24 @@
 # The appliance tests (make test-vm; docs/vm.md): QEMU boots Debian's kernel
 # with this machine's own root read-only over virtio-9p, a tmpfs overlay,
 # the project installed as `make install` lays it out, and systemd as PID 1
-# running the real arcaded.service on real kernel devices. Two boots:
-#   fb32  bochs-drm framebuffer, 32 bpp (DRM fbdev emulation): boot time,
-#         screen = the daemon's frame, uinput keyboard, unprivileged user and
-#         device policy, watchdog restart, SIGTERM;
-#   fb16  vesafb, 16 bpp RGB565 (vga=0x317): screen = the daemon's frame.
-# fb32 also runs the unit tests that need real devices (uinput, fbdev,
-# uhid, gpio-sim); the boot "units" runs only those (quicker, to debug them).
+# running the real arcaded.service on real kernel devices. Boots:
+#   fb32    bochs-drm framebuffer, 32 bpp (DRM fbdev emulation): boot time,
+#           screen = the daemon's frame, uinput keyboard, unprivileged user
+#           and device policy, watchdog restart, SIGTERM; then the unit
+#           tests that need real devices (uinput, fbdev, uhid, gpio-sim);
+#   fb16    vesafb, 16 bpp RGB565 (vga=0x317): screen = the daemon's frame;
+#   latefb  the framebuffer driver loads only after the daemon started: the
+#           daemon must still draw on it;
+#   units   only the device unit tests (quicker, to debug them).
 # The guest side is tests/vm/guest.sh; this script drives QEMU, serves the
 # guest's screendump requests through QMP and judges the screens.
 #
-# usage: tests/vm/run.sh [BOOT...]   (default: fb32 fb16)
-# Environment: BUILD (build folder, default build), ARCADED_VM_CACHE (kernel cache, default
-# ${XDG_CACHE_HOME:-$HOME/.cache}/arcaded-vm), ARCADED_VM_KERNEL (kernel
-# version instead of linux-image-amd64's), ARCADED_VM_TIMEOUT (seconds per
+# usage: tests/vm/run.sh [BOOT...]   (default: fb32 fb16 latefb)
+# Environment: BUILD (build folder, default build); ARCADED_VM_ASAN (a
+# sanitizer build folder, e.g. build/asan, whose device unit tests run too);
+# ARCADED_VM_CACHE (kernel cache, default
+# ${XDG_CACHE_HOME:-$HOME/.cache}/arcaded-vm); ARCADED_VM_KERNEL (kernel
+# version instead of linux-image-amd64's); ARCADED_VM_TIMEOUT (seconds per
 # boot, default 300).
 #
 # Exit status: 0 all passed, 1 a failure, 77 skipped (QEMU cannot run here;
@@ -25,9 +29,9 @@ cd "$(dirname "$0")/../.."
 top=$(pwd)
 BUILD=${BUILD:-build}
 B=$top/$BUILD/vm
-CACHE=${ARCADED_VM_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/arcaded-vm}
+CACHE=${ARCADED_VM_CACHE:-${XDG_CACHE_HOME:-${HOME:-/root}/.cache}/arcaded-vm}
 TIMEOUT=${ARCADED_VM_TIMEOUT:-300}
-boots=${*:-fb32 fb16}
+boots=${*:-fb32 fb16 latefb}
 
 skip() {
 	echo "################################################################"
@@ -85,7 +89,10 @@ echo "vm: kernel $version, initramfs ready in $(secs "$t" "$(now)") s"
 # the build folder: the Makefile includes every "*.d" under it, and the
 # install tree has directories named so (tmpfiles.d, rules.d).
 ST=$(mktemp -d "${TMPDIR:-/tmp}/arcaded-vm-stage.XXXXXX") || die "mktemp"
-trap 'rm -rf "$ST"' EXIT
+qpid=""
+# On any exit, interrupted too: no QEMU left running, no stage left over.
+trap 'if [ -n "$qpid" ]; then kill "$qpid" 2>/dev/null; fi; rm -rf "$ST"' EXIT
+trap 'exit 130' INT TERM
 mkdir -p "$ST/bin"
 make --no-print-directory -s BUILD="$BUILD" install DESTDIR="$ST/destdir" > "$B/install.log" 2>&1 ||
 	{ cat "$B/install.log"; die "make install"; }
@@ -95,6 +102,13 @@ mkdir -p "$ST/tests" "$ST/modules"
 for t in test_in_evdev test_dp_fbdev test_in_hid test_in_gpio; do
 	[ -x "$BUILD/tests/$t" ] && cp "$BUILD/tests/$t" "$ST/tests/"
 done
+# The same tests built with ASan and UBSan, when asked for (run_all.sh
+# builds them first): ARCADED_VM_ASAN=build/asan.
+if [ -n "${ARCADED_VM_ASAN:-}" ]; then
+	for t in test_in_evdev test_dp_fbdev test_in_hid test_in_gpio; do
+		[ -x "$ARCADED_VM_ASAN/tests/$t" ] && cp "$ARCADED_VM_ASAN/tests/$t" "$ST/tests/$t-asan"
+	done
+fi
 # They read fixtures by paths relative to the repository root.
 mkdir -p "$ST/repo/tests"
 cp -r tests/data "$ST/repo/tests/"
@@ -226,6 +240,7 @@ boot() {
 	done
 	wait "$qpid"
 	qrc=$?
+	qpid=""
 	t_end=$(now)
 	rm -f "$sock"
 	echo "vm: boot $name: QEMU ran $(secs "$t0" "$t_end") s, exit status $qrc"
