@@ -1,0 +1,289 @@
+/*
+ * rbench: frames per second of the software renderer along a recorded
+ * camera path, for `make bench` (tests/bench.sh builds and runs it).
+ *
+ * Loads the content the recording was made on (--level N, or --wad FILE
+ * --map NAME), replays the recording through the sim and draws every tick's
+ * frame as the daemon does (app/view.c: the world with its sprites and
+ * light maps, then the HUD), then presents it into an xrgb8888 panel of the
+ * same size in memory (display/px.h, the one pass fbdev uses). Only drawing
+ * and presenting are timed, not the sim. The path is replayed again until
+ * --seconds of timed frames have passed (at least once). --stride K draws
+ * only every K-th tick's frame (for slow renderers: the same path, fewer
+ * frames).
+ *
+ *   rbench --rec walk.rec --level 1 --size 1280x720 --threads 2
+ *
+ * --renderer gl draws the world with the OSMesa renderer (engine/gl/r_gl.h)
+ * instead, HUD and present alike; built in only when compiled with
+ * -DRBENCH_GL and the files of engine/gl/ (tests/bench.sh does when OSMesa
+ * is there).
+ * Its threads are llvmpipe's (LP_NUM_THREADS); --threads is ignored.
+ *
+ * Prints one line of key=value: frames, fps (draw + present), render_fps
+ * (draw only), p50_ms and p99_ms (draw + present per frame), rss_kib (peak
+ * resident set), hash (of every frame of the first pass: equal for any
+ * --threads).
+ */
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+
+#include "app/content.h"
+#include "app/pool.h"
+#include "app/view.h"
+#include "display/px.h"
+#include "display/shot.h"
+#include "engine/g_game.h"
+#include "engine/hash.h"
+#include "engine/hud.h"
+#include "engine/map.h"
+#include "engine/r_main.h"
+#include "engine/sim.h"
+#include "engine/tex.h"
+#include "input/rec.h"
+#ifdef RBENCH_GL
+#include "engine/gl/r_gl.h"
+
+/* view_draw (app/view.c) with the OSMesa renderer for the world. */
+static void draw_gl(struct rgl_ctx *g, struct view *v, const struct sim *s, struct r_frame *f)
+{
+	struct tex_set *tex = v->ct->tex;
+	struct hud_env env = { &tex->pal, tex, v->rotate };
+	struct r_view rv;
+
+	tex_animate(tex, s->tick);
+	if (hud_world(s)) {
+		int n = g_sprites(s, tex, v->spr, v->spr_max);
+
+		sim_view(s, &rv);
+		rgl_render(g, s->map, tex, &rv, v->spr, n, f);
+	}
+	hud_draw(s, &env, f);
+}
+#endif
+
+static uint64_t now_ns(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (uint64_t)ts.tv_sec * 1000000000u + (uint64_t)ts.tv_nsec;
+}
+
+static int cmp_u64(const void *a, const void *b)
+{
+	uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+
+	return x < y ? -1 : x > y;
+}
+
+static int usage(void)
+{
+	fprintf(stderr, "usage: rbench --rec FILE (--level N | --wad FILE --map NAME) "
+		"--size WxH [--threads N] [--seconds S] [--stride K] [--shot PNG] "
+		"[--renderer sw|gl]\n");
+	return 2;
+}
+
+int main(int argc, char **argv)
+{
+	struct ct_spec spec = { 0 };
+	struct ct ct;
+	const char *recpath = NULL, *shot = NULL, *renderer = "sw";
+	int w = 320, h = 240, threads = 1, stride = 1, rc;
+	double seconds = 1.0;
+	char err[512] = "";
+	struct rec_reader *rr;
+	struct rec_header hdr;
+	struct sim_cmd *cmds = NULL;
+	size_t ncmds = 0, capcmds = 0;
+	struct sim *sim;
+	struct r_ctx *r;
+	struct pool *pool = NULL;
+	struct view view;
+	struct r_frame f;
+	struct px_panel *panel;
+	struct px_format fmt;
+	uint8_t *mem;
+	uint64_t *times = NULL, hash = HASH_INIT, total = 0, rtotal = 0;
+	size_t nt = 0, capt = 0;
+	struct rusage ru;
+#ifdef RBENCH_GL
+	struct rgl_ctx *gl = NULL;
+#endif
+
+	for (int i = 1; i < argc; i++) {
+		const char *a = argv[i], *b = i + 1 < argc ? argv[i + 1] : NULL;
+
+		if (!b)
+			return usage();
+		if (!strcmp(a, "--rec"))
+			recpath = b;
+		else if (!strcmp(a, "--level"))
+			spec.level = atoi(b);
+		else if (!strcmp(a, "--wad") && spec.nwads < CT_MAX_WADS)
+			spec.wads[spec.nwads++] = b;
+		else if (!strcmp(a, "--map"))
+			spec.map = b;
+		else if (!strcmp(a, "--size") && sscanf(b, "%dx%d", &w, &h) == 2)
+			;
+		else if (!strcmp(a, "--threads"))
+			threads = atoi(b);
+		else if (!strcmp(a, "--seconds"))
+			seconds = atof(b);
+		else if (!strcmp(a, "--shot"))
+			shot = b;
+		else if (!strcmp(a, "--stride") && atoi(b) >= 1)
+			stride = atoi(b);
+		else if (!strcmp(a, "--renderer"))
+			renderer = b;
+		else
+			return usage();
+		i++;
+	}
+	if (!recpath)
+		return usage();
+#ifdef RBENCH_GL
+	if (strcmp(renderer, "sw") != 0 && strcmp(renderer, "gl") != 0)
+		return usage();
+#else
+	if (strcmp(renderer, "sw") != 0) {
+		fprintf(stderr, "rbench: built without the OSMesa renderer\n");
+		return 2;
+	}
+#endif
+	if (spec.nwads == 0 && spec.level == 0)
+		spec.level = 1;
+	spec.lights = 1;
+	rc = ct_load(&ct, &spec, err, sizeof(err));
+	if (rc < 0) {
+		fprintf(stderr, "rbench: %s\n", err);
+		return 1;
+	}
+	rc = rec_reader_open(recpath, &rr, err, sizeof(err));
+	if (rc < 0) {
+		fprintf(stderr, "rbench: %s: %s\n", recpath, err[0] ? err : strerror(-rc));
+		return 1;
+	}
+	hdr = *rec_reader_header(rr);
+	if (rec_check(&hdr, sim_stages_hash((const struct map *const *)ct.maps, ct.nmaps), err,
+		      sizeof(err)) < 0) {
+		fprintf(stderr, "rbench: %s: %s\n", recpath, err);
+		return 1;
+	}
+	for (;;) {
+		struct sim_cmd c;
+
+		if (rec_reader_next(rr, &c) <= 0)
+			break;
+		if (ncmds == capcmds) {
+			capcmds = capcmds ? 2 * capcmds : 1024;
+			cmds = realloc(cmds, capcmds * sizeof(*cmds));
+			if (!cmds)
+				return 1;
+		}
+		cmds[ncmds++] = c;
+	}
+	rec_reader_close(rr);
+	if (ncmds == 0) {
+		fprintf(stderr, "rbench: %s: no ticks\n", recpath);
+		return 1;
+	}
+
+	sim = malloc(sizeof(*sim));
+	panel = malloc(sizeof(*panel));
+	f.w = f.pitch = w;
+	f.h = h;
+	/* 64-byte aligned frame and panel: strips never share a cache line */
+	f.px = aligned_alloc(64, ((size_t)w * (size_t)h + 63) / 64 * 64);
+	mem = aligned_alloc(64, ((size_t)w * (size_t)h * 4 + 63) / 64 * 64);
+	if (!sim || !panel || !f.px || !mem || r_new(w, h, &r) < 0 ||
+	    view_init(&view, &ct, r, 0) < 0)
+		return 1;
+#ifdef RBENCH_GL
+	if (strcmp(renderer, "gl") == 0) {
+		rc = rgl_new(w, h, &gl, err, sizeof(err));
+		if (rc < 0) {
+			fprintf(stderr, "rbench: OSMesa: %s\n", err[0] ? err : strerror(-rc));
+			return 1;
+		}
+		threads = 0;
+	}
+#endif
+	if (threads > 1) {
+		struct r_par par;
+
+		rc = pool_new(threads, &pool);
+		if (rc < 0) {
+			fprintf(stderr, "rbench: pool of %d: %s\n", threads, strerror(-rc));
+			return 1;
+		}
+		pool_r_par(pool, &par);
+		r_set_par(r, &par);
+	}
+	if (px_format_by_name("xrgb8888", &fmt) < 0 ||
+	    px_panel_init(panel, &fmt, w, h, (size_t)w * 4, 0, 0, w, h) < 0)
+		return 1;
+	px_panel_palette(panel, ct.tex->pal.rgb);
+
+	for (int pass = 0; pass == 0 || (double)total < seconds * 1e9; pass++) {
+		sim_init_stages(sim, (const struct map *const *)ct.maps, ct.nmaps, &hdr.set, NULL,
+				NULL);
+		for (size_t k = 0; k < ncmds; k++) {
+			uint64_t t0, t1, t2;
+
+			sim_tick(sim, &cmds[k]);
+			if (k % (size_t)stride)
+				continue;
+			t0 = now_ns();
+#ifdef RBENCH_GL
+			if (gl)
+				draw_gl(gl, &view, sim, &f);
+			else
+#endif
+				view_draw(&view, sim, &f);
+			t1 = now_ns();
+			px_panel_draw(panel, mem, f.px, w, h, w);
+			t2 = now_ns();
+			if (nt == capt) {
+				capt = capt ? 2 * capt : 4096;
+				times = realloc(times, capt * sizeof(*times));
+				if (!times)
+					return 1;
+			}
+			times[nt++] = t2 - t0;
+			total += t2 - t0;
+			rtotal += t1 - t0;
+			if (pass == 0)
+				hash = hash_bytes(hash, f.px, (size_t)w * (size_t)h);
+		}
+	}
+	if (shot && shot_png(shot, f.px, w, h, w, ct.tex->pal.rgb) < 0)
+		fprintf(stderr, "rbench: %s: cannot write\n", shot);
+	qsort(times, nt, sizeof(*times), cmp_u64);
+	getrusage(RUSAGE_SELF, &ru);
+	printf("frames=%zu fps=%.1f render_fps=%.1f p50_ms=%.3f p99_ms=%.3f rss_kib=%ld "
+	       "hash=%016" PRIx64 " threads=%d\n",
+	       nt, (double)nt * 1e9 / (double)total, (double)nt * 1e9 / (double)rtotal,
+	       (double)times[nt / 2] / 1e6, (double)times[nt * 99 / 100] / 1e6, ru.ru_maxrss,
+	       hash, threads);
+#ifdef RBENCH_GL
+	rgl_free(gl);
+#endif
+	view_free(&view);
+	pool_free(pool);
+	r_free(r);
+	ct_free(&ct);
+	free(times);
+	free(cmds);
+	free(sim);
+	free(panel);
+	free(f.px);
+	free(mem);
+	return 0;
+}
