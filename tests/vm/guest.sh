@@ -60,6 +60,26 @@ shot() {
 	: > "$R/req/$1"
 	wait_until 60 acked "$1" || fail "screendump-$1" "the host did not answer"
 }
+# Screendumps $1-1, $1-2, ... until the host finds the reference frame on
+# the screen, for up to $2 s; the host keeps the last one as $1. The game
+# shows a stage banner first, and emulation slows its clock down.
+shot_match() {
+	k=0
+	read -r u _ < /proc/uptime
+	mend=$((${u%.*}${u#*.} + $2 * 100))
+	while :; do
+		k=$((k + 1))
+		echo match > "$R/req/$1-$k"
+		wait_until 60 acked "$1-$k" || { fail "screendump-$1" "the host did not answer"; return 1; }
+		if grep -q '^match' "$R/ack/$1-$k"; then
+			figure "$1: the screen showed the reference frame at screendump $k"
+			return 0
+		fi
+		read -r u _ < /proc/uptime
+		[ "${u%.*}${u#*.}" -lt "$mend" ] || return 1
+		sleep 0.5
+	done
+}
 
 # --- boot: READY=1 is sent after the first frame is presented ---------------
 phase_boot() {
@@ -105,7 +125,7 @@ phase_input() {
 		fail keyboard-attached "the daemon did not open $ev within 15 s"
 	fi
 	coin_start
-	shot play-start
+	shot_match play-start 30
 	# forward and a turn: the picture must change
 	echo "tap KEY_UP 600" >&3
 	echo "tap KEY_LEFT 300" >&3
@@ -179,11 +199,13 @@ phase_watchdog() {
 	sleep 1
 	shot wd-attract-2
 	coin_start
-	shot wd-play
+	shot_match wd-play 30
 }
 
 # --- SIGTERM: clean exit, console back in text mode --------------------------
 phase_sigterm() {
+	# Text for the console to show again once it is back in text mode.
+	printf '\n\n   arcaded VM test: the console shows text again\n' > /dev/tty1
 	before=$("$G" kdmode /dev/tty0)
 	t_stop=$(now)
 	systemctl stop "$U"

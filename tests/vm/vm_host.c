@@ -25,6 +25,9 @@
  *                                integer-scaled picture area everything is
  *                                black and inside it at least 8 colours
  *                                show; prints the counts
+ *   vm_host text DUMP.ppm        the screen shows console text, not a
+ *                                picture: some pixels are lit, fewer than
+ *                                a tenth of them; prints the count
  *   vm_host topng DUMP.ppm OUT.png
  *                                convert a screendump to PNG to look at
  */
@@ -48,7 +51,8 @@ struct img {
 static int usage(void)
 {
 	fputs("usage: vm_host qmp SOCKET JSON | shot SOCKET FILE | match REF.png DUMP.ppm BPP |\n"
-	      "       differ A.ppm B.ppm | picture DUMP.ppm W H | topng DUMP.ppm OUT.png\n",
+	      "       differ A.ppm B.ppm | picture DUMP.ppm W H | text DUMP.ppm |\n"
+	      "       topng DUMP.ppm OUT.png\n",
 	      stderr);
 	return 2;
 }
@@ -401,6 +405,21 @@ static int cmd_picture(const char *dumpp, int w, int h)
 	return outside_lit == 0 && colours >= 8 ? 0 : 1;
 }
 
+static int cmd_text(const char *dumpp)
+{
+	struct img d;
+	long lit = 0, all;
+
+	if (ppm_read(dumpp, &d) < 0)
+		return 1;
+	all = (long)d.w * d.h;
+	for (long i = 0; i < all; i++)
+		lit += d.rgb[i * 3] || d.rgb[i * 3 + 1] || d.rgb[i * 3 + 2];
+	printf("screen %dx%d: %ld of %ld pixels lit\n", d.w, d.h, lit, all);
+	free(d.rgb);
+	return lit > 0 && lit < all / 10 ? 0 : 1;
+}
+
 int main(int argc, char **argv)
 {
 	if (argc == 4 && strcmp(argv[1], "qmp") == 0)
@@ -413,6 +432,8 @@ int main(int argc, char **argv)
 		return cmd_differ(argv[2], argv[3]);
 	if (argc == 5 && strcmp(argv[1], "picture") == 0)
 		return cmd_picture(argv[2], atoi(argv[3]), atoi(argv[4]));
+	if (argc == 3 && strcmp(argv[1], "text") == 0)
+		return cmd_text(argv[2]);
 	if (argc == 4 && strcmp(argv[1], "topng") == 0)
 		return cmd_topng(argv[2], argv[3]);
 	return usage();
