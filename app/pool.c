@@ -203,4 +203,5 @@ void pool_r_par(struct pool *p, struct r_par *out)
 {
 	out->run = pool_run;
 	out->pool = p;
+	out->threads = pool_threads(p);
 }

@@ -39,7 +39,8 @@ int pool_threads(const struct pool *p);
  * struct pool * (void * to fit struct r_par). */
 void pool_run(void *p, int n, void (*job)(void *arg, int i), void *arg);
 
-/* The renderer's view of the pool: out->run = pool_run, out->pool = p. */
+/* The renderer's view of the pool: out->run = pool_run, out->pool = p,
+ * out->threads = pool_threads(p). */
 void pool_r_par(struct pool *p, struct r_par *out);
 
 #endif

@@ -57,11 +57,13 @@
 
 #define R_NEAR (FX_ONE / 4)
 
-/* Strips are R_STRIP_MIN columns wide or a power-of-two multiple of it,
- * at most R_STRIP_MAX of them per frame: a cache line (64 bytes) or more,
- * so that two threads never write one line. */
+/* Strips are R_STRIP_MIN columns wide or a power-of-two multiple of it: a
+ * cache line (64 bytes) or more, so that two threads never write one line.
+ * With a pool, about R_STRIPS_PER_THREAD strips per thread: enough for the
+ * jobs to balance, few enough that cutting spans at strip edges costs
+ * little (each cut is one more span set-up); without, one strip. */
 #define R_STRIP_MIN 64
-#define R_STRIP_MAX 32
+#define R_STRIPS_PER_THREAD 4
 /* A strip draws its column runs in bands of this many rows: one band of a
  * strip is a few KiB, so a wall column reuses the cache lines the column
  * before it loaded. */
@@ -358,13 +360,12 @@ void r_things_draw(struct r_ctx *r, struct r_strip *s);
 /* r_strip.c: recording by the walk and the strip phase. The r_rec_*
  * functions take what r_draw draws (same requirements); when a list cannot
  * grow they draw at once instead (counted in stats.degraded). */
-/* (Re)makes the strips: 1 << strip_shift columns each (0: the default,
- * R_STRIP_MIN or more, at most R_STRIP_MAX strips), bands of
- * 1 << band_shift rows (R_BAND_SHIFT by default). r_new uses the defaults;
- * tests pick others to show that the frame does not depend on them. 0 or
- * -ENOMEM (the context then needs r_strip_layout again or r_free). */
+/* (Re)makes the strips: 1 << strip_shift columns each (strip_shift >= 6),
+ * bands of 1 << band_shift rows. r_set_par picks them (R_BAND_SHIFT);
+ * tests pick others to show that the frame does not depend on them. 0, or
+ * -ENOMEM with the strips as they were. */
 int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift);
-/* The strips (not the spans); NULL-safe in its fields. */
+/* The strips (not the spans). */
 void r_strip_free(struct r_ctx *r);
 /* Empties the strips' lists for a new frame. */
 void r_strip_reset(struct r_ctx *r);

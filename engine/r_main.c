@@ -307,7 +307,7 @@ int r_new(int w, int h, struct r_ctx **out)
 	r->span_sy = malloc((size_t)h * sizeof(*r->span_sy));
 	if (!r->ceilclip || !r->floorclip || !r->cliptop || !r->clipbot || !r->xtoang ||
 	    !r->solid || !r->rowv || !r->yslope || !r->spanstart || !r->span_h || !r->span_fx ||
-	    !r->span_fy || !r->span_sx || !r->span_sy || r_strip_layout(r, 0, R_BAND_SHIFT) < 0)
+	    !r->span_fy || !r->span_sx || !r->span_sy || r_set_par(r, NULL) < 0)
 		goto fail;
 	r->rowv_cy2 = INT32_MIN;
 	/* fade = R_FADE_DIST * scale / focal with focal = w / 2 and scale16 =
@@ -429,12 +429,25 @@ static void r_sectors_reset(struct r_ctx *r, const struct map *m)
 	r->seen_ok = 1;
 }
 
-void r_set_par(struct r_ctx *r, const struct r_par *par)
+int r_set_par(struct r_ctx *r, const struct r_par *par)
 {
-	if (par)
+	int threads = par && par->run ? par->threads : 1;
+	int shift = 6;
+
+	/* one strip on one thread; else strips of a power-of-two number of
+	 * cache lines, about R_STRIPS_PER_THREAD per thread */
+	if (threads < 2)
+		threads = 1;
+	while ((1 << shift) < r->w &&
+	       ((r->w + (1 << shift) - 1) >> shift) > (threads > 1 ? R_STRIPS_PER_THREAD * threads : 1))
+		shift++;
+	if (shift != r->strip_shift && r_strip_layout(r, shift, R_BAND_SHIFT) < 0)
+		return -ENOMEM;
+	if (threads > 1)
 		r->par = *par;
 	else
 		memset(&r->par, 0, sizeof(r->par));
+	return 0;
 }
 
 void r_set_lmap(struct r_ctx *r, const struct lmap *lm)

@@ -110,12 +110,16 @@ void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 struct r_par {
 	void (*run)(void *pool, int n, void (*job)(void *arg, int i), void *arg);
 	void *pool;
+	int threads;                   /* how many jobs the pool runs at once */
 };
 
 /* Draws the next frames' strips through par (copied; the pool must outlive
- * its use), or one after another on the calling thread when par is NULL
- * (the default). Frames are identical either way. */
-void r_set_par(struct r_ctx *r, const struct r_par *par);
+ * its use), or on the calling thread when par is NULL or has fewer than
+ * two threads (the default). With a pool the frame is cut into about four
+ * strips per thread (the jobs balance between threads); without, into one
+ * (no cost for cutting spans). Frames are identical either way. 0, or
+ * -ENOMEM with the context drawing as before. */
+int r_set_par(struct r_ctx *r, const struct r_par *par);
 
 /* Point-light maps (lmap.h) for the next frames, NULL for none (the
  * default): borrowed, must be made for the map r_render draws and outlive

@@ -2,7 +2,8 @@
  * r_strip: what the walk records, and the strip phase that draws it.
  *
  * The frame's columns are cut into strips (R_STRIP_MIN columns or a
- * power-of-two multiple, at most R_STRIP_MAX strips). The walk records each
+ * power-of-two multiple: one strip without a pool, about
+ * R_STRIPS_PER_THREAD per thread with one). The walk records each
  * column run (wall part, sky, fill) into the strip of its column, and each
  * span once, with its index in every strip it crosses. Then each strip is
  * one job: its column runs in bands of rows (every run that reaches a band
@@ -26,42 +27,10 @@
 
 #include "engine/r_local.h"
 
-int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
+static void r_strips_free(struct r_strip *st, int n)
 {
-	int shift = strip_shift;
-
-	r_strip_free(r);
-	if (shift <= 0) {
-		/* R_STRIP_MIN = 1 << 6 */
-		shift = 6;
-		while (((r->w + (1 << shift) - 1) >> shift) > R_STRIP_MAX)
-			shift++;
-	}
-	r->strip_shift = shift;
-	r->band_shift = band_shift;
-	r->nstrips = (r->w + (1 << shift) - 1) >> shift;
-	r->nbands = (r->h + (1 << band_shift) - 1) >> band_shift;
-	r->strips = calloc((size_t)r->nstrips, sizeof(*r->strips));
-	if (!r->strips)
-		return -ENOMEM;
-	for (int i = 0; i < r->nstrips; i++) {
-		struct r_strip *s = &r->strips[i];
-		int x1;
-
-		s->x0 = i << shift;
-		x1 = s->x0 + (1 << shift) - 1;
-		s->x1 = x1 < r->w - 1 ? x1 : r->w - 1;
-		s->band = malloc((size_t)(r->nbands + 1) * sizeof(*s->band));
-		if (!s->band)
-			return -ENOMEM;
-	}
-	return 0;
-}
-
-void r_strip_free(struct r_ctx *r)
-{
-	for (int i = 0; r->strips && i < r->nstrips; i++) {
-		struct r_strip *s = &r->strips[i];
+	for (int i = 0; st && i < n; i++) {
+		struct r_strip *s = &st[i];
 
 		free(s->cols);
 		free(s->order);
@@ -70,7 +39,42 @@ void r_strip_free(struct r_ctx *r)
 		free(s->band);
 		free(s->spans);
 	}
-	free(r->strips);
+	free(st);
+}
+
+int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
+{
+	int n = (r->w + (1 << strip_shift) - 1) >> strip_shift;
+	int nbands = (r->h + (1 << band_shift) - 1) >> band_shift;
+	struct r_strip *st = calloc((size_t)n, sizeof(*st));
+
+	if (!st)
+		return -ENOMEM;
+	for (int i = 0; i < n; i++) {
+		struct r_strip *s = &st[i];
+		int x1;
+
+		s->x0 = i << strip_shift;
+		x1 = s->x0 + (1 << strip_shift) - 1;
+		s->x1 = x1 < r->w - 1 ? x1 : r->w - 1;
+		s->band = malloc((size_t)(nbands + 1) * sizeof(*s->band));
+		if (!s->band) {
+			r_strips_free(st, n);
+			return -ENOMEM;
+		}
+	}
+	r_strip_free(r);
+	r->strips = st;
+	r->nstrips = n;
+	r->strip_shift = strip_shift;
+	r->band_shift = band_shift;
+	r->nbands = nbands;
+	return 0;
+}
+
+void r_strip_free(struct r_ctx *r)
+{
+	r_strips_free(r->strips, r->nstrips);
 	r->strips = NULL;
 	r->nstrips = 0;
 }

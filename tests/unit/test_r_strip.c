@@ -48,9 +48,9 @@ struct way {
 
 enum { WAYS = 5 };
 
-/* 0: the reference (one strip, one band, no pool); 1: defaults; 2: 64-
- * column strips, 8-row bands, 2 threads; 3: defaults, 3 threads; 4:
- * 64-column strips, 1-row bands, 2 threads. */
+/* 0: the reference (one strip, one band, no pool); 1: defaults (one strip,
+ * bands); 2: 64-column strips, 8-row bands, 2 threads; 3: defaults for 3
+ * threads; 4: 64-column strips, 1-row bands, 2 threads. */
 static void ways_open(struct way *w, int width, int height)
 {
 	static const char *names[WAYS] = { "reference", "default", "64x8, 2 threads",
@@ -65,17 +65,17 @@ static void ways_open(struct way *w, int width, int height)
 		w[i].px = malloc((size_t)width * (size_t)height);
 		assert_non_null(w[i].px);
 		w[i].f = (struct r_frame){ w[i].px, width, height, width };
+		if (i >= 2) {
+			assert_int_equal(pool_new(i == 3 ? 3 : 2, &w[i].pool), 0);
+			pool_r_par(w[i].pool, &par);
+			assert_int_equal(r_set_par(w[i].r, &par), 0);
+		}
 		if (i == 0)
 			assert_int_equal(r_strip_layout(w[i].r, 12, 12), 0);
 		if (i == 2)
 			assert_int_equal(r_strip_layout(w[i].r, 6, 3), 0);
 		if (i == 4)
 			assert_int_equal(r_strip_layout(w[i].r, 6, 0), 0);
-		if (i >= 2) {
-			assert_int_equal(pool_new(i == 3 ? 3 : 2, &w[i].pool), 0);
-			pool_r_par(w[i].pool, &par);
-			r_set_par(w[i].r, &par);
-		}
 	}
 	assert_int_equal(w[0].r->nstrips, 1);
 	assert_int_equal(w[0].r->nbands, 1);
@@ -123,31 +123,55 @@ static struct r_stats ways_render(struct way *w, const struct map *m, const stru
 	return w[0].st;
 }
 
-static void layout_sets_strips_of_whole_cache_lines(void **state)
+static void fake_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
+{
+	(void)pool;
+	(void)n;
+	(void)job;
+	(void)arg;
+}
+
+/* Without a pool one strip covers the frame; with a pool of t threads the
+ * strips are contiguous, start on 64-column boundaries, all but the last
+ * are a power of two of 64 or more columns wide, and there are at most 4t
+ * of them (at least 2 once the frame is 8t * 64 columns wide). */
+static void layout_cuts_whole_cache_lines_per_thread(void **state)
 {
 	static const int widths[] = { 1, 63, 64, 65, 320, 333, 1280, 1920, 2047, 4096 };
 	(void)state;
 
 	for (size_t i = 0; i < sizeof(widths) / sizeof(widths[0]); i++) {
-		struct r_ctx *r;
-		int w = widths[i], covered = 0;
+		for (int t = 1; t <= 4; t++) {
+			struct r_par par = { fake_run, NULL, t };
+			struct r_ctx *r;
+			int w = widths[i], covered = 0;
 
-		assert_int_equal(r_new(w, 50, &r), 0);
-		assert_true(r->nstrips >= 1 && r->nstrips <= R_STRIP_MAX);
-		for (int k = 0; k < r->nstrips; k++) {
-			const struct r_strip *s = &r->strips[k];
+			assert_int_equal(r_new(w, 50, &r), 0);
+			assert_int_equal(r->nstrips, 1);
+			assert_int_equal(r_set_par(r, &par), 0);
+			if (t == 1)
+				assert_int_equal(r->nstrips, 1);
+			assert_true(r->nstrips >= 1 && r->nstrips <= R_STRIPS_PER_THREAD * t);
+			if (t > 1 && w >= 8 * t * R_STRIP_MIN)
+				assert_true(r->nstrips >= 2);
+			for (int k = 0; k < r->nstrips; k++) {
+				const struct r_strip *s = &r->strips[k];
+				int sw = s->x1 - s->x0 + 1;
 
-			/* contiguous, in order, 64-column aligned starts */
-			assert_int_equal(s->x0, covered);
-			assert_int_equal(s->x0 % R_STRIP_MIN, 0);
-			assert_true(s->x1 >= s->x0);
-			if (k < r->nstrips - 1)
-				assert_true(s->x1 - s->x0 + 1 >= R_STRIP_MIN);
-			covered = s->x1 + 1;
+				assert_int_equal(s->x0, covered);
+				assert_int_equal(s->x0 % R_STRIP_MIN, 0);
+				assert_true(sw >= 1);
+				if (k < r->nstrips - 1)
+					assert_true(sw >= R_STRIP_MIN && (sw & (sw - 1)) == 0);
+				covered = s->x1 + 1;
+			}
+			assert_int_equal(covered, w);
+			assert_int_equal(r->nbands, (50 + (1 << R_BAND_SHIFT) - 1) >> R_BAND_SHIFT);
+			/* back to one strip without the pool */
+			assert_int_equal(r_set_par(r, NULL), 0);
+			assert_int_equal(r->nstrips, 1);
+			r_free(r);
 		}
-		assert_int_equal(covered, w);
-		assert_int_equal(r->nbands, (50 + (1 << R_BAND_SHIFT) - 1) >> R_BAND_SHIFT);
-		r_free(r);
 	}
 }
 
@@ -304,7 +328,7 @@ static void freedoom_maps_same_frame_every_way(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(layout_sets_strips_of_whole_cache_lines),
+		cmocka_unit_test(layout_cuts_whole_cache_lines_per_thread),
 		cmocka_unit_test(builtin_levels_same_frame_every_way),
 		cmocka_unit_test(freedoom_maps_same_frame_every_way),
 	};
