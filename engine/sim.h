@@ -25,6 +25,7 @@
 #ifndef ARCADED_ENGINE_SIM_H
 #define ARCADED_ENGINE_SIM_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "engine/fx.h"
@@ -191,6 +192,35 @@ void sim_tick(struct sim *s, const struct sim_cmd *cmd);
  * every stage map's content_hash, the settings, and every field of struct
  * sim in order, integers as little-endian bytes. */
 uint64_t sim_hash(const struct sim *s);
+
+/* Snapshots: the whole state as bytes, so a recording can start in the
+ * middle of a cabinet's run (the flight recorder records each game from
+ * its first tick, with credits, attract timers, RNG, high-score table and
+ * bookkeeping as they were). The same walk over the fields as sim_hash
+ * (sim_hash.c) writes and reads them, so whatever is hashed is saved and
+ * restored: every field of struct sim and its nested structs, little-endian,
+ * including the enemy and pickup slots past the counts. The borrowed maps
+ * are not saved: the snapshot holds sim_stages_hash of the stages and the
+ * index of the current map among them.
+ *
+ * sim_snapshot_size: the snapshot's size in bytes (fixed for a build; it
+ * changes only when struct sim does, which also changes REC_ENGINE_VERSION).
+ * sim_snapshot: writes sim_snapshot_size() bytes of s to out.
+ * sim_restore: the caller first runs sim_init_stages on the same stage
+ * maps, in the same order (settings, tables and books are restored from
+ * the snapshot, so the ones given there do not matter), then restores buf.
+ * Returns 0 and s becomes the state snapshotted: fed the same commands it
+ * gives the same hashes as the original did; or -EINVAL with s unchanged
+ * when len is not sim_snapshot_size(), the stages differ (hash or count),
+ * or a value is out of its range: the current map index, mode, page,
+ * stage, phase, shot, enemy kinds and states, pickup kinds, counts beyond
+ * G_MAX_ENEMIES / G_MAX_PICKUPS or alive beyond the enemies, a sector
+ * index beyond the current map's, a position beyond MAP_COORD_MAX, health
+ * outside 0..G_HEALTH_MAX, initials letters and ranks, menu page, cursor
+ * and choices. */
+size_t sim_snapshot_size(void);
+void sim_snapshot(const struct sim *s, uint8_t *out);
+int sim_restore(struct sim *s, const uint8_t *buf, size_t len);
 
 /* Hash of the stage maps' content hashes, in order: what a recording's map
  * hash should be when a game has several stages (one stage: FNV-1a of its
