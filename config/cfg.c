@@ -74,6 +74,7 @@ static const struct cfg_key cfg_keys[] = {
 	  .off = offsetof(struct cfg, display.fill), .names = cfg_scales },
 	CFG_INTKEY(game, render_width, game.render_width, 64, 4096),
 	CFG_INTKEY(game, render_height, game.render_height, 48, 4096),
+	CFG_INTKEY(game, render_threads, game.render_threads, 0, 64),
 	CFG_INTKEY(game, coins_per_credit, game.coins_per_credit, 1, 9),
 	CFG_BOOLKEY(game, freeplay, game.freeplay),
 	CFG_BOOLKEY(game, start_in_play, game.start_in_play),

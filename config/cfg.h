@@ -29,6 +29,7 @@ struct cfg {
 	} display;
 	struct {
 		int render_width, render_height; /* 320x240 */
+		int render_threads;          /* 0 = every online CPU (0) */
 		int coins_per_credit;        /* 1 */
 		int freeplay;                /* 0 */
 		int start_in_play;           /* 0 */

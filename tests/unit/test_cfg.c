@@ -68,6 +68,7 @@ static void test_defaults_match_the_documented_values(void **state)
 	assert_int_equal(c.display.fill, 0);
 	assert_int_equal(c.game.render_width, 320);
 	assert_int_equal(c.game.render_height, 240);
+	assert_int_equal(c.game.render_threads, 0);
 	assert_int_equal(c.game.coins_per_credit, 1);
 	assert_int_equal(c.game.freeplay, 0);
 	assert_int_equal(c.game.start_in_play, 0);
@@ -121,7 +122,7 @@ static void test_every_key_is_applied(void **state)
 				 "file = /tmp/fb\nfile_width = 800\nfile_height = 600\n"
 				 "file_stride = 3328\nfile_format = rgb565\nrotate = 270\n"
 				 "scale = fill\n[game]\nrender_width = 640\nrender_height = 480\n"
-				 "coins_per_credit = 3\nfreeplay = yes\nstart_in_play = On\n"
+				 "render_threads = 3\ncoins_per_credit = 3\nfreeplay = yes\nstart_in_play = On\n"
 				 "level = 2\n[input]\nevdev = /dev/input/event3\n"
 				 "bindings = /etc/arcaded/extra.ini\n[paths]\nstate_dir = /srv/a\n";
 	struct errs e;
@@ -142,6 +143,7 @@ static void test_every_key_is_applied(void **state)
 	assert_int_equal(c.display.fill, 1);
 	assert_int_equal(c.game.render_width, 640);
 	assert_int_equal(c.game.render_height, 480);
+	assert_int_equal(c.game.render_threads, 3);
 	assert_int_equal(c.game.coins_per_credit, 3);
 	assert_int_equal(c.game.freeplay, 1);
 	assert_int_equal(c.game.start_in_play, 1);
@@ -387,7 +389,7 @@ static void test_format_round_trips_every_key(void **state)
 
 		for (const char *p = buf; *p; p++)
 			lines += *p == '\n';
-		assert_int_equal(lines, 23 + 5 + 4);  /* keys, section headers, blank lines */
+		assert_int_equal(lines, 24 + 5 + 4);  /* keys, section headers, blank lines */
 	}
 	/* Reading the text back gives the same settings. */
 	memset(&b, 0x55, sizeof(b));
@@ -443,7 +445,7 @@ static void test_shipped_arcaded_ini_lists_every_key_at_its_default(void **state
 		}
 		o += (size_t)snprintf(out + o, sizeof(out) - o, "%s\n", line);
 	}
-	assert_int_equal(keys, 23);   /* every key of the schema (docs/config.md) */
+	assert_int_equal(keys, 24);   /* every key of the schema (docs/config.md) */
 	assert_int_equal(load(&c, out, &e), 0);
 	assert_memory_equal(&c, &d, sizeof(c));
 }
