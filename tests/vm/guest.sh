@@ -104,7 +104,9 @@ phase_boot() {
 }
 
 # --- input: a uinput keyboard plugged in after start -----------------------
+coins=0
 coin_start() {
+	coins=$((coins + 1))
 	echo "tap KEY_5 150" >&3
 	sleep 0.5
 	echo "tap KEY_1 150" >&3
@@ -208,6 +210,7 @@ phase_sigterm() {
 	printf '\n\n   arcaded VM test: the console shows text again\n' > /dev/tty1
 	before=$("$G" kdmode /dev/tty0)
 	t_stop=$(now)
+	wall_stop=$(date +%s.%N)
 	systemctl stop "$U"
 	code=$(prop ExecMainCode)
 	status=$(prop ExecMainStatus)
@@ -219,6 +222,18 @@ phase_sigterm() {
 	check sigterm-console-text "tty0 while running: $before; after stop: $after" \
 		sh -c "echo '$before' | grep -q 'kd graphics kb off' && echo '$after' | grep -q '^kd text' && ! echo '$after' | grep -q 'kb off'"
 	shot after-stop
+	# State saved: the bookkeeping file counts every coin and game of this
+	# boot (its state directory starts empty), checks out (vm_guest books
+	# reads it independently of the daemon's code) and was written at the
+	# stop (play and power-on time are saved on the way out).
+	f=/var/lib/arcaded/books
+	books=$("$G" books "$f")
+	brc=$?
+	meta=$(stat -c '%U %a %.9Y' "$f" 2>&1)
+	check sigterm-state-saved "$f: $books; owner, mode, mtime: $meta; $coins coin(s) and game(s) this boot" \
+		sh -c "[ $brc = 0 ] && echo '$books' | grep -q '^coins $coins plays $coins ' &&
+			echo '$meta' | grep -q '^arcaded 600 ' &&
+			awk -v m='${meta##* }' -v s='$wall_stop' 'BEGIN { exit !(m + 0 >= s + 0) }'"
 }
 
 # --- a framebuffer that appears after the daemon started --------------------

@@ -71,8 +71,8 @@ make --no-print-directory -s -j"$(nproc)" BUILD="$BUILD" all tests > "$B/build.l
 	{ tail -n 30 "$B/build.log"; die "build"; }
 CFLAGS="-std=c11 -D_GNU_SOURCE -O2 -g -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes"
 # shellcheck disable=SC2086
-cc $CFLAGS $(pkg-config --cflags libevdev) -o "$B/vm_guest" tests/vm/vm_guest.c \
-	$(pkg-config --libs libevdev) || die "vm_guest"
+cc $CFLAGS $(pkg-config --cflags libevdev zlib) -o "$B/vm_guest" tests/vm/vm_guest.c \
+	$(pkg-config --libs libevdev zlib) || die "vm_guest"
 # shellcheck disable=SC2086
 cc $CFLAGS $(pkg-config --cflags libpng) -o "$B/vm_host" tests/vm/vm_host.c \
 	$(pkg-config --libs libpng) || die "vm_host"

@@ -25,6 +25,13 @@
  *   vm_guest waitfd PID PATH SECONDS
  *                           wait until process PID has PATH open; prints
  *                           how long it took; exit 1 on timeout
+ *   vm_guest books FILE     check a bookkeeping state file written by the
+ *                           daemon (docs/persistence.md): magic "ARCDSTA",
+ *                           version 1, header size 24, payload length 28,
+ *                           both CRC-32s (zlib's); payload "GB", format 1,
+ *                           then little-endian coins, plays (u32) and
+ *                           play_ticks, on_ticks (u64). Prints them; exit 1
+ *                           if anything does not check out
  *   vm_guest fbinfo DEV     print the framebuffer's geometry and format
  *   vm_guest now            CLOCK_MONOTONIC in seconds (9 decimals), the
  *                           clock of the journal's -o short-monotonic
@@ -40,6 +47,7 @@
 #include <linux/fb.h>
 #include <linux/kd.h>
 #include <linux/uinput.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,12 +56,13 @@
 #include <unistd.h>
 
 #include <libevdev/libevdev.h>
+#include <zlib.h>
 
 static int usage(void)
 {
 	fputs("usage: vm_guest kbd FIFO | kdmode TTY | open PATH r|w|rw |\n"
 	      "       probe CGROUP USER PATH:MODE:WANT... | waitfd PID PATH SECONDS |\n"
-	      "       fbinfo DEV | now\n",
+	      "       books FILE | fbinfo DEV | now\n",
 	      stderr);
 	return 2;
 }
@@ -326,6 +335,50 @@ static int cmd_waitfd(const char *pid, const char *path, const char *secs)
 	return 0;
 }
 
+static uint64_t le(const uint8_t *p, int n)
+{
+	uint64_t v = 0;
+
+	for (int i = n - 1; i >= 0; i--)
+		v = v << 8 | p[i];
+	return v;
+}
+
+static int cmd_books(const char *path)
+{
+	uint8_t b[64];
+	ssize_t n;
+	int fd = open(path, O_RDONLY | O_CLOEXEC);
+
+	if (fd < 0) {
+		printf("%s: %s\n", path, strerror(errno));
+		return 1;
+	}
+	n = read(fd, b, sizeof(b));
+	close(fd);
+	if (n != 24 + 28) {
+		printf("%s: %zd bytes, want 52\n", path, n);
+		return 1;
+	}
+	if (memcmp(b, "ARCDSTA", 8) != 0 || le(b + 8, 2) != 1 || le(b + 10, 2) != 24 ||
+	    le(b + 12, 4) != 28) {
+		printf("%s: bad header\n", path);
+		return 1;
+	}
+	if (le(b + 20, 4) != crc32(0, b, 20) || le(b + 16, 4) != crc32(0, b + 24, 28)) {
+		printf("%s: checksum mismatch\n", path);
+		return 1;
+	}
+	if (b[24] != 'G' || b[25] != 'B' || b[26] != 1 || b[27] != 0) {
+		printf("%s: not bookkeeping\n", path);
+		return 1;
+	}
+	printf("coins %llu plays %llu play_ticks %llu on_ticks %llu\n",
+	       (unsigned long long)le(b + 28, 4), (unsigned long long)le(b + 32, 4),
+	       (unsigned long long)le(b + 36, 8), (unsigned long long)le(b + 44, 8));
+	return 0;
+}
+
 static int cmd_fbinfo(const char *dev)
 {
 	struct fb_var_screeninfo v;
@@ -369,6 +422,8 @@ int main(int argc, char **argv)
 		return cmd_probe(argv[2], argv[3], argv + 4, argc - 4);
 	if (argc == 5 && strcmp(argv[1], "waitfd") == 0)
 		return cmd_waitfd(argv[2], argv[3], argv[4]);
+	if (argc == 3 && strcmp(argv[1], "books") == 0)
+		return cmd_books(argv[2]);
 	if (argc == 3 && strcmp(argv[1], "fbinfo") == 0)
 		return cmd_fbinfo(argv[2]);
 	if (argc == 2 && strcmp(argv[1], "now") == 0)
