@@ -17,6 +17,7 @@
 #include "app/cmd.h"
 #include "app/content.h"
 #include "app/lat.h"
+#include "app/demo.h"
 #include "app/view.h"
 #include "config/bind.h"
 #include "display/dp.h"
@@ -67,6 +68,7 @@ struct app {
 	struct tex_set *tex;       /* = ct.tex: what r draws with */
 	uint64_t map_hash;         /* of every stage: what recordings are tied to */
 	struct view view;          /* draws the sim's frame */
+	struct demo demo;          /* the attract mode's demo */
 	uint32_t set_gen, scores_gen, books_gen;  /* last persisted generations */
 	uint8_t res;               /* render size choice in effect (menu) */
 	int persist;               /* live cabinet: save settings, scores, books */
@@ -604,6 +606,7 @@ static int setup(struct app *a)
 
 	struct ct_spec spec = a->o->content;
 	int rw = c->game.render_width, rh_h = c->game.render_height;
+	int sized = a->o->size_w > 0;
 
 	if (a->o->replay) {
 		struct rec_run run;
@@ -617,10 +620,14 @@ static int setup(struct app *a)
 		rec_run_from_header(rec_reader_header(a->rep), &run);
 		if (run.level && spec.nwads == 0 && !spec.grid)
 			spec.level = run.level;
-		if (run.render_w && run.render_h) {
+		if (run.render_w && run.render_h && !sized) {
 			rw = run.render_w;
 			rh_h = run.render_h;
 		}
+	}
+	if (sized) {
+		rw = a->o->size_w;
+		rh_h = a->o->size_h;
 	}
 	rc = ct_load(&a->ct, &spec, err, sizeof(err));
 	if (rc < 0) {
@@ -675,6 +682,11 @@ static int setup(struct app *a)
 	}
 	start_sim(a);
 
+	rc = demo_init(&a->demo, &a->ct, err, sizeof(err));
+	if (rc < 0) {
+		logf_("%s", err);
+		return rc;
+	}
 	rc = view_init(&a->view, &a->ct, NULL, c->display.rotate);
 	if (rc == 0)
 		rc = resize(a, rw, rh_h);
@@ -779,6 +791,7 @@ static void teardown(struct app *a)
 	r_free(a->r);
 	free(a->frame.px);
 	view_free(&a->view);
+	demo_free(&a->demo);
 	ct_free(&a->ct);
 }
 
@@ -822,7 +835,7 @@ static int render_and_present(struct app *a)
 	uint64_t t0 = in_now_ns(), t1;
 	int rc;
 
-	view_draw(&a->view, &a->sim, &a->frame);
+	view_draw(&a->view, &a->sim, demo_under(&a->demo, &a->sim), &a->frame);
 	rc = a->dpb->present(a->dp, a->frame.px, a->frame.w, a->frame.h, a->frame.pitch);
 	t1 = in_now_ns();
 	a->frames++;
@@ -875,6 +888,7 @@ static int loop(struct app *a)
 		if (!next_tick(a, t, &rt))
 			break;
 		sim_tick(&a->sim, &rt.cmd);
+		demo_tick(&a->demo, &a->sim);
 		a->ticks_run++;
 		persist_tick(a);
 

@@ -39,6 +39,7 @@ static void usage(FILE *f)
 	      "  --verify           with --replay: compare with the hashes the recording stores;\n"
 	      "                     exit 1 at a difference (prints the first)\n"
 	      "  --until TICK       stop after tick TICK (with --screenshot: that tick's frame)\n"
+	      "  --size WxH         render size, over the configuration and a recording's own\n"
 	      "  --quiet            with --replay: print no per-tick hashes (benchmarks)\n"
 	      "  --ticks N          stop after N ticks\n"
 	      "  --fast             do not wait for the 60 Hz clock\n"
@@ -64,7 +65,7 @@ int main(int argc, char **argv)
 	enum { O_CONFIG_DIR = 256, O_STATE_DIR, O_SET, O_DISPLAY, O_LEVEL, O_PLAY, O_BINDINGS,
 	       O_SCRIPT, O_RECORD, O_REPLAY, O_NO_RENDER, O_QUIET, O_TICKS, O_FAST, O_SCREENSHOT,
 	       O_PRINT_CONFIG, O_VERSION, O_HELP, O_WAD, O_MAP, O_GRID, O_NO_LIGHTS, O_VERIFY,
-	       O_UNTIL };
+	       O_UNTIL, O_SIZE };
 	static const struct option opts[] = {
 		{ "config-dir", required_argument, NULL, O_CONFIG_DIR },
 		{ "state-dir", required_argument, NULL, O_STATE_DIR },
@@ -88,6 +89,7 @@ int main(int argc, char **argv)
 		{ "no-lights", no_argument, NULL, O_NO_LIGHTS },
 		{ "verify", no_argument, NULL, O_VERIFY },
 		{ "until", required_argument, NULL, O_UNTIL },
+		{ "size", required_argument, NULL, O_SIZE },
 		{ "version", no_argument, NULL, O_VERSION },
 		{ "help", no_argument, NULL, O_HELP },
 		{ NULL, 0, NULL, 0 },
@@ -131,6 +133,16 @@ int main(int argc, char **argv)
 			break;
 		}
 		case O_VERIFY: o.verify = 1; break;
+		case O_SIZE: {
+			char x;
+			if (sscanf(optarg, "%d%c%d", &o.size_w, &x, &o.size_h) != 3 || x != 'x' ||
+			    o.size_w < 64 || o.size_w > 4096 || o.size_h < 48 || o.size_h > 4096) {
+				fprintf(stderr, "arcaded: --size: '%s' is not WxH within 64x48..4096x4096\n",
+					optarg);
+				return 2;
+			}
+			break;
+		}
 		case O_FAST: o.fast = 1; break;
 		case O_SCREENSHOT: o.screenshot = optarg; break;
 		case O_PRINT_CONFIG: print_config = 1; break;

@@ -31,12 +31,19 @@ void view_set_renderer(struct view *v, struct r_ctx *r)
 	v->lit = NULL;
 }
 
-void view_draw(struct view *v, const struct sim *s, struct r_frame *f)
+void view_draw(struct view *v, const struct sim *s, const struct sim *under,
+	       struct r_frame *f)
 {
 	struct tex_set *tex = v->ct->tex;
 	struct hud_env env = { &tex->pal, tex, v->rotate };
 	struct r_view rv;
 
+	if (under) {
+		/* the demo's own frame, then this sim's banner over it */
+		view_draw(v, under, NULL, f);
+		hud_draw(s, &env, f);
+		return;
+	}
 	if (s->map != v->lit) {
 		/* a new stage: its own light maps */
 		r_set_lmap(v->r, ct_lmap_for(v->ct, s->map));

@@ -32,8 +32,10 @@ int view_init(struct view *v, const struct ct *ct, struct r_ctx *r, int rotate);
 void view_set_renderer(struct view *v, struct r_ctx *r);
 
 /* Draws s into f (f's size must be r's). Animated textures are advanced to
- * the sim's tick first. */
-void view_draw(struct view *v, const struct sim *s, struct r_frame *f);
+ * the sim's tick first. under (may be NULL): a sim whose world and HUD are
+ * drawn first, under s's page (the attract demo, app/demo.h). */
+void view_draw(struct view *v, const struct sim *s, const struct sim *under,
+	       struct r_frame *f);
 
 void view_free(struct view *v);
 

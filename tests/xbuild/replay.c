@@ -46,6 +46,7 @@
 #include "engine/r_main.h"
 #include "engine/sim.h"
 #include "app/content.h"
+#include "app/demo.h"
 #include "app/view.h"
 #include "input/rec.h"
 
@@ -199,6 +200,7 @@ int main(int argc, char **argv)
 	struct ct ct = { 0 };
 	struct ct_spec spec = { .lights = 1 };
 	struct view view = { 0 };
+	struct demo demo = { 0 };
 	struct sim sim;
 	char err[512];
 	uint32_t t = 0;
@@ -252,6 +254,10 @@ int main(int argc, char **argv)
 	}
 	rec_verify_init(&ver, h, &run);
 	sim_init_stages(&sim, (const struct map *const *)ct.maps, ct.nmaps, &run.set, NULL, NULL);
+	if (demo_init(&demo, &ct, err, sizeof(err)) < 0) {
+		fprintf(stderr, "replay: %s\n", err);
+		goto out;
+	}
 	if (o.render) {
 		f.w = f.pitch = run.render_w;
 		f.h = run.render_h;
@@ -291,9 +297,10 @@ int main(int argc, char **argv)
 		if (rc <= 0)
 			break;
 		sim_tick(&sim, &rt.cmd);
+		demo_tick(&demo, &sim);
 		if (o.render) {
 			/* the daemon's own drawing (app/view.c) */
-			view_draw(&view, &sim, &f);
+			view_draw(&view, &sim, demo_under(&demo, &sim), &f);
 			fh = hash_frame(f.px, f.w, f.h, f.pitch);
 		}
 		sh = sim_hash(&sim);
@@ -328,6 +335,7 @@ out:
 	if (wr && rec_writer_close(wr) < 0 && code == 0)
 		code = 2;
 	view_free(&view);
+	demo_free(&demo);
 	r_free(r);
 	free(f.px);
 	ct_free(&ct);

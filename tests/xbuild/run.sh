@@ -46,7 +46,7 @@ fi
 # ---- builds --------------------------------------------------------------
 WARN="-std=c11 -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes"
 FLAGS="$WARN -fno-strict-aliasing -I. -D_GNU_SOURCE"
-SRC="tests/xbuild/replay.c $(ls engine/*.c | tr '\n' ' ') input/rec.c app/content.c app/view.c"
+SRC="tests/xbuild/replay.c $(ls engine/*.c | tr '\n' ' ') input/rec.c input/scr.c input/act.c app/content.c app/view.c app/demo.c app/cmd.c"
 build() { # $1 name; rest: compiler and flags
 	name=$1; shift
 	# shellcheck disable=SC2086
@@ -124,7 +124,7 @@ say "recordings: $nrec ($(ls "$tmp/rec" | tr '\n' ' '))"
 compare() {
 	label=$1; rec=$2; size=$3
 	w=${size%x*}; h=${size#*x}
-	"$BIN" $common --set game.render_width="$w" --set game.render_height="$h" \
+	"$BIN" $common --size "$w"x"$h" \
 		--replay "$rec" >"$tmp/ref" 2>"$tmp/ref.err"
 	if [ $? -ne 0 ] || [ ! -s "$tmp/ref" ]; then
 		bad "$label: the daemon did not replay it: $(head -n 1 "$tmp/ref.err")"
