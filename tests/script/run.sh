@@ -17,7 +17,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 pass=0
 fail=0
-for scr in tests/script/*.scr; do
+for scr in tests/script/*.scr tests/script/game/*.scr; do
 	name=$(basename "$scr" .scr)
 	want_exit=$(sed -n 's/^# expect-exit: *\([0-9]*\).*/\1/p' "$scr" | head -n 1)
 	want_exit=${want_exit:-0}
