@@ -90,15 +90,12 @@ void r_strip_reset(struct r_ctx *r)
 	}
 }
 
-/* Room for one more run in s: the runs and their three scratch arrays grow
- * together. 0 or -1. */
+/* Grows s's full list of runs by at least one: the runs and their three
+ * scratch arrays grow together. 0 or -1. */
 static int r_strip_room(struct r_strip *s)
 {
-	int cap = s->maxcols, c;
+	int cap = s->maxcols, c = cap;
 
-	if (s->ncols < s->maxcols)
-		return 0;
-	c = cap;
 	if (r_grow((void **)&s->cols, &c, sizeof(*s->cols), cap + 1) < 0)
 		return -1;
 	c = cap;
@@ -114,53 +111,67 @@ static int r_strip_room(struct r_strip *s)
 	return 0;
 }
 
-static void r_rec(struct r_ctx *r, const struct r_col *c)
+/* The slot for a new run in column x's strip, or NULL when the list cannot
+ * grow (the caller then draws the run at once). */
+static inline struct r_col *r_rec_slot(struct r_ctx *r, int x)
 {
-	struct r_strip *s = &r->strips[c->x >> r->strip_shift];
+	struct r_strip *s = &r->strips[x >> r->strip_shift];
 
-	if (r_strip_room(s) < 0) {
-		struct r_col now = *c;
+	if (s->ncols == s->maxcols && r_strip_room(s) < 0)
+		return NULL;
+	return &s->cols[s->ncols++];
+}
 
-		r->st.degraded++;
-		r_draw_run(r, s, &now, now.y2);
-		return;
-	}
-	s->cols[s->ncols++] = *c;
+/* Draws run c at once (out of memory for the lists). */
+static void r_rec_now(struct r_ctx *r, struct r_col *c)
+{
+	r->st.degraded++;
+	r_draw_run(r, &r->strips[c->x >> r->strip_shift], c, c->y2);
 }
 
 void r_rec_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col, int h,
 	       const uint8_t *cm, uint32_t frac, uint32_t step)
 {
-	struct r_col c;
+	struct r_col now, *c;
 
 	if (y2 < y1)
 		return;
 	assert(h >= 1 && frac < ((uint32_t)h << 16) && step < ((uint32_t)h << 16));
-	c.src = col;
-	c.cm = cm;
-	c.frac = frac;
-	c.step = step;
-	c.h = h;
-	c.x = (int16_t)x;
-	c.y1 = (int16_t)y1;
-	c.y2 = (int16_t)y2;
-	c.colour = 0;
-	r_rec(r, &c);
+	c = r_rec_slot(r, x);
+	if (!c)
+		c = &now;
+	c->src = col;
+	c->cm = cm;
+	c->frac = frac;
+	c->step = step;
+	c->h = h;
+	c->x = (int16_t)x;
+	c->y1 = (int16_t)y1;
+	c->y2 = (int16_t)y2;
+	c->colour = 0;
+	if (c == &now)
+		r_rec_now(r, c);
 }
 
 void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour)
 {
-	struct r_col c;
+	struct r_col now, *c;
 
 	if (y2 < y1)
 		return;
-	memset(&c, 0, sizeof(c));
-	c.h = 1;
-	c.x = (int16_t)x;
-	c.y1 = (int16_t)y1;
-	c.y2 = (int16_t)y2;
-	c.colour = colour;
-	r_rec(r, &c);
+	c = r_rec_slot(r, x);
+	if (!c)
+		c = &now;
+	c->src = NULL;
+	c->cm = NULL;
+	c->frac = c->step = 0;
+	c->h = 1;
+	c->x = (int16_t)x;
+	c->y1 = (int16_t)y1;
+	c->y2 = (int16_t)y2;
+	c->colour = colour;
+	if (c == &now)
+		r_rec_now(r, c);
 }
 
 void r_rec_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat, const uint8_t *cm,
