@@ -12,7 +12,7 @@ PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod
 TEST_PKGS := cmocka
 
 WARN := -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes
-CPPFLAGS += -I. -D_GNU_SOURCE
+CPPFLAGS += -I. -D_GNU_SOURCE -DARCADED_DATADIR='"$(PREFIX)/share/arcaded"'
 CFLAGS += -std=c11 $(OPT) $(SAN) $(WARN) -fno-strict-aliasing
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
 PKG_LIBS = $(shell pkg-config --libs $(PKGS))
@@ -141,6 +141,8 @@ install: $(BIN)
 	install -D -m 0644 systemd/arcaded.tmpfiles $(DESTDIR)$(TMPFILESDIR)/arcaded.conf
 	install -D -m 0644 config/arcaded.ini $(DESTDIR)/etc/arcaded/arcaded.ini
 	install -D -m 0644 config/bindings.ini $(DESTDIR)/etc/arcaded/bindings.ini
+	install -d $(DESTDIR)$(PREFIX)/share/arcaded/profiles
+	install -m 0644 config/profiles/*.ini $(DESTDIR)$(PREFIX)/share/arcaded/profiles/
 
 clean:
 	rm -rf build

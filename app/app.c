@@ -20,6 +20,7 @@
 #include "app/demo.h"
 #include "app/view.h"
 #include "config/bind.h"
+#include "config/prof.h"
 #include "display/dp.h"
 #include "display/shot.h"
 #include "config/st.h"
@@ -32,12 +33,15 @@
 #include "engine/tex.h"
 #include "engine/r_main.h"
 #include "engine/sim.h"
+#include "input/gpo.h"
 #include "input/in.h"
+#include "input/in_gpio.h"
+#include "input/in_hid.h"
 #include "input/rec.h"
 #include "input/scr.h"
 #include "systemd/svc.h"
 
-#define APP_MAX_IN 4
+#define APP_MAX_IN 8
 #define APP_KEYS 1024             /* key codes tracked per device (KEY_CNT is 768) */
 #define APP_TICK_NS(t) ((uint64_t)(t) * 1000000000ull / SIM_TICRATE)
 #define APP_RESYNC_NS 250000000ull /* further behind than this: drop the backlog */
@@ -53,6 +57,8 @@ struct app_in {
 	const struct in_backend *be;
 	struct in_dev *dev;
 	const char *path;          /* what to (re)open; NULL: auto-detect */
+	char spec[CFG_PATH_MAX];   /* the path's storage when split from a list */
+	struct in_ident id;        /* who the open device is (per-device bindings) */
 	uint64_t retry_ns;         /* when to try reopening a lost device */
 	uint8_t down[APP_KEYS / 8];
 };
@@ -78,6 +84,7 @@ struct app {
 	struct app_in in[APP_MAX_IN];
 	int nin;
 	struct bind_table binds;
+	struct prof_set profs;     /* autoconfig profiles by VID:PID and name */
 	struct cmd_state cs;
 	struct rec_writer *rec;
 	struct rec_reader *rep;
@@ -208,6 +215,25 @@ static void report_cfg_error(void *user, const char *file, int line, const char 
 
 /* ---- input ---------------------------------------------------------- */
 
+/* A device just opened: who it is, and a profile's bindings when the
+ * operator has none for it (a known encoder works without configuration). */
+static void identify(struct app *a, struct app_in *in)
+{
+	const struct prof *p;
+	char why[160];
+
+	memset(&in->id, 0, sizeof(in->id));
+	if (in->be->ident)
+		in->be->ident(in->dev, &in->id);
+	p = prof_match(&a->profs, in->be->name, &in->id);
+	if (!p)
+		return;
+	prof_bind(p, &a->binds, &in->id);
+	if (in->be == &in_hid && p->hid[0] && in_hid_configure(in->dev, p->hid, why, sizeof(why)) < 0)
+		logf_("input hid: profile %s: %s", p->name, why);
+	logf_("input %s: %s: profile %s", in->be->name, in->be->describe(in->dev), p->name);
+}
+
 static void add_input(struct app *a, const struct in_backend *be, const char *path, int quiet)
 {
 	char why[512] = "";
@@ -219,7 +245,11 @@ static void add_input(struct app *a, const struct in_backend *be, const char *pa
 	in = &a->in[a->nin++];
 	memset(in, 0, sizeof(*in));
 	in->be = be;
-	in->path = path;
+	if (path) {
+		/* the slot keeps its own copy: it is reopened by it */
+		snprintf(in->spec, sizeof(in->spec), "%s", path);
+		path = in->path = in->spec;
+	}
 	rc = be->open(path, &in->dev, why, sizeof(why));
 	if (rc < 0) {
 		/* Not there yet (an encoder plugged in after boot, a named
@@ -233,6 +263,22 @@ static void add_input(struct app *a, const struct in_backend *be, const char *pa
 		return;
 	}
 	logf_("input %s: %s", be->name, be->describe(in->dev));
+	identify(a, in);
+}
+
+/* Opens every device of a blank-separated list of specs. */
+static void add_inputs(struct app *a, const struct in_backend *be, const char *list)
+{
+	char buf[CFG_PATH_MAX], *save = NULL;
+
+	snprintf(buf, sizeof(buf), "%s", list);
+	for (char *tok = strtok_r(buf, " \t", &save); tok; tok = strtok_r(NULL, " \t", &save)) {
+		if (a->nin >= APP_MAX_IN) {
+			logf_("input %s: more than %d devices; %s ignored", be->name, APP_MAX_IN, tok);
+			return;
+		}
+		add_input(a, be, tok, 0);
+	}
 }
 
 static void open_inputs(struct app *a)
@@ -251,6 +297,14 @@ static void open_inputs(struct app *a)
 		add_input(a, &in_evdev, strcmp(ev, "auto") == 0 ? NULL : ev, 0);
 	if (a->dpb == &dp_term)
 		add_input(a, &in_tty, NULL, 0);
+	/* USB encoders and pads: auto opens the first joystick or gamepad
+	 * (retried quietly: it may be plugged in later). */
+	if (strcmp(a->cfg->input.hid, "auto") == 0)
+		add_input(a, &in_hid, NULL, 1);
+	else if (strcmp(a->cfg->input.hid, "none") != 0)
+		add_inputs(a, &in_hid, a->cfg->input.hid);
+	if (strcmp(a->cfg->input.gpio, "none") != 0)
+		add_inputs(a, &in_gpio, a->cfg->input.gpio);
 	if (a->nin == 0)
 		logf_("no input device configured: the game runs, but nothing controls it");
 }
@@ -264,7 +318,7 @@ static void drop_input(struct app *a, struct app_in *in)
 	for (int code = 0; code < APP_KEYS; code++) {
 		if (!(in->down[code / 8] & (1u << (code % 8))))
 			continue;
-		int n = bind_lookup(&a->binds, code, acts, ACT_COUNT);
+		int n = bind_lookup_dev(&a->binds, &in->id, code, acts, ACT_COUNT);
 		for (int i = 0; i < n; i++)
 			cmd_action(&a->cs, acts[i], 0);
 	}
@@ -292,7 +346,7 @@ static void key_event(struct app *a, struct app_in *in, const struct in_event *e
 		in->down[e->code / 8] |= bit;
 	else
 		in->down[e->code / 8] &= (uint8_t)~bit;
-	n = bind_lookup(&a->binds, e->code, acts, ACT_COUNT);
+	n = bind_lookup_dev(&a->binds, &in->id, e->code, acts, ACT_COUNT);
 	for (int i = 0; i < n; i++)
 		cmd_action(&a->cs, acts[i], down);
 	if (n > 0 && (a->pending_ns == 0 || e->time_ns < a->pending_ns))
@@ -318,6 +372,7 @@ static void read_inputs(struct app *a)
 				continue;
 			}
 			logf_("input %s: attached %s", in->be->name, in->be->describe(in->dev));
+			identify(a, in);
 		}
 		for (;;) {
 			int n = in->be->read(in->dev, ev, (int)(sizeof(ev) / sizeof(ev[0])));
@@ -333,6 +388,28 @@ static void read_inputs(struct app *a)
 			if (n < (int)(sizeof(ev) / sizeof(ev[0])))
 				break;
 		}
+	}
+}
+
+/* GPIO outputs follow the game each tick: a meter pulse per coin, the
+ * start lamp blinking while credits wait. */
+static void update_outputs(struct app *a)
+{
+	struct gpo_state gs = {
+		.coins_total = a->sim.coins_total,
+		.credits = a->sim.credits,
+		.playing = a->sim.mode != SIM_ATTRACT && a->sim.mode != SIM_GAMEOVER,
+	};
+	uint64_t now = 0;
+
+	for (int i = 0; i < a->nin; i++) {
+		struct app_in *in = &a->in[i];
+		if (in->be != &in_gpio || !in->dev)
+			continue;
+		if (!now)
+			now = in_now_ns();
+		if (in_gpio_update(in->dev, &gs, now) == -ENODEV)
+			drop_input(a, in);
 	}
 }
 
@@ -717,6 +794,14 @@ static int setup(struct app *a)
 		if (rc < 0)
 			logf_("%s: %s", a->o->bindings, strerror(-rc));
 	}
+	prof_init(&a->profs);
+	if (a->o->config_dir) {
+		/* the operator's profiles first: they win ties */
+		char path[CFG_PATH_MAX + 32];
+		snprintf(path, sizeof(path), "%s/profiles", a->o->config_dir);
+		prof_load_dir(&a->profs, path, report_cfg_error, NULL);
+	}
+	prof_load_dir(&a->profs, ARCADED_DATADIR "/profiles", report_cfg_error, NULL);
 	cmd_reset(&a->cs);
 	open_inputs(a);
 
@@ -889,6 +974,7 @@ static int loop(struct app *a)
 			break;
 		sim_tick(&a->sim, &rt.cmd);
 		demo_tick(&a->demo, &a->sim);
+		update_outputs(a);
 		a->ticks_run++;
 		persist_tick(a);
 

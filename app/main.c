@@ -9,7 +9,10 @@
 
 #include "app/app.h"
 #include "config/cfg.h"
+#include "config/prof.h"
 #include "config/st.h"
+#include "input/in_gpio.h"
+#include "input/in_hid.h"
 
 #define ARCADED_VERSION "0.1.0"
 #define MAX_SETS 64
@@ -18,6 +21,7 @@ static void usage(FILE *f)
 {
 	fputs("usage: arcaded [options]\n"
 	      "       arcaded replay FILE [options]   (same as --replay FILE)\n"
+	      "       arcaded devices                 (HID devices, GPIO chips, their profiles)\n"
 	      "Runs the arcade cabinet daemon: input, game, framebuffer.\n"
 	      "\n"
 	      "  --config-dir DIR   read DIR/*.ini in name order (default /etc/arcaded)\n"
@@ -49,6 +53,50 @@ static void usage(FILE *f)
 	      "\n"
 	      "SIGUSR1 prints frame-time and latency statistics; they are printed at exit too.\n",
 	      f);
+}
+
+/* `arcaded devices`: every HID device with its decoded report fields and
+ * the profile that would configure it, and every GPIO chip and line. */
+static int list_devices(const char *config_dir)
+{
+	struct in_hid_info *hid = NULL;
+	struct prof_set *profs = calloc(1, sizeof(*profs));
+	char path[CFG_PATH_MAX + 32], *gpio = NULL;
+	size_t n = 0;
+	int rc;
+
+	if (!profs)
+		return 2;
+	prof_init(profs);
+	snprintf(path, sizeof(path), "%s/profiles", config_dir);
+	prof_load_dir(profs, path, NULL, NULL);
+	prof_load_dir(profs, ARCADED_DATADIR "/profiles", NULL, NULL);
+	rc = in_hid_list(&hid, &n);
+	printf("HID devices (hidraw): %zu%s\n", n, rc < 0 ? " (listing failed)" : "");
+	for (size_t i = 0; i < n; i++) {
+		struct in_ident id = { .vid = hid[i].vid, .pid = hid[i].pid };
+		const struct prof *p;
+
+		snprintf(id.port, sizeof(id.port), "%s", hid[i].port);
+		snprintf(id.name, sizeof(id.name), "%s", hid[i].name);
+		p = prof_match(profs, "hid", &id);
+		printf("  %s  %04x:%04x  \"%s\"  port %s  serial %s\n    bindings section: "
+		       "[device \"usb-%s\"] or [device \"%04x:%04x\"]; profile: %s\n",
+		       hid[i].node, hid[i].vid, hid[i].pid, hid[i].name,
+		       hid[i].port[0] ? hid[i].port : "-", hid[i].serial[0] ? hid[i].serial : "-",
+		       hid[i].port[0] ? hid[i].port : "?", hid[i].vid, hid[i].pid,
+		       p ? p->name : "none");
+		if (hid[i].fields)
+			printf("%s", hid[i].fields);
+		else
+			printf("    fields: %s\n", hid[i].why);
+	}
+	in_hid_list_free(hid, n);
+	rc = in_gpio_list(&gpio);
+	printf("GPIO chips:%s\n%s", rc < 0 ? " (listing failed)" : "", gpio ? gpio : "");
+	free(gpio);
+	free(profs);
+	return 0;
 }
 
 static void report(void *user, const char *file, int line, const char *msg)
@@ -168,6 +216,8 @@ int main(int argc, char **argv)
 			snprintf(sets[nsets++], sizeof(sets[0]), "%s%s", prefix, optarg);
 		}
 	}
+	if (optind + 1 == argc && strcmp(argv[optind], "devices") == 0)
+		return list_devices(o.config_dir);
 	/* Subcommand form: `arcaded replay FILE [options]`. */
 	if (optind + 2 == argc && strcmp(argv[optind], "replay") == 0 && !o.replay) {
 		o.replay = argv[optind + 1];

@@ -83,6 +83,8 @@ static const struct cfg_key cfg_keys[] = {
 	CFG_INTKEY(game, lives, game.lives, 1, 9),
 	CFG_STRKEY(input, evdev, input.evdev, CFG_T_DEVICE),
 	CFG_STRKEY(input, bindings, input.bindings, CFG_T_STR),
+	CFG_STRKEY(input, hid, input.hid, CFG_T_STR),
+	CFG_STRKEY(input, gpio, input.gpio, CFG_T_STR),
 	CFG_STRKEY(paths, state_dir, paths.state_dir, CFG_T_STR),
 	CFG_INTKEY(recorder, keep, recorder.keep, 0, 1000),
 	CFG_INTKEY(recorder, max_mb, recorder.max_mb, 0, 1048576),
@@ -141,6 +143,8 @@ void cfg_defaults(struct cfg *c)
 	c->recorder.keep = 20;
 	c->recorder.max_mb = 64;
 	cfg_setstr(c->input.evdev, sizeof(c->input.evdev), "auto");
+	cfg_setstr(c->input.hid, sizeof(c->input.hid), "auto");
+	cfg_setstr(c->input.gpio, sizeof(c->input.gpio), "none");
 	/* systemd's StateDirectory= may list several directories, colon-separated:
 	 * arcaded's is the first. */
 	if (sdlen > 0 && sdlen < sizeof(c->paths.state_dir)) {

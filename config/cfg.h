@@ -40,6 +40,8 @@ struct cfg {
 	struct {
 		char evdev[CFG_PATH_MAX];    /* auto | none | /dev/input/eventN */
 		char bindings[CFG_PATH_MAX]; /* extra bindings file, "" none */
+		char hid[CFG_PATH_MAX];      /* auto | none | HID device specs, blank-separated */
+		char gpio[CFG_PATH_MAX];     /* none | a GPIO spec (docs/input.md) */
 	} input;
 	struct {
 		char state_dir[CFG_PATH_MAX]; /* $STATE_DIRECTORY or /var/lib/arcaded */
