@@ -16,6 +16,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "engine/hash.h"
+
 static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 
 /* Header sizes above this are refused as garbage rather than skipped. */
@@ -80,12 +82,13 @@ size_t rec_record_size(uint8_t hash_flags)
 size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 {
 	size_t size = h->version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE;
+	uint32_t snap = size == REC_HEADER_SIZE ? 0 : h->snapshot_len;
 
 	memset(out, 0, size);
 	memcpy(out, rec_magic, sizeof(rec_magic));
 	rec_put16(out + 8, h->version);
 	rec_put16(out + 10, h->tick_rate);
-	rec_put32(out + 12, (uint32_t)size);
+	rec_put32(out + 12, (uint32_t)size + snap);
 	rec_put64(out + 16, h->map_hash);
 	rec_put32(out + 24, h->engine_version);
 	out[28] = h->set.coins_per_credit;
@@ -103,6 +106,12 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 	rec_put32(out + 48, h->render_version);
 	memcpy(out + 56, h->map_name, strnlen(h->map_name, 8));
 	rec_put64(out + 64, (uint64_t)h->start_time);
+	if (snap) {
+		out[44] |= REC_HAS_SNAPSHOT;
+		rec_put32(out + 52, snap);
+		rec_put64(out + 72, h->snapshot ? hash_bytes(HASH_INIT, h->snapshot, snap)
+						: h->snapshot_sum);
+	}
 	return size;
 }
 
@@ -187,9 +196,23 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		memcpy(d.map_name, buf + 56, 8);
 		d.map_name[8] = '\0';
 		d.start_time = (int64_t)rec_get64(buf + 64);
-		if (d.hash_flags & ~(REC_HAS_STATE | REC_HAS_FRAME)) {
+		if (d.hash_flags & ~(REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_SNAPSHOT)) {
 			rec_msg(err, errlen, "hash flags 0x%02x unknown", d.hash_flags);
 			return -EINVAL;
+		}
+		if (d.hash_flags & REC_HAS_SNAPSHOT) {
+			d.snapshot_len = rec_get32(buf + 52);
+			d.snapshot_sum = rec_get64(buf + 72);
+			if (d.snapshot_len == 0) {
+				rec_msg(err, errlen, "snapshot of 0 bytes");
+				return -EINVAL;
+			}
+			if (d.snapshot_len > d.header_size - REC_HEADER_SIZE_V2) {
+				rec_msg(err, errlen,
+					"snapshot of %" PRIu32 " bytes does not fit in header size %" PRIu32,
+					d.snapshot_len, d.header_size);
+				return -EINVAL;
+			}
 		}
 		if (d.render_w > REC_RENDER_MAX || d.render_h > REC_RENDER_MAX ||
 		    (d.render_w == 0) != (d.render_h == 0)) {
@@ -296,6 +319,8 @@ int rec_writer_open(const char *path, const struct rec_header *h, struct rec_wri
 
 	if (hh.version < REC_VERSION_2)
 		hh.hash_flags = 0;
+	if (hh.snapshot_len && (hh.version < REC_VERSION_2 || !hh.snapshot))
+		return -EINVAL;
 	hh.count = REC_COUNT_UNKNOWN;
 	size = rec_header_encode(hdr, &hh);
 	/* Never write what the reader would refuse. */
@@ -304,7 +329,7 @@ int rec_writer_open(const char *path, const struct rec_header *h, struct rec_wri
 	w = calloc(1, sizeof(*w));
 	if (!w)
 		return -ENOMEM;
-	w->flags = hh.hash_flags;
+	w->flags = hh.hash_flags & (REC_HAS_STATE | REC_HAS_FRAME);
 	w->recsize = rec_record_size(hh.hash_flags);
 	w->fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
 	if (w->fd < 0) {
@@ -312,6 +337,8 @@ int rec_writer_open(const char *path, const struct rec_header *h, struct rec_wri
 		goto fail_free;
 	}
 	ret = rec_write_all(w->fd, hdr, size);
+	if (ret == 0 && hh.snapshot_len)
+		ret = rec_write_all(w->fd, hh.snapshot, hh.snapshot_len);
 	if (ret < 0)
 		goto fail_close;
 	*out = w;
@@ -395,6 +422,7 @@ int rec_writer_close(struct rec_writer *w)
 struct rec_reader {
 	int fd;
 	struct rec_header h;
+	uint8_t *snap;           /* the snapshot (h.snapshot), owned */
 	size_t recsize;
 	uint32_t total;          /* records next returns in all */
 	uint32_t pos;            /* records returned so far */
@@ -402,6 +430,52 @@ struct rec_reader {
 	size_t bn, bi;           /* bytes in buf, next byte */
 	uint8_t buf[REC_BUF];
 };
+
+/* Reads and checks the snapshot of r's header from the file of size
+ * `size`; 0 or -errno / -EINVAL with the reason in err. */
+static int rec_read_snapshot(struct rec_reader *r, const char *path, uint64_t size, char *err,
+			     size_t errlen)
+{
+	uint32_t len = r->h.snapshot_len;
+	uint64_t sum;
+	ssize_t got;
+
+	if (size < REC_HEADER_SIZE_V2 + (uint64_t)len) {
+		rec_msg(err, errlen, "%s: snapshot cut short (%" PRIu64 " of %" PRIu32 " bytes)",
+			path, size > REC_HEADER_SIZE_V2 ? size - REC_HEADER_SIZE_V2 : 0, len);
+		return -EINVAL;
+	}
+	r->snap = malloc(len);
+	if (!r->snap) {
+		rec_msg(err, errlen, "%s: out of memory", path);
+		return -ENOMEM;
+	}
+	if (lseek(r->fd, REC_HEADER_SIZE_V2, SEEK_SET) < 0) {
+		int e = errno;
+
+		rec_msg(err, errlen, "%s: %s", path, strerror(e));
+		return -e;
+	}
+	got = rec_read_all(r->fd, r->snap, len);
+	if (got < 0) {
+		rec_msg(err, errlen, "%s: %s", path, strerror((int)-got));
+		return (int)got;
+	}
+	if ((size_t)got < len) {
+		rec_msg(err, errlen, "%s: snapshot cut short (%zd of %" PRIu32 " bytes)", path, got,
+			len);
+		return -EINVAL;
+	}
+	sum = hash_bytes(HASH_INIT, r->snap, len);
+	if (sum != r->h.snapshot_sum) {
+		rec_msg(err, errlen,
+			"%s: snapshot damaged (checksum 0x%016" PRIx64 ", the header says 0x%016" PRIx64
+			")", path, sum, r->h.snapshot_sum);
+		return -EINVAL;
+	}
+	r->h.snapshot = r->snap;
+	return 0;
+}
 
 int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t errlen)
 {
@@ -440,6 +514,11 @@ int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t
 		rec_msg(err, errlen, "%s: %s", path, why);
 		goto fail_close;
 	}
+	if (r->h.snapshot_len) {
+		ret = rec_read_snapshot(r, path, (uint64_t)sb.st_size, err, errlen);
+		if (ret < 0)
+			goto fail_close;
+	}
 	if ((uint64_t)sb.st_size < r->h.header_size) {
 		ret = -EINVAL;
 		rec_msg(err, errlen, "%s: file too short (%jd bytes, the header says %" PRIu32 ")",
@@ -466,6 +545,7 @@ int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t
 	return 0;
 fail_close:
 	close(r->fd);
+	free(r->snap);
 fail_free:
 	free(r);
 	return ret;
@@ -534,6 +614,7 @@ void rec_reader_close(struct rec_reader *r)
 	if (!r)
 		return;
 	close(r->fd);
+	free(r->snap);
 	free(r);
 }
 

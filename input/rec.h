@@ -19,16 +19,21 @@
  *
  * Version 2 keeps bytes 0..39 and adds (header size REC_HEADER_SIZE_V2):
  *  40  2  render width    42 2 render height (0: unknown)
- *  44  1  hash flags: REC_HAS_STATE, REC_HAS_FRAME
+ *  44  1  flags: REC_HAS_STATE, REC_HAS_FRAME (the per-tick hashes),
+ *        REC_HAS_SNAPSHOT (the recording starts from a snapshot)
  *  45  1  built-in level number 1..99, 0 for a map loaded from a file
  *  46  2  reserved 0 (difficulty and lives are bytes 31 and 36, in every version)
  *  48  4  renderer version (REC_RENDER_VERSION: bumped when frames change)
- *  52  4  reserved 0
+ *  52  4  REC_HAS_SNAPSHOT: the snapshot's length in bytes; else reserved 0
  *  56  8  map name, NUL-padded ("MAP01"; empty for a built-in level)
  *  64  8  start time, seconds since 1970 (0: unknown; never read by replay)
- *  72  8  reserved 0
- *  80  ... bytes up to the header size: skipped (room for a later addition,
- *        e.g. a snapshot of the sim to start from instead of sim_init)
+ *  72  8  REC_HAS_SNAPSHOT: FNV-1a (engine/hash.h, from HASH_INIT) of the
+ *        snapshot's bytes; else reserved 0
+ *  80  ... REC_HAS_SNAPSHOT: the snapshot (sim_snapshot, engine/sim.h): the
+ *        sim state before the first record's tick, which a replay restores
+ *        (sim_init_stages, then sim_restore) instead of starting from
+ *        sim_init. The header size is 80 + its length.
+ *  ... bytes up to the header size: skipped (room for a later addition)
  *  then records: the command, then the state hash (8 bytes) if
  *        REC_HAS_STATE, then the frame hash (8 bytes) if REC_HAS_FRAME:
  *        sim_hash after the tick ran, and hash_frame of the frame rendered
@@ -42,6 +47,10 @@
  * -EIO. Bytes after the counted records, and a partial last record, are
  * ignored. A header larger than the version's size (a later minor
  * addition) is skipped.
+ *
+ * A build before snapshots refuses a recording with one ("hash flags 0x04
+ * unknown") rather than replaying it from the wrong start; this build
+ * reads every older file.
  */
 #ifndef ARCADED_INPUT_REC_H
 #define ARCADED_INPUT_REC_H
@@ -67,6 +76,7 @@
 #define REC_COUNT_UNKNOWN 0xffffffffu
 #define REC_HAS_STATE 0x01
 #define REC_HAS_FRAME 0x02
+#define REC_HAS_SNAPSHOT 0x04
 
 struct rec_header {
 	uint16_t version;
@@ -78,11 +88,20 @@ struct rec_header {
 	uint32_t count;            /* REC_COUNT_UNKNOWN while being written */
 	/* Version 2 only; 0 / "" when read from version 1. */
 	uint16_t render_w, render_h;
-	uint8_t hash_flags;        /* REC_HAS_STATE | REC_HAS_FRAME */
+	uint8_t hash_flags;        /* REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_SNAPSHOT */
 	uint8_t level;             /* built-in level, 0: a map from a file */
 	uint32_t render_version;
 	char map_name[9];
 	int64_t start_time;
+	/* Version 2: the sim state the recording starts from (sim_snapshot),
+	 * snapshot_len bytes; none when snapshot_len is 0. Writer: give both
+	 * (REC_HAS_SNAPSHOT follows from snapshot_len; the bytes are copied
+	 * out at open). Reader: snapshot points into the reader, valid until
+	 * rec_reader_close. rec_header_decode sees only the fixed header: it
+	 * fills snapshot_len and snapshot_sum, and leaves snapshot NULL. */
+	const uint8_t *snapshot;
+	uint32_t snapshot_len;
+	uint64_t snapshot_sum;     /* FNV-1a of the snapshot's bytes (encode computes it) */
 };
 
 /* One tick as stored: the command and, where the header's hash_flags say
@@ -96,15 +115,20 @@ struct rec_tick {
 size_t rec_record_size(uint8_t hash_flags);
 
 /* Writes h as the header of its version (h->version 1: 40 bytes, 2: 80
- * bytes; the header size field is that size whatever h->header_size says)
- * into out (REC_HEADER_MAX bytes); returns the size written. */
+ * bytes) into out (REC_HEADER_MAX bytes); returns the size written. The
+ * header size field is that size whatever h->header_size says, plus
+ * snapshot_len in version 2 (the snapshot's bytes follow the 80 written
+ * here; its checksum is computed from h->snapshot, or taken from
+ * h->snapshot_sum when snapshot is NULL). */
 size_t rec_header_encode(uint8_t *out, const struct rec_header *h);
 /* Parses and checks a header from len bytes: 0, or -EINVAL with the reason
  * in err ("file too short (12 bytes, the header needs 40)", "bad magic",
  * "version 7 is newer than this build (2)", "header size 8 is smaller than
  * 40", "tick rate 50 is not 60", "coins_per_credit 0 out of range 1..9",
  * "difficulty 4 out of range 0..3", "lives 10 out of range 0..9",
- * "hash flags 0x04 unknown", "render size 5000x240 out of range").
+ * "hash flags 0x08 unknown", "render size 5000x240 out of range",
+ * "snapshot of 0 bytes", "snapshot of 7000 bytes does not fit in header
+ * size 6700").
  * The map hash and engine version are not judged here: see rec_check. */
 int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char *err,
 		      size_t errlen);
@@ -113,9 +137,10 @@ void rec_cmd_decode(const uint8_t in[REC_CMD_SIZE], struct sim_cmd *c);
 
 struct rec_writer;
 /* Creates path (truncating, mode 0644, O_CLOEXEC) and writes the header of
- * h->version (1 or 2; hash flags only in version 2) with count
- * REC_COUNT_UNKNOWN. 0, -EINVAL for a header that could not be read back,
- * or -errno. */
+ * h->version (1 or 2; hash flags and a snapshot only in version 2) with
+ * count REC_COUNT_UNKNOWN, then the snapshot if h->snapshot_len. 0,
+ * -EINVAL for a header that could not be read back (or a snapshot_len
+ * without snapshot bytes, or in version 1), or -errno. */
 int rec_writer_open(const char *path, const struct rec_header *h, struct rec_writer **out);
 /* Appends one command (buffered: written when about 4 KiB are pending, on
  * rec_writer_flush and on close). 0 or -errno; -EFBIG after 2^32-2
@@ -140,7 +165,11 @@ int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen);
 
 struct rec_reader;
 /* Opens and checks a recording; 0 or -errno / -EINVAL with reason in err
- * ("FILE: bad magic", "FILE: version 7 is newer than this build (2)"). */
+ * ("FILE: bad magic", "FILE: version 7 is newer than this build (2)").
+ * A snapshot is read and checked at open ("FILE: snapshot cut short (100
+ * of 6620 bytes)", "FILE: snapshot damaged (checksum 0x..., the header
+ * says 0x...)"); rec_reader_header(r)->snapshot then holds it. Whether
+ * it suits this build and content is sim_restore's to say. */
 int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t errlen);
 const struct rec_header *rec_reader_header(const struct rec_reader *r);
 /* How many records rec_reader_next returns in all. */

@@ -1,6 +1,8 @@
-/* libFuzzer target: the recording format (input/rec.c), versions 1 and 2.
- * The input is written to a file and read back through the real reader;
- * every record read must re-encode to the bytes it came from. */
+/* libFuzzer target: the recording format (input/rec.c), versions 1 and 2,
+ * with and without a start snapshot. The input is written to a file and
+ * read back through the real reader; every record read must re-encode to
+ * the bytes it came from, and a snapshot the reader accepts must be the
+ * bytes after the 80-byte header. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,6 +38,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t len)
 
 		off = rh->header_size;
 		rs = rec_record_size(rh->hash_flags);
+		if (rh->snapshot_len &&
+		    (!rh->snapshot || (size_t)REC_HEADER_SIZE_V2 + rh->snapshot_len > len ||
+		     memcmp(rh->snapshot, data + REC_HEADER_SIZE_V2, rh->snapshot_len) != 0))
+			abort();
 		rec_run_from_header(rh, &run);
 		rec_verify_init(&v, rh, &run);
 		while (rec_reader_next_tick(r, &t) == 1) {

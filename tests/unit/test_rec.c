@@ -531,8 +531,11 @@ static void test_v2_header_errors(void **state)
 	char err[128];
 
 	(void)state;
+	assert_int_equal(decode_v2_patched(44, 0x08, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "hash flags 0x08 unknown");
+	/* the snapshot flag needs a snapshot length (bytes 52..55) */
 	assert_int_equal(decode_v2_patched(44, 0x04, err, sizeof(err)), -EINVAL);
-	assert_string_equal(err, "hash flags 0x04 unknown");
+	assert_string_equal(err, "snapshot of 0 bytes");
 	assert_int_equal(decode_v2_patched(41, 0x20, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "render size 8256x240 out of range");
 	{
@@ -842,6 +845,191 @@ static void test_repair_finishes_a_cut_recording_only(void **state)
 	assert_int_equal(rec_repair(path, &count, err, sizeof(err)), -ENOENT);
 }
 
+/* ---- version 2 with a start snapshot --------------------------------- */
+
+#define SNAP_LEN 6620u                  /* as big as a sim snapshot */
+
+static uint8_t snap_byte(uint32_t i)
+{
+	return (uint8_t)(i * 7 + (i >> 8));
+}
+
+static void write_snap(const char *path, uint8_t flags, uint32_t n)
+{
+	static uint8_t snap[SNAP_LEN];
+	struct rec_header h = sample_header_v2();
+	struct rec_writer *w;
+
+	for (uint32_t i = 0; i < SNAP_LEN; i++)
+		snap[i] = snap_byte(i);
+	h.hash_flags = flags;
+	h.snapshot = snap;
+	h.snapshot_len = SNAP_LEN;
+	assert_int_equal(rec_writer_open(path, &h, &w), 0);
+	for (uint32_t i = 0; i < n; i++) {
+		struct rec_tick t = { .cmd = nth_cmd(i), .state_hash = nth_state(i),
+				      .frame_hash = nth_frame(i) };
+
+		assert_int_equal(rec_writer_put_tick(w, &t), 0);
+	}
+	assert_int_equal(rec_writer_close(w), 0);
+}
+
+static void check_snap(const char *path)
+{
+	const struct rec_header *h;
+	struct rec_reader *r;
+	char err[256];
+
+	assert_int_equal(rec_reader_open(path, &r, err, sizeof(err)), 0);
+	h = rec_reader_header(r);
+	assert_true(h->hash_flags & REC_HAS_SNAPSHOT);
+	assert_int_equal(h->header_size, 80 + SNAP_LEN);
+	assert_int_equal(h->snapshot_len, SNAP_LEN);
+	assert_non_null(h->snapshot);
+	for (uint32_t i = 0; i < SNAP_LEN; i++)
+		if (h->snapshot[i] != snap_byte(i))
+			fail_msg("snapshot byte %u", i);
+	rec_reader_close(r);
+}
+
+/* The snapshot's header fields, by hand: header size 80 + 5, flag 0x04,
+ * length 5 at 52, FNV-1a of "ABCDE" at 72 (0x65f9a54a4f1d65c8, computed
+ * apart from engine/hash.c). */
+static void test_snapshot_header_encode_is_byte_exact(void **state)
+{
+	struct rec_header h = sample_header_v2(), d;
+	uint8_t out[REC_HEADER_MAX], want[REC_HEADER_SIZE_V2];
+	char err[128];
+
+	(void)state;
+	memcpy(want, sample_bytes_v2, sizeof(want));
+	want[12] = 85;
+	want[44] = 0x07;
+	want[52] = 5;
+	memcpy(want + 72, "\xc8\x65\x1d\x4f\x4a\xa5\xf9\x65", 8);
+	h.snapshot = (const uint8_t *)"ABCDE";
+	h.snapshot_len = 5;
+	assert_int_equal(rec_header_encode(out, &h), REC_HEADER_SIZE_V2);
+	assert_memory_equal(out, want, sizeof(want));
+	assert_int_equal(rec_header_decode(out, REC_HEADER_SIZE_V2, &d, err, sizeof(err)), 0);
+	assert_int_equal(d.header_size, 85);
+	assert_int_equal(d.hash_flags, 0x07);
+	assert_int_equal(d.snapshot_len, 5);
+	assert_true(d.snapshot_sum == 0x65f9a54a4f1d65c8ull);
+	assert_null(d.snapshot);
+	/* a length past the header size */
+	want[52] = 6;
+	assert_int_equal(rec_header_decode(want, sizeof(want), &d, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "snapshot of 6 bytes does not fit in header size 85");
+	/* a recording without one decodes none */
+	assert_int_equal(rec_header_decode(sample_bytes_v2, sizeof(sample_bytes_v2), &d, err,
+					   sizeof(err)), 0);
+	assert_int_equal(d.snapshot_len, 0);
+	assert_null(d.snapshot);
+}
+
+static void test_snapshot_round_trip(void **state)
+{
+	char path[128];
+	struct stat sb;
+
+	(void)state;
+	tmp_path(path, sizeof(path), "snap.rec");
+	for (uint8_t flags = 0; flags < 4; flags++) {
+		write_snap(path, flags, 700);
+		assert_int_equal(stat(path, &sb), 0);
+		assert_int_equal(sb.st_size, 80 + SNAP_LEN + 700 * rec_record_size(flags));
+		check_snap(path);
+		/* the records after it are what was written */
+		assert_int_equal(replay_v2(path, flags, 700), 0);
+	}
+	/* no records at all: the snapshot alone */
+	write_snap(path, 0, 0);
+	check_snap(path);
+	assert_int_equal(replay_v2(path, 0, 0), 0);
+}
+
+static void test_snapshot_cut_or_damaged_is_refused(void **state)
+{
+	static uint8_t buf[80 + SNAP_LEN + 10 * 22];
+	struct rec_reader *r;
+	char path[128], err[256], want[256];
+
+	(void)state;
+	tmp_path(path, sizeof(path), "snapcut.rec");
+	write_snap(path, 3, 10);
+	assert_int_equal(read_bytes(path, buf, sizeof(buf)), sizeof(buf));
+	/* cut inside the snapshot (as a power cut while the header was written) */
+	write_bytes(path, buf, 80 + 100);
+	assert_int_equal(rec_reader_open(path, &r, err, sizeof(err)), -EINVAL);
+	snprintf(want, sizeof(want), "%s: snapshot cut short (100 of 6620 bytes)", path);
+	assert_string_equal(err, want);
+	write_bytes(path, buf, 80);
+	assert_int_equal(rec_reader_open(path, &r, err, sizeof(err)), -EINVAL);
+	snprintf(want, sizeof(want), "%s: snapshot cut short (0 of 6620 bytes)", path);
+	assert_string_equal(err, want);
+	/* one byte changed inside it */
+	buf[80 + 3000] ^= 0x40;
+	write_bytes(path, buf, sizeof(buf));
+	assert_int_equal(rec_reader_open(path, &r, err, sizeof(err)), -EINVAL);
+	snprintf(want, sizeof(want), "%s: snapshot damaged (checksum 0x", path);
+	assert_memory_equal(err, want, strlen(want));
+	assert_non_null(strstr(err, ", the header says 0x"));
+	/* whole again: reads */
+	buf[80 + 3000] ^= 0x40;
+	write_bytes(path, buf, sizeof(buf));
+	check_snap(path);
+}
+
+static void test_snapshot_writer_refuses_what_it_cannot_write(void **state)
+{
+	struct rec_header h = sample_header_v2();
+	struct rec_writer *w;
+	char path[128];
+
+	(void)state;
+	tmp_path(path, sizeof(path), "snapw.rec");
+	h.snapshot_len = 10;                    /* no bytes */
+	assert_int_equal(rec_writer_open(path, &h, &w), -EINVAL);
+	h.snapshot = (const uint8_t *)"0123456789";
+	h.version = 1;                          /* version 1 has no room for it */
+	assert_int_equal(rec_writer_open(path, &h, &w), -EINVAL);
+	h.version = 2;
+	h.snapshot_len = 0;
+	h.hash_flags = REC_HAS_SNAPSHOT;        /* the flag without a snapshot */
+	assert_int_equal(rec_writer_open(path, &h, &w), -EINVAL);
+	h.hash_flags = 0;
+	h.snapshot_len = 10;
+	assert_int_equal(rec_writer_open(path, &h, &w), 0);
+	/* plain commands are fine: the snapshot is not a per-tick hash */
+	{
+		struct sim_cmd c = nth_cmd(3);
+
+		assert_int_equal(rec_writer_put(w, &c), 0);
+	}
+	assert_int_equal(rec_writer_close(w), 0);
+}
+
+/* A game cut by a power cut is repaired with its snapshot kept. */
+static void test_snapshot_recording_is_repaired_after_a_cut(void **state)
+{
+	static uint8_t buf[80 + SNAP_LEN + 50 * 22];
+	char path[128], err[256];
+	uint32_t count = 0;
+
+	(void)state;
+	tmp_path(path, sizeof(path), "snaprep.rec");
+	write_snap(path, 3, 50);
+	assert_int_equal(read_bytes(path, buf, sizeof(buf)), sizeof(buf));
+	memcpy(buf + 32, "\xff\xff\xff\xff", 4);
+	write_bytes(path, buf, 80 + SNAP_LEN + 20 * 22 + 21);
+	assert_int_equal(rec_repair(path, &count, err, sizeof(err)), 0);
+	assert_int_equal(count, 20);
+	check_snap(path);
+	assert_int_equal(replay_v2(path, 3, 20), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -867,6 +1055,11 @@ int main(void)
 		cmocka_unit_test(test_verify_finds_the_first_difference),
 		cmocka_unit_test(test_verify_says_why_frames_are_not_compared),
 		cmocka_unit_test(test_repair_finishes_a_cut_recording_only),
+		cmocka_unit_test(test_snapshot_header_encode_is_byte_exact),
+		cmocka_unit_test(test_snapshot_round_trip),
+		cmocka_unit_test(test_snapshot_cut_or_damaged_is_refused),
+		cmocka_unit_test(test_snapshot_writer_refuses_what_it_cannot_write),
+		cmocka_unit_test(test_snapshot_recording_is_repaired_after_a_cut),
 	};
 
 	return cmocka_run_group_tests(tests, setup, teardown);
