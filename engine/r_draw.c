@@ -17,6 +17,16 @@
 
 #include "engine/r_local.h"
 
+/* Surface ids of rows y1..y2 of column x (r_set_idbuf): kept out of the
+ * pixel loops, which are the same with and without an id buffer. */
+static void r_ids_col(const struct r_ctx *r, int x, int y1, int y2, uint32_t id)
+{
+	uint32_t *d = r->ids + (size_t)y1 * (size_t)r->w + (size_t)x;
+
+	for (int y = y1; y <= y2; y++, d += r->w)
+		*d = id;
+}
+
 /* Rows from p down, n of them, texel rows frac >> 16 & mask stepping by
  * step: a power-of-two height divides 2^16, so the 16.16 position wraps
  * by itself. Returns the position after the last row. */
@@ -67,6 +77,8 @@ void r_draw_run(const struct r_ctx *r, struct r_strip *s, struct r_col *c, int y
 	assert(c->x >= s->x0 && c->x <= s->x1 && c->y1 >= 0 && y2 <= c->y2 && y2 < r->h);
 	p = r->px + (size_t)c->y1 * pitch + (size_t)c->x;
 	s->written += (uint32_t)n;
+	if (r->ids)
+		r_ids_col(r, c->x, c->y1, y2, c->id);
 	c->y1 = (int16_t)(y2 + 1);
 	if (!c->src) {
 		uint8_t v = c->colour;
@@ -111,6 +123,9 @@ void r_draw_span(const struct r_ctx *r, struct r_strip *s, const struct r_span *
 	p = r->px + (size_t)sp->y * (size_t)r->pitch + (size_t)x1;
 	n = x2 - x1 + 1;
 	s->written += (uint32_t)n;
+	if (r->ids)
+		for (int i = 0; i < n; i++)
+			r->ids[(size_t)sp->y * (size_t)r->w + (size_t)(x1 + i)] = sp->id;
 	/* texel (row yf >> 26, column xf >> 26) of the row-major 64x64 flat */
 	for (; n >= 4; n -= 4) {
 		uint32_t xf1 = xf + xs, yf1 = yf + ys;
@@ -134,7 +149,7 @@ void r_draw_span(const struct r_ctx *r, struct r_strip *s, const struct r_span *
 
 void r_draw_masked(const struct r_ctx *r, struct r_strip *s, int x, int y1, int y2,
 		   const uint8_t *col, const uint8_t *op, const uint8_t *cm, uint32_t frac,
-		   uint32_t step)
+		   uint32_t step, uint32_t id)
 {
 	size_t pitch = (size_t)r->pitch;
 	uint8_t *p;
@@ -144,6 +159,13 @@ void r_draw_masked(const struct r_ctx *r, struct r_strip *s, int x, int y1, int 
 		return;
 	assert(x >= s->x0 && x <= s->x1 && y1 >= 0 && y2 < r->h);
 	p = r->px + (size_t)y1 * pitch + (size_t)x;
+	if (r->ids) {
+		uint32_t *d = r->ids + (size_t)y1 * (size_t)r->w + (size_t)x, f = frac;
+
+		for (int y = y1; y <= y2; y++, d += r->w, f += step)
+			if (!op || op[f >> 16])
+				*d = id;
+	}
 	if (!op) {
 		for (int y = y1; y <= y2; y++, p += pitch, frac += step)
 			*p = cm[col[frac >> 16]];
@@ -176,5 +198,7 @@ void r_draw_finish(const struct r_ctx *r, struct r_strip *s)
 			*p = r->black;
 		s->written += (uint32_t)(y2 - y1 + 1);
 		s->empty += (uint32_t)(y2 - y1 + 1);
+		if (r->ids)
+			r_ids_col(r, x, y1, y2, r_id(R_IDK_NONE, 0));
 	}
 }

@@ -124,6 +124,7 @@ struct r_plane {
 	const struct lmap_grid *lg;    /* the sector's light map, or NULL */
 	uint16_t pic;                   /* flat number as the sector stores it */
 	uint8_t light, sky;
+	uint32_t sector;                /* the sector it was made for (surface ids) */
 	int minx, maxx;
 	int next;                       /* hash chain (most recent first), -1 ends */
 	uint16_t *top, *bot;            /* R_EMPTY: no rows in that column */
@@ -175,6 +176,7 @@ struct r_col {
 	int32_t h;
 	int16_t x, y1, y2;
 	uint8_t colour;
+	uint32_t id;                    /* surface id (r_set_idbuf) */
 };
 
 /* A span of a flat recorded by the walk: row y, columns x1..x2, the flat's
@@ -183,6 +185,7 @@ struct r_span {
 	const uint8_t *flat, *cm;
 	uint32_t xf, yf, xs, ys;
 	int16_t y, x1, x2;
+	uint32_t id;                    /* surface id (r_set_idbuf) */
 };
 
 /* One strip: columns x0..x1, its recorded runs and spans, scratch, and the
@@ -279,6 +282,8 @@ struct r_ctx {
 	int64_t cy32;                   /* horizon, 32.32 pixels */
 	uint32_t front;                 /* sector of the subsector being drawn */
 	const struct lmap *lm;          /* point-light maps, NULL: none */
+	uint32_t *ids;                  /* surface ids (r_set_idbuf), or NULL */
+	uint32_t id;                    /* the walk's: what r_rec_* record */
 	struct r_stats st;
 };
 
@@ -374,7 +379,8 @@ void r_strip_reset(struct r_ctx *r);
  * requires frac, step < h << 16; through colormap cm. */
 void r_rec_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col, int h,
 	       const uint8_t *cm, uint32_t frac, uint32_t step);
-/* Rows y1..y2 of column x in one colour. */
+/* Rows y1..y2 of column x in one colour. Every r_rec_* records ctx.id as
+ * the run's surface id. */
 void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour);
 /* A span of a flat: row y, columns x1..x2; flat position (6.26 texels in x
  * and y, wrapping at 64) xf, yf at x1's centre, plus xs, ys per pixel. */
@@ -385,7 +391,9 @@ void r_rec_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat, con
 void r_strip_draw_all(struct r_ctx *r);
 
 /* r_draw.c: the only writers of frame pixels; s is the strip drawn, every
- * write stays inside its columns. */
+ * write stays inside its columns. With an id buffer each also writes the
+ * surface id of every pixel it writes (the run's or span's, id for a masked
+ * column, 0 for the black fill). */
 /* Rows c->y1..y2 of run c (y2 <= c->y2); then c->y1 is y2 + 1 and c->frac
  * the position there. Counted in written. */
 void r_draw_run(const struct r_ctx *r, struct r_strip *s, struct r_col *c, int y2);
@@ -397,7 +405,7 @@ void r_draw_span(const struct r_ctx *r, struct r_strip *s, const struct r_span *
  * within the column. Counted in masked. */
 void r_draw_masked(const struct r_ctx *r, struct r_strip *s, int x, int y1, int y2,
 		   const uint8_t *col, const uint8_t *op, const uint8_t *cm, uint32_t frac,
-		   uint32_t step);
+		   uint32_t step, uint32_t id);
 /* Fills every still unwritten pixel of the strip with black (counted in
  * written and empty). */
 void r_draw_finish(const struct r_ctx *r, struct r_strip *s);

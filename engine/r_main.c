@@ -456,6 +456,11 @@ void r_set_lmap(struct r_ctx *r, const struct lmap *lm)
 }
 
 
+void r_set_idbuf(struct r_ctx *r, uint32_t *ids)
+{
+	r->ids = ids;
+}
+
 void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	      const struct r_view *v, const struct r_sprite *spr, int nspr, struct r_frame *f)
 {

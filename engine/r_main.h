@@ -26,6 +26,7 @@
 #include <stdint.h>
 
 #include "engine/fx.h"
+#include "engine/r_id.h"
 
 struct lmap;
 struct map;
@@ -126,6 +127,14 @@ int r_set_par(struct r_ctx *r, const struct r_par *par);
  * its use. A texel's boost subtracts from the colormap level of walls,
  * floors and ceilings (not the sky, masked middles or sprites). */
 void r_set_lmap(struct r_ctx *r, const struct lmap *lm);
+
+/* Surface-id buffer (engine/r_id.h) for the next frames, NULL for none
+ * (the default): borrowed, w*h entries, row stride w. r_render then writes,
+ * with every pixel it writes to the frame, the id of the surface drawn
+ * there (the last writer's: a sprite or masked texel over a wall gives the
+ * sprite's or the masked texture's). The frame's bytes are the same with
+ * and without it; without it the only cost is one test per run drawn. */
+void r_set_idbuf(struct r_ctx *r, uint32_t *ids);
 
 /* Counters of the last r_render. */
 void r_get_stats(const struct r_ctx *r, struct r_stats *st);

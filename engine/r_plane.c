@@ -83,6 +83,8 @@ static int r_plane_new(struct r_ctx *r, fx_t height, uint16_t pic, int light, in
 	p->pic = pic;
 	p->light = (uint8_t)light;
 	p->sky = (uint8_t)sky;
+	/* for surface ids; r_plane_check copies a key for the same subsector */
+	p->sector = r->front;
 	p->minx = r->w;
 	p->maxx = -1;
 	/* R_EMPTY in every column; bot is only read where top is set */
@@ -269,6 +271,8 @@ static void r_plane_spans(struct r_ctx *r, struct r_plane *p)
 	ps.lg = p->lg;
 	ps.base = r_light_base(p->light);
 	ps.q = r_plane_q(r, ps.hgt);
+	/* only floors are below the eye, only ceilings above (r_bsp.c) */
+	r->id = r_id(p->height < r->ez ? R_IDK_FLOOR : R_IDK_CEIL, p->sector);
 	/* column minx - 1 is empty; one step past maxx (empty) closes all */
 	for (int x = p->minx; x <= p->maxx + 1; x++) {
 		int t = x <= p->maxx ? p->top[x] : R_EMPTY;
@@ -294,6 +298,7 @@ static void r_plane_sky(struct r_ctx *r, const struct r_plane *p)
 		r->st.missing++;
 		sky = &r->fb_pic;
 	}
+	r->id = r_id(R_IDK_SKY, 0);
 	hf = (int64_t)sky->h << 16;
 	step = ((int64_t)R_SKY_COLS << 16) / r->w;
 	for (int x = p->minx; x <= p->maxx; x++) {

@@ -76,6 +76,7 @@ struct r_wall {
 	int64_t xoff;                   /* the side's x offset, 16.16 */
 	const struct lmap_grid *lg;     /* the side's light map, or NULL */
 	uint64_t len;                   /* seg length, 16.16 */
+	uint32_t lside;                 /* line * 2 + side: surface ids */
 };
 
 /* Texture column of integer u for a width w texture (any width). */
@@ -157,6 +158,7 @@ static void r_plane_rows(struct r_ctx *r, int p, int x, int y1, int y2)
 	if (y2 < y1)
 		return;
 	if (p < 0) {
+		r->id = r_id(R_IDK_BACK, r->front);
 		r_rec_fill(r, x, y1, y2, r->black);
 		return;
 	}
@@ -219,6 +221,7 @@ static void r_column(struct r_ctx *r, const struct r_wall *w, int x, int16_t *mc
 	if (markf)
 		r_plane_rows(r, r->floorplane, x, b + 1, bot);
 	if (!w->two_sided) {
+		r->id = r_id(R_IDK_MIDDLE, w->lside);
 		if (w->mid)
 			r_part(r, w, x, a, b, w->mid, u, w->tm_mid, iscale, lvl, s16, lc);
 		else
@@ -234,6 +237,7 @@ static void r_column(struct r_ctx *r, const struct r_wall *w, int x, int16_t *mc
 	if (w->upper) {
 		m = r_edge_row(r, w->hbc, s16, a, b + 1) - 1;
 		if (w->top) {
+			r->id = r_id(R_IDK_UPPER, w->lside);
 			r_part(r, w, x, a, m, w->top, u, w->tm_top, iscale, lvl, s16, lc);
 			newtop = m;
 		}
@@ -242,6 +246,7 @@ static void r_column(struct r_ctx *r, const struct r_wall *w, int x, int16_t *mc
 	if (w->lower) {
 		k = r_edge_row(r, w->hbf, s16, m + 1, b + 1);
 		if (w->bot) {
+			r->id = r_id(R_IDK_LOWER, w->lside);
 			r_part(r, w, x, k, b, w->bot, u, w->tm_bot, iscale, lvl, s16, lc);
 			newbot = k;
 		}
@@ -269,6 +274,7 @@ static void r_wall_surfaces(struct r_ctx *r, const struct map_seg *sg, struct r_
 		light -= R_CONTRAST;
 	w->wall_base = r_light_base(light);
 	w->lg = lmap_wall_grid(r->lm, sg->line, sg->side);
+	w->lside = sg->line * 2 + sg->side;
 	w->xoff = sd->xoff;
 	w->hfc = (int64_t)fs->ceil_h - r->ez;
 	w->hff = (int64_t)fs->floor_h - r->ez;

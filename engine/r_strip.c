@@ -149,6 +149,7 @@ void r_rec_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col, int h
 	c->y1 = (int16_t)y1;
 	c->y2 = (int16_t)y2;
 	c->colour = 0;
+	c->id = r->id;
 	if (c == &now)
 		r_rec_now(r, c);
 }
@@ -170,6 +171,7 @@ void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour)
 	c->y1 = (int16_t)y1;
 	c->y2 = (int16_t)y2;
 	c->colour = colour;
+	c->id = r->id;
 	if (c == &now)
 		r_rec_now(r, c);
 }
@@ -177,7 +179,7 @@ void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour)
 void r_rec_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat, const uint8_t *cm,
 		uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys)
 {
-	struct r_span sp = { flat, cm, xf, yf, xs, ys, (int16_t)y, (int16_t)x1, (int16_t)x2 };
+	struct r_span sp = { flat, cm, xf, yf, xs, ys, (int16_t)y, (int16_t)x1, (int16_t)x2, r->id };
 	int32_t at = r->nspans;
 
 	if (x2 < x1)

@@ -45,7 +45,7 @@ static fx_t r_clamp(fx_t v)
  * per pixel) exists: no wrapping. */
 static void r_masked_col(const struct r_ctx *r, struct r_strip *s, int x, int y1, int y2,
 			 const uint8_t *col, const uint8_t *op, int h, int64_t tm, int64_t iscale,
-			 const uint8_t *cm)
+			 const uint8_t *cm, uint32_t id)
 {
 	int64_t hf = (int64_t)h << 16, v, last;
 
@@ -72,7 +72,7 @@ static void r_masked_col(const struct r_ctx *r, struct r_strip *s, int x, int y1
 		y2 = (int)last;
 	/* more than one row only when iscale < hf < 2^31 */
 	r_draw_masked(r, s, x, y1, y2, col, op, cm, (uint32_t)v,
-		      (uint32_t)(y2 > y1 ? iscale : 0));
+		      (uint32_t)(y2 > y1 ? iscale : 0), id);
 }
 
 /* Clip value of a drawseg reference at column x; def for R_CLIP_ALL. */
@@ -86,6 +86,8 @@ static int r_clip_at(const struct r_ctx *r, const struct r_dseg *ds, int32_t ref
 static void r_masked_range(struct r_ctx *r, struct r_strip *st, struct r_dseg *ds, int x1, int x2)
 {
 	const struct tex_pic *p = ds->mid;
+	const struct map_seg *sg = &r->map->segs[ds->seg];
+	uint32_t id = r_id(R_IDK_MASKED, sg->line * 2 + sg->side);
 
 	if (x1 < st->x0)
 		x1 = st->x0;
@@ -103,7 +105,7 @@ static void r_masked_range(struct r_ctx *r, struct r_strip *st, struct r_dseg *d
 		r_masked_col(r, st, x, r_clip_at(r, ds, ds->topclip, x, r->h) + 1,
 			     r_clip_at(r, ds, ds->botclip, x, -1) - 1, p->px + off,
 			     p->opaque ? p->opaque + off : NULL, p->h, ds->mid_tmid,
-			     ((int64_t)1 << 48) / s, r->cmap[r_scale_level(r, ds->light_base, s)]);
+			     ((int64_t)1 << 48) / s, r->cmap[r_scale_level(r, ds->light_base, s)], id);
 		*mc = R_MASK_DONE;
 	}
 }
@@ -254,7 +256,7 @@ static void r_draw_vis(struct r_ctx *r, struct r_strip *s, const struct r_vis *v
 		off = (size_t)u * (size_t)p->h;
 		r_masked_col(r, s, x, ct[x] + 1, cb[x] - 1,
 			     p->px + off, p->opaque ? p->opaque + off : NULL, p->h, vs->tmid,
-			     vs->iscale, cm);
+			     vs->iscale, cm, r_id(R_IDK_SPRITE, (uint32_t)vs->order));
 	}
 }
 
