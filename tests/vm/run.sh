@@ -8,6 +8,8 @@
 #           and device policy, watchdog restart, SIGTERM; then the unit
 #           tests that need real devices (uinput, fbdev, uhid, gpio-sim);
 #   fb16    vesafb, 16 bpp RGB565 (vga=0x317): screen = the daemon's frame;
+#           a USB keyboard (HID gadget on dummy_hcd) unplugged and replugged
+#           20 times with a key held;
 #   latefb  the framebuffer driver loads only after the daemon started: the
 #           daemon must still draw on it;
 #   units   only the device unit tests (quicker, to debug them).
@@ -308,6 +310,9 @@ judge() {
 	[ -e "$res/attract-1.ppm" ] && screen screen-compare-rejects-attract \
 		sh -c '! "$1" match "$2" "$3" "$4"' sh "$H" "$ref" "$res/attract-1.ppm" "$bpp"
 	[ -e "$res/play-moved.ppm" ] && screen input-changes-screen "$H" differ "$res/play-start.ppm" "$res/play-moved.ppm"
+	[ -e "$res/hp-turned.ppm" ] && screen usb-keyboard-changes-screen "$H" differ "$res/hp-before.ppm" "$res/hp-turned.ppm"
+	[ -e "$res/hp-still-2.ppm" ] && screen hotplug-no-stuck-input \
+		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/hp-still-1.ppm" "$res/hp-still-2.ppm"
 	[ -e "$res/after-stop.ppm" ] && screen sigterm-console-shows-text "$H" text "$res/after-stop.ppm"
 	[ -e "$res/late-screen.ppm" ] && screen late-fb-picture "$H" picture "$res/late-screen.ppm" "$render_w" "$render_h"
 	if [ -e "$res/wd-attract-1.ppm" ]; then

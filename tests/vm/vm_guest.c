@@ -25,6 +25,15 @@
  *   vm_guest waitfd PID PATH SECONDS
  *                           wait until process PID has PATH open; prints
  *                           how long it took; exit 1 on timeout
+ *   vm_guest waitdev PID NAME SECONDS
+ *                           wait until an input device whose name contains
+ *                           NAME exists and process PID has its event node
+ *                           open; prints the node and how long it took;
+ *                           exit 1 on timeout
+ *   vm_guest hidwrite PATH HEX
+ *                           write the bytes HEX (pairs of hex digits, blanks
+ *                           allowed) to PATH in one write(): a report to a
+ *                           gadget's /dev/hidgN, a descriptor to configfs
  *   vm_guest books FILE     check a bookkeeping state file written by the
  *                           daemon (docs/persistence.md): magic "ARCDSTA",
  *                           version 1, header size 24, payload length 28,
@@ -62,7 +71,8 @@ static int usage(void)
 {
 	fputs("usage: vm_guest kbd FIFO | kdmode TTY | open PATH r|w|rw |\n"
 	      "       probe CGROUP USER PATH:MODE:WANT... | waitfd PID PATH SECONDS |\n"
-	      "       books FILE | fbinfo DEV | now\n",
+	      "       waitdev PID NAME SECONDS |\n"
+	      "       hidwrite PATH HEX | books FILE | fbinfo DEV | now\n",
 	      stderr);
 	return 2;
 }
@@ -320,6 +330,51 @@ static int holds(const char *pid, const char *path)
 	return found;
 }
 
+/* The event node of the first input device whose name contains name. */
+static int find_input(const char *name, char *node, size_t len)
+{
+	DIR *d = opendir("/sys/class/input");
+	struct dirent *de;
+	int found = 0;
+
+	if (!d)
+		return 0;
+	while (!found && (de = readdir(d)) != NULL) {
+		char path[PATH_MAX], text[256];
+		FILE *f;
+
+		if (strncmp(de->d_name, "event", 5) != 0)
+			continue;
+		snprintf(path, sizeof(path), "/sys/class/input/%s/device/name", de->d_name);
+		f = fopen(path, "re");
+		if (!f)
+			continue;
+		if (fgets(text, sizeof(text), f) && strstr(text, name)) {
+			snprintf(node, len, "/dev/input/%s", de->d_name);
+			found = 1;
+		}
+		fclose(f);
+	}
+	closedir(d);
+	return found;
+}
+
+static int cmd_waitdev(const char *pid, const char *name, const char *secs)
+{
+	double t0 = mono(), limit = atof(secs);
+	char node[PATH_MAX];
+
+	while (!find_input(name, node, sizeof(node)) || !holds(pid, node)) {
+		if (mono() - t0 > limit) {
+			printf("none %.2f (timeout)\n", mono() - t0);
+			return 1;
+		}
+		sleep_ms(20);
+	}
+	printf("%s %.2f\n", node, mono() - t0);
+	return 0;
+}
+
 static int cmd_waitfd(const char *pid, const char *path, const char *secs)
 {
 	double t0 = mono(), limit = atof(secs);
@@ -332,6 +387,36 @@ static int cmd_waitfd(const char *pid, const char *path, const char *secs)
 		sleep_ms(20);
 	}
 	printf("%.2f\n", mono() - t0);
+	return 0;
+}
+
+static int cmd_hidwrite(const char *path, const char *hex)
+{
+	uint8_t b[4096];
+	size_t n = 0;
+	int fd;
+
+	while (*hex) {
+		unsigned v;
+		int used;
+
+		if (*hex == ' ') {
+			hex++;
+			continue;
+		}
+		if (n == sizeof(b) || sscanf(hex, "%2x%n", &v, &used) != 1 || used != 2)
+			return usage();
+		b[n++] = (uint8_t)v;
+		hex += 2;
+	}
+	fd = open(path, O_WRONLY | O_CLOEXEC);
+	if (fd < 0 || write(fd, b, n) != (ssize_t)n) {
+		fprintf(stderr, "vm_guest: %s: %s\n", path, strerror(errno));
+		if (fd >= 0)
+			close(fd);
+		return 1;
+	}
+	close(fd);
 	return 0;
 }
 
@@ -422,6 +507,10 @@ int main(int argc, char **argv)
 		return cmd_probe(argv[2], argv[3], argv + 4, argc - 4);
 	if (argc == 5 && strcmp(argv[1], "waitfd") == 0)
 		return cmd_waitfd(argv[2], argv[3], argv[4]);
+	if (argc == 5 && strcmp(argv[1], "waitdev") == 0)
+		return cmd_waitdev(argv[2], argv[3], argv[4]);
+	if (argc == 4 && strcmp(argv[1], "hidwrite") == 0)
+		return cmd_hidwrite(argv[2], argv[3]);
 	if (argc == 3 && strcmp(argv[1], "books") == 0)
 		return cmd_books(argv[2]);
 	if (argc == 3 && strcmp(argv[1], "fbinfo") == 0)
