@@ -13,6 +13,7 @@ libhidapi-dev
 libgpiod-dev
 libusb-1.0-0-dev
 libpng-dev
+libosmesa6-dev
 libsystemd-dev
 libcmocka-dev
 systemd

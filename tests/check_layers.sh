@@ -3,6 +3,9 @@
 # - engine/ includes only C standard headers and its own headers;
 # - engine/ has no floating point and no mutable file-scope state
 #   (checked on the compiled objects: no .data/.bss symbols);
+# - engine/gl/ (the OSMesa renderer, docs/crosscheck.md) is outside the two
+#   rules above (the globs are engine/*): it has floating point and is the
+#   only code that includes OSMesa or GL headers, in engine/gl/r_gl.c alone;
 # - outside engine/, only backend files include Linux or device-library
 #   headers.
 set -u
@@ -27,6 +30,11 @@ else
 	if [ -n "$bad" ]; then
 		echo "FAIL engine has mutable file-scope state:"; echo "$bad"; fail=1
 	fi
+fi
+bad=$(grep -rlE '#[[:space:]]*include[[:space:]]*<(GL|EGL)/' app config display engine input \
+	systemd tests tools 2>/dev/null | grep -vx 'engine/gl/r_gl.c' || true)
+if [ -n "$bad" ]; then
+	echo "FAIL OSMesa/GL headers outside engine/gl/r_gl.c:"; echo "$bad"; fail=1
 fi
 # Backends (one file each) are the only users of kernel and device headers.
 allowed='^(display/dp_fbdev\.c|display/dp_term\.c|input/in_evdev\.c|input/in_tty\.c|input/in_ttykeys\.c|input/in_keys\.c|input/hid_dec\.c|input/in_hid\.c|input/in_gpio\.c|systemd/svc\.c)$'

@@ -1,0 +1,161 @@
+/*
+ * r_gl_local: the OSMesa renderer's context and what its two files share.
+ * Internal to engine/gl/. r_gl.c owns OSMesa, GL state, textures, the
+ * passes and the per-pixel resolve (the only file including GL headers);
+ * r_gl_geo.c turns the map, view and sprites into triangles (the
+ * subsectors' polygons, walls, sprites) with plain floating point.
+ */
+#ifndef ARCADED_ENGINE_GL_R_GL_LOCAL_H
+#define ARCADED_ENGINE_GL_R_GL_LOCAL_H
+
+#include <stdint.h>
+
+#include "engine/fx.h"
+#include "engine/gl/r_gl.h"
+#include "engine/map.h"
+#include "engine/tex.h"
+
+/* Mirrors of the software renderer's constants (engine/r_local.h), which
+ * define the picture both renderers must draw. */
+#define RGL_NEAR 0.25                   /* R_NEAR: near plane, map units */
+#define RGL_FADE_DIST 1280              /* R_FADE_DIST */
+#define RGL_FADE_MAX 24                 /* R_FADE_MAX */
+#define RGL_CONTRAST 16                 /* R_CONTRAST */
+#define RGL_SPR_NEAR (4 * FX_ONE)       /* R_SPR_NEAR */
+#define RGL_SKY_SHIFT 22                /* R_SKY_SHIFT, R_SKY_MID, R_SKY_COLS */
+#define RGL_SKY_MID 100
+#define RGL_SKY_COLS 256
+#define RGL_FB_SIZE 64                  /* R_FB_SIZE: the fallback checker */
+
+/* What the colour pass writes in the blue channel: how the resolve turns
+ * the red channel (a texel's palette index) into the frame's byte. */
+enum rgl_mode {
+	RGL_MODE_LIT,                   /* colormap green - fade(depth) */
+	RGL_MODE_SKY,                   /* the sky texel of this pixel */
+	RGL_MODE_RAW,                   /* the index itself (black fill) */
+	RGL_MODE_FIXED,                 /* colormap green (sprites: their level
+					 * is the same over the picture) */
+	RGL_MODE_NONE = 255             /* nothing drawn: black */
+};
+
+/* A texture a triangle uses: kind in the top four bits, index below; 0 is
+ * none (untextured). */
+enum rgl_texkind {
+	RGL_TEX_NONE,
+	RGL_TEX_WALL,                   /* tex_set.textures[index] */
+	RGL_TEX_FLAT,                   /* tex_set.flats[index] */
+	RGL_TEX_SPRITE,                 /* tex_set.sprpics[index] */
+	RGL_TEX_FBWALL,                 /* the fallback checker */
+	RGL_TEX_FBFLAT
+};
+#define RGL_TEXREF(kind, index) (((uint32_t)(kind) << 28) | (uint32_t)(index))
+
+/* Which passes draw a run of triangles (r_gl.c): the world pass draws
+ * planes, decals, walls and masked middles; then, with the depth buffer cleared,
+ * the sprite pass draws walls, silhouettes and masked middles into the
+ * depth buffer only, and the sprites against it. Masked middles and
+ * sprites are alpha-tested, their textures clamped vertically (sprites
+ * both ways). */
+enum rgl_pass {
+	RGL_PLANE,                      /* floors, ceilings, sky, black fills */
+	RGL_DECAL,                      /* sky drawn over a floor (polygon offset) */
+	RGL_WALL,                       /* textured wall parts */
+	RGL_MASKED,                     /* masked middle textures */
+	RGL_SIL,                        /* silhouettes: sprite clipping only */
+	RGL_SPRITE
+};
+
+/* One vertex: position relative to the eye, texture coordinates (s, t, r,
+ * q: q != 1 only for projected flats), colour-pass colour, id colour. */
+struct rgl_vtx {
+	float x, y, z;
+	float s, t, r, q;
+	uint8_t c[4];
+	uint8_t id[4];
+};
+
+#define RGL_POLY_MAX 1024              /* points of a polygon being clipped */
+#define RGL_PIECES 16
+
+/* Convex pieces of a polygon being cut (x y pairs) and their counts. */
+struct rgl_pieces {
+	double p[RGL_PIECES][2 * RGL_POLY_MAX];
+	int n[RGL_PIECES];
+	int count;
+};
+
+/* A run of vertices (triangles) with one texture and pass. */
+struct rgl_item {
+	uint64_t key;                   /* the draw order: pass << 32 | texref
+					 * (sprites: | their index in the list) */
+	uint32_t tex;                   /* texref */
+	int first, count;
+};
+
+struct rgl_ctx {
+	int w, h;
+	void *osm;                      /* OSMesaContext */
+	uint8_t *buf;                   /* OSMesa's colour buffer, RGBA, w*h*4,
+					 * bottom row first */
+	float *depth;                   /* depth read back, w*h, bottom row first */
+	uint32_t *ids;                  /* caller's id buffer or NULL */
+	ang_t *xtoang;                  /* per column, as the software renderer's */
+	char name[128];
+
+	/* GL textures made from tex (0: not yet) */
+	const struct tex_set *tex;
+	uint32_t *gl_wall, *gl_flat, *gl_spr;
+	int n_wall, n_flat, n_spr;
+	uint32_t gl_fbwall, gl_fbflat;
+	uint8_t fb_lo, fb_hi;           /* colours of the fallback checker */
+
+	/* the subsectors' polygons of map (x, y pairs, poff[i]..poff[i+1]) */
+	const struct map *map;
+	uint64_t map_hash;
+	uint32_t map_nss;
+	double *pv;
+	int *poff;
+	int npv, maxpv;
+	uint32_t *sec_ss;               /* subsectors by sector: sector i's are */
+	uint32_t *sec_first;            /* sec_ss[sec_first[i] .. sec_first[i+1]) */
+	uint32_t map_nsecs;
+	struct rgl_pieces *pieces;      /* scratch of the sky decals, or NULL */
+
+	/* this frame's triangles */
+	struct rgl_vtx *vtx;
+	int nvtx, maxvtx;
+	struct rgl_item *items;
+	int nitems, maxitems;
+	uint32_t *idx;                  /* vertex indices in draw order */
+	int maxidx;
+
+	/* this frame's view, as the software renderer sets it up */
+	fx_t ex, ey, ez;
+	ang_t angle;
+	fx_t vcos, vsin;
+	int shear;
+	uint8_t black;
+	double mat_world[16];           /* projection x view, for eye-relative
+					 * positions; projection alone, for view
+					 * space (sprites) */
+	double mat_view[16];
+	int sbox[4];                    /* the sprites' screen box: x0, y0, x1, y1
+					 * (GL window coordinates, y up) */
+
+	struct rgl_stats st;
+};
+
+/* r_gl_geo.c */
+/* Makes the polygons of m's subsectors (kept until the map changes).
+ * 0 or -ENOMEM. */
+int rgl_geo_polys(struct rgl_ctx *g, const struct map *m);
+/* This frame's triangles: g->vtx, g->items. 0 or -ENOMEM. */
+int rgl_geo_build(struct rgl_ctx *g, const struct map *m, const struct tex_set *t,
+		  const struct r_sprite *spr, int nspr);
+/* Colormap level of a light level before fade (r_light_base's rule). */
+int rgl_light_base(int light);
+/* The picture wall texture num draws now (animation applied): NULL for 0,
+ * NULL with *fb set for one the set cannot provide (the fallback). */
+const struct tex_pic *rgl_wall_pic(const struct tex_set *t, uint16_t num, int *index, int *fb);
+
+#endif

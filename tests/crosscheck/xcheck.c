@@ -1,0 +1,665 @@
+/*
+ * xcheck: renders maps from seeded viewpoints with both renderers, the
+ * software one (engine/r_main.h) and the OSMesa one (engine/gl/r_gl.h), in
+ * surface-id mode, and prints per view and per map how many pixels show
+ * the same surface. Views below the threshold fail the run and get a
+ * difference image: software frame | OSMesa frame | the software frame
+ * dimmed with disagreeing pixels in red.
+ *
+ * Two ids agree when they are equal after one normalisation: a floor (or
+ * ceiling) id names the lowest-numbered sector whose floor (ceiling) has the
+ * same height, flat and light, since the software renderer's visplanes merge
+ * such sectors and they look identical (docs/crosscheck.md).
+ *
+ *   xcheck [--builtin] [--grid builtin|FILE] [--wad FILE [--map NAME]]...
+ *          [--views N] [--seed S] [--size WxH] [--min PCT] [--diff DIR]
+ *          [--diff-all] [--no-sprites] [--verbose] [--view K] [--probe X,Y]
+ *
+ * --builtin: every built-in level (palette-colour set); --grid: a grid map
+ * with the built-in texture set; --wad: every map of the WAD (or --map),
+ * each WAD on its own. Content options may repeat; the other options apply
+ * to all. Views: a random point inside a sector at least 16 units from
+ * every one-sided or blocking line, in a sector at least 56 units tall,
+ * not within a thing's radius plus 16,
+ * eye 41 above the floor, a random angle, and a random shear within h/4 in
+ * one view of four. The map's things are drawn as sprites. --view K runs
+ * only view K of each map (the same viewpoint as in a full run), --probe
+ * prints both renderers' ids at one pixel, --verbose every view and the
+ * disagreeing pixels by kind. Exit status 0
+ * when every view reaches --min (default 99.5), 1 otherwise, 2 on bad
+ * arguments or content.
+ */
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "display/shot.h"
+#include "engine/gl/r_gl.h"
+#include "engine/grid.h"
+#include "engine/map.h"
+#include "engine/map_wad.h"
+#include "engine/pal.h"
+#include "engine/r_id.h"
+#include "engine/r_main.h"
+#include "engine/tex.h"
+#include "engine/th.h"
+#include "engine/wad.h"
+
+#define XC_MAX_SETS 16
+#define XC_MAX_MAPS 64
+
+struct xc_set {
+	char kind;                      /* 'b' built-in, 'g' grid, 'w' WAD */
+	const char *arg;                /* grid or WAD file */
+	const char *map;                /* --map, or NULL for all */
+};
+
+struct xc_opts {
+	struct xc_set sets[XC_MAX_SETS];
+	int nsets;
+	int views, w, h, sprites, verbose, diff_all;
+	int only_view;                  /* --view K: only view K of each map, or -1 */
+	int probe_x, probe_y;           /* --probe X,Y: print both ids there, or -1 */
+	uint64_t seed;
+	double min;
+	const char *diff;
+};
+
+/* One renderer pair at one size, and the buffers of a view. */
+struct xc_run {
+	const struct xc_opts *o;
+	struct r_ctx *sw;
+	struct rgl_ctx *gl;
+	struct r_frame fs, fg;
+	uint32_t *ids_sw, *ids_gl;
+	uint8_t *diffpx;
+	double t_sw, t_gl;
+	long views, failed;
+	double set_min, set_sum;
+	long set_views;
+	uint64_t kinds[R_IDK_COUNT][R_IDK_COUNT];   /* disagreements: sw kind, gl kind */
+};
+
+static double xc_now(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+static uint64_t xc_rand(uint64_t *s)
+{
+	/* splitmix64 */
+	uint64_t z = (*s += 0x9e3779b97f4a7c15ull);
+
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+	return z ^ (z >> 31);
+}
+
+static uint8_t *xc_slurp(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "rbe");
+	uint8_t *d = NULL;
+	long n;
+
+	if (!f)
+		return NULL;
+	if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) > 0 && fseek(f, 0, SEEK_SET) == 0) {
+		d = malloc((size_t)n);
+		if (d && fread(d, 1, (size_t)n, f) != (size_t)n) {
+			free(d);
+			d = NULL;
+		}
+		*len = (size_t)n;
+	}
+	fclose(f);
+	return d;
+}
+
+/* The map's things as sprites, as the hand-run viewer places them. */
+static int xc_things(const struct map *m, const struct tex_set *t, struct r_sprite *out)
+{
+	int n = 0;
+
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		const struct map_thing *th = &m->things[i];
+		const struct th_info *in = th_find(th->type);
+		const struct map_sector *sec;
+		int s;
+
+		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
+			continue;
+		s = tex_find_sprite(t, in->sprite);
+		if (s < 0)
+			continue;
+		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
+		out[n].x = th->x;
+		out[n].y = th->y;
+		out[n].z = (in->flags & TH_HANGING) ? sec->ceil_h - in->height * FX_ONE : sec->floor_h;
+		out[n].angle = th->angle;
+		out[n].sprite = (uint16_t)s;
+		out[n].frame = (uint16_t)(in->frame - 'A');
+		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
+		n++;
+	}
+	return n;
+}
+
+/* Distance (map units) from (x, y) to the segment of line l. */
+static double xc_line_dist(const struct map *m, const struct map_line *l, double x, double y)
+{
+	double ax = m->vertices[l->v1].x / 65536.0, ay = m->vertices[l->v1].y / 65536.0;
+	double bx = m->vertices[l->v2].x / 65536.0, by = m->vertices[l->v2].y / 65536.0;
+	double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+	double t = len2 > 0 ? ((x - ax) * dx + (y - ay) * dy) / len2 : 0;
+
+	t = t < 0 ? 0 : t > 1 ? 1 : t;
+	dx = ax + t * dx - x;
+	dy = ay + t * dy - y;
+	return dx * dx + dy * dy;
+}
+
+/* 1 when (x, y) lies inside sector s's polygon (even-odd rule over the
+ * lines with exactly one side facing s), in a sector tall enough to stand
+ * in, far enough from walls. */
+static int xc_viewpoint_ok(const struct map *m, uint32_t s, double x, double y)
+{
+	const struct map_sector *sec = &m->sectors[s];
+	int inside = 0;
+
+	if (sec->ceil_h - sec->floor_h < 56 * FX_ONE)
+		return 0;
+	/* not inside a thing: a player stands at least its radius plus its
+	 * own (16) away from a thing's centre */
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		const struct th_info *in = th_find(m->things[i].type);
+		double dx = m->things[i].x / 65536.0 - x, dy = m->things[i].y / 65536.0 - y;
+		double r = in ? in->radius + 16.0 : 32.0;
+
+		if (in && (in->flags & (TH_PLAYER | TH_INVISIBLE)))
+			continue;
+		if (dx * dx + dy * dy < r * r)
+			return 0;
+	}
+	for (uint32_t i = 0; i < m->num_lines; i++) {
+		const struct map_line *l = &m->lines[i];
+		uint32_t s0 = m->sides[l->side[0]].sector;
+		uint32_t s1 = l->side[1] == MAP_NONE ? MAP_NONE : m->sides[l->side[1]].sector;
+		double ay = m->vertices[l->v1].y / 65536.0, by = m->vertices[l->v2].y / 65536.0;
+		double ax = m->vertices[l->v1].x / 65536.0, bx = m->vertices[l->v2].x / 65536.0;
+		double d2 = xc_line_dist(m, l, x, y);
+
+		if (d2 < 1.0 || ((s1 == MAP_NONE || (l->flags & ML_BLOCKING)) && d2 < 16.0 * 16.0))
+			return 0;
+		if ((s0 == s) == (s1 == s))
+			continue;
+		if ((ay > y) != (by > y) && x < ax + (y - ay) * (bx - ax) / (by - ay))
+			inside ^= 1;
+	}
+	return inside;
+}
+
+/* View k of map m: 0, or -1 when no viewpoint was found. */
+static int xc_view(const struct map *m, uint64_t *rng, int h, struct r_view *v)
+{
+	fx_t x0 = INT32_MAX, y0 = INT32_MAX, x1 = INT32_MIN, y1 = INT32_MIN;
+
+	for (uint32_t i = 0; i < m->num_vertices; i++) {
+		x0 = m->vertices[i].x < x0 ? m->vertices[i].x : x0;
+		y0 = m->vertices[i].y < y0 ? m->vertices[i].y : y0;
+		x1 = m->vertices[i].x > x1 ? m->vertices[i].x : x1;
+		y1 = m->vertices[i].y > y1 ? m->vertices[i].y : y1;
+	}
+	for (int tries = 0; tries < 20000; tries++) {
+		fx_t x = (fx_t)(x0 + (int64_t)(xc_rand(rng) % ((uint64_t)x1 - (uint64_t)x0 + 1)));
+		fx_t y = (fx_t)(y0 + (int64_t)(xc_rand(rng) % ((uint64_t)y1 - (uint64_t)y0 + 1)));
+		uint32_t s = map_point_sector(m, x, y);
+
+		if (!xc_viewpoint_ok(m, s, x / 65536.0, y / 65536.0))
+			continue;
+		v->x = x;
+		v->y = y;
+		v->z = m->sectors[s].floor_h + 41 * FX_ONE;
+		v->angle = (ang_t)xc_rand(rng);
+		v->shear = 0;
+		if (xc_rand(rng) % 4 == 0)
+			v->shear = (int32_t)(xc_rand(rng) % (uint64_t)(h / 2 + 1)) - h / 4;
+		return 0;
+	}
+	return -1;
+}
+
+/* Normalises an id: floors and ceilings to the lowest sector that looks
+ * the same (see the top of this file). */
+static uint32_t xc_norm(uint32_t id, const uint32_t *cf, const uint32_t *cc, uint32_t nsec)
+{
+	enum r_id_kind k = r_id_kind(id);
+	uint32_t i = r_id_index(id);
+
+	if (k == R_IDK_FLOOR && i < nsec)
+		return r_id(k, cf[i]);
+	if (k == R_IDK_CEIL && i < nsec)
+		return r_id(k, cc[i]);
+	return id;
+}
+
+static int xc_canon(const struct map *m, uint32_t **cf, uint32_t **cc)
+{
+	uint32_t n = m->num_sectors;
+
+	*cf = malloc((size_t)n * sizeof(**cf));
+	*cc = malloc((size_t)n * sizeof(**cc));
+	if (!*cf || !*cc)
+		return -ENOMEM;
+	for (uint32_t i = 0; i < n; i++) {
+		const struct map_sector *a = &m->sectors[i];
+
+		(*cf)[i] = (*cc)[i] = i;
+		for (uint32_t j = 0; j < i; j++) {
+			const struct map_sector *b = &m->sectors[j];
+
+			if ((*cf)[i] == i && a->floor_h == b->floor_h &&
+			    a->floor_tex == b->floor_tex && a->light == b->light)
+				(*cf)[i] = j;
+			if ((*cc)[i] == i && a->ceil_h == b->ceil_h && a->ceil_tex == b->ceil_tex &&
+			    a->light == b->light)
+				(*cc)[i] = j;
+		}
+	}
+	return 0;
+}
+
+static void xc_diff_image(struct xc_run *x, const struct tex_set *t, const char *name, int k,
+			  const uint32_t *cf, const uint32_t *cc, uint32_t nsec, char *path,
+			  size_t plen)
+{
+	int w = x->o->w, h = x->o->h;
+	uint8_t red = pal_nearest(&t->pal, 255, 0, 0);
+	char clean[64];
+	int i;
+
+	for (i = 0; name[i] && i < (int)sizeof(clean) - 1; i++)
+		clean[i] = (name[i] == '/' || name[i] == ' ' || name[i] == '.') ? '-' : name[i];
+	clean[i] = 0;
+	snprintf(path, plen, "%s/%s-view%02d.png", x->o->diff, clean, k);
+	for (int y = 0; y < h; y++) {
+		uint8_t *row = x->diffpx + (size_t)y * (size_t)w * 3;
+
+		for (int c = 0; c < w; c++) {
+			size_t p = (size_t)y * (size_t)w + (size_t)c;
+			int same = xc_norm(x->ids_sw[p], cf, cc, nsec) ==
+				   xc_norm(x->ids_gl[p], cf, cc, nsec);
+
+			row[c] = x->fs.px[p];
+			row[w + c] = x->fg.px[p];
+			row[2 * w + c] = same ? t->pal.cmap[20][x->fs.px[p]] : red;
+		}
+	}
+	mkdir(x->o->diff, 0755);
+	if (shot_png(path, x->diffpx, 3 * w, h, 3 * w, t->pal.rgb) < 0)
+		fprintf(stderr, "xcheck: %s: cannot write\n", path);
+}
+
+/* Every view of one map. Returns the worst agreement. */
+static double xc_map(struct xc_run *x, const struct map *m, const struct tex_set *t,
+		     const char *name)
+{
+	const struct xc_opts *o = x->o;
+	size_t npx = (size_t)o->w * (size_t)o->h;
+	struct r_sprite *spr = calloc(m->num_things + 1, sizeof(*spr));
+	uint64_t rng = o->seed;
+	uint32_t *cf = NULL, *cc = NULL;
+	double worst = 100, sum = 0;
+	int nspr, nv = 0, wk = -1;
+
+	if (!spr || xc_canon(m, &cf, &cc) < 0) {
+		fprintf(stderr, "xcheck: out of memory\n");
+		exit(2);
+	}
+	for (const char *c = name; *c; c++)
+		rng = (rng ^ (uint8_t)*c) * 0x100000001b3ull;
+	nspr = o->sprites ? xc_things(m, t, spr) : 0;
+	for (int k = 0; k < o->views; k++) {
+		struct r_view v;
+		long same = 0, csame = 0;
+		double pct, t0;
+
+		if (xc_view(m, &rng, o->h, &v) < 0) {
+			printf("%-28s no viewpoint found\n", name);
+			x->failed++;
+			break;
+		}
+		if (o->only_view >= 0 && k != o->only_view)
+			continue;
+		t0 = xc_now();
+		r_render(x->sw, m, t, &v, spr, nspr, &x->fs);
+		x->t_sw += xc_now() - t0;
+		t0 = xc_now();
+		rgl_render(x->gl, m, t, &v, spr, nspr, &x->fg);
+		x->t_gl += xc_now() - t0;
+		for (size_t p = 0; p < npx; p++) {
+			uint32_t a = xc_norm(x->ids_sw[p], cf, cc, m->num_sectors);
+			uint32_t b = xc_norm(x->ids_gl[p], cf, cc, m->num_sectors);
+
+			if (a == b)
+				same++;
+			else if (r_id_kind(a) < R_IDK_COUNT && r_id_kind(b) < R_IDK_COUNT)
+				x->kinds[r_id_kind(a)][r_id_kind(b)]++;
+			csame += x->fs.px[p] == x->fg.px[p];
+		}
+		pct = 100.0 * (double)same / (double)npx;
+		if (o->probe_x >= 0 && o->probe_x < o->w && o->probe_y >= 0 && o->probe_y < o->h) {
+			size_t p = (size_t)o->probe_y * (size_t)o->w + (size_t)o->probe_x;
+
+			printf("  probe (%d, %d): software kind %u index %u, OSMesa kind %u index %u\n",
+			       o->probe_x, o->probe_y, r_id_kind(x->ids_sw[p]), r_id_index(x->ids_sw[p]),
+			       r_id_kind(x->ids_gl[p]), r_id_index(x->ids_gl[p]));
+		}
+		if (o->verbose)
+			printf("  %-26s view %2d at (%.1f, %.1f) angle %.1f shear %d: ids %.3f%%, "
+			       "pixels %.2f%%\n",
+			       name, k, v.x / 65536.0, v.y / 65536.0, v.angle * (360.0 / 4294967296.0),
+			       v.shear, pct, 100.0 * (double)csame / (double)npx);
+		if (pct < o->min || (o->diff_all && o->diff)) {
+			char path[512] = "(no --diff)";
+
+			if (o->diff)
+				xc_diff_image(x, t, name, k, cf, cc, m->num_sectors, path, sizeof(path));
+			if (pct < o->min) {
+				printf("FAIL %s view %d at (%.1f, %.1f) angle %.1f shear %d: %.3f%% < "
+				       "%.2f%%; difference image %s\n",
+				       name, k, v.x / 65536.0, v.y / 65536.0,
+				       v.angle * (360.0 / 4294967296.0), v.shear, pct, o->min, path);
+				x->failed++;
+			}
+		}
+		if (pct < worst) {
+			worst = pct;
+			wk = k;
+		}
+		sum += pct;
+		nv++;
+		x->views++;
+	}
+	if (nv > 0) {
+		printf("%-28s %3d views  min %7.3f%% (view %d)  mean %7.3f%%\n", name, nv, worst, wk,
+		       sum / nv);
+		x->set_sum += sum;
+		x->set_views += nv;
+		if (worst < x->set_min)
+			x->set_min = worst;
+	}
+	free(spr);
+	free(cf);
+	free(cc);
+	return worst;
+}
+
+static void xc_set_begin(struct xc_run *x)
+{
+	x->set_min = 100;
+	x->set_sum = 0;
+	x->set_views = 0;
+}
+
+static void xc_set_end(struct xc_run *x, const char *what, int nmaps)
+{
+	if (x->set_views > 0)
+		printf("== %s: %d maps, %ld views, min %.3f%%, mean %.3f%%\n", what, nmaps,
+		       x->set_views, x->set_min, x->set_sum / (double)x->set_views);
+}
+
+static int xc_builtin(struct xc_run *x)
+{
+	struct tex_set *t;
+	int n = map_builtin_count();
+
+	if (r_pal_set_new(&t) < 0)
+		return -ENOMEM;
+	xc_set_begin(x);
+	for (int i = 0; i < n; i++) {
+		struct map *m;
+		char name[64];
+
+		if (map_builtin(i, &m) < 0) {
+			r_pal_set_free(t);
+			return -ENOMEM;
+		}
+		snprintf(name, sizeof(name), "built-in %d %s", i + 1, m->name);
+		xc_map(x, m, t, name);
+		rgl_flush(x->gl);
+		map_free(m);
+	}
+	xc_set_end(x, "built-in levels", n);
+	rgl_flush(x->gl);
+	r_pal_set_free(t);
+	return 0;
+}
+
+static int xc_grid(struct xc_run *x, const char *file)
+{
+	struct grid_names names;
+	struct tex_set *t;
+	struct map *m = NULL;
+	uint8_t *buf = NULL;
+	const char *text;
+	char err[256] = "", name[80];
+	size_t len = 0;
+	int rc;
+
+	if (tex_builtin(&t) < 0)
+		return -ENOMEM;
+	if (strcmp(file, "builtin") == 0) {
+		text = grid_builtin_text(&len);
+	} else {
+		buf = xc_slurp(file, &len);
+		if (!buf) {
+			fprintf(stderr, "xcheck: %s: %s\n", file, strerror(errno));
+			tex_free(t);
+			return -ENOENT;
+		}
+		text = (const char *)buf;
+	}
+	grid_names_from_tex(&names, t);
+	rc = grid_parse(text, len, file, &names, &m, err, sizeof(err));
+	free(buf);
+	if (rc < 0) {
+		fprintf(stderr, "xcheck: %s: %s\n", file, err);
+		tex_free(t);
+		return rc;
+	}
+	snprintf(name, sizeof(name), "grid %s", file);
+	xc_set_begin(x);
+	xc_map(x, m, t, name);
+	xc_set_end(x, name, 1);
+	rgl_flush(x->gl);
+	map_free(m);
+	tex_free(t);
+	return 0;
+}
+
+static int xc_wad(struct xc_run *x, const char *file, const char *only)
+{
+	char names[XC_MAX_MAPS][9], err[512] = "";
+	const char *base = strrchr(file, '/') ? strrchr(file, '/') + 1 : file;
+	struct wad *wd = NULL;
+	struct tex_set *t = NULL;
+	size_t len = 0;
+	uint8_t *d = xc_slurp(file, &len);
+	int n, done = 0;
+
+	if (!d || wad_new(&wd) < 0 || wad_add(wd, d, len, file, err, sizeof(err)) < 0 ||
+	    tex_load_wad(wd, &t, err, sizeof(err)) < 0) {
+		fprintf(stderr, "xcheck: %s: %s\n", file, d ? err : strerror(errno));
+		free(d);
+		wad_free(wd);
+		return -EINVAL;
+	}
+	n = map_list_wad(wd, names, XC_MAX_MAPS);
+	xc_set_begin(x);
+	for (int i = 0; i < n && i < XC_MAX_MAPS; i++) {
+		struct map *m;
+		char name[64];
+
+		if (only && strcasecmp(only, names[i]) != 0)
+			continue;
+		if (map_load_wad(wd, t, names[i], &m, err, sizeof(err)) < 0) {
+			fprintf(stderr, "xcheck: %s %s: %s\n", file, names[i], err);
+			x->failed++;
+			continue;
+		}
+		tex_pick_sky(t, names[i]);
+		snprintf(name, sizeof(name), "%.40s %.8s", base, names[i]);
+		xc_map(x, m, t, name);
+		rgl_flush(x->gl);
+		map_free(m);
+		done++;
+	}
+	xc_set_end(x, base, done);
+	rgl_flush(x->gl);
+	tex_free(t);
+	wad_free(wd);
+	free(d);
+	return 0;
+}
+
+static int xc_args(int argc, char **argv, struct xc_opts *o)
+{
+	memset(o, 0, sizeof(*o));
+	o->views = 20;
+	o->w = 320;
+	o->h = 200;
+	o->sprites = 1;
+	o->min = 99.5;
+	o->seed = 1;
+	o->only_view = -1;
+	o->probe_x = o->probe_y = -1;
+	for (int i = 1; i < argc; i++) {
+		const char *a = argv[i], *b = i + 1 < argc ? argv[i + 1] : NULL;
+		struct xc_set *s = o->nsets < XC_MAX_SETS ? &o->sets[o->nsets] : NULL;
+
+		if (!strcmp(a, "--builtin") && s) {
+			s->kind = 'b';
+			o->nsets++;
+		} else if (!strcmp(a, "--grid") && b && s) {
+			s->kind = 'g';
+			s->arg = argv[++i];
+			o->nsets++;
+		} else if (!strcmp(a, "--wad") && b && s) {
+			s->kind = 'w';
+			s->arg = argv[++i];
+			o->nsets++;
+		} else if (!strcmp(a, "--map") && b && o->nsets > 0 &&
+			   o->sets[o->nsets - 1].kind == 'w') {
+			o->sets[o->nsets - 1].map = argv[++i];
+		} else if (!strcmp(a, "--views") && b) {
+			o->views = atoi(argv[++i]);
+		} else if (!strcmp(a, "--seed") && b) {
+			o->seed = strtoull(argv[++i], NULL, 0);
+		} else if (!strcmp(a, "--size") && b) {
+			if (sscanf(argv[++i], "%dx%d", &o->w, &o->h) != 2)
+				return -1;
+		} else if (!strcmp(a, "--min") && b) {
+			o->min = atof(argv[++i]);
+		} else if (!strcmp(a, "--diff") && b) {
+			o->diff = argv[++i];
+		} else if (!strcmp(a, "--diff-all")) {
+			o->diff_all = 1;
+		} else if (!strcmp(a, "--view") && b) {
+			o->only_view = atoi(argv[++i]);
+		} else if (!strcmp(a, "--probe") && b) {
+			if (sscanf(argv[++i], "%d,%d", &o->probe_x, &o->probe_y) != 2)
+				return -1;
+		} else if (!strcmp(a, "--no-sprites")) {
+			o->sprites = 0;
+		} else if (!strcmp(a, "--verbose")) {
+			o->verbose = 1;
+		} else {
+			fprintf(stderr, "xcheck: bad argument %s\n", a);
+			return -1;
+		}
+	}
+	if (o->nsets == 0 || o->views < 1 || o->w < 1 || o->h < 1 || o->w > 4096 || o->h > 4096)
+		return -1;
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	static const char *kname[R_IDK_COUNT] = { "none", "sky", "floor", "ceiling", "upper",
+						  "middle", "lower", "masked", "sprite", "back" };
+	struct xc_opts o;
+	struct xc_run x;
+	char err[256] = "";
+	size_t npx;
+	double t0 = xc_now();
+	int rc = 0;
+
+	if (xc_args(argc, argv, &o) < 0) {
+		fprintf(stderr, "usage: xcheck [--builtin] [--grid builtin|FILE] [--wad FILE "
+				"[--map NAME]]... [--views N] [--seed S] [--size WxH] [--min PCT] "
+				"[--diff DIR] [--diff-all] [--no-sprites] [--verbose] [--view K] "
+				"[--probe X,Y]\n");
+		return 2;
+	}
+	memset(&x, 0, sizeof(x));
+	x.o = &o;
+	npx = (size_t)o.w * (size_t)o.h;
+	x.fs.w = x.fg.w = x.fs.pitch = x.fg.pitch = o.w;
+	x.fs.h = x.fg.h = o.h;
+	x.fs.px = malloc(npx);
+	x.fg.px = malloc(npx);
+	x.ids_sw = malloc(npx * sizeof(uint32_t));
+	x.ids_gl = malloc(npx * sizeof(uint32_t));
+	x.diffpx = malloc(npx * 3);
+	if (!x.fs.px || !x.fg.px || !x.ids_sw || !x.ids_gl || !x.diffpx ||
+	    r_new(o.w, o.h, &x.sw) < 0) {
+		fprintf(stderr, "xcheck: out of memory\n");
+		return 2;
+	}
+	if (rgl_new(o.w, o.h, &x.gl, err, sizeof(err)) < 0) {
+		fprintf(stderr, "xcheck: OSMesa: %s\n", err);
+		return 2;
+	}
+	r_set_idbuf(x.sw, x.ids_sw);
+	rgl_set_idbuf(x.gl, x.ids_gl);
+	printf("xcheck: %dx%d, %d views per map, seed %llu, threshold %.2f%%, GL: %s\n", o.w, o.h,
+	       o.views, (unsigned long long)o.seed, o.min, rgl_name(x.gl));
+	for (int i = 0; i < o.nsets && rc == 0; i++) {
+		const struct xc_set *s = &o.sets[i];
+
+		if (s->kind == 'b')
+			rc = xc_builtin(&x);
+		else if (s->kind == 'g')
+			rc = xc_grid(&x, s->arg);
+		else
+			rc = xc_wad(&x, s->arg, s->map);
+	}
+	if (o.verbose) {
+		printf("disagreeing pixels by kind (software -> OSMesa):\n");
+		for (int a = 0; a < R_IDK_COUNT; a++)
+			for (int b = 0; b < R_IDK_COUNT; b++)
+				if (x.kinds[a][b])
+					printf("  %-8s -> %-8s %10llu\n", kname[a], kname[b],
+					       (unsigned long long)x.kinds[a][b]);
+	}
+	printf("xcheck: %ld views, %ld failed; render time software %.2f s, OSMesa %.2f s "
+	       "(both passes); total %.1f s\n",
+	       x.views, x.failed, x.t_sw, x.t_gl, xc_now() - t0);
+	r_free(x.sw);
+	rgl_free(x.gl);
+	free(x.fs.px);
+	free(x.fg.px);
+	free(x.ids_sw);
+	free(x.ids_gl);
+	free(x.diffpx);
+	if (rc < 0)
+		return 2;
+	return x.failed ? 1 : 0;
+}
