@@ -13,7 +13,6 @@
 #include "engine/lmap.h"
 #include "engine/map.h"
 #include "engine/map_wad.h"
-#include "engine/r_main.h"
 #include "engine/tex.h"
 #include "engine/wad.h"
 
@@ -180,22 +179,13 @@ static int load_builtin(struct ct *c, int first, char *err, size_t errlen)
 	}
 	if (rc < 0)
 		return rc;
-	/* The built-in arena levels name palette colours as textures: they
-	 * are drawn with the palette set, which borrows the built-in set's
-	 * sprites (same palette) for enemies and pickups. */
-	rc = r_pal_set_new(&c->tex);
-	if (rc == 0) {
-		c->tex_is_pal = 1;
-		rc = tex_builtin(&c->spr_src);
-	}
+	/* The built-in levels' texture numbers index tex_builtin's set
+	 * (map.h: map_builtin). */
+	rc = tex_builtin(&c->tex);
 	if (rc < 0) {
 		snprintf(err, errlen, "built-in textures: %s", strerror(-rc));
 		return rc;
 	}
-	c->tex->sprpics = c->spr_src->sprpics;
-	c->tex->num_sprpics = c->spr_src->num_sprpics;
-	c->tex->sprites = c->spr_src->sprites;
-	c->tex->num_sprites = c->spr_src->num_sprites;
 	snprintf(c->what, sizeof(c->what), "built-in levels %d..%d (%s first)", first,
 		 first + c->nmaps - 1, c->maps[0]->name);
 	return 0;
@@ -236,10 +226,6 @@ void ct_free(struct ct *c)
 		lmap_free(c->lms[i]);
 		map_free(c->maps[i]);
 	}
-	if (c->tex_is_pal)
-		r_pal_set_free(c->tex);   /* frees the set only, not borrowed sprites */
-	else
-		tex_free(c->tex);
-	tex_free(c->spr_src);
+	tex_free(c->tex);
 	memset(c, 0, sizeof(*c));
 }

@@ -33,8 +33,6 @@ struct ct {
 	int nmaps;
 	struct map *map;        /* = maps[0] */
 	struct tex_set *tex;
-	int tex_is_pal;         /* tex from r_pal_set_new (built-in levels) */
-	struct tex_set *spr_src; /* tex_builtin lending its sprites to a palette set */
 	int nlights;            /* lights of the first stage */
 	char what[160];         /* "freedoom1.wad E1M1", "built-in level 1 (ARENA1)" */
 };

@@ -12,9 +12,12 @@
  * The BSP (segs, subsectors, nodes) is built by the project's node builder
  * (nb_build, map_finish) when a map has none, or taken from the map file.
  *
- * Textures: in this version a texture number is a palette index drawn as a
- * solid colour, lit through the colormaps; 0 means "no texture" (Doom's
- * "-"). Real textures replace this without changing the field types.
+ * Textures: a texture number indexes the texture set the map is drawn with
+ * (tex.h): side textures into tex_set.textures, 0 meaning "no texture"
+ * (Doom's "-"); sector flats into tex_set.flats. A map loaded from a WAD
+ * is numbered for the set it was loaded with (map_load_wad); the built-in
+ * levels for tex_builtin's set (map_builtin below). Maps made in code with
+ * palette indices as numbers are drawn with r_pal_set_new's set (r_main.h).
  *
  * Coordinates: x east, y north, map units in 16.16; angles counter-clockwise
  * from east (ANG90 = north).
@@ -172,7 +175,15 @@ void map_msg_int(char *err, size_t errlen, int64_t v);
 void map_msg_fx(char *err, size_t errlen, fx_t v);
 
 /* Number of built-in levels, and a newly allocated, finished copy of level i
- * (0-based). Returns 0, -EINVAL for a bad index, or -ENOMEM. */
+ * (0-based; ARENA1, ARENA2, ARENA3, the order the game plays them).
+ * Returns 0, -EINVAL for a bad index, or -ENOMEM.
+ *
+ * Contract for drawing them: their texture and flat numbers are indices
+ * into the set tex_builtin() returns, which numbers the same on every call
+ * and every build; draw a built-in level with such a set. They are loaded
+ * from the compiled-in PWAD (engine/lvl_wad.c, made by tools/mklevels from
+ * levels/arena*.txt) by map_load_wad against a set made and freed inside
+ * the call (about 10 ms at -O2), with the BSP from the node builder. */
 int map_builtin_count(void);
 int map_builtin(int i, struct map **out);
 

@@ -324,7 +324,8 @@ static void tb_orb(struct tex_pic *p, int pose, int rot, int crack)
 		for (int k = 0; k < 8; k++) {
 			uint32_t h = tp_hash((uint32_t)k, (uint32_t)crack, 93);
 
-			tp_set(p, cx - r + (int)(h % (uint32_t)(2 * r)), cy - r + (int)((h >> 8) % (uint32_t)(2 * r)),
+			tp_set(p, cx - r + (int)(h % (uint32_t)(2 * r)),
+			       cy - r + (int)((h >> 8) % (uint32_t)(2 * r)),
 			       tp_c(PAL_YELLOW, 1 + k % 3));
 		}
 }
@@ -359,9 +360,13 @@ static void tb_warp(struct tex_pic *dst, const struct tex_pic *src, int sx0, int
 /* A pool of blood (or the drone's fluid) on the bottom rows. */
 static void tb_pool(struct tex_pic *p, int cx, int half, int ramp)
 {
-	for (int y = 0; y < 3; y++)
-		for (int x = -half + y * 2; x <= half - y * 2; x++)
-			tp_set(p, cx + x, p->h - 1 - y, tp_c(ramp, 9 + (int)(tp_hash((uint32_t)x, (uint32_t)y, 94) % 3)));
+	for (int y = 0; y < 3; y++) {
+		for (int x = -half + y * 2; x <= half - y * 2; x++) {
+			int shade = 9 + (int)(tp_hash((uint32_t)x, (uint32_t)y, 94) % 3);
+
+			tp_set(p, cx + x, p->h - 1 - y, tp_c(ramp, shade));
+		}
+	}
 }
 
 #define TB_SCRATCH_W 48

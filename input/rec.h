@@ -67,7 +67,7 @@
 /* Bumped whenever the renderer draws any frame differently (engine/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */
-#define REC_RENDER_VERSION 3
+#define REC_RENDER_VERSION 4
 #define REC_HEADER_SIZE 40          /* version 1 */
 #define REC_HEADER_SIZE_V2 80
 #define REC_HEADER_MAX 80

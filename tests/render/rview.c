@@ -13,7 +13,7 @@
  *   build/rtx/rview --builtin 1 --size 320x240 --bench 720
  *
  * Options: --wad FILE (repeatable, later files override), --map NAME,
- * --builtin N (built-in level N with the palette-colour set, no WAD),
+ * --builtin N (built-in level N with the built-in texture set, no WAD),
  * --size WxH, --shot PREFIX (PREFIX-A.png for angles 0, 90, 180, 270
  * degrees from the start's facing), --bench N (N frames, one full turn,
  * five times: frames per second of the fastest turn),
@@ -140,7 +140,7 @@ int main(int argc, char **argv)
 	}
 	if (builtin > 0) {
 		wd = NULL;
-		if (map_builtin(builtin - 1, &m) < 0 || r_pal_set_new(&t) < 0)
+		if (map_builtin(builtin - 1, &m) < 0 || tex_builtin(&t) < 0)
 			return 1;
 		mapname = "built-in";
 		goto loaded;
@@ -227,10 +227,7 @@ loaded:
 	free(f.px);
 	free(spr);
 	map_free(m);
-	if (builtin > 0)
-		r_pal_set_free(t);
-	else
-		tex_free(t);
+	tex_free(t);
 	wad_free(wd);
 	return 0;
 }

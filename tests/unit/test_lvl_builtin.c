@@ -1,6 +1,8 @@
-/* Tests for engine/lvl_builtin.c as game stages: every built-in level has
- * one start, enemies and pickups that stand clear of the walls, and the
- * stages grow harder in order. */
+/* Tests for engine/lvl_builtin.c: the built-in levels are maps of the
+ * project's own, loaded from the compiled-in PWAD (levels/arena*.txt,
+ * engine/lvl_wad.c) with tex_builtin's texture names; and as game stages
+ * every one has one start, enemies and pickups that stand clear of the
+ * walls, and the stages grow harder in order. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -9,8 +11,12 @@
 #include <cmocka.h>
 
 #include "engine/g_local.h"
+#include "engine/lvl_wad.h"
 #include "engine/map.h"
+#include "engine/map_wad.h"
 #include "engine/sim.h"
+#include "engine/tex.h"
+#include "engine/wad.h"
 
 /* Whether a circle of radius r at (x, y) overlaps a wall that blocks a
  * body standing at z there (same rule as movement). Exact: squared
@@ -108,9 +114,103 @@ static void stages_grow_harder(void **state)
 	}
 }
 
+/* The compiled-in PWAD holds ARENA1..3 in play order, and map_builtin
+ * gives exactly what loading that WAD's map with tex_builtin's set gives. */
+static void levels_are_the_compiled_in_wad(void **state)
+{
+	static const char *const want[] = { "ARENA1", "ARENA2", "ARENA3" };
+	char names[8][9], err[160];
+	struct tex_set *t;
+	struct wad *w;
+	(void)state;
+	assert_int_equal(tex_builtin(&t), 0);
+	assert_int_equal(wad_new(&w), 0);
+	assert_int_equal(wad_add(w, lvl_wad, lvl_wad_len, "lvl_wad", err, sizeof err), 0);
+	assert_int_equal(memcmp(lvl_wad, "PWAD", 4), 0);
+	assert_int_equal(map_list_wad(w, names, 8), 3);
+	assert_int_equal(map_builtin_count(), 3);
+	for (int i = 0; i < 3; i++) {
+		struct map *a, *b;
+		assert_string_equal(names[i], want[i]);
+		assert_int_equal(map_builtin(i, &a), 0);
+		assert_int_equal(map_load_wad(w, t, want[i], &b, err, sizeof err), 0);
+		assert_string_equal(a->name, want[i]);
+		assert_true(a->content_hash == b->content_hash);
+		assert_int_equal(a->num_nodes, b->num_nodes);
+		assert_int_equal(a->missing_textures, 0);
+		map_free(a);
+		map_free(b);
+	}
+	wad_free(w);
+	tex_free(t);
+}
+
+static const struct map_sector *sector_at(const struct map *m, int x, int y)
+{
+	return &m->sectors[map_point_sector(m, fx_from_int(x), fx_from_int(y))];
+}
+
+/* Every side and sector names a real texture of tex_builtin's set (none is
+ * the fallback checker); one-sided walls have a middle texture, portals
+ * none but ARENA1's window grate. The names the level files give are
+ * where they should be: ARENA1's hall floor is AR_FLOOR with AR_STONE
+ * walls, its yard and dais are open to the sky, ARENA2's west arm is
+ * water (animated), the step risers are AR_METAL. */
+static void levels_are_textured_by_name(void **state)
+{
+	struct tex_set *t;
+	(void)state;
+	assert_int_equal(tex_builtin(&t), 0);
+	for (int i = 0; i < map_builtin_count(); i++) {
+		struct map *m;
+		int grates = 0;
+		assert_int_equal(map_builtin(i, &m), 0);
+		for (uint32_t k = 0; k < m->num_lines; k++) {
+			const struct map_line *l = &m->lines[k];
+			for (int sd = 0; sd < 2 && l->side[sd] != MAP_NONE; sd++) {
+				const struct map_side *s = &m->sides[l->side[sd]];
+				const uint16_t tx[3] = { s->top_tex, s->mid_tex, s->bot_tex };
+				for (int p = 0; p < 3; p++)
+					assert_true(tx[p] < t->num_textures && tx[p] != t->fallback_tex);
+				if (l->side[1] == MAP_NONE) {
+					assert_int_not_equal(s->mid_tex, 0);
+				} else {
+					assert_int_not_equal(s->top_tex, 0);
+					assert_int_not_equal(s->bot_tex, 0);
+					grates += s->mid_tex != 0;
+					if (s->mid_tex)
+						assert_int_equal(s->mid_tex, tex_find(t, "AR_GRATE"));
+				}
+			}
+		}
+		assert_int_equal(grates, i == 0 ? 2 : 0);   /* both sides of one line */
+		for (uint32_t k = 0; k < m->num_sectors; k++) {
+			assert_true(m->sectors[k].floor_tex < t->num_flats - 1);
+			assert_true(m->sectors[k].ceil_tex < t->num_flats - 1);
+		}
+		if (i == 0) {
+			const struct map_sector *hall = sector_at(m, 96, 192);
+			const struct map_sector *yard = sector_at(m, 700, 900);
+			const struct map_sector *dais = sector_at(m, 864, 512);
+			uint32_t riser = m->lines[2].side[0];   /* hall to step 1 */
+			assert_int_equal(hall->floor_tex, tex_find_flat(t, "AR_FLOOR"));
+			assert_int_equal(m->sides[m->lines[0].side[0]].mid_tex, tex_find(t, "AR_STONE"));
+			assert_int_equal(yard->ceil_tex, t->sky_flat);
+			assert_int_equal(dais->ceil_tex, t->sky_flat);
+			assert_int_equal(m->sides[riser].bot_tex, tex_find(t, "AR_METAL"));
+		} else if (i == 1) {
+			assert_int_equal(sector_at(m, 64, 512)->floor_tex, tex_find_flat(t, "AR_WAT1"));
+		}
+		map_free(m);
+	}
+	tex_free(t);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(levels_are_the_compiled_in_wad),
+		cmocka_unit_test(levels_are_textured_by_name),
 		cmocka_unit_test(every_stage_is_playable),
 		cmocka_unit_test(stages_grow_harder),
 	};

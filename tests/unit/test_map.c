@@ -173,7 +173,7 @@ static void builtin_levels_are_listed(void **state)
 	map_free(NULL);
 }
 
-/* Points read off the ARENA1 tables in lvl_builtin.c. */
+/* Points read off ARENA1's plan and tables in levels/arena1.txt. */
 static void builtin_points_land_in_their_sectors(void **state)
 {
 	static const struct { int x, y; uint32_t sector; } pts[] = {

@@ -513,7 +513,7 @@ static void random_pillars_split_consistently(void **state)
 	map_free(m);
 }
 
-/* ARENA1's sectors, read off the tables in engine/lvl_builtin.c. */
+/* ARENA1's sectors, read off levels/arena1.txt. */
 static int arena1_sector(double x, double y)
 {
 	if (x > 0 && x < 640 && y > 0 && y < 640) {

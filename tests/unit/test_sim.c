@@ -220,7 +220,7 @@ static void an_opening_lower_than_the_player_blocks(void **state)
 	map_free(m);
 }
 
-/* ARENA1 (engine/lvl_builtin.c): the start faces the window at x = 640. */
+/* ARENA1 (levels/arena1.txt): the start faces the window at x = 640. */
 static void builtin_window_blocks_and_door_passes(void **state)
 {
 	struct map *m;

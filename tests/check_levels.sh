@@ -1,0 +1,19 @@
+#!/bin/sh
+# The built-in levels' compiled-in PWAD (engine/lvl_wad.c) is exactly what
+# tools/mklevels makes of levels/arena*.txt (docs/maps.md, "The built-in
+# levels"). Needs $BUILD/tools/mklevels (make tools).
+set -u
+cd "$(dirname "$0")/.."
+BUILD=${BUILD:-build}
+gen=$BUILD/tools/mklevels
+if [ ! -x "$gen" ]; then
+	echo "FAIL $gen is not built (make tools)"
+	exit 1
+fi
+"$gen" levels/arena*.txt > "$BUILD/lvl_wad.c.new" || exit 1
+if ! cmp -s "$BUILD/lvl_wad.c.new" engine/lvl_wad.c; then
+	echo "FAIL engine/lvl_wad.c differs from what tools/mklevels makes of levels/arena*.txt;"
+	echo "     regenerate: $gen levels/arena*.txt > engine/lvl_wad.c"
+	exit 1
+fi
+echo "check-levels: engine/lvl_wad.c matches tools/mklevels levels/arena*.txt"
