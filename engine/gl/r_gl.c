@@ -78,7 +78,8 @@ int rgl_new(int w, int h, struct rgl_ctx **out, char *err, size_t errlen)
 	g->buf = malloc((size_t)w * (size_t)h * 4);
 	g->depth = malloc((size_t)w * (size_t)h * sizeof(*g->depth));
 	g->xtoang = malloc((size_t)w * sizeof(*g->xtoang));
-	if (!g->buf || !g->depth || !g->xtoang)
+	g->colmax = malloc((size_t)w * sizeof(*g->colmax));
+	if (!g->buf || !g->depth || !g->xtoang || !g->colmax)
 		goto nomem;
 	/* the ray through column x's centre, as r_new computes it */
 	for (int x = 0; x < w; x++)
@@ -152,6 +153,8 @@ void rgl_flush(struct rgl_ctx *g)
 	free(g->poff);
 	free(g->sec_ss);
 	free(g->sec_first);
+	free(g->ss_box);
+	g->ss_box = NULL;
 	g->poff = NULL;
 	g->sec_ss = g->sec_first = NULL;
 	g->map = NULL;
@@ -173,6 +176,11 @@ void rgl_free(struct rgl_ctx *g)
 	free(g->buf);
 	free(g->depth);
 	free(g->xtoang);
+	free(g->colmax);
+	free(g->sils);
+	free(g->sec_seen);
+	free(g->spr_sec);
+	free(g->silv);
 	free(g);
 }
 
@@ -376,6 +384,9 @@ static void rgl_runs(struct rgl_ctx *g, unsigned mask, int plain)
 
 		if (!(mask & (1u << pass)))
 			continue;
+		/* a sprite standing in a sector that does not show */
+		if (pass == RGL_SPRITE && g->sec_seen[g->spr_sec[(uint32_t)it->key]] != 1)
+			continue;
 		if (ref && (!plain || alpha))
 			name = rgl_texture(g, ref);
 		if (name) {
@@ -397,16 +408,25 @@ static void rgl_runs(struct rgl_ctx *g, unsigned mask, int plain)
 	}
 }
 
-/* One frame's passes, writing colour (ids 0) or ids (1): the world, then
- * (after reading the depth the resolve needs) the sprites against the
- * walls, silhouettes and masked middles only, as the software renderer
- * clips them. */
-static void rgl_pass(struct rgl_ctx *g, int ids)
+/* View depth of a depth-buffer value (window z in [0, 1]). */
+static double rgl_view_depth(float z)
+{
+	const double n = RGL_NEAR, f = RGL_FAR;
+
+	return 2.0 * f * n / ((f + n) - (2.0 * z - 1.0) * (f - n));
+}
+
+/* What a pass writes: the frame's colour channels or surface ids. */
+enum rgl_out { RGL_OUT_COLOUR, RGL_OUT_IDS };
+
+/* The world (everything but sprites) into a cleared colour and depth
+ * buffer. */
+static void rgl_world(struct rgl_ctx *g, enum rgl_out out)
 {
 	const struct rgl_vtx *v = g->vtx;
 	GLsizei stride = (GLsizei)sizeof(*v);
 
-	if (ids) {
+	if (out != RGL_OUT_COLOUR) {
 		glClearColor(0, 0, 0, 0);
 		glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
 		glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_REPLACE);
@@ -421,41 +441,93 @@ static void rgl_pass(struct rgl_ctx *g, int ids)
 	}
 	glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 	glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-	if (g->nvtx > 0) {
-		glVertexPointer(3, GL_FLOAT, stride, &v->x);
-		glTexCoordPointer(4, GL_FLOAT, stride, &v->s);
-		glColorPointer(4, GL_UNSIGNED_BYTE, stride, ids ? v->id : v->c);
-		rgl_runs(g, 1u << RGL_PLANE, ids);
-		/* decals lie on a floor: drawn nearer by a depth offset */
-		glEnable(GL_POLYGON_OFFSET_FILL);
-		glPolygonOffset(-1.0f, -4.0f);
-		rgl_runs(g, 1u << RGL_DECAL, ids);
-		glDisable(GL_POLYGON_OFFSET_FILL);
-		rgl_runs(g, (1u << RGL_WALL) | (1u << RGL_MASKED), ids);
-	}
-	if (!ids)
-		glReadPixels(0, 0, g->w, g->h, GL_DEPTH_COMPONENT, GL_FLOAT, g->depth);
-	if (g->nvtx > 0 && g->st.sprites > 0) {
-		int x0 = g->sbox[0] < 0 ? 0 : g->sbox[0], y0 = g->sbox[1] < 0 ? 0 : g->sbox[1];
-		int x1 = g->sbox[2] > g->w ? g->w : g->sbox[2], y1 = g->sbox[3] > g->h ? g->h : g->sbox[3];
+	if (g->nvtx == 0)
+		return;
+	glVertexPointer(3, GL_FLOAT, stride, &v->x);
+	glTexCoordPointer(4, GL_FLOAT, stride, &v->s);
+	glColorPointer(4, GL_UNSIGNED_BYTE, stride, out == RGL_OUT_COLOUR ? v->c : v->id);
+	rgl_runs(g, 1u << RGL_PLANE, out != RGL_OUT_COLOUR);
+	/* decals lie on a floor: drawn nearer by a depth offset */
+	glEnable(GL_POLYGON_OFFSET_FILL);
+	glPolygonOffset(-1.0f, -4.0f);
+	rgl_runs(g, 1u << RGL_DECAL, out != RGL_OUT_COLOUR);
+	glDisable(GL_POLYGON_OFFSET_FILL);
+	rgl_runs(g, (1u << RGL_WALL) | (1u << RGL_MASKED), out != RGL_OUT_COLOUR);
+}
 
-		/* only the sprites' box: the rest of the frame stays the world's */
-		glEnable(GL_SCISSOR_TEST);
-		glScissor(x0, y0, x1 - x0, y1 - y0);
-		glClear(GL_DEPTH_BUFFER_BIT);
-		glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-		rgl_runs(g, (1u << RGL_WALL) | (1u << RGL_SIL) | (1u << RGL_MASKED), 1);
-		glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-		glDepthFunc(GL_LEQUAL);
-		glMatrixMode(GL_PROJECTION);
-		glLoadMatrixd(g->mat_view);
-		rgl_runs(g, 1u << RGL_SPRITE, ids);
-		glLoadMatrixd(g->mat_world);
-		glMatrixMode(GL_MODELVIEW);
-		glDepthFunc(GL_LESS);
-		glDisable(GL_SCISSOR_TEST);
+/* The sprites over the world, with the depth buffer cleared in their box
+ * and holding only the silhouettes and masked middles: Doom clips sprites
+ * by its drawsegs' silhouettes, not by the walls themselves, and where a
+ * silhouette is missing (a zero-height sector's walls) a sprite shows
+ * through. Only sprites standing in a sector that shows are drawn (Doom:
+ * in a sector its walk reached). */
+static void rgl_sprites(struct rgl_ctx *g, enum rgl_out out)
+{
+	const struct rgl_vtx *v = g->vtx;
+	GLsizei stride = (GLsizei)sizeof(*v);
+	int x0 = g->sbox[0] < 0 ? 0 : g->sbox[0], y0 = g->sbox[1] < 0 ? 0 : g->sbox[1];
+	int x1 = g->sbox[2] > g->w ? g->w : g->sbox[2], y1 = g->sbox[3] > g->h ? g->h : g->sbox[3];
+
+	if (g->nvtx == 0 || g->st.sprites == 0 || x1 <= x0 || y1 <= y0)
+		return;
+	glEnable(GL_SCISSOR_TEST);
+	glScissor(x0, y0, x1 - x0, y1 - y0);
+	glClear(GL_DEPTH_BUFFER_BIT);
+	glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+	if (g->nsilv > 0) {
+		const struct rgl_vtx *sv = g->silv;
+
+		glDisable(GL_TEXTURE_2D);
+		glDisable(GL_ALPHA_TEST);
+		glVertexPointer(3, GL_FLOAT, stride, &sv->x);
+		glDrawArrays(GL_TRIANGLES, 0, g->nsilv);
+		glVertexPointer(3, GL_FLOAT, stride, &v->x);
 	}
-	glFinish();
+	rgl_runs(g, 1u << RGL_MASKED, 1);
+	glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+	glDepthFunc(GL_LEQUAL);
+	glMatrixMode(GL_PROJECTION);
+	glLoadMatrixd(g->mat_view);
+	rgl_runs(g, 1u << RGL_SPRITE, out != RGL_OUT_COLOUR);
+	glLoadMatrixd(g->mat_world);
+	glMatrixMode(GL_MODELVIEW);
+	glDepthFunc(GL_LESS);
+	glDisable(GL_SCISSOR_TEST);
+}
+
+/* After the world's colour pass, from its depth: the silhouettes of the
+ * columns segs reach, and which sprites' sectors the walk would reach. */
+static void rgl_reach(struct rgl_ctx *g, const struct map *m)
+{
+	g->nsilv = 0;
+	if (g->st.sprites == 0)
+		return;
+	/* the farthest depth over pairs of rows: a single pixel where the
+	 * rasterizer leaves a crack between a wall and a floor does not count */
+	for (int x = 0; x < g->w; x++) {
+		float zmax = 0, above = 1;
+
+		for (int y = 0; y < g->h; y++) {
+			float z = g->depth[(size_t)y * (size_t)g->w + (size_t)x];
+			float pair = z < above ? z : above;
+
+			zmax = pair > zmax ? pair : zmax;
+			above = z;
+		}
+		g->colmax[x] = (float)rgl_view_depth(zmax);
+	}
+	if (rgl_geo_sils(g, g->colmax) < 0)
+		g->nsilv = 0;
+	memset(g->sec_seen, 0, m->num_sectors);
+	for (int i = 0; i < g->nitems; i++) {
+		uint32_t sec;
+
+		if ((g->items[i].key >> 32) != RGL_SPRITE)
+			continue;
+		sec = g->spr_sec[(uint32_t)g->items[i].key];
+		if (sec < m->num_sectors && !g->sec_seen[sec])
+			g->sec_seen[sec] = rgl_geo_reached(g, sec, g->colmax) ? 1 : 2;
+	}
 }
 
 /* ---- resolve ---------------------------------------------------------- */
@@ -474,7 +546,6 @@ static uint8_t rgl_sky(const struct rgl_ctx *g, const struct tex_pic *sky, const
 
 static void rgl_resolve(struct rgl_ctx *g, const struct tex_set *t, struct r_frame *f)
 {
-	const double n = RGL_NEAR, fr = RGL_FAR;
 	struct tex_pic fbpic = { .w = RGL_FB_SIZE, .h = RGL_FB_SIZE };
 	uint8_t fb[RGL_FB_SIZE * RGL_FB_SIZE];
 	const struct tex_pic *sky;
@@ -492,14 +563,12 @@ static void rgl_resolve(struct rgl_ctx *g, const struct tex_set *t, struct r_fra
 		uint8_t *dst = f->px + (size_t)y * (size_t)f->pitch;
 
 		for (int x = 0; x < g->w; x++, src += 4) {
-			double d, z;
+			double d;
 			int lvl, fade;
 
 			switch (src[2]) {
 			case RGL_MODE_LIT:
-				/* window depth back to view depth */
-				z = 2.0 * dz[x] - 1.0;
-				d = 2.0 * fr * n / ((fr + n) - z * (fr - n));
+				d = rgl_view_depth(dz[x]);
 				fade = d * RGL_FADE_MAX >= RGL_FADE_DIST ? (int)(RGL_FADE_DIST / d) :
 									   RGL_FADE_MAX;
 				lvl = src[1] - fade;
@@ -568,10 +637,16 @@ void rgl_render(struct rgl_ctx *g, const struct map *m, const struct tex_set *t,
 	glMatrixMode(GL_PROJECTION);
 	glLoadMatrixd(g->mat_world);
 	glMatrixMode(GL_MODELVIEW);
-	rgl_pass(g, 0);
+	rgl_world(g, RGL_OUT_COLOUR);
+	glReadPixels(0, 0, g->w, g->h, GL_DEPTH_COMPONENT, GL_FLOAT, g->depth);
+	rgl_reach(g, m);
+	rgl_sprites(g, RGL_OUT_COLOUR);
+	glFinish();
 	rgl_resolve(g, t, f);
 	if (g->ids) {
-		rgl_pass(g, 1);
+		rgl_world(g, RGL_OUT_IDS);
+		rgl_sprites(g, RGL_OUT_IDS);
+		glFinish();
 		rgl_read_ids(g);
 	}
 	for (int i = 0; i < g->n_wall; i++)

@@ -42,7 +42,6 @@
 #include "engine/tab.h"
 
 #define RGL_BOX (MAP_COORD_MAX / 65536.0 * 2.0)
-#define RGL_SKIRT 100000.0              /* "down to the bottom of the view" */
 
 static double rgl_fx(fx_t v)
 {
@@ -186,6 +185,19 @@ static int rgl_poly_node(struct rgl_ctx *g, const struct map *m, uint32_t child,
 	} else if (child < limit) {
 		const struct map_node *nd = &m->nodes[child];
 
+		/* a subsector's box is the one its parent keeps for it */
+		for (int side = 0; side < 2; side++) {
+			uint32_t c = nd->child[side];
+
+			if ((c & MAP_NF_SUBSECTOR) && (c & ~MAP_NF_SUBSECTOR) < g->map_nss) {
+				double *b = &g->ss_box[4 * (c & ~MAP_NF_SUBSECTOR)];
+
+				b[0] = rgl_fx(nd->bbox[side][BOX_LEFT]);
+				b[1] = rgl_fx(nd->bbox[side][BOX_BOTTOM]);
+				b[2] = rgl_fx(nd->bbox[side][BOX_RIGHT]);
+				b[3] = rgl_fx(nd->bbox[side][BOX_TOP]);
+			}
+		}
 		for (int side = 0; side < 2 && rc == 0; side++) {
 			int k = rgl_clip(p, n, a, rgl_fx(nd->x), rgl_fx(nd->y), rgl_fx(nd->dx),
 					 rgl_fx(nd->dy), side == 0);
@@ -206,13 +218,18 @@ int rgl_geo_polys(struct rgl_ctx *g, const struct map *m)
 	free(g->poff);
 	free(g->sec_ss);
 	free(g->sec_first);
+	free(g->ss_box);
+	g->ss_box = malloc(((size_t)m->num_subsectors + 1) * 4 * sizeof(*g->ss_box));
 	g->poff = calloc((size_t)m->num_subsectors * 2 + 1, sizeof(*g->poff));
 	g->sec_ss = malloc(((size_t)m->num_subsectors + 1) * sizeof(*g->sec_ss));
 	g->sec_first = calloc((size_t)m->num_sectors + 2, sizeof(*g->sec_first));
 	g->map = NULL;
 	g->npv = 0;
-	if (!g->poff || !g->sec_ss || !g->sec_first)
+	if (!g->poff || !g->sec_ss || !g->sec_first || !g->ss_box)
 		return -ENOMEM;
+	/* a map without nodes: its one subsector is seen from anywhere */
+	for (uint32_t i = 0; i < 4 * (m->num_subsectors + 1); i++)
+		g->ss_box[i] = (i % 4) < 2 ? -RGL_BOX : RGL_BOX;
 	g->map_nss = m->num_subsectors;
 	g->map_nsecs = m->num_sectors;
 	/* a counting sort of the subsectors by sector */
@@ -311,7 +328,7 @@ static void rgl_surf(struct rgl_surf *s, enum rgl_pass pass, uint32_t texref, in
 }
 
 static void rgl_set(struct rgl_vtx *v, const struct rgl_surf *s, double x, double y, double z,
-		   double ts, double tt, double tq)
+		    double ts, double tt, double tq)
 {
 	v->x = (float)x;
 	v->y = (float)y;
@@ -605,19 +622,224 @@ static int rgl_part(struct rgl_ctx *g, const struct rgl_line *l, const struct te
 
 /* Sprite clipping (r_things.c, Doom's silhouettes): a sprite behind a seg
  * is hidden below the seg's bottom clip and above its top clip, as the
- * software renderer saved them after drawing the seg: depth-only quads in
- * the seg's plane, from height zb down and from zt up (a one-sided wall or
- * a closed door: the whole column). */
+ * software renderer saved them after drawing the seg: from height zb down
+ * and from zt up (a one-sided wall or a closed door: the whole column).
+ * Kept here and made into quads once the world's depth shows in which
+ * columns the seg is reached (rgl_geo_sils). */
 static int rgl_sil(struct rgl_ctx *g, const struct rgl_line *l, int bottom, double zb, int top,
 		   double zt)
 {
-	struct rgl_surf s;
+	struct rgl_sil *sl;
 
-	rgl_surf(&s, RGL_SIL, 0, 0, 0, RGL_MODE_NONE, 0);
-	if (bottom && rgl_flat_quad(g, &s, l, -RGL_SKIRT, zb) < 0)
-		return -ENOMEM;
-	if (top && rgl_flat_quad(g, &s, l, zt, RGL_SKIRT) < 0)
-		return -ENOMEM;
+	if (!bottom && !top)
+		return 0;
+	if (g->nsils == g->maxsils) {
+		int cap = g->maxsils ? 2 * g->maxsils : 256;
+		struct rgl_sil *ns = realloc(g->sils, (size_t)cap * sizeof(*ns));
+
+		if (!ns)
+			return -ENOMEM;
+		g->sils = ns;
+		g->maxsils = cap;
+	}
+	sl = &g->sils[g->nsils++];
+	sl->ax = l->ax;
+	sl->ay = l->ay;
+	sl->bx = l->bx;
+	sl->by = l->by;
+	sl->zb = bottom ? zb : -RGL_SKIRT;
+	sl->zt = top ? zt : RGL_SKIRT;
+	return 0;
+}
+
+/* Room for n more silhouette vertices, or NULL. */
+static struct rgl_vtx *rgl_sil_push(struct rgl_ctx *g, int n)
+{
+	if (g->nsilv + n > g->maxsilv) {
+		int cap = g->maxsilv ? g->maxsilv : 1024;
+		struct rgl_vtx *nv;
+
+		while (cap < g->nsilv + n)
+			cap *= 2;
+		nv = realloc(g->silv, (size_t)cap * sizeof(*nv));
+		if (!nv)
+			return NULL;
+		g->silv = nv;
+		g->maxsilv = cap;
+	}
+	g->nsilv += n;
+	return &g->silv[g->nsilv - n];
+}
+
+/* Quads of silhouette sl between screen x positions x0 < x1 (pixels from
+ * the left edge): the part of the seg whose rays those are. */
+static int rgl_sil_quads(struct rgl_ctx *g, const struct rgl_sil *sl, double x0, double x1)
+{
+	double c = rgl_fx(g->vcos), s = rgl_fx(g->vsin), half = g->w / 2.0;
+	double ad = sl->ax * c + sl->ay * s, al = sl->ax * s - sl->ay * c;
+	double bd = sl->bx * c + sl->by * s, bl = sl->bx * s - sl->by * c;
+	double t[2], px[2], py[2];
+	struct rgl_surf sf;
+
+	/* the ray l = X d (X = x / half - 1) meets a + t (b - a) at
+	 * t = (X ad - al) / ((bl - al) - X (bd - ad)) */
+	for (int k = 0; k < 2; k++) {
+		double X = (k ? x1 : x0) / half - 1, den = (bl - al) - X * (bd - ad);
+
+		t[k] = den != 0 ? (X * ad - al) / den : 0;
+		t[k] = t[k] < 0 ? 0 : t[k] > 1 ? 1 : t[k];
+		px[k] = sl->ax + t[k] * (sl->bx - sl->ax);
+		py[k] = sl->ay + t[k] * (sl->by - sl->ay);
+	}
+	rgl_surf(&sf, RGL_SIL, 0, 0, 0, RGL_MODE_NONE, 0);
+	for (int part = 0; part < 2; part++) {
+		double lo = part ? sl->zt : -RGL_SKIRT, hi = part ? RGL_SKIRT : sl->zb;
+		static const int tri[6] = { 0, 1, 2, 0, 2, 3 };
+		struct rgl_vtx *v;
+
+		if (part ? sl->zt >= RGL_SKIRT : sl->zb <= -RGL_SKIRT)
+			continue;
+		v = rgl_sil_push(g, 6);
+		if (!v)
+			return -ENOMEM;
+		for (int i = 0; i < 6; i++) {
+			int k = tri[i], e = k == 1 || k == 2;
+
+			rgl_set(&v[i], &sf, px[e], py[e], k < 2 ? hi : lo, 0, 0, 1);
+		}
+	}
+	return 0;
+}
+
+int rgl_geo_sils(struct rgl_ctx *g, const float *colmax)
+{
+	double c = rgl_fx(g->vcos), s = rgl_fx(g->vsin), half = g->w / 2.0;
+
+	g->nsilv = 0;
+	for (int i = 0; i < g->nsils; i++) {
+		const struct rgl_sil *sl = &g->sils[i];
+		double ad = sl->ax * c + sl->ay * s, al = sl->ax * s - sl->ay * c;
+		double bd = sl->bx * c + sl->by * s, bl = sl->bx * s - sl->by * c;
+		double sa, sb;
+		int xa, xb, run = -1;
+
+		/* the seg's columns, after the near plane */
+		if (ad < RGL_NEAR && bd < RGL_NEAR)
+			continue;
+		if (ad < RGL_NEAR || bd < RGL_NEAR) {
+			double f = (RGL_NEAR - ad) / (bd - ad);
+
+			if (ad < RGL_NEAR) {
+				al += f * (bl - al);
+				ad = RGL_NEAR;
+			} else {
+				bl = al + f * (bl - al);
+				bd = RGL_NEAR;
+			}
+		}
+		sa = half + half * al / ad;
+		sb = half + half * bl / bd;
+		if (sa > sb) {
+			double tmp = sa;
+
+			sa = sb;
+			sb = tmp;
+		}
+		xa = (int)floor(sa - 0.5);
+		xb = (int)ceil(sb - 0.5);
+		xa = xa < 0 ? 0 : xa;
+		xb = xb > g->w - 1 ? g->w - 1 : xb;
+		/* reached: somewhere in the column nothing nearer hides the
+		 * seg's line (the software renderer keeps a drawseg only for the
+		 * columns a seg reaches) */
+		for (int x = xa; x <= xb + 1; x++) {
+			int reached = 0;
+
+			if (x <= xb) {
+				double X = (2.0 * x + 1) / g->w - 1, den = (bl - al) - X * (bd - ad);
+				double t = den != 0 ? (X * ad - al) / den : -1, d;
+
+				if (t >= -0.01 && t <= 1.01) {
+					d = ad + t * (bd - ad);
+					reached = d <= colmax[x] * 1.0005 + 0.05;
+				}
+			}
+			if (reached && run < 0)
+				run = x;
+			if (!reached && run >= 0) {
+				if (rgl_sil_quads(g, sl, run, x) < 0)
+					return -ENOMEM;
+				run = -1;
+			}
+		}
+	}
+	return 0;
+}
+
+/* 1 when the convex polygon p[0..n-1] (world x y pairs) has, in some
+ * column of its projection widened by one each side, a point no farther
+ * than colmax there. */
+static int rgl_poly_reached(const struct rgl_ctx *g, const double *p, int n, const float *colmax)
+{
+	double c = rgl_fx(g->vcos), s = rgl_fx(g->vsin), ex = rgl_fx(g->ex), ey = rgl_fx(g->ey);
+	double half = g->w / 2.0, in[2 * RGL_POLY_MAX], out[2 * RGL_POLY_MAX], lo = 1e30, hi = -1e30;
+	int k = 0;
+
+	/* to view space (l, d), then the part in front of the near plane */
+	for (int i = 0; i < n && i < RGL_POLY_MAX; i++) {
+		double x = p[2 * i] - ex, y = p[2 * i + 1] - ey;
+
+		in[2 * i] = x * s - y * c;
+		in[2 * i + 1] = x * c + y * s;
+	}
+	n = n < RGL_POLY_MAX ? n : RGL_POLY_MAX;
+	/* keep d >= near: the line l = 0... d = near, along +l */
+	k = rgl_clip(in, n, out, 0, RGL_NEAR, 1, 0, 0);
+	if (k < 3)
+		return 0;
+	for (int i = 0; i < k; i++) {
+		double sx = half + half * out[2 * i] / out[2 * i + 1];
+
+		lo = sx < lo ? sx : lo;
+		hi = sx > hi ? sx : hi;
+	}
+	for (int x = (int)floor(lo - 0.5) - 1 < 0 ? 0 : (int)floor(lo - 0.5) - 1;
+	     x < g->w && x <= (int)ceil(hi - 0.5) + 1; x++) {
+		/* the margin columns test the polygon's nearest edge column */
+		double cx = x + 0.5 < lo ? lo : x + 0.5 > hi ? hi : x + 0.5;
+		double X = cx / half - 1;
+
+		/* the nearest point of the polygon on the column's ray l = X d:
+		 * where an edge crosses it */
+		for (int i = 0; i < k; i++) {
+			int j = (i + 1) % k;
+			double fa = out[2 * i] - X * out[2 * i + 1], fb = out[2 * j] - X * out[2 * j + 1];
+
+			if ((fa <= 0 && fb >= 0) || (fa >= 0 && fb <= 0)) {
+				double t = fa != fb ? fa / (fa - fb) : 0;
+				double d = out[2 * i + 1] + t * (out[2 * j + 1] - out[2 * i + 1]);
+
+				if (d <= colmax[x] * 1.0005 + 0.05)
+					return 1;
+			}
+		}
+	}
+	return 0;
+}
+
+int rgl_geo_reached(struct rgl_ctx *g, uint32_t sec, const float *colmax)
+{
+	if (sec >= g->map_nsecs)
+		return 0;
+	/* the walk tests the bounding box its parent node keeps for a
+	 * subsector (r_bsp.c), not the subsector's polygon */
+	for (uint32_t k = g->sec_first[sec]; k < g->sec_first[sec + 1]; k++) {
+		const double *b = &g->ss_box[4 * g->sec_ss[k]];
+		const double box[8] = { b[0], b[1], b[0], b[3], b[2], b[3], b[2], b[1] };
+
+		if (rgl_poly_reached(g, box, 4, colmax))
+			return 1;
+	}
 	return 0;
 }
 
@@ -866,6 +1088,7 @@ static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_s
 	}
 	pic = &t->sprpics[pi];
 	sec = map_point_sector(m, gx, gy);
+	g->spr_sec[i] = sec;
 	/* the level r_things.c gives it: faded by its scale (w/2) / d, in
 	 * r_scale_level's integer steps, or 0 when full bright */
 	level = 0;
@@ -930,8 +1153,25 @@ int rgl_geo_build(struct rgl_ctx *g, const struct map *m, const struct tex_set *
 {
 	g->nvtx = 0;
 	g->nitems = 0;
+	g->nsils = 0;
 	g->sbox[0] = g->sbox[1] = INT32_MAX;
 	g->sbox[2] = g->sbox[3] = INT32_MIN;
+	if (nspr > g->max_spr) {
+		uint32_t *ns = realloc(g->spr_sec, (size_t)nspr * sizeof(*ns));
+
+		if (!ns)
+			return -ENOMEM;
+		g->spr_sec = ns;
+		g->max_spr = nspr;
+	}
+	if ((int)m->num_sectors > g->max_seen) {
+		uint8_t *ns = realloc(g->sec_seen, m->num_sectors);
+
+		if (!ns)
+			return -ENOMEM;
+		g->sec_seen = ns;
+		g->max_seen = (int)m->num_sectors;
+	}
 	for (uint32_t i = 0; i < m->num_segs; i++)
 		if (rgl_seg(g, m, t, i) < 0)
 			return -ENOMEM;

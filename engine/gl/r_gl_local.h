@@ -51,19 +51,28 @@ enum rgl_texkind {
 #define RGL_TEXREF(kind, index) (((uint32_t)(kind) << 28) | (uint32_t)(index))
 
 /* Which passes draw a run of triangles (r_gl.c): the world pass draws
- * planes, decals, walls and masked middles; then, with the depth buffer cleared,
- * the sprite pass draws walls, silhouettes and masked middles into the
+ * planes, decals, walls and masked middles; then, with the depth buffer
+ * cleared, the sprite pass draws silhouettes and masked middles into the
  * depth buffer only, and the sprites against it. Masked middles and
  * sprites are alpha-tested, their textures clamped vertically (sprites
  * both ways). */
 enum rgl_pass {
 	RGL_PLANE,                      /* floors, ceilings, sky, black fills */
 	RGL_DECAL,                      /* sky drawn over a floor (polygon offset) */
-	RGL_WALL,                       /* textured wall parts */
+	RGL_WALL,                       /* wall parts */
 	RGL_MASKED,                     /* masked middle textures */
 	RGL_SIL,                        /* silhouettes: sprite clipping only */
 	RGL_SPRITE
 };
+
+/* A seg's silhouettes (rgl_geo_sils): ends relative to the eye, heights
+ * of the bottom clip (-RGL_SKIRT: none) and top clip (RGL_SKIRT: none). */
+struct rgl_sil {
+	double ax, ay, bx, by;
+	double zb, zt;
+};
+
+#define RGL_SKIRT 100000.0              /* "to the top (bottom) of the view" */
 
 /* One vertex: position relative to the eye, texture coordinates (s, t, r,
  * q: q != 1 only for projected flats), colour-pass colour, id colour. */
@@ -119,6 +128,8 @@ struct rgl_ctx {
 	uint32_t *sec_ss;               /* subsectors by sector: sector i's are */
 	uint32_t *sec_first;            /* sec_ss[sec_first[i] .. sec_first[i+1]) */
 	uint32_t map_nsecs;
+	double *ss_box;                 /* per subsector: its parent node's box
+					 * for it, x0 y0 x1 y1 */
 	struct rgl_pieces *pieces;      /* scratch of the sky decals, or NULL */
 
 	/* this frame's triangles */
@@ -128,6 +139,11 @@ struct rgl_ctx {
 	int nitems, maxitems;
 	uint32_t *idx;                  /* vertex indices in draw order */
 	int maxidx;
+	struct rgl_sil *sils;           /* this frame's silhouettes */
+	int nsils, maxsils;
+	struct rgl_vtx *silv;           /* their quads, in reached columns */
+	int nsilv, maxsilv;
+	float *colmax;                  /* per column: the farthest view depth */
 
 	/* this frame's view, as the software renderer sets it up */
 	fx_t ex, ey, ez;
@@ -139,6 +155,10 @@ struct rgl_ctx {
 					 * positions; projection alone, for view
 					 * space (sprites) */
 	double mat_view[16];
+	uint8_t *sec_seen;              /* per sector: 0 not yet known, 1 reached,
+					 * 2 not reached (rgl_geo_reached) */
+	uint32_t *spr_sec;              /* per sprite in the list: its sector */
+	int max_seen, max_spr;
 	int sbox[4];                    /* the sprites' screen box: x0, y0, x1, y1
 					 * (GL window coordinates, y up) */
 
@@ -152,6 +172,14 @@ int rgl_geo_polys(struct rgl_ctx *g, const struct map *m);
 /* This frame's triangles: g->vtx, g->items. 0 or -ENOMEM. */
 int rgl_geo_build(struct rgl_ctx *g, const struct map *m, const struct tex_set *t,
 		  const struct r_sprite *spr, int nspr);
+/* The silhouettes' quads (g->silv) in the columns where their seg is
+ * reached: where its depth is within colmax (the farthest view depth of
+ * the world in that column). 0 or -ENOMEM. */
+int rgl_geo_sils(struct rgl_ctx *g, const float *colmax);
+/* Whether sector sec is reached, as the software renderer's walk would:
+ * some point of one of its subsectors' polygons lies, in some column, no
+ * farther than colmax there (the world's farthest depth in that column). */
+int rgl_geo_reached(struct rgl_ctx *g, uint32_t sec, const float *colmax);
 /* Colormap level of a light level before fade (r_light_base's rule). */
 int rgl_light_base(int light);
 /* The picture wall texture num draws now (animation applied): NULL for 0,
