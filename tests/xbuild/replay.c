@@ -24,6 +24,20 @@
  *     writes a format 1 recording for built-in level 1: a coin and START,
  *     then TICKS ticks of random play (xorshift32 from SEED): movement,
  *     turning and strafing held for random spans, running into walls
+ *   replay --cut IN K OUT
+ *     writes the rest of IN from tick K on as a recording of its own that
+ *     starts from a snapshot (as the flight recorder's games do): IN's
+ *     ticks 0..K-1 run as a replay runs them, the sim is snapshotted
+ *     (sim_snapshot), and OUT (format 2) holds that snapshot and IN's
+ *     records from tick K (with their stored hashes). Its replay prints
+ *     the hashes of IN's ticks K.. (numbered from 0). Refused when the
+ *     state at the cut shows the attract DEMO page: the demo's own sim
+ *     (app/demo.c) is not part of the snapshot, so the frames of a demo
+ *     under way could not be reproduced.
+ *
+ * A recording with a snapshot starts from it: sim_init_stages on the
+ * recording's content and settings, then sim_restore, before the first
+ * tick (what the daemon must do too).
  *
  * Exit: 0, 1 (verification failed or nothing to verify), 2 (bad usage,
  * unreadable or refused recording).
@@ -179,6 +193,80 @@ static int rp_make_random(const char *out, uint32_t ticks, uint32_t seed)
 	return rc;
 }
 
+/* replay --cut IN K OUT (see the top of the file). */
+static int rp_cut(const char *in, uint32_t k, const char *out)
+{
+	struct rec_reader *rd = NULL;
+	struct rec_writer *w = NULL;
+	const struct rec_header *h;
+	struct rec_header nh;
+	struct ct_spec spec = { 0 };
+	struct ct ct = { 0 };
+	struct sim sim;
+	struct rec_tick rt;
+	uint8_t *snap = NULL;
+	char err[512];
+	int rc;
+
+	rc = rec_reader_open(in, &rd, err, sizeof(err));
+	if (rc < 0) {
+		fprintf(stderr, "replay: %s\n", err);
+		return 2;
+	}
+	h = rec_reader_header(rd);
+	rc = 2;
+	spec.level = h->level ? h->level : 1;
+	if (ct_load(&ct, &spec, err, sizeof(err)) < 0) {
+		fprintf(stderr, "replay: %s\n", err);
+		goto out;
+	}
+	if (rec_check(h, sim_stages_hash((const struct map *const *)ct.maps, ct.nmaps), err,
+		      sizeof(err)) < 0) {
+		fprintf(stderr, "replay: %s: refused: %s\n", in, err);
+		goto out;
+	}
+	sim_init_stages(&sim, (const struct map *const *)ct.maps, ct.nmaps, &h->set, NULL, NULL);
+	if (h->snapshot_len && sim_restore(&sim, h->snapshot, h->snapshot_len) < 0) {
+		fprintf(stderr, "replay: %s: refused: its snapshot does not fit this build\n", in);
+		goto out;
+	}
+	for (uint32_t t = 0; t < k; t++) {
+		if (rec_reader_next_tick(rd, &rt) != 1) {
+			fprintf(stderr, "replay: %s: no tick %u to cut at\n", in, k);
+			goto out;
+		}
+		sim_tick(&sim, &rt.cmd);
+	}
+	if (sim.mode == SIM_ATTRACT && sim.page == SIM_PAGE_DEMO) {
+		fprintf(stderr, "replay: %s: tick %u shows the attract DEMO page, whose demo is "
+				"not in a snapshot\n", in, k);
+		goto out;
+	}
+	snap = malloc(sim_snapshot_size());
+	if (!snap)
+		goto out;
+	sim_snapshot(&sim, snap);
+	nh = *h;
+	nh.version = REC_VERSION_2;
+	nh.level = (uint8_t)spec.level;
+	nh.snapshot = snap;
+	nh.snapshot_len = (uint32_t)sim_snapshot_size();
+	if (rec_writer_open(out, &nh, &w) < 0) {
+		fprintf(stderr, "replay: %s: cannot write\n", out);
+		goto out;
+	}
+	rc = 0;
+	while (rc == 0 && rec_reader_next_tick(rd, &rt) == 1)
+		rc = rec_writer_put_tick(w, &rt) < 0 ? 2 : 0;
+	if (rec_writer_close(w) < 0)
+		rc = 2;
+out:
+	free(snap);
+	ct_free(&ct);
+	rec_reader_close(rd);
+	return rc;
+}
+
 static double rp_now(void)
 {
 	struct timespec ts;
@@ -214,6 +302,8 @@ int main(int argc, char **argv)
 			fprintf(stderr, "replay: %s: %s\n", argv[2], strerror(-rc));
 		return rc < 0 ? 2 : 0;
 	}
+	if (argc == 5 && strcmp(argv[1], "--cut") == 0)
+		return rp_cut(argv[2], (uint32_t)strtoul(argv[3], NULL, 10), argv[4]);
 	if (rp_args(argc, argv, &o) < 0)
 		return rp_usage();
 	rc = rec_reader_open(o.file, &rd, err, sizeof(err));
@@ -254,6 +344,11 @@ int main(int argc, char **argv)
 	}
 	rec_verify_init(&ver, h, &run);
 	sim_init_stages(&sim, (const struct map *const *)ct.maps, ct.nmaps, &run.set, NULL, NULL);
+	if (h->snapshot_len && sim_restore(&sim, h->snapshot, h->snapshot_len) < 0) {
+		fprintf(stderr, "replay: %s: refused: its start snapshot does not fit this build "
+				"and content\n", o.file);
+		goto out;
+	}
 	if (demo_init(&demo, &ct, err, sizeof(err)) < 0) {
 		fprintf(stderr, "replay: %s\n", err);
 		goto out;

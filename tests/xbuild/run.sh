@@ -14,7 +14,12 @@
 # byte, what the daemon itself prints with --replay (gcc -O2). Then the
 # hashes the x86-64 replay stores in a format 2 recording are verified by
 # every build (--verify), and a recording with one changed hash must fail
-# verification at that tick.
+# verification at that tick. Then recordings that start from a sim
+# snapshot (as the flight recorder's games do; replay --cut makes them
+# from the tail of a recording): every build's replay of one must print
+# the daemon's hashes for those ticks of the whole recording, stored
+# hashes verify, and a damaged snapshot or a cut on the attract DEMO page
+# is refused.
 # The aarch64 part is skipped, loudly, only when qemu-user cannot run a
 # static aarch64 program here; a missing cross compiler is a failure
 # (scripts/setup.sh installs it).
@@ -188,6 +193,82 @@ if "$tmp/run-$FIRST" --quiet --rehash "$tmp/v2.rec" "$src"; then
 	fi
 else
 	bad "rehash $src"
+fi
+
+# ---- recordings that start from a snapshot --------------------------------
+# $1 label, $2 recording, $3 K: the recording's ticks K.. replayed from a
+# snapshot of tick K must give, on every build, the hashes the daemon prints
+# for them in a replay of the whole recording (tick numbers aside: the cut
+# counts from 0).
+mkdir -p "$tmp/cut"
+cut_compare() {
+	label=$1; rec=$2; k=$3
+	out=$tmp/cut/$label-at-$k.rec
+	if ! "$tmp/run-$FIRST" --cut "$rec" "$k" "$out" 2>"$tmp/cut.err"; then
+		bad "cut $label at tick $k: $(cat "$tmp/cut.err")"
+		return
+	fi
+	"$BIN" $common --set game.render_width=320 --set game.render_height=240 \
+		--replay "$rec" 2>/dev/null | tail -n +$((k + 1)) | cut -d' ' -f2- >"$tmp/cutref"
+	n=$(wc -l <"$tmp/cutref")
+	if [ "$n" -eq 0 ]; then
+		bad "cut $label at tick $k: the daemon's replay has no ticks after $k"
+		return
+	fi
+	for b in $BUILDS; do
+		"$tmp/run-$b" --size 320x240 "$out" 2>"$tmp/err-$b" | cut -d' ' -f2- >"$tmp/cut-$b" &
+	done
+	wait
+	for b in $BUILDS; do
+		if ! cmp -s "$tmp/cutref" "$tmp/cut-$b"; then
+			bad "$label cut at $k: $b differs from the daemon's ticks $k.. ($(head -n 1 "$tmp/err-$b"))"
+			diff "$tmp/cutref" "$tmp/cut-$b" | head -n 4
+		else
+			cticks=$((cticks + n))
+		fi
+	done
+	say "     $label from a snapshot of tick $k: $n ticks, $BUILDS"
+}
+cticks=0
+before=$fail
+cut_compare random-1 "$tmp/rec/random-1.rec" 1500
+cut_compare random-20261121 "$tmp/rec/random-20261121.rec" 2200
+[ -e "$tmp/rec/replay-game.rec" ] && cut_compare replay-game "$tmp/rec/replay-game.rec" 700
+[ -e "$tmp/rec/committed-golden-game.rec" ] &&
+	cut_compare golden-game "$tmp/rec/committed-golden-game.rec" 900
+[ "$fail" -eq "$before" ] &&
+	ok "every build replays recordings that start from a snapshot to the daemon's hashes ($cticks build-ticks compared)"
+if [ -e "$tmp/v2.rec" ] && "$tmp/run-$FIRST" --cut "$tmp/v2.rec" 1000 "$tmp/v2cut.rec" 2>"$tmp/cut.err"; then
+	before=$fail
+	for b in $BUILDS; do
+		if ! "$tmp/run-$b" --quiet --verify "$tmp/v2cut.rec" 2>"$tmp/verify.err"; then
+			bad "$b --verify of a recording with a snapshot: $(cat "$tmp/verify.err")"
+		fi
+	done
+	[ "$fail" -eq "$before" ] &&
+		ok "every build verifies the hashes stored after a snapshot: $(cat "$tmp/verify.err")"
+	# The snapshot starts at byte 80: change a byte in it.
+	cp "$tmp/v2cut.rec" "$tmp/v2cutbad.rec"
+	printf '\125' | dd of="$tmp/v2cutbad.rec" bs=1 seek=200 conv=notrunc 2>/dev/null
+	"$tmp/run-$FIRST" --quiet "$tmp/v2cutbad.rec" 2>"$tmp/cut.err"
+	rc=$?
+	if [ "$rc" -eq 2 ] && grep -q "snapshot damaged (checksum" "$tmp/cut.err"; then
+		ok "a damaged snapshot is refused: $(cat "$tmp/cut.err")"
+	else
+		bad "a damaged snapshot (exit $rc): $(cat "$tmp/cut.err")"
+	fi
+else
+	bad "cut the recording with hashes: $(cat "$tmp/cut.err" 2>/dev/null)"
+fi
+if [ -e "$tmp/rec/committed-golden-attract.rec" ]; then
+	"$tmp/run-$FIRST" --cut "$tmp/rec/committed-golden-attract.rec" 1000 "$tmp/demo.rec" \
+		2>"$tmp/cut.err"
+	rc=$?
+	if [ "$rc" -eq 2 ] && grep -q "DEMO page" "$tmp/cut.err"; then
+		ok "a cut on the attract DEMO page is refused: $(cat "$tmp/cut.err")"
+	else
+		bad "a cut on the DEMO page (exit $rc): $(cat "$tmp/cut.err")"
+	fi
 fi
 
 if [ "$THREADS" -eq 0 ]; then
