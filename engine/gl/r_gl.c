@@ -379,7 +379,7 @@ static void rgl_runs(struct rgl_ctx *g, unsigned mask, int plain)
 		const struct rgl_item *it = &g->items[i];
 		uint32_t ref = it->tex;
 		int pass = (int)(it->key >> 32);
-		int alpha = pass == RGL_MASKED || pass == RGL_SPRITE;
+		int alpha = pass == RGL_MASKED || pass == RGL_MDECAL || pass == RGL_SPRITE;
 		GLuint name = 0;
 
 		if (!(mask & (1u << pass)))
@@ -453,6 +453,9 @@ static void rgl_world(struct rgl_ctx *g, enum rgl_out out)
 	rgl_runs(g, 1u << RGL_DECAL, out != RGL_OUT_COLOUR);
 	glDisable(GL_POLYGON_OFFSET_FILL);
 	rgl_runs(g, (1u << RGL_WALL) | (1u << RGL_MASKED), out != RGL_OUT_COLOUR);
+	glEnable(GL_POLYGON_OFFSET_FILL);
+	rgl_runs(g, 1u << RGL_MDECAL, out != RGL_OUT_COLOUR);
+	glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 /* The sprites over the world, with the depth buffer cleared in their box

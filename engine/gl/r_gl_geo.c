@@ -522,24 +522,52 @@ static void rgl_cut_cone(struct rgl_pieces *ps, double ax, double ay, double bx,
 	}
 }
 
-/* Doom's sky over a floor: between two sky ceilings the sky comes down to
- * the lower one, and when that is below the front floor the software
- * renderer's sky rows cover the front floor too, in the columns where the
- * seg is drawn, down to the line where the back ceiling's edge at the seg
- * projects. On the floor that is the part of the front sector between the
- * seg and the seg scaled towards the eye by ff / hfc (heights above the
- * eye), less the columns of one-sided segs in front of it, cut by each of
- * the sector's subsector polygons. Drawn over the floor as a sky decal. */
-static int rgl_sky_decal(struct rgl_ctx *g, const struct map *m, const struct map_seg *sg,
-			 const struct rgl_line *l, double ff, double hfc)
+/* A masked middle's texture as a decal shows it: the wall's mapping seen
+ * through each point of the decal's plane (rgl_decal). */
+struct rgl_dmap {
+	const struct rgl_line *l;       /* the seg */
+	double tm;                      /* texel row 0's height above the eye */
+	double th, tw;                  /* the texture's height and width */
+};
+
+/* Texture coordinates at P = (px, py, pz) (relative to the eye) of a
+ * decal showing dm's wall: the ray through P meets the wall's line at
+ * Q = P / k; the wall's (s, t) at Q, times k, and q = k, so that GL's
+ * interpolation over the decal gives the wall's own perspective mapping. */
+static void rgl_dmap_at(const struct rgl_dmap *dm, double px, double py, double pz, double *tc)
+{
+	const struct rgl_line *l = dm->l;
+	double dx = l->bx - l->ax, dy = l->by - l->ay;
+	double den = dx * py - dy * px, lam, qx, qy, u;
+
+	lam = den != 0 ? (dx * l->ay - dy * l->ax) / den : 1;
+	qx = lam * px;
+	qy = lam * py;
+	u = l->u0 + ((qx - l->ax) * dx + (qy - l->ay) * dy) / (l->len > 0 ? l->len : 1);
+	tc[2] = lam != 0 ? 1 / lam : 1;
+	tc[0] = (dm->tm - lam * pz) / dm->th * tc[2];
+	tc[1] = u / dm->tw * tc[2];
+}
+
+/* Doom's planes drawn past a seg's edge, as a decal on the front floor (or
+ * ceiling) plane at height pz above the eye: the software renderer marks
+ * or draws the rows between the seg's edge at height pz and its edge at
+ * height ez (further from the horizon), and in the columns the seg reaches
+ * those rows cover the front plane too. On the plane that is the part of
+ * the front sector between the seg and the seg scaled towards the eye by
+ * pz / ez, less the columns of one-sided segs in front of it, cut by each
+ * of the sector's subsector polygons. s: the decal's surface; dm: the
+ * masked texture it shows, or NULL (then untextured, e.g. the sky). */
+static int rgl_decal(struct rgl_ctx *g, const struct map *m, const struct map_seg *sg,
+		     const struct rgl_line *l, double pz, double ez, const struct rgl_surf *s,
+		     const struct rgl_dmap *dm)
 {
 	struct rgl_pieces *ps;
-	double k = ff / hfc, ex = rgl_fx(g->ex), ey = rgl_fx(g->ey);
+	double k = pz / ez, ex = rgl_fx(g->ex), ey = rgl_fx(g->ey);
 	double sax = rgl_fx(m->vertices[sg->v1].x), say = rgl_fx(m->vertices[sg->v1].y);
 	double sdx = rgl_fx(m->vertices[sg->v2].x) - sax, sdy = rgl_fx(m->vertices[sg->v2].y) - say;
 	double tmp[2 * RGL_POLY_MAX];
 	uint32_t sec = sg->front;
-	struct rgl_surf s;
 
 	if (sec >= g->map_nsecs)
 		return 0;
@@ -571,7 +599,6 @@ static int rgl_sky_decal(struct rgl_ctx *g, const struct map *m, const struct ma
 			rgl_cut_cone(ps, rgl_fx(a->x) - ex, rgl_fx(a->y) - ey, rgl_fx(b->x) - ex,
 				     rgl_fx(b->y) - ey);
 	}
-	rgl_surf(&s, RGL_DECAL, 0, 0, 0, RGL_MODE_SKY, r_id(R_IDK_SKY, 0));
 	for (int pc = 0; pc < ps->count; pc++) {
 		for (uint32_t j = g->sec_first[sec]; j < g->sec_first[sec + 1]; j++) {
 			uint32_t ss = g->sec_ss[j];
@@ -593,13 +620,20 @@ static int rgl_sky_decal(struct rgl_ctx *g, const struct map *m, const struct ma
 			}
 			if (n < 3)
 				continue;
-			v = rgl_push(g, &s, 3 * (n - 2));
+			v = rgl_push(g, s, 3 * (n - 2));
 			if (!v)
 				return -ENOMEM;
 			for (int t = 1; t + 1 < n; t++) {
-				rgl_set(v++, &s, a[0], a[1], ff, 0, 0, 1);
-				rgl_set(v++, &s, a[2 * t], a[2 * t + 1], ff, 0, 0, 1);
-				rgl_set(v++, &s, a[2 * t + 2], a[2 * t + 3], ff, 0, 0, 1);
+				const int tri[3] = { 0, t, t + 1 };
+
+				for (int q = 0; q < 3; q++) {
+					double tc[3] = { 0, 0, 1 };
+					double x = a[2 * tri[q]], y = a[2 * tri[q] + 1];
+
+					if (dm)
+						rgl_dmap_at(dm, x, y, pz, tc);
+					rgl_set(v++, s, x, y, pz, tc[0], tc[1], tc[2]);
+				}
 			}
 		}
 	}
@@ -913,7 +947,11 @@ static int rgl_seg(struct rgl_ctx *g, const struct map *m, const struct tex_set 
 		rgl_surf(&s, RGL_PLANE, 0, 0, 0, RGL_MODE_SKY, r_id(R_IDK_SKY, 0));
 		if (rgl_flat_quad(g, &s, &l, hfc, RGL_SKIRT) < 0)
 			return -ENOMEM;
-		if (hfc < ff && ff < 0 && !sky_f && rgl_sky_decal(g, m, sg, &l, ff, hfc) < 0)
+		/* Doom's sky over a floor: below the front floor, the sky
+		 * comes down past it */
+		rgl_surf(&s, RGL_DECAL, 0, 0, 0, RGL_MODE_SKY, r_id(R_IDK_SKY, 0));
+		if (hfc < ff && ff < 0 && !sky_f &&
+		    rgl_decal(g, m, sg, &l, ff, hfc, &s, NULL) < 0)
 			return -ENOMEM;
 	} else if (!sky_c && fs->ceil_h <= g->ez) {
 		rgl_surf(&s, RGL_PLANE, 0, g->black, 0, RGL_MODE_RAW, r_id(R_IDK_BACK, sg->front));
@@ -998,12 +1036,22 @@ static int rgl_seg(struct rgl_ctx *g, const struct map *m, const struct tex_set 
 		double h = mid ? mid->h : RGL_FB_SIZE;
 		double lo = ff > bf ? ff : bf, hi = fc < bc ? fc : bc;
 		double tm = ((ln->flags & ML_DONTPEGBOTTOM) ? lo + h : hi) + yoff;
+		struct rgl_dmap dm = { &l, tm, h, mid ? mid->w : RGL_FB_SIZE };
+		uint32_t ref = mfb ? RGL_TEXREF(RGL_TEX_FBWALL, 0) : RGL_TEXREF(RGL_TEX_WALL, midx);
 
 		g->st.missing += (uint32_t)mfb;
-		rgl_surf(&s, RGL_MASKED,
-			 mfb ? RGL_TEXREF(RGL_TEX_FBWALL, 0) : RGL_TEXREF(RGL_TEX_WALL, midx), 255, base,
-			 RGL_MODE_LIT, r_id(R_IDK_MASKED, lside));
-		return rgl_wall_part(g, &s, &l, tm - h > lo ? tm - h : lo, tm < hi ? tm : hi, tm, mid);
+		rgl_surf(&s, RGL_MASKED, ref, 255, base, RGL_MODE_LIT, r_id(R_IDK_MASKED, lside));
+		if (rgl_wall_part(g, &s, &l, tm - h > lo ? tm - h : lo, tm < hi ? tm : hi, tm, mid) < 0)
+			return -ENOMEM;
+		/* where the seg marks no floor (ceiling) rows, the software
+		 * renderer's clip there is what was drawn before: the texture
+		 * hanging below the floor (above the ceiling) shows over the
+		 * front plane, as a decal on it */
+		rgl_surf(&s, RGL_MDECAL, ref, 255, base, RGL_MODE_LIT, r_id(R_IDK_MASKED, lside));
+		if (!markf && tm - h < lo && lo < 0 && rgl_decal(g, m, sg, &l, lo, tm - h, &s, &dm) < 0)
+			return -ENOMEM;
+		if (!markc && tm > hi && hi > 0 && rgl_decal(g, m, sg, &l, hi, tm, &s, &dm) < 0)
+			return -ENOMEM;
 	}
 	return 0;
 }

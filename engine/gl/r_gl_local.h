@@ -61,6 +61,7 @@ enum rgl_pass {
 	RGL_DECAL,                      /* sky drawn over a floor (polygon offset) */
 	RGL_WALL,                       /* wall parts */
 	RGL_MASKED,                     /* masked middle textures */
+	RGL_MDECAL,                     /* masked textures over a plane (offset) */
 	RGL_SIL,                        /* silhouettes: sprite clipping only */
 	RGL_SPRITE
 };
