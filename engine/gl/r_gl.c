@@ -166,8 +166,11 @@ void rgl_free(struct rgl_ctx *g)
 	if (!g)
 		return;
 	rgl_flush(g);
-	if (g->osm)
+	if (g->osm) {
+		if (OSMesaGetCurrentContext() == (OSMesaContext)g->osm)
+			OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
 		OSMesaDestroyContext((OSMesaContext)g->osm);
+	}
 	free(g->pv);
 	free(g->pieces);
 	free(g->vtx);
