@@ -48,7 +48,7 @@ SYSUSERSDIR ?= /usr/lib/sysusers.d
 TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
 .PHONY: all setup run test test-unit test-asan test-script test-replay test-clang \
-	check-layers check-tables check-systemd check-install docs-shots fuzz fuzzers bench install clean tests tools
+	check-layers check-tables check-systemd check-install check-levels docs-shots fuzz fuzzers bench install clean tests tools
 
 all: $(BIN) tools
 
@@ -121,13 +121,14 @@ check-systemd:
 check-install: $(BIN)
 	@tests/check_install.sh
 
-# The screenshot in docs/ is made by the daemon's own screenshot command.
+# The screenshots in docs/ are made by the daemon's own screenshot command.
 docs-shots: $(BIN)
-	@mkdir -p docs/images
-	printf '0 tap coin\n1 tap start\n2 end\n' > $(BUILD)/shot.scr
-	./$(BIN) --config-dir $(BUILD)/none --state-dir $(BUILD)/none --script $(BUILD)/shot.scr \
-		--set game.render_width=640 --set game.render_height=480 \
-		--screenshot docs/images/arena1-start.png
+	@scripts/docs-shots.sh $(BIN)
+	@scripts/game-shots.sh $(BIN)
+
+# engine/lvl_wad.c is exactly what tools/mklevels makes of levels/*.txt.
+check-levels: $(BUILD)/tools/mklevels
+	@BUILD=$(BUILD) tests/check_levels.sh
 
 bench: all
 	@tests/bench.sh $(BIN)

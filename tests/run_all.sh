@@ -60,6 +60,7 @@ passed=$((passed + 1))
 
 step check-layers make --no-print-directory check-layers
 step check-tables make --no-print-directory check-tables
+step check-levels make --no-print-directory check-levels
 step check-systemd make --no-print-directory check-systemd
 step check-install make --no-print-directory check-install
 unit unit-gcc build
@@ -71,6 +72,7 @@ step script-tests tests/script/run.sh build/arcaded
 step replay-tests tests/replay/run.sh build/arcaded build/O0/arcaded
 step powercut tests/powercut/run.sh
 step xbuild tests/xbuild/run.sh build/arcaded
+step soak tests/soak/run.sh build/arcaded
 step terminal-preview tests/term/run.sh build/arcaded
 step fuzz make --no-print-directory fuzz FUZZ_SECONDS="${FUZZ_SECONDS:-60}"
 
