@@ -21,6 +21,7 @@
 #include "app/demo.h"
 #include "app/view.h"
 #include "config/bind.h"
+#include "config/fr.h"
 #include "config/prof.h"
 #include "display/dp.h"
 #include "display/shot.h"
@@ -76,6 +77,10 @@ struct app {
 	uint64_t map_hash;         /* of every stage: what recordings are tied to */
 	struct view view;          /* draws the sim's frame */
 	struct demo demo;          /* the attract mode's demo */
+	struct fr *fr;             /* flight recorder: the last games, NULL when off */
+	struct rec_writer *game;   /* the game being recorded by fr */
+	uint8_t *snap;             /* sim_snapshot before a tick that may start a game */
+	int snap_taken;
 	uint32_t set_gen, scores_gen, books_gen;  /* last persisted generations */
 	uint8_t res;               /* render size choice in effect (menu) */
 	int persist;               /* live cabinet: save settings, scores, books */
@@ -542,6 +547,104 @@ static int open_display(struct app *a)
 	return 0;
 }
 
+/* ---- flight recorder -------------------------------------------------- */
+
+/* Opens the recorder of a live cabinet ([recorder] keep games, max_mb). */
+static void flight_setup(struct app *a)
+{
+	char dir[CFG_PATH_MAX + 16], msg[512] = "";
+	int rc;
+
+	if (!a->persist || a->cfg->recorder.keep <= 0)
+		return;
+	snprintf(dir, sizeof(dir), "%s/recordings", a->cfg->paths.state_dir);
+	rc = fr_open(dir, a->cfg->recorder.keep, (uint64_t)a->cfg->recorder.max_mb << 20, &a->fr,
+		     msg, sizeof(msg));
+	if (msg[0])
+		logf_("%s: %s", dir, msg);
+	if (rc < 0) {
+		logf_("%s: %s; games are not recorded", dir, strerror(-rc));
+		a->fr = NULL;
+		return;
+	}
+	a->snap = malloc(sim_snapshot_size());
+	if (!a->snap) {
+		fr_close(a->fr);
+		a->fr = NULL;
+	}
+}
+
+/* Before a tick: a START in attract may begin a game, so the state it
+ * begins from is kept (the recording replays from it). */
+static void flight_before(struct app *a, const struct sim_cmd *cmd)
+{
+	a->snap_taken = 0;
+	if (a->fr && !a->game && a->sim.mode == SIM_ATTRACT && (cmd->buttons & SIM_BT_START)) {
+		sim_snapshot(&a->sim, a->snap);
+		a->snap_taken = 1;
+	}
+}
+
+static void flight_finish(struct app *a)
+{
+	int rc = rec_writer_close(a->game);
+	a->game = NULL;
+	if (rc < 0)
+		logf_("flight recorder: %s", strerror(-rc));
+	rc = fr_end_game(a->fr, rc == 0);
+	if (rc < 0)
+		logf_("flight recorder: %s", strerror(-rc));
+}
+
+/* After a tick: start a game's recording when the game began this tick,
+ * add the tick to it, end it when the cabinet is back in attract. */
+static void flight_after(struct app *a, const struct sim_cmd *cmd)
+{
+	if (!a->fr)
+		return;
+	if (!a->game && a->snap_taken && a->sim.mode != SIM_ATTRACT) {
+		char path[CFG_PATH_MAX + 96];
+		struct rec_header h = {
+			.version = REC_VERSION_2,
+			.tick_rate = SIM_TICRATE,
+			.map_hash = a->map_hash,
+			.engine_version = REC_ENGINE_VERSION,
+			.set = a->set,
+			.count = REC_COUNT_UNKNOWN,
+			.render_w = (uint16_t)a->frame.w,
+			.render_h = (uint16_t)a->frame.h,
+			.render_version = REC_RENDER_VERSION,
+			.hash_flags = REC_HAS_STATE,   /* state hashes are cheap; frames are not */
+			.level = (uint8_t)(a->o->content.nwads || a->o->content.grid ? 0
+										 : a->o->content.level),
+			.start_time = (int64_t)time(NULL),
+			.snapshot = a->snap,
+			.snapshot_len = (uint32_t)sim_snapshot_size(),
+		};
+		int rc;
+		if (a->o->content.map)
+			snprintf(h.map_name, sizeof(h.map_name), "%s", a->o->content.map);
+		rc = fr_begin_game(a->fr, time(NULL), path, sizeof(path));
+		if (rc == 0)
+			rc = rec_writer_open(path, &h, &a->game);
+		if (rc < 0) {
+			logf_("flight recorder: %s", strerror(-rc));
+			a->game = NULL;
+			return;
+		}
+	}
+	if (!a->game)
+		return;
+	struct rec_tick t = { *cmd, sim_hash(&a->sim), 0 };
+	if (rec_writer_put_tick(a->game, &t) < 0) {
+		logf_("flight recorder: write failed; this game is not kept whole");
+		flight_finish(a);
+		return;
+	}
+	if (a->sim.mode == SIM_ATTRACT)
+		flight_finish(a);
+}
+
 /* ---- persistence -------------------------------------------------- */
 
 /* Loads a state file's payload; NULL when missing or unusable (reported). */
@@ -759,6 +862,18 @@ static int setup(struct app *a)
 		}
 	}
 	start_sim(a);
+	if (a->rep && rec_reader_header(a->rep)->snapshot_len) {
+		/* a recording of one game (flight recorder): it starts from
+		 * the state the cabinet was in */
+		const struct rec_header *rh = rec_reader_header(a->rep);
+		rc = sim_restore(&a->sim, rh->snapshot, rh->snapshot_len);
+		if (rc < 0) {
+			logf_("%s: refused: its start state does not fit this build's game",
+			      a->o->replay);
+			return rc;
+		}
+	}
+	flight_setup(a);
 
 	rc = demo_init(&a->demo, &a->ct, err, sizeof(err));
 	if (rc < 0) {
@@ -884,6 +999,10 @@ static void teardown(struct app *a)
 	}
 	rec_reader_close(a->rep);
 	scr_free(a->scr);
+	if (a->game)
+		flight_finish(a);   /* a game cut by a stop is kept too */
+	fr_close(a->fr);
+	free(a->snap);
 	if (a->persist && a->ticks_run) {
 		/* play and power-on time count up without a generation bump */
 		uint8_t buf[G_BOOKS_BYTES];
@@ -989,7 +1108,9 @@ static int loop(struct app *a)
 		}
 		if (!next_tick(a, t, &rt))
 			break;
+		flight_before(a, &rt.cmd);
 		sim_tick(&a->sim, &rt.cmd);
+		flight_after(a, &rt.cmd);
 		demo_tick(&a->demo, &a->sim);
 		update_outputs(a);
 		a->ticks_run++;

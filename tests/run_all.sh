@@ -74,6 +74,7 @@ step powercut tests/powercut/run.sh
 step xbuild tests/xbuild/run.sh build/arcaded
 step soak tests/soak/run.sh build/arcaded
 step terminal-preview tests/term/run.sh build/arcaded
+step flight-recorder tests/flight/run.sh build/arcaded
 step fuzz make --no-print-directory fuzz FUZZ_SECONDS="${FUZZ_SECONDS:-60}"
 
 echo
