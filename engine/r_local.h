@@ -190,9 +190,13 @@ struct r_span {
 
 /* One strip: columns x0..x1, its recorded runs and spans, scratch, and the
  * pixel counters of its drawing (summed into the frame's stats). Only the
- * job drawing the strip touches it during the strip phase. */
+ * job drawing the strip touches it during the strip phase. Each strip
+ * starts a cache line of its own (the array is 64-byte aligned): two
+ * threads updating the counters of neighbouring strips would otherwise
+ * pass one line back and forth on every run. */
 struct r_strip {
-	int x0, x1;
+	_Alignas(64) int x0;
+	int x1;
 	struct r_col *cols;
 	int ncols, maxcols;
 	int32_t *order, *act, *next;    /* band scratch, maxcols entries each */

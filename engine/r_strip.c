@@ -46,10 +46,12 @@ int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
 {
 	int n = (r->w + (1 << strip_shift) - 1) >> strip_shift;
 	int nbands = (r->h + (1 << band_shift) - 1) >> band_shift;
-	struct r_strip *st = calloc((size_t)n, sizeof(*st));
+	/* sizeof is a multiple of the 64-byte alignment */
+	struct r_strip *st = aligned_alloc(64, (size_t)n * sizeof(*st));
 
 	if (!st)
 		return -ENOMEM;
+	memset(st, 0, (size_t)n * sizeof(*st));
 	for (int i = 0; i < n; i++) {
 		struct r_strip *s = &st[i];
 		int x1;
