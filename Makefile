@@ -48,7 +48,7 @@ SYSUSERSDIR ?= /usr/lib/sysusers.d
 TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
 .PHONY: all setup run test test-unit test-asan test-script test-replay test-clang \
-	check-layers check-tables check-systemd check-install check-levels docs-shots fuzz fuzzers bench install clean tests tools
+	check-layers check-tables check-systemd check-install check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
 
 all: $(BIN) tools
 
@@ -114,6 +114,10 @@ check-tables: $(BUILD)/tools/gentab
 check-layers:
 	@tests/check_layers.sh
 
+# Appliance tests in a QEMU VM: systemd, the installed unit, real devices (docs/vm.md).
+test-vm: setup
+	@BUILD=$(BUILD) tests/vm/run.sh
+
 check-systemd:
 	@tests/check_systemd.sh
 
@@ -148,4 +152,4 @@ install: $(BIN)
 clean:
 	rm -rf build
 
--include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+-include $(shell find $(BUILD) -type f -name '*.d' 2>/dev/null)

@@ -126,7 +126,7 @@ out=$(awk '
 			key = t; sub(/[=!+:].*/, "", key)
 			val = t; sub(/^[^"]*"/, "", val); sub(/"$/, "", val)
 			op = t; sub(/^[A-Z{}A-Za-z0-9_]*/, "", op); sub(/".*/, "", op)
-			if (key !~ /^(SUBSYSTEM|KERNEL|GROUP|MODE|OWNER|ATTRS|ATTR|ENV)$/) {
+			if (key !~ /^(SUBSYSTEM|KERNEL|GROUP|MODE|OWNER|ATTRS|ATTR|ENV|TAG)$/) {
 				printf "%d: unexpected key %s\n", NR, key; bad = 1
 			}
 			if ((key == "SUBSYSTEM" || key == "KERNEL") && op != "==" && op != "!=") {

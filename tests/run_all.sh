@@ -67,6 +67,15 @@ unit unit-gcc build
 unit unit-asan-ubsan build/asan OPT="-O1 -g -fno-omit-frame-pointer" \
 	SAN="-fsanitize=address,undefined -fno-sanitize-recover=all"
 unit unit-clang build/clang CC=clang
+echo "=== vm"
+ARCADED_VM_ASAN=build/asan tests/vm/run.sh > "$LOG/vm.log" 2>&1
+rc=$?
+grep -E '^(FAIL|FIGURE)|^vm: ' "$LOG/vm.log" | tail -n 40
+case $rc in
+0) echo "PASS vm"; passed=$((passed + 1)) ;;
+77) grep -A1 'VM TESTS SKIPPED' "$LOG/vm.log"; echo "SKIP vm"; skipped=$((skipped + 1)) ;;
+*) echo "FAIL vm (log: $LOG/vm.log)"; failed=$((failed + 1)); failures="$failures vm" ;;
+esac
 step build-O0 make --no-print-directory -j"$JOBS" BUILD=build/O0 OPT="-O0 -g" all
 step script-tests tests/script/run.sh build/arcaded
 step replay-tests tests/replay/run.sh build/arcaded build/O0/arcaded
