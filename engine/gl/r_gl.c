@@ -84,7 +84,7 @@ int rgl_new(int w, int h, struct rgl_ctx **out, char *err, size_t errlen)
 	/* the ray through column x's centre, as r_new computes it */
 	for (int x = 0; x < w; x++)
 		g->xtoang[x] = tab_atan2((fx_t)((w - 2 * x - 1) * 4096), (fx_t)(w * 4096));
-	g->osm = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, NULL);
+	g->osm = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
 	if (!g->osm) {
 		rgl_msg(err, errlen, "OSMesaCreateContextExt failed");
 		rgl_free(g);
@@ -183,6 +183,9 @@ void rgl_free(struct rgl_ctx *g)
 	free(g->sils);
 	free(g->sec_seen);
 	free(g->spr_sec);
+	free(g->sprs);
+	free(g->runs);
+	free(g->sidx);
 	free(g->silv);
 	free(g);
 }
@@ -374,41 +377,40 @@ static void rgl_matrix(const struct rgl_ctx *g, double *mat, int with_view)
 	}
 }
 
-/* The runs of the passes in the mask (1 << enum rgl_pass), textured unless
- * only depth or ids are written and the run is not alpha-tested. */
+/* One run, textured unless only depth or ids are written and the run is
+ * not alpha-tested. */
+static void rgl_item_draw(struct rgl_ctx *g, const struct rgl_item *it, int plain)
+{
+	uint32_t ref = it->tex;
+	int pass = (int)(it->key >> 32);
+	int alpha = pass == RGL_MASKED || pass == RGL_MDECAL || pass == RGL_SPRITE;
+	GLuint name = 0;
+
+	if (ref && (!plain || alpha))
+		name = rgl_texture(g, ref);
+	if (name) {
+		glEnable(GL_TEXTURE_2D);
+		glBindTexture(GL_TEXTURE_2D, name);
+		glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, alpha ? GL_CLAMP_TO_EDGE : GL_REPEAT);
+		glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T,
+				pass == RGL_SPRITE ? GL_CLAMP_TO_EDGE : GL_REPEAT);
+	} else {
+		glDisable(GL_TEXTURE_2D);
+	}
+	if (alpha && name)
+		glEnable(GL_ALPHA_TEST);
+	else
+		glDisable(GL_ALPHA_TEST);
+	glDrawElements(GL_TRIANGLES, it->count, GL_UNSIGNED_INT, &g->idx[it->first]);
+	g->st.draws++;
+}
+
+/* The runs of the passes in the mask (1 << enum rgl_pass). */
 static void rgl_runs(struct rgl_ctx *g, unsigned mask, int plain)
 {
-	for (int i = 0; i < g->nitems; i++) {
-		const struct rgl_item *it = &g->items[i];
-		uint32_t ref = it->tex;
-		int pass = (int)(it->key >> 32);
-		int alpha = pass == RGL_MASKED || pass == RGL_MDECAL || pass == RGL_SPRITE;
-		GLuint name = 0;
-
-		if (!(mask & (1u << pass)))
-			continue;
-		/* a sprite standing in a sector that does not show */
-		if (pass == RGL_SPRITE && g->sec_seen[g->spr_sec[(uint32_t)it->key]] != 1)
-			continue;
-		if (ref && (!plain || alpha))
-			name = rgl_texture(g, ref);
-		if (name) {
-			glEnable(GL_TEXTURE_2D);
-			glBindTexture(GL_TEXTURE_2D, name);
-			glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S,
-					alpha ? GL_CLAMP_TO_EDGE : GL_REPEAT);
-			glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T,
-					pass == RGL_SPRITE ? GL_CLAMP_TO_EDGE : GL_REPEAT);
-		} else {
-			glDisable(GL_TEXTURE_2D);
-		}
-		if (alpha && name)
-			glEnable(GL_ALPHA_TEST);
-		else
-			glDisable(GL_ALPHA_TEST);
-		glDrawElements(GL_TRIANGLES, it->count, GL_UNSIGNED_INT, &g->idx[it->first]);
-		g->st.draws++;
-	}
+	for (int i = 0; i < g->nitems; i++)
+		if (mask & (1u << (int)(g->items[i].key >> 32)))
+			rgl_item_draw(g, &g->items[i], plain);
 }
 
 /* View depth of a depth-buffer value (window z in [0, 1]). */
@@ -461,13 +463,14 @@ static void rgl_world(struct rgl_ctx *g, enum rgl_out out)
 	glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
-/* The sprites over the world, with the depth buffer cleared in their box
- * and holding only the silhouettes and masked middles: Doom clips sprites
- * by its drawsegs' silhouettes, not by the walls themselves, and where a
- * silhouette is missing (a zero-height sector's walls) a sprite shows
- * through. Only sprites standing in a sector that shows are drawn (Doom:
- * in a sector its walk reached). */
-static void rgl_sprites(struct rgl_ctx *g, enum rgl_out out)
+/* The sprites over the world, farthest first, with the depth buffer
+ * cleared in their box and holding only the masked middles: each is
+ * clipped, through the stencil buffer, by the silhouettes Doom's
+ * R_DrawSprite would take as in front of it (not by the walls themselves:
+ * where a silhouette is missing, e.g. a zero-height sector's walls, a
+ * sprite shows through, as in Doom). Only sprites standing in a sector the
+ * walk would reach are drawn. */
+static void rgl_sprites(struct rgl_ctx *g, const struct map *m, enum rgl_out out)
 {
 	const struct rgl_vtx *v = g->vtx;
 	GLsizei stride = (GLsizei)sizeof(*v);
@@ -480,25 +483,65 @@ static void rgl_sprites(struct rgl_ctx *g, enum rgl_out out)
 	glScissor(x0, y0, x1 - x0, y1 - y0);
 	glClear(GL_DEPTH_BUFFER_BIT);
 	glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-	if (g->nsilv > 0) {
-		const struct rgl_vtx *sv = g->silv;
-
-		glDisable(GL_TEXTURE_2D);
-		glDisable(GL_ALPHA_TEST);
-		glVertexPointer(3, GL_FLOAT, stride, &sv->x);
-		glDrawArrays(GL_TRIANGLES, 0, g->nsilv);
-		glVertexPointer(3, GL_FLOAT, stride, &v->x);
-	}
 	rgl_runs(g, 1u << RGL_MASKED, 1);
 	glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 	glDepthFunc(GL_LEQUAL);
-	glMatrixMode(GL_PROJECTION);
-	glLoadMatrixd(g->mat_view);
-	rgl_runs(g, 1u << RGL_SPRITE, out != RGL_OUT_COLOUR);
-	glLoadMatrixd(g->mat_world);
-	glMatrixMode(GL_MODELVIEW);
+	glEnable(GL_STENCIL_TEST);
+	for (int i = 0; i < g->nitems; i++) {
+		const struct rgl_item *it = &g->items[i];
+		uint32_t k = (uint32_t)it->key;
+		const struct rgl_sprrec *sp = &g->sprs[k];
+		int n;
+
+		if ((it->key >> 32) != RGL_SPRITE || g->sec_seen[g->spr_sec[k]] != 1 || sp->x1 < sp->x0)
+			continue;
+		n = rgl_geo_sprite_sils(g, m, (int)k, g->sidx);
+		glStencilFunc(GL_ALWAYS, 0, 1);
+		glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+		if (n > 0) {
+			int sx0 = sp->x0 > x0 ? sp->x0 : x0, sx1 = sp->x1 + 1 < x1 ? sp->x1 + 1 : x1;
+
+			if (sx1 <= sx0)
+				continue;
+			/* the silhouettes in front of it, in its columns */
+			glScissor(sx0, y0, sx1 - sx0, y1 - y0);
+			glClear(GL_STENCIL_BUFFER_BIT);
+			glStencilFunc(GL_ALWAYS, 1, 1);
+			glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+			glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+			glDisable(GL_DEPTH_TEST);
+			glDisable(GL_TEXTURE_2D);
+			glDisable(GL_ALPHA_TEST);
+			glVertexPointer(3, GL_FLOAT, stride, &g->silv->x);
+			glDrawElements(GL_TRIANGLES, n, GL_UNSIGNED_INT, g->sidx);
+			glVertexPointer(3, GL_FLOAT, stride, &v->x);
+			glEnable(GL_DEPTH_TEST);
+			glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+			glStencilFunc(GL_EQUAL, 0, 1);
+			glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+		}
+		glMatrixMode(GL_PROJECTION);
+		glLoadMatrixd(g->mat_view);
+		rgl_item_draw(g, it, out != RGL_OUT_COLOUR);
+		glLoadMatrixd(g->mat_world);
+		glMatrixMode(GL_MODELVIEW);
+		glScissor(x0, y0, x1 - x0, y1 - y0);
+	}
+	glDisable(GL_STENCIL_TEST);
 	glDepthFunc(GL_LESS);
 	glDisable(GL_SCISSOR_TEST);
+}
+
+/* Room in sidx for every silhouette vertex. 0 or -ENOMEM. */
+static int rgl_grow_sidx(struct rgl_ctx *g)
+{
+	uint32_t *n = realloc(g->sidx, (size_t)g->nsilv * sizeof(*n));
+
+	if (!n)
+		return -ENOMEM;
+	g->sidx = n;
+	g->maxsidx = g->nsilv;
+	return 0;
 }
 
 /* After the world's colour pass, from its depth: the silhouettes of the
@@ -506,6 +549,7 @@ static void rgl_sprites(struct rgl_ctx *g, enum rgl_out out)
 static void rgl_reach(struct rgl_ctx *g, const struct map *m)
 {
 	g->nsilv = 0;
+	g->nruns = 0;
 	if (g->st.sprites == 0)
 		return;
 	/* the farthest depth over pairs of rows: a single pixel where the
@@ -522,8 +566,8 @@ static void rgl_reach(struct rgl_ctx *g, const struct map *m)
 		}
 		g->colmax[x] = (float)rgl_view_depth(zmax);
 	}
-	if (rgl_geo_sils(g, g->colmax) < 0)
-		g->nsilv = 0;
+	if (rgl_geo_sils(g, g->colmax) < 0 || (g->nsilv > g->maxsidx && rgl_grow_sidx(g) < 0))
+		g->nsilv = g->nruns = 0;
 	memset(g->sec_seen, 0, m->num_sectors);
 	for (int i = 0; i < g->nitems; i++) {
 		uint32_t sec;
@@ -646,12 +690,12 @@ void rgl_render(struct rgl_ctx *g, const struct map *m, const struct tex_set *t,
 	rgl_world(g, RGL_OUT_COLOUR);
 	glReadPixels(0, 0, g->w, g->h, GL_DEPTH_COMPONENT, GL_FLOAT, g->depth);
 	rgl_reach(g, m);
-	rgl_sprites(g, RGL_OUT_COLOUR);
+	rgl_sprites(g, m, RGL_OUT_COLOUR);
 	glFinish();
 	rgl_resolve(g, t, f);
 	if (g->ids) {
 		rgl_world(g, RGL_OUT_IDS);
-		rgl_sprites(g, RGL_OUT_IDS);
+		rgl_sprites(g, m, RGL_OUT_IDS);
 		glFinish();
 		rgl_read_ids(g);
 	}

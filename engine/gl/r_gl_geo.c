@@ -660,8 +660,8 @@ static int rgl_part(struct rgl_ctx *g, const struct rgl_line *l, const struct te
  * and from zt up (a one-sided wall or a closed door: the whole column).
  * Kept here and made into quads once the world's depth shows in which
  * columns the seg is reached (rgl_geo_sils). */
-static int rgl_sil(struct rgl_ctx *g, const struct rgl_line *l, int bottom, double zb, int top,
-		   double zt)
+static int rgl_sil(struct rgl_ctx *g, const struct rgl_line *l, uint32_t seg, int bottom,
+		   double zb, double bsil, int top, double zt, double tsil)
 {
 	struct rgl_sil *sl;
 
@@ -683,6 +683,9 @@ static int rgl_sil(struct rgl_ctx *g, const struct rgl_line *l, int bottom, doub
 	sl->by = l->by;
 	sl->zb = bottom ? zb : -RGL_SKIRT;
 	sl->zt = top ? zt : RGL_SKIRT;
+	sl->bsil = bsil;
+	sl->tsil = tsil;
+	sl->seg = seg;
 	return 0;
 }
 
@@ -706,17 +709,35 @@ static struct rgl_vtx *rgl_sil_push(struct rgl_ctx *g, int n)
 }
 
 /* Quads of silhouette sl between screen x positions x0 < x1 (pixels from
- * the left edge): the part of the seg whose rays those are. */
-static int rgl_sil_quads(struct rgl_ctx *g, const struct rgl_sil *sl, double x0, double x1)
+ * the left edge): the part of the seg whose rays those are; the run of
+ * columns x0 .. x1 - 1 they apply to. */
+static int rgl_sil_quads(struct rgl_ctx *g, int sil, int x0, int x1)
 {
+	const struct rgl_sil *sl = &g->sils[sil];
+	struct rgl_silrun *run;
 	double c = rgl_fx(g->vcos), s = rgl_fx(g->vsin), half = g->w / 2.0;
 	double ad = sl->ax * c + sl->ay * s, al = sl->ax * s - sl->ay * c;
 	double bd = sl->bx * c + sl->by * s, bl = sl->bx * s - sl->by * c;
-	double t[2], px[2], py[2];
+	double t[2], px[2], py[2], dk[2];
 	struct rgl_surf sf;
 
 	/* the ray l = X d (X = x / half - 1) meets a + t (b - a) at
 	 * t = (X ad - al) / ((bl - al) - X (bd - ad)) */
+	if (g->nruns == g->maxruns) {
+		int cap = g->maxruns ? 2 * g->maxruns : 256;
+		struct rgl_silrun *nr = realloc(g->runs, (size_t)cap * sizeof(*nr));
+
+		if (!nr)
+			return -ENOMEM;
+		g->runs = nr;
+		g->maxruns = cap;
+	}
+	run = &g->runs[g->nruns++];
+	run->sil = sil;
+	run->x0 = x0;
+	run->x1 = x1 - 1;
+	run->first = g->nsilv;
+	run->nbottom = run->ntop = 0;
 	for (int k = 0; k < 2; k++) {
 		double X = (k ? x1 : x0) / half - 1, den = (bl - al) - X * (bd - ad);
 
@@ -724,7 +745,10 @@ static int rgl_sil_quads(struct rgl_ctx *g, const struct rgl_sil *sl, double x0,
 		t[k] = t[k] < 0 ? 0 : t[k] > 1 ? 1 : t[k];
 		px[k] = sl->ax + t[k] * (sl->bx - sl->ax);
 		py[k] = sl->ay + t[k] * (sl->by - sl->ay);
+		dk[k] = px[k] * c + py[k] * s;
 	}
+	run->dmin = dk[0] < dk[1] ? dk[0] : dk[1];
+	run->dmax = dk[0] < dk[1] ? dk[1] : dk[0];
 	rgl_surf(&sf, RGL_SIL, 0, 0, 0, RGL_MODE_NONE, 0);
 	for (int part = 0; part < 2; part++) {
 		double lo = part ? sl->zt : -RGL_SKIRT, hi = part ? RGL_SKIRT : sl->zb;
@@ -736,6 +760,10 @@ static int rgl_sil_quads(struct rgl_ctx *g, const struct rgl_sil *sl, double x0,
 		v = rgl_sil_push(g, 6);
 		if (!v)
 			return -ENOMEM;
+		if (part)
+			run->ntop = 6;
+		else
+			run->nbottom = 6;
 		for (int i = 0; i < 6; i++) {
 			int k = tri[i], e = k == 1 || k == 2;
 
@@ -750,6 +778,7 @@ int rgl_geo_sils(struct rgl_ctx *g, const float *colmax)
 	double c = rgl_fx(g->vcos), s = rgl_fx(g->vsin), half = g->w / 2.0;
 
 	g->nsilv = 0;
+	g->nruns = 0;
 	for (int i = 0; i < g->nsils; i++) {
 		const struct rgl_sil *sl = &g->sils[i];
 		double ad = sl->ax * c + sl->ay * s, al = sl->ax * s - sl->ay * c;
@@ -801,13 +830,39 @@ int rgl_geo_sils(struct rgl_ctx *g, const float *colmax)
 			if (reached && run < 0)
 				run = x;
 			if (!reached && run >= 0) {
-				if (rgl_sil_quads(g, sl, run, x) < 0)
+				if (rgl_sil_quads(g, i, run, x) < 0)
 					return -ENOMEM;
 				run = -1;
 			}
 		}
 	}
 	return 0;
+}
+
+int rgl_geo_sprite_sils(struct rgl_ctx *g, const struct map *m, int i, uint32_t *idx)
+{
+	const struct rgl_sprrec *sp = &g->sprs[i];
+	int n = 0;
+
+	for (int k = 0; k < g->nruns; k++) {
+		const struct rgl_silrun *r = &g->runs[k];
+		const struct rgl_sil *sl = &g->sils[r->sil];
+
+		if (r->x1 < sp->x0 || r->x0 > sp->x1)
+			continue;
+		/* behind the sprite (R_DrawSprite): its nearest point farther,
+		 * or its farthest point farther and the sprite on its front */
+		if (r->dmin > sp->d || (r->dmax > sp->d && sl->seg < m->num_segs &&
+					rgl_seg_front(m, &m->segs[sl->seg], sp->gx, sp->gy)))
+			continue;
+		if (r->nbottom && sp->gz < sl->bsil)
+			for (int v = 0; v < r->nbottom; v++)
+				idx[n++] = (uint32_t)(r->first + v);
+		if (r->ntop && sp->gzt > sl->tsil)
+			for (int v = 0; v < r->ntop; v++)
+				idx[n++] = (uint32_t)(r->first + r->nbottom + v);
+	}
+	return n;
 }
 
 /* 1 when the convex polygon p[0..n-1] (world x y pairs) has, in some
@@ -886,7 +941,7 @@ static int rgl_seg(struct rgl_ctx *g, const struct map *m, const struct tex_set 
 	const struct tex_pic *p, *mid;
 	struct rgl_line l;
 	struct rgl_surf s;
-	double ff, fc, bf, bc, hfc, hb, ht, ez = rgl_fx(g->ez), yoff;
+	double ff, fc, bf, bc, hfc, hb, ht, bsil, tsil, ez = rgl_fx(g->ez), yoff;
 	uint32_t lside;
 	int light, base, idx, fb, midx, mfb, sky_f, sky_c, bottom, top, markc, markf;
 
@@ -970,7 +1025,7 @@ static int rgl_seg(struct rgl_ctx *g, const struct map *m, const struct tex_set 
 
 	if (!bs) {
 		p = rgl_wall_pic(t, sd->mid_tex, &idx, &fb);
-		if (rgl_sil(g, &l, 1, RGL_SKIRT, 0, 0) < 0)
+		if (rgl_sil(g, &l, i, 1, RGL_SKIRT, RGL_SKIRT, 0, 0, -RGL_SKIRT) < 0)
 			return -ENOMEM;
 		if (!p && !fb) {
 			rgl_surf(&s, RGL_WALL, 0, g->black, 0, RGL_MODE_RAW, r_id(R_IDK_MIDDLE, lside));
@@ -1015,19 +1070,33 @@ static int rgl_seg(struct rgl_ctx *g, const struct map *m, const struct tex_set 
 	}
 
 	/* silhouettes (r_seg.c r_dseg_sil): a closed door hides the whole
-	 * column; the bottom clips where the front floor is higher or the back
-	 * floor above the eye, the top where the front ceiling is lower or the
-	 * back ceiling below the eye; a masked middle clips both */
+	 * column; the bottom clips where the front floor is higher (sprites
+	 * standing at or above it exempt) or the back floor above the eye, the
+	 * top where the front ceiling is lower (sprites at or below it exempt)
+	 * or the back ceiling below the eye; a masked middle clips both */
 	mid = rgl_wall_pic(t, sd->mid_tex, &midx, &mfb);
+	bsil = RGL_SKIRT;
+	tsil = -RGL_SKIRT;
 	if (bs->ceil_h <= fs->floor_h || bs->floor_h >= fs->ceil_h) {
 		bottom = 1;
 		hb = RGL_SKIRT;
 		top = 0;
 	} else {
-		bottom = fs->floor_h > bs->floor_h || bs->floor_h > g->ez || mid || mfb;
-		top = fs->ceil_h < bs->ceil_h || bs->ceil_h < g->ez || mid || mfb;
+		bottom = fs->floor_h > bs->floor_h || bs->floor_h > g->ez;
+		if (fs->floor_h > bs->floor_h)
+			bsil = ff;
+		top = fs->ceil_h < bs->ceil_h || bs->ceil_h < g->ez;
+		if (fs->ceil_h < bs->ceil_h)
+			tsil = fc;
+		if (mid || mfb) {
+			if (!bottom)
+				bsil = RGL_SKIRT;
+			if (!top)
+				tsil = -RGL_SKIRT;
+			bottom = top = 1;
+		}
 	}
-	if (rgl_sil(g, &l, bottom, hb, top, ht) < 0)
+	if (rgl_sil(g, &l, i, bottom, hb, bsil, top, ht, tsil) < 0)
 		return -ENOMEM;
 
 	if (mid || mfb) {
@@ -1169,6 +1238,13 @@ static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_s
 
 		if (bx1 <= 0 || bx0 >= g->w || by1 <= 0 || by0 >= g->h)
 			return 0;
+		g->sprs[i].x0 = bx0;
+		g->sprs[i].x1 = bx1 - 1;
+		g->sprs[i].d = dd;
+		g->sprs[i].gz = rgl_fx(sp->z) - rgl_fx(g->ez);
+		g->sprs[i].gzt = zt;
+		g->sprs[i].gx = gx;
+		g->sprs[i].gy = gy;
 		g->sbox[0] = bx0 < g->sbox[0] ? bx0 : g->sbox[0];
 		g->sbox[1] = by0 < g->sbox[1] ? by0 : g->sbox[1];
 		g->sbox[2] = bx1 > g->sbox[2] ? bx1 : g->sbox[2];
@@ -1206,11 +1282,20 @@ int rgl_geo_build(struct rgl_ctx *g, const struct map *m, const struct tex_set *
 	g->sbox[2] = g->sbox[3] = INT32_MIN;
 	if (nspr > g->max_spr) {
 		uint32_t *ns = realloc(g->spr_sec, (size_t)nspr * sizeof(*ns));
+		struct rgl_sprrec *nr;
 
 		if (!ns)
 			return -ENOMEM;
 		g->spr_sec = ns;
+		nr = realloc(g->sprs, (size_t)nspr * sizeof(*nr));
+		if (!nr)
+			return -ENOMEM;
+		g->sprs = nr;
 		g->max_spr = nspr;
+	}
+	for (int i = 0; i < nspr; i++) {
+		g->sprs[i].x0 = 0;
+		g->sprs[i].x1 = -1;
 	}
 	if ((int)m->num_sectors > g->max_seen) {
 		uint8_t *ns = realloc(g->sec_seen, m->num_sectors);

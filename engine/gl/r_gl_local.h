@@ -67,10 +67,32 @@ enum rgl_pass {
 };
 
 /* A seg's silhouettes (rgl_geo_sils): ends relative to the eye, heights
- * of the bottom clip (-RGL_SKIRT: none) and top clip (RGL_SKIRT: none). */
+ * of the bottom clip (-RGL_SKIRT: none) and top clip (RGL_SKIRT: none),
+ * and Doom's exemptions: a sprite whose feet are at or above bsil ignores
+ * the bottom clip, one whose top is at or below tsil the top clip (heights
+ * above the eye; +/-RGL_SKIRT: never). */
 struct rgl_sil {
 	double ax, ay, bx, by;
 	double zb, zt;
+	double bsil, tsil;
+	uint32_t seg;
+};
+
+/* A run of columns x0..x1 where a silhouette's seg is reached (Doom: a
+ * drawseg), its nearest and farthest depth there, and its quads in silv
+ * (bottom part, then top part; counts 0 when absent). */
+struct rgl_silrun {
+	int sil, x0, x1;
+	double dmin, dmax;
+	int first, nbottom, ntop;
+};
+
+/* A sprite as drawn: its columns, depth, position (the map's, for Doom's
+ * side test), feet and top above the eye; x1 < x0 when not drawn. */
+struct rgl_sprrec {
+	int x0, x1;
+	double d, gz, gzt;
+	fx_t gx, gy;
 };
 
 #define RGL_SKIRT 100000.0              /* "to the top (bottom) of the view" */
@@ -144,6 +166,11 @@ struct rgl_ctx {
 	int nsils, maxsils;
 	struct rgl_vtx *silv;           /* their quads, in reached columns */
 	int nsilv, maxsilv;
+	struct rgl_silrun *runs;        /* the columns where they apply */
+	int nruns, maxruns;
+	struct rgl_sprrec *sprs;        /* per sprite in the list */
+	uint32_t *sidx;                 /* scratch: silhouette vertex indices */
+	int maxsidx;
 	float *colmax;                  /* per column: the farthest view depth */
 
 	/* this frame's view, as the software renderer sets it up */
@@ -177,6 +204,11 @@ int rgl_geo_build(struct rgl_ctx *g, const struct map *m, const struct tex_set *
  * reached: where its depth is within colmax (the farthest view depth of
  * the world in that column). 0 or -ENOMEM. */
 int rgl_geo_sils(struct rgl_ctx *g, const float *colmax);
+/* The silhouette vertices (indices into silv, into idx: room for nsilv)
+ * that clip sprite i as Doom's R_DrawSprite would: the runs over its
+ * columns in front of it, less the parts it is exempt from. Returns their
+ * count. */
+int rgl_geo_sprite_sils(struct rgl_ctx *g, const struct map *m, int i, uint32_t *idx);
 /* Whether sector sec is reached, as the software renderer's walk would:
  * some point of one of its subsectors' polygons lies, in some column, no
  * farther than colmax there (the world's farthest depth in that column). */
