@@ -81,6 +81,7 @@ struct app {
 	struct rec_writer *game;   /* the game being recorded by fr */
 	uint8_t *snap;             /* sim_snapshot before a tick that may start a game */
 	int snap_taken;
+	uint32_t snap_plays;       /* plays when the snapshot was taken */
 	uint32_t set_gen, scores_gen, books_gen;  /* last persisted generations */
 	uint8_t res;               /* render size choice in effect (menu) */
 	int persist;               /* live cabinet: save settings, scores, books */
@@ -582,6 +583,7 @@ static void flight_before(struct app *a, const struct sim_cmd *cmd)
 	if (a->fr && !a->game && a->sim.mode == SIM_ATTRACT && (cmd->buttons & SIM_BT_START)) {
 		sim_snapshot(&a->sim, a->snap);
 		a->snap_taken = 1;
+		a->snap_plays = a->sim.plays;
 	}
 }
 
@@ -602,14 +604,16 @@ static void flight_after(struct app *a, const struct sim_cmd *cmd)
 {
 	if (!a->fr)
 		return;
-	if (!a->game && a->snap_taken && a->sim.mode != SIM_ATTRACT) {
+	/* a game began: plays grew (a START that opened the service menu
+	 * on the same tick is no game) */
+	if (!a->game && a->snap_taken && a->sim.plays != a->snap_plays) {
 		char path[CFG_PATH_MAX + 96];
 		struct rec_header h = {
 			.version = REC_VERSION_2,
 			.tick_rate = SIM_TICRATE,
 			.map_hash = a->map_hash,
 			.engine_version = REC_ENGINE_VERSION,
-			.set = a->set,
+			.set = a->sim.set,             /* as the service menu left them */
 			.count = REC_COUNT_UNKNOWN,
 			.render_w = (uint16_t)a->frame.w,
 			.render_h = (uint16_t)a->frame.h,
@@ -625,11 +629,16 @@ static void flight_after(struct app *a, const struct sim_cmd *cmd)
 		if (a->o->content.map)
 			snprintf(h.map_name, sizeof(h.map_name), "%s", a->o->content.map);
 		rc = fr_begin_game(a->fr, time(NULL), path, sizeof(path));
-		if (rc == 0)
-			rc = rec_writer_open(path, &h, &a->game);
 		if (rc < 0) {
 			logf_("flight recorder: %s", strerror(-rc));
+			return;
+		}
+		rc = rec_writer_open(path, &h, &a->game);
+		if (rc < 0) {
+			/* give the slot back, or every later game would be refused */
+			logf_("flight recorder: %s: %s", path, strerror(-rc));
 			a->game = NULL;
+			fr_end_game(a->fr, 0);
 			return;
 		}
 	}
@@ -641,7 +650,8 @@ static void flight_after(struct app *a, const struct sim_cmd *cmd)
 		flight_finish(a);
 		return;
 	}
-	if (a->sim.mode == SIM_ATTRACT)
+	/* back in attract, or left for the service menu: the game is over */
+	if (a->sim.mode == SIM_ATTRACT || a->sim.mode == SIM_SERVICE)
 		flight_finish(a);
 }
 
