@@ -86,6 +86,9 @@ content() { # path -> rbench content options
 	esac
 }
 
+# what N threads can gain on this machine now (pure integer work)
+cap=1
+[ "$NCPU" -gt 1 ] && cap=$(kv capacity "$($PRIO "$tmp/rbench" --capacity "$NCPU")")
 CSV=$OUT/bench.csv
 echo "path,size,engine,threads,frames,fps,render_fps,p50_ms,p99_ms,rss_kib,note" >"$CSV"
 kv() { # key line -> value
@@ -248,5 +251,7 @@ function target(what, a, b, want) {
 	printf "  %-52s %8.1fx         >= %.1fx   %s\n", what, a / b, want, (a / b >= want ? "met" : "NOT MET")
 }' "$CSV"
 echo
+echo "machine: $NCPU threads of pure integer work ran ${cap}x as fast as one during this run;"
+echo "  below ${NCPU}x, other load (or a CPU share, or hyperthread siblings) caps every thread figure"
 echo "CSV: $CSV  chart: $OUT/bench.png"
 [ "$identical" = 1 ]

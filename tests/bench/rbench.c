@@ -24,6 +24,10 @@
  * (draw only), p50_ms and p99_ms (draw + present per frame), rss_kib (peak
  * resident set), hash (of every frame of the first pass: equal for any
  * --threads).
+ *
+ * rbench --capacity N prints capacity=X: how many times faster N threads
+ * run pure integer work than one, on this machine as it is now (a check of
+ * what the thread figures can show).
  */
 #include <errno.h>
 #include <inttypes.h>
@@ -92,6 +96,37 @@ static uint64_t frame_hash(uint64_t h, const uint8_t *p, size_t n)
 	return h;
 }
 
+/* --capacity: 8 jobs of pure integer work (no memory) on a pool of 1
+ * thread, then of n: how much faster n threads compute on this machine as
+ * it is now. On an idle machine with n cores, about n; another process, a
+ * cgroup share or hyperthread siblings make it less, and then no renderer
+ * can scale either. */
+static void spin_job(void *arg, int i)
+{
+	uint64_t x = (uint64_t)i + 1;
+
+	for (long k = 0; k < 20000000; k++)
+		x = x * 6364136223846793005ull + 1442695040888963407ull;
+	((volatile uint64_t *)arg)[i] = x;
+}
+
+static int capacity(int n)
+{
+	uint64_t out[8], t[2];
+	struct pool *p;
+
+	for (int k = 0; k < 2; k++) {
+		if (pool_new(k ? n : 1, &p) < 0)
+			return 1;
+		t[k] = now_ns();
+		pool_run(p, 8, spin_job, out);
+		t[k] = now_ns() - t[k];
+		pool_free(p);
+	}
+	printf("capacity=%.2f threads=%d\n", (double)t[0] / (double)t[1], n);
+	return 0;
+}
+
 static int cmp_u64(const void *a, const void *b)
 {
 	uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
@@ -103,7 +138,7 @@ static int usage(void)
 {
 	fprintf(stderr, "usage: rbench --rec FILE (--level N | --wad FILE --map NAME) "
 		"--size WxH [--threads N] [--seconds S] [--stride K] [--shot PNG] "
-		"[--renderer sw|gl]\n");
+		"[--renderer sw|gl]\n       rbench --capacity N\n");
 	return 2;
 }
 
@@ -139,6 +174,8 @@ int main(int argc, char **argv)
 
 		if (!b)
 			return usage();
+		if (!strcmp(a, "--capacity"))
+			return capacity(atoi(b) > 0 ? atoi(b) : 1);
 		if (!strcmp(a, "--rec"))
 			recpath = b;
 		else if (!strcmp(a, "--level"))
