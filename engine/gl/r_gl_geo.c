@@ -157,7 +157,10 @@ static int rgl_poly_subsector(struct rgl_ctx *g, const struct map *m, uint32_t i
 		if (ss->first_seg + k >= m->num_segs)
 			break;
 		sg = &m->segs[ss->first_seg + k];
-		if (sg->v1 >= m->num_vertices || sg->v2 >= m->num_vertices)
+		/* a two-sided seg lies on a partition line already (its sides
+		 * are in different subsectors): cutting by its rounded ends
+		 * again would only open slivers between neighbours */
+		if (sg->v1 >= m->num_vertices || sg->v2 >= m->num_vertices || sg->back != MAP_NONE)
 			continue;
 		a = &m->vertices[sg->v1];
 		b = &m->vertices[sg->v2];
