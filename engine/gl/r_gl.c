@@ -21,6 +21,14 @@
  * the vertex colour replaced by the surface id's 24 packed bits (texture
  * alpha kept for the alpha test), read back into ids.
  *
+ * Each pass draws the world (planes, decals with a depth offset, walls,
+ * masked middles), then, with the depth buffer cleared in the sprites'
+ * box, the masked middles' depth and the sprites one by one, each masked
+ * through the stencil buffer by the silhouettes Doom would clip it with
+ * (rgl_sprites). Between the two, the world's depth gives per column the
+ * farthest depth shown, from which the silhouettes' columns and the
+ * sprites' sectors are found (rgl_reach).
+ *
  * Projection: eye-relative positions (x east, y north, z up) go to view
  * space l = x sin - y cos (right), d = x cos + y sin (depth), H = z; clip
  * x = l, y = (w/h) H - (2 shear / h) d, w = d: NDC x = l / d puts a point at

@@ -9,8 +9,8 @@
  * quads per seg (upper, middle, lower parts with Doom's pegging and offsets,
  * masked middles alpha-tested), floors and ceilings as the convex polygons
  * of the BSP's subsectors (each cut from a large box by its ancestors'
- * partition lines, then by its own segs, as GL node builders do), sky
- * ceilings, and sprites as billboards facing the view plane with Doom's
+ * partition lines, then by its own one-sided segs, as GL node builders
+ * do), and sprites as billboards facing the view plane with Doom's
  * rotation choice. The projection is the software renderer's exactly: 90
  * degree horizontal field of view, focal length w/2, square pixels, horizon
  * at row centre h/2 + shear, near plane 1/4 unit. Light is the same: the
@@ -20,13 +20,15 @@
  * software renderer's formula. The frame is the same kind as r_render's:
  * row-major 8-bit palette indices.
  *
- * Doom's rules the geometry reproduces (docs/crosscheck.md lists them):
- * back-face culling of walls, floors drawn only from above and ceilings
- * only from below (the sky always), no upper wall between two sky ceilings
- * (the sky comes down to the lower one), a missing upper or lower texture
- * showing the plane behind it (the back sector's ceiling or floor), masked
- * middles drawn once, not tiled. Point-light maps (r_set_lmap) are not
- * drawn.
+ * Doom's rules it reproduces where they differ from the geometry
+ * (docs/crosscheck.md lists them with how): back-face culling of walls,
+ * floors drawn only from above and ceilings only from below, the sky as the
+ * rows above each seg's ceiling edge (lowered between two sky ceilings),
+ * planes seen from behind filled black, a missing upper or lower texture
+ * showing the plane behind it, masked middles drawn once and showing over
+ * planes their seg does not mark, sprites clipped by Doom's silhouettes
+ * (not by walls) and drawn only in sectors Doom's walk would reach.
+ * Point-light maps (r_set_lmap) are not drawn.
  *
  * Not deterministic across Mesa versions or thread counts in its edge
  * pixels; never used where frames are hashed.
