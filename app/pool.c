@@ -1,14 +1,19 @@
 /*
  * pool: worker threads for batches of jobs (contracts in pool.h).
  *
- * One 64-bit ticket says which batch is current (high half: its generation)
- * and which job index is handed out next (low half). A thread claims index
- * i of generation g by compare-and-swap from (g, i) to (g, i + 1), so a
- * thread that wakes late, after its batch ended, can never claim a job of
- * the next batch with the previous batch's function: its swap fails on the
- * generation. The batch's function and argument are read only after a
+ * One 64-bit ticket says which batch is current (bits 63..32: its
+ * generation), how many jobs it has (31..16) and which index is handed out
+ * next (15..0). A thread claims index i of generation g by compare-and-swap
+ * from (g, n, i) to (g, n, i + 1) when i < n, all read from that one word:
+ * a thread that wakes late, after its batch ended, can never claim a job of
+ * the next batch, since its swap fails on the generation, and it can never
+ * see the next batch's count beside its own generation. (Keeping the count
+ * apart from the ticket let a late thread pair its old generation with the
+ * next batch's larger count and claim an index twice: test_pool caught it.)
+ * The batch's function, argument and first index are read only after a
  * claim succeeded, and the caller cannot publish the next batch before
  * every claimed job has returned (left reaches 0), so they are the claim's.
+ * Batches of more than POOL_CHUNK jobs are run as several.
  *
  * Sleeping: a worker that saw no new generation for POOL_SPIN polls takes
  * the lock, counts itself in sleepers and waits; pool_run stores the new
@@ -30,21 +35,26 @@
 /* Polls before sleeping, between batches and while waiting for the last
  * job: a few tens of microseconds. */
 #define POOL_SPIN 4000
+/* Most jobs in one ticket (16 bits of count). */
+#define POOL_CHUNK 65535
+
+#define POOL_GEN(v) ((uint32_t)((v) >> 32))
+#define POOL_N(v) ((uint32_t)((v) >> 16) & 0xffffu)
+#define POOL_NEXT(v) ((uint32_t)(v) & 0xffffu)
 
 struct pool {
 	pthread_mutex_t mu;
 	pthread_cond_t wake, done;
 	pthread_t th[POOL_MAX_THREADS];
 	int nth;                        /* workers started */
-	_Atomic uint64_t ticket;        /* generation << 32 | next index */
+	_Atomic uint64_t ticket;        /* generation << 32 | jobs << 16 | next */
 	atomic_int left;                /* jobs of the batch not yet returned */
 	atomic_int sleepers;
 	atomic_int stop;
 	/* the current batch, written by pool_run before the ticket */
 	void (*job)(void *arg, int i);
 	void *arg;
-	atomic_int n;                   /* atomic: a late worker may read it while
-					 * the next batch is published */
+	int base;                       /* index of the chunk's first job */
 	uint32_t gen;                   /* pool_run's side: the last generation */
 };
 
@@ -71,13 +81,12 @@ static void pool_work(struct pool *p, uint32_t g)
 {
 	for (;;) {
 		uint64_t v = atomic_load(&p->ticket);
-		uint32_t i = (uint32_t)v;
 
-		if ((uint32_t)(v >> 32) != g || i >= (uint32_t)atomic_load(&p->n))
+		if (POOL_GEN(v) != g || POOL_NEXT(v) >= POOL_N(v))
 			return;
 		if (!atomic_compare_exchange_weak(&p->ticket, &v, v + 1))
 			continue;
-		p->job(p->arg, (int)i);
+		p->job(p->arg, p->base + (int)POOL_NEXT(v));
 		if (atomic_fetch_sub(&p->left, 1) == 1) {
 			pthread_mutex_lock(&p->mu);
 			pthread_cond_signal(&p->done);
@@ -92,16 +101,16 @@ static void *pool_main(void *arg)
 	uint32_t seen = 0;
 
 	for (;;) {
-		uint32_t g = (uint32_t)(atomic_load(&p->ticket) >> 32);
+		uint32_t g = POOL_GEN(atomic_load(&p->ticket));
 
 		for (int k = 0; g == seen && k < POOL_SPIN && !atomic_load(&p->stop); k++) {
 			pool_relax();
-			g = (uint32_t)(atomic_load(&p->ticket) >> 32);
+			g = POOL_GEN(atomic_load(&p->ticket));
 		}
 		if (g == seen) {
 			pthread_mutex_lock(&p->mu);
 			atomic_fetch_add(&p->sleepers, 1);
-			while ((g = (uint32_t)(atomic_load(&p->ticket) >> 32)) == seen &&
+			while ((g = POOL_GEN(atomic_load(&p->ticket))) == seen &&
 			       !atomic_load(&p->stop))
 				pthread_cond_wait(&p->wake, &p->mu);
 			atomic_fetch_sub(&p->sleepers, 1);
@@ -132,7 +141,6 @@ int pool_new(int threads, struct pool **out)
 	atomic_init(&p->left, 0);
 	atomic_init(&p->sleepers, 0);
 	atomic_init(&p->stop, 0);
-	atomic_init(&p->n, 0);
 	for (int i = 0; i < threads - 1; i++) {
 		rc = pthread_create(&p->th[i], NULL, pool_main, p);
 		if (rc != 0) {
@@ -166,23 +174,15 @@ int pool_threads(const struct pool *p)
 	return p->nth + 1;
 }
 
-void pool_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
+/* One chunk: jobs base..base + n - 1, n <= POOL_CHUNK. */
+static void pool_chunk(struct pool *p, int base, int n, void (*job)(void *arg, int i), void *arg)
 {
-	struct pool *p = pool;
-
-	if (n <= 0)
-		return;
-	if (p->nth == 0 || n == 1) {
-		for (int i = 0; i < n; i++)
-			job(arg, i);
-		return;
-	}
 	p->job = job;
 	p->arg = arg;
-	atomic_store(&p->n, n);
+	p->base = base;
 	atomic_store(&p->left, n);
 	p->gen++;
-	atomic_store(&p->ticket, (uint64_t)p->gen << 32);
+	atomic_store(&p->ticket, (uint64_t)p->gen << 32 | (uint64_t)n << 16);
 	if (atomic_load(&p->sleepers) > 0) {
 		pthread_mutex_lock(&p->mu);
 		pthread_cond_broadcast(&p->wake);
@@ -197,6 +197,21 @@ void pool_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
 			pthread_cond_wait(&p->done, &p->mu);
 		pthread_mutex_unlock(&p->mu);
 	}
+}
+
+void pool_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
+{
+	struct pool *p = pool;
+
+	if (n <= 0)
+		return;
+	if (p->nth == 0 || n == 1) {
+		for (int i = 0; i < n; i++)
+			job(arg, i);
+		return;
+	}
+	for (int base = 0; base < n; base += POOL_CHUNK)
+		pool_chunk(p, base, n - base < POOL_CHUNK ? n - base : POOL_CHUNK, job, arg);
 }
 
 void pool_r_par(struct pool *p, struct r_par *out)

@@ -46,7 +46,9 @@ static void new_rejects_bad_sizes_and_free_takes_null(void **state)
 }
 
 /* 2000 batches of 0..299 jobs on pools of 1, 2 and 4 threads: each index
- * once per batch, none beyond n, and each job saw its own batch's tag. */
+ * once per batch, none beyond n, and each job saw its own batch's tag.
+ * Consecutive batches grow and shrink, so a worker late from one batch
+ * meets the next (the case that once ran a job twice). */
 static void every_job_runs_exactly_once_per_batch(void **state)
 {
 	static const int sizes[] = { 1, 2, 4 };
@@ -78,6 +80,30 @@ static void every_job_runs_exactly_once_per_batch(void **state)
 		}
 		pool_free(p);
 	}
+}
+
+enum { BIG = 70000 };
+
+static atomic_int big_runs[BIG];
+
+static void big_job(void *arg, int i)
+{
+	(void)arg;
+	atomic_fetch_add(&big_runs[i], 1);
+}
+
+/* More jobs than one ticket holds (65,535): still each exactly once. */
+static void a_batch_of_70000_jobs_runs_each_once(void **state)
+{
+	struct pool *p;
+	(void)state;
+
+	assert_int_equal(pool_new(2, &p), 0);
+	pool_run(p, BIG, big_job, NULL);
+	for (int i = 0; i < BIG; i++)
+		if (atomic_load(&big_runs[i]) != 1)
+			fail_msg("job %d ran %d times", i, atomic_load(&big_runs[i]));
+	pool_free(p);
 }
 
 struct meet {
@@ -156,6 +182,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(new_rejects_bad_sizes_and_free_takes_null),
 		cmocka_unit_test(every_job_runs_exactly_once_per_batch),
+		cmocka_unit_test(a_batch_of_70000_jobs_runs_each_once),
 		cmocka_unit_test(two_threads_run_two_jobs_at_once),
 		cmocka_unit_test(nothing_to_do_returns_at_once),
 		cmocka_unit_test(r_par_points_at_the_pool),
