@@ -86,14 +86,14 @@ content() { # path -> rbench content options
 	esac
 }
 
-# what N threads can gain on this machine now (pure integer work)
-cap=1
-[ "$NCPU" -gt 1 ] && cap=$(kv capacity "$($PRIO "$tmp/rbench" --capacity "$NCPU")")
 CSV=$OUT/bench.csv
 echo "path,size,engine,threads,frames,fps,render_fps,p50_ms,p99_ms,rss_kib,note" >"$CSV"
 kv() { # key line -> value
 	echo "$2" | tr ' ' '\n' | sed -n "s/^$1=//p"
 }
+# what N threads can gain on this machine now (pure integer work)
+cap=1
+[ "$NCPU" -gt 1 ] && cap=$(kv capacity "$($PRIO "$tmp/rbench" --capacity "$NCPU")")
 identical=1
 threads=1
 [ "$NCPU" -gt 1 ] && threads="1 $NCPU"
