@@ -18,6 +18,7 @@
 #include "app/cmd.h"
 #include "app/content.h"
 #include "app/lat.h"
+#include "app/pool.h"
 #include "app/demo.h"
 #include "app/view.h"
 #include "config/bind.h"
@@ -76,6 +77,8 @@ struct app {
 	struct tex_set *tex;       /* = ct.tex: what r draws with */
 	uint64_t map_hash;         /* of every stage: what recordings are tied to */
 	struct view view;          /* draws the sim's frame */
+	struct pool *pool;         /* render worker threads, NULL: one thread */
+	struct r_par par;
 	struct demo demo;          /* the attract mode's demo */
 	struct fr *fr;             /* flight recorder: the last games, NULL when off */
 	struct rec_writer *game;   /* the game being recorded by fr */
@@ -745,6 +748,8 @@ static int resize(struct app *a, int w, int h)
 		r_free(r);
 		return -ENOMEM;
 	}
+	if (a->pool)
+		r_set_par(r, &a->par);
 	r_free(a->r);
 	free(a->frame.px);
 	a->r = r;
@@ -891,8 +896,21 @@ static int setup(struct app *a)
 		return rc;
 	}
 	rc = view_init(&a->view, &a->ct, NULL, c->display.rotate);
-	if (rc == 0)
+	if (rc == 0) {
+		/* render threads: game.render_threads, 0 = one per CPU; frames
+		 * are the same bytes whatever the count */
+		int n = c->game.render_threads ? c->game.render_threads : pool_cpus();
+		if (n > 1) {
+			int prc = pool_new(n, &a->pool);
+			if (prc < 0) {
+				logf_("render threads: %s; drawing on one", strerror(-prc));
+				a->pool = NULL;
+			} else {
+				pool_r_par(a->pool, &a->par);
+			}
+		}
 		rc = resize(a, rw, rh_h);
+	}
 	if (rc < 0)
 		return rc;
 	rc = open_display(a);
@@ -1020,6 +1038,7 @@ static void teardown(struct app *a)
 		save_state(a, "books", buf, G_BOOKS_BYTES);
 	}
 	r_free(a->r);
+	pool_free(a->pool);
 	free(a->frame.px);
 	view_free(&a->view);
 	demo_free(&a->demo);

@@ -52,6 +52,17 @@ for rec in tests/replay/golden-*.rec; do
 	check "$name replays to its committed hashes ($(wc -l <"$tmp/g") ticks; --no-render: same states)" $?
 done
 
+# a Freedoom map (when the freedoom package is installed, as setup does)
+W=/usr/share/games/doom/freedoom1.wad
+if [ -f "$W" ]; then
+	$BIN $common --wad "$W" --map E1M1 replay tests/replay/freedoom/golden-e1m1.rec \
+		>"$tmp/fd" 2>/dev/null
+	diff -q tests/replay/freedoom/golden-e1m1.hashes "$tmp/fd" >/dev/null
+	check "golden-e1m1 (Freedoom E1M1) replays to its committed hashes ($(wc -l < "$tmp/fd") ticks)" $?
+else
+	echo "FAIL $W missing: run scripts/setup.sh (package freedoom)"; fail=1
+fi
+
 # 3. refusals: another map's hash (bytes 16..23), a newer format (byte 8)
 cp "$tmp/walk.rec" "$tmp/other.rec"
 printf '\377' | dd of="$tmp/other.rec" bs=1 seek=16 conv=notrunc 2>/dev/null

@@ -69,6 +69,8 @@
 
 struct rp_opts {
 	const char *file, *rehash;
+	const char *wads[CT_MAX_WADS], *map;
+	int nwads;
 	int render, quiet, verify, bench;
 	int w, h, level;
 	int64_t until;
@@ -76,7 +78,7 @@ struct rp_opts {
 
 static int rp_usage(void)
 {
-	fprintf(stderr, "usage: replay [--no-render] [--size WxH] [--level N] [--until T] "
+	fprintf(stderr, "usage: replay [--no-render] [--size WxH] [--level N] [--wad F --map M] [--until T] "
 			"[--quiet] [--verify] [--rehash OUT] [--bench] FILE\n");
 	return 2;
 }
@@ -107,6 +109,12 @@ static int rp_args(int argc, char **argv, struct rp_opts *o)
 			o->level = atoi(v);
 			if (o->level < 1 || o->level > 99)
 				return -1;
+			i++;
+		} else if (strcmp(a, "--wad") == 0 && v && o->nwads < CT_MAX_WADS) {
+			o->wads[o->nwads++] = v;
+			i++;
+		} else if (strcmp(a, "--map") == 0 && v) {
+			o->map = v;
 			i++;
 		} else if (strcmp(a, "--until") == 0 && v) {
 			o->until = strtoll(v, NULL, 10);
@@ -328,6 +336,14 @@ int main(int argc, char **argv)
 	/* The same content the daemon loads (app/content.c): the built-in
 	 * stages from run.level on, with their light maps. */
 	spec.level = run.level;
+	/* a map from WADs, as the daemon's --wad/--map */
+	for (int i = 0; i < o.nwads; i++)
+		spec.wads[spec.nwads++] = o.wads[i];
+	spec.map = o.map;
+	if (o.nwads) {
+		run.level = 0;
+		run.map_name = o.map;
+	}
 	rc = ct_load(&ct, &spec, err, sizeof(err));
 	if (rc < 0) {
 		fprintf(stderr, "replay: %s\n", err);

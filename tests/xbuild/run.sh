@@ -125,11 +125,12 @@ nrec=$(ls "$tmp/rec" | wc -l)
 say "recordings: $nrec ($(ls "$tmp/rec" | tr '\n' ' '))"
 
 # ---- replays -------------------------------------------------------------
-# $1 label, $2 recording, $3 WxH: the daemon's output is the reference.
+# $1 label, $2 recording, $3 WxH, rest: content options for both (--wad,
+# --map): the daemon's output is the reference.
 compare() {
-	label=$1; rec=$2; size=$3
+	label=$1; rec=$2; size=$3; shift 3
 	w=${size%x*}; h=${size#*x}
-	"$BIN" $common --size "$w"x"$h" \
+	"$BIN" $common "$@" --size "$w"x"$h" \
 		--replay "$rec" >"$tmp/ref" 2>"$tmp/ref.err"
 	if [ $? -ne 0 ] || [ ! -s "$tmp/ref" ]; then
 		bad "$label: the daemon did not replay it: $(head -n 1 "$tmp/ref.err")"
@@ -137,7 +138,7 @@ compare() {
 	fi
 	n=$(wc -l <"$tmp/ref")
 	for b in $BUILDS; do
-		"$tmp/run-$b" --size "$size" "$rec" >"$tmp/out-$b" 2>"$tmp/err-$b" &
+		"$tmp/run-$b" "$@" --size "$size" "$rec" >"$tmp/out-$b" 2>"$tmp/err-$b" &
 	done
 	wait
 	for b in $BUILDS; do
@@ -156,6 +157,13 @@ before=$fail
 for rec in "$tmp"/rec/*.rec; do
 	compare "$(basename "$rec" .rec)" "$rec" 320x240
 done
+# a Freedoom map, read from the WAD by every build
+W=/usr/share/games/doom/freedoom1.wad
+if [ -f "$W" ]; then
+	compare freedoom-e1m1 tests/replay/freedoom/golden-e1m1.rec 320x240 --wad "$W" --map E1M1
+else
+	bad "$W missing: run scripts/setup.sh (package freedoom)"
+fi
 if [ -e "$tmp/rec/replay-game.rec" ]; then
 	compare replay-game "$tmp/rec/replay-game.rec" 200x150
 	compare replay-game "$tmp/rec/replay-game.rec" 640x480
