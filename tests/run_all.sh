@@ -81,6 +81,7 @@ step script-tests tests/script/run.sh build/arcaded
 step replay-tests tests/replay/run.sh build/arcaded build/O0/arcaded
 step powercut tests/powercut/run.sh
 step xbuild tests/xbuild/run.sh build/arcaded
+step crosscheck tests/crosscheck/run.sh build
 step soak tests/soak/run.sh build/arcaded
 step terminal-preview tests/term/run.sh build/arcaded
 step flight-recorder tests/flight/run.sh build/arcaded
