@@ -302,26 +302,15 @@ int bind_load_text(struct bind_table *b, const char *text, size_t len, const cha
 	return x.rejected;
 }
 
+static int bind_load_any(void *b, const char *text, size_t len, const char *name, cfg_err_fn fn,
+			 void *user)
+{
+	return bind_load_text(b, text, len, name, fn, user);
+}
+
 int bind_load(struct bind_table *b, const char *path, cfg_err_fn fn, void *user)
 {
-	struct bind_ctx x = { .b = b, .cur = b->key, .file = path, .fn = fn, .user = user };
-	char *text;
-	size_t len;
-	int ret;
-
-	ret = cini_read_file(path, &text, &len);
-	if (ret == -ENOENT)
-		return ret;
-	if (ret < 0) {
-		if (ret == -EFBIG)
-			bind_report(&x, 0, "file is larger than %d bytes", CINI_FILE_MAX);
-		else
-			bind_report(&x, 0, "cannot read: %s", strerror(-ret));
-		return ret;
-	}
-	ret = bind_load_text(b, text, len, path, fn, user);
-	free(text);
-	return ret;
+	return cini_load_file(path, bind_load_any, b, fn, user);
 }
 
 int bind_lookup(const struct bind_table *b, int code, int *acts, int max)

@@ -343,26 +343,15 @@ int cfg_load_text(struct cfg *c, const char *text, size_t len, const char *name,
 	return x.rejected;
 }
 
+static int cfg_load_any(void *c, const char *text, size_t len, const char *name, cfg_err_fn fn,
+			void *user)
+{
+	return cfg_load_text(c, text, len, name, fn, user);
+}
+
 int cfg_load_file(struct cfg *c, const char *path, cfg_err_fn fn, void *user)
 {
-	struct cfg_ctx x = { .c = c, .file = path, .fn = fn, .user = user };
-	char *text;
-	size_t len;
-	int ret;
-
-	ret = cini_read_file(path, &text, &len);
-	if (ret == -ENOENT)
-		return ret;
-	if (ret < 0) {
-		if (ret == -EFBIG)
-			cfg_report(&x, 0, "file is larger than %d bytes", CINI_FILE_MAX);
-		else
-			cfg_report(&x, 0, "cannot read: %s", strerror(-ret));
-		return ret;
-	}
-	ret = cfg_load_text(c, text, len, path, fn, user);
-	free(text);
-	return ret;
+	return cini_load_file(path, cfg_load_any, c, fn, user);
 }
 
 /* *.ini, not hidden, and not the bindings file that shares the directory

@@ -7,6 +7,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <stdbool.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -238,5 +239,30 @@ int cini_read_file(const char *path, char **text, size_t *len)
 fail:
 	free(buf);
 	close(fd);
+	return ret;
+}
+
+int cini_load_file(const char *path,
+		   int (*load)(void *obj, const char *text, size_t len, const char *name,
+			       cini_err_fn fn, void *user),
+		   void *obj, cini_err_fn fn, void *user)
+{
+	char msg[160], *text;
+	size_t len;
+	int ret = cini_read_file(path, &text, &len);
+
+	if (ret == -ENOENT)
+		return ret;
+	if (ret < 0) {
+		if (ret == -EFBIG)
+			snprintf(msg, sizeof(msg), "file is larger than %d bytes", CINI_FILE_MAX);
+		else
+			snprintf(msg, sizeof(msg), "cannot read: %s", strerror(-ret));
+		if (fn)
+			fn(user, path, 0, msg);
+		return ret;
+	}
+	ret = load(obj, text, len, path, fn, user);
+	free(text);
 	return ret;
 }

@@ -55,4 +55,17 @@ int cini_parse(const char *text, size_t len, cini_fn fn, void *user);
  * caller frees. 0, or -errno: -EFBIG above CINI_FILE_MAX bytes. */
 int cini_read_file(const char *path, char **text, size_t *len);
 
+/* Reports a problem: file, line (0: none), message (cfg_err_fn's shape). */
+typedef void (*cini_err_fn)(void *user, const char *file, int line, const char *msg);
+
+/* Reads path and hands its text to load(obj, text, len, path, fn, user),
+ * returning what load returns. A missing file is -ENOENT, not reported; a
+ * file that cannot be read, or is larger than CINI_FILE_MAX, is reported
+ * through fn (line 0) and returns -errno. Shared by settings and
+ * bindings. */
+int cini_load_file(const char *path,
+		   int (*load)(void *obj, const char *text, size_t len, const char *name,
+			       cini_err_fn fn, void *user),
+		   void *obj, cini_err_fn fn, void *user);
+
 #endif
