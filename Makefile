@@ -8,7 +8,7 @@ BUILD ?= build
 CC ?= cc
 OPT ?= -O2 -g
 SAN ?=
-PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod
+PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod osmesa
 TEST_PKGS := cmocka
 
 WARN := -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes
@@ -21,7 +21,7 @@ TEST_LIBS = $(shell pkg-config --libs $(TEST_PKGS))
 LDLIBS += $(PKG_LIBS) -lpthread -lm
 
 # Every .c of the layers is part of the library the daemon and tests link.
-LIB_SRC := $(sort $(wildcard engine/*.c input/*.c display/*.c config/*.c systemd/*.c))
+LIB_SRC := $(sort $(wildcard engine/*.c engine/gl/*.c input/*.c display/*.c config/*.c systemd/*.c))
 APP_SRC := $(sort $(wildcard app/*.c))
 APP_MAIN := app/main.c
 APP_LIB_SRC := $(filter-out $(APP_MAIN),$(APP_SRC))

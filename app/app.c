@@ -28,6 +28,7 @@
 #include "display/shot.h"
 #include "config/st.h"
 #include "engine/g_game.h"
+#include "engine/gl/r_gl.h"
 #include "engine/hash.h"
 #include "engine/hud.h"
 #include "engine/menu.h"
@@ -78,6 +79,7 @@ struct app {
 	uint64_t map_hash;         /* of every stage: what recordings are tied to */
 	struct view view;          /* draws the sim's frame */
 	struct pool *pool;         /* render worker threads, NULL: one thread */
+	struct rgl_ctx *gl;        /* --renderer gl: the OSMesa renderer */
 	struct r_par par;
 	struct demo demo;          /* the attract mode's demo */
 	struct fr *fr;             /* flight recorder: the last games, NULL when off */
@@ -732,6 +734,12 @@ static void save_settings(struct app *a)
 	save_state(a, "settings.ini", ini, (size_t)n);
 }
 
+static void gl_world(void *ctx, const struct map *m, const struct tex_set *t,
+		     const struct r_view *v, const struct r_sprite *spr, int nspr, struct r_frame *f)
+{
+	rgl_render(ctx, m, t, v, spr, nspr, f);
+}
+
 /* (Re)allocates the frame and the renderer for w x h. */
 static int resize(struct app *a, int w, int h)
 {
@@ -750,6 +758,23 @@ static int resize(struct app *a, int w, int h)
 	}
 	if (a->pool)
 		r_set_par(r, &a->par);
+	if (a->o->gl) {
+		/* the OSMesa renderer, the software one's oracle, as the game's */
+		char gerr[256] = "";
+		struct rgl_ctx *g = NULL;
+		rc = rgl_new(w, h, &g, gerr, sizeof(gerr));
+		if (rc < 0) {
+			logf_("renderer gl %dx%d: %s", w, h, gerr[0] ? gerr : strerror(-rc));
+			r_free(r);
+			free(px);
+			return rc;
+		}
+		rgl_free(a->gl);
+		a->gl = g;
+		a->view.world = gl_world;
+		a->view.world_ctx = g;
+		logf_("renderer: gl (%s)", rgl_name(g));
+	}
 	r_free(a->r);
 	free(a->frame.px);
 	a->r = r;
@@ -1038,6 +1063,7 @@ static void teardown(struct app *a)
 		save_state(a, "books", buf, G_BOOKS_BYTES);
 	}
 	r_free(a->r);
+	rgl_free(a->gl);
 	pool_free(a->pool);
 	free(a->frame.px);
 	view_free(&a->view);

@@ -27,6 +27,7 @@ struct app_opts {
 	int quiet;               /* replay without printing per-tick hashes */
 	int verify;              /* replay: compare with the recording's stored hashes */
 	int size_w, size_h;      /* --size: render size over config and recording */
+	int gl;                  /* --renderer gl: draw the world with OSMesa */
 	FILE *out;               /* hashes, snapshots and summaries (stdout) */
 	struct ct_spec content;  /* what to play on (level set from the config) */
 };

@@ -44,6 +44,7 @@ static void usage(FILE *f)
 	      "                     exit 1 at a difference (prints the first)\n"
 	      "  --until TICK       stop after tick TICK (with --screenshot: that tick's frame)\n"
 	      "  --size WxH         render size, over the configuration and a recording's own\n"
+	      "  --renderer NAME    software (default) or gl: the OSMesa oracle renderer\n"
 	      "  --quiet            with --replay: print no per-tick hashes (benchmarks)\n"
 	      "  --ticks N          stop after N ticks\n"
 	      "  --fast             do not wait for the 60 Hz clock\n"
@@ -113,7 +114,7 @@ int main(int argc, char **argv)
 	enum { O_CONFIG_DIR = 256, O_STATE_DIR, O_SET, O_DISPLAY, O_LEVEL, O_PLAY, O_BINDINGS,
 	       O_SCRIPT, O_RECORD, O_REPLAY, O_NO_RENDER, O_QUIET, O_TICKS, O_FAST, O_SCREENSHOT,
 	       O_PRINT_CONFIG, O_VERSION, O_HELP, O_WAD, O_MAP, O_GRID, O_NO_LIGHTS, O_VERIFY,
-	       O_UNTIL, O_SIZE };
+	       O_UNTIL, O_SIZE, O_RENDERER };
 	static const struct option opts[] = {
 		{ "config-dir", required_argument, NULL, O_CONFIG_DIR },
 		{ "state-dir", required_argument, NULL, O_STATE_DIR },
@@ -138,6 +139,7 @@ int main(int argc, char **argv)
 		{ "verify", no_argument, NULL, O_VERIFY },
 		{ "until", required_argument, NULL, O_UNTIL },
 		{ "size", required_argument, NULL, O_SIZE },
+		{ "renderer", required_argument, NULL, O_RENDERER },
 		{ "version", no_argument, NULL, O_VERSION },
 		{ "help", no_argument, NULL, O_HELP },
 		{ NULL, 0, NULL, 0 },
@@ -181,6 +183,15 @@ int main(int argc, char **argv)
 			break;
 		}
 		case O_VERIFY: o.verify = 1; break;
+		case O_RENDERER:
+			if (strcmp(optarg, "gl") == 0) {
+				o.gl = 1;
+			} else if (strcmp(optarg, "software") != 0) {
+				fprintf(stderr, "arcaded: --renderer: '%s' is not software or gl\n",
+					optarg);
+				return 2;
+			}
+			break;
 		case O_SIZE: {
 			char x;
 			if (sscanf(optarg, "%d%c%d", &o.size_w, &x, &o.size_h) != 3 || x != 'x' ||
@@ -226,6 +237,13 @@ int main(int argc, char **argv)
 	if (optind < argc) {
 		fprintf(stderr, "arcaded: unexpected argument '%s'\n", argv[optind]);
 		usage(stderr);
+		return 2;
+	}
+	if (o.gl && (o.replay || o.script || o.record)) {
+		/* llvmpipe's frames are not bit-exact: hashes, recordings and
+		 * scripts stay on the deterministic software renderer */
+		fprintf(stderr, "arcaded: --renderer gl is for play; scripts, recordings and "
+			"replays use the software renderer\n");
 		return 2;
 	}
 	if (o.verify && !o.replay) {

@@ -54,7 +54,10 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	if (hud_world(s)) {
 		int n = g_sprites(s, tex, v->spr, v->spr_max);
 		sim_view(s, &rv);
-		r_render(v->r, s->map, tex, &rv, v->spr, n, f);
+		if (v->world)
+			v->world(v->world_ctx, s->map, tex, &rv, v->spr, n, f);
+		else
+			r_render(v->r, s->map, tex, &rv, v->spr, n, f);
 	}
 	hud_draw(s, &env, f);
 }

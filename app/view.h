@@ -15,9 +15,20 @@ struct r_ctx;
 struct r_frame;
 struct r_sprite;
 struct sim;
+struct tex_set;
+
+struct r_view;
+
+/* Draws the world (r_render's shape): the software renderer by default;
+ * the daemon may put the OSMesa renderer here (--renderer gl). */
+typedef void (*view_world_fn)(void *ctx, const struct map *m, const struct tex_set *t,
+			      const struct r_view *v, const struct r_sprite *spr, int nspr,
+			      struct r_frame *f);
 
 struct view {
 	struct r_ctx *r;           /* borrowed; its size is the frame's */
+	view_world_fn world;       /* NULL: r_render on r */
+	void *world_ctx;
 	const struct ct *ct;       /* borrowed: texture set and light maps */
 	struct r_sprite *spr;      /* owned: room for the largest stage's sprites */
 	int spr_max;
