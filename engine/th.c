@@ -5,6 +5,10 @@
  */
 #include "engine/th.h"
 
+#include "engine/map.h"
+#include "engine/r_main.h"
+#include "engine/tex.h"
+
 #include <stddef.h>
 
 #define MON (TH_MONSTER | TH_SOLID | TH_SHOOTABLE)
@@ -211,4 +215,32 @@ static int th_clamp7(int v)
 uint16_t th_light_type(int r, int i, int c)
 {
 	return (uint16_t)(TH_LIGHT_FIRST + 64 * th_clamp7(r) + 8 * th_clamp7(i) + th_clamp7(c));
+}
+
+int th_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out)
+{
+	int n = 0;
+
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		const struct map_thing *th = &m->things[i];
+		const struct th_info *in = th_find(th->type);
+		const struct map_sector *sec;
+		int s;
+
+		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
+			continue;
+		s = tex_find_sprite(t, in->sprite);
+		if (s < 0)
+			continue;
+		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
+		out[n].x = th->x;
+		out[n].y = th->y;
+		out[n].z = (in->flags & TH_HANGING) ? sec->ceil_h - in->height * FX_ONE : sec->floor_h;
+		out[n].angle = th->angle;
+		out[n].sprite = (uint16_t)s;
+		out[n].frame = (uint16_t)(in->frame - 'A');
+		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
+		n++;
+	}
+	return n;
 }

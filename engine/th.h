@@ -72,4 +72,16 @@ int th_light(uint16_t type, struct th_light *out);
  * index c (each 0..7; values outside are clamped). */
 uint16_t th_light_type(int r, int i, int c);
 
+struct map;
+struct r_sprite;
+struct tex_set;
+
+/* The map's things as sprites for a still view (viewers, the renderer
+ * tests and the cross-check; the game builds its own from the sim, see
+ * g_sprites): every thing with a sprite in t, players and invisible things
+ * left out, standing on its sector's floor (hanging ones from the
+ * ceiling), full-bright when it gives light. out needs room for
+ * m->num_things entries. Returns how many were stored. */
+int th_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out);
+
 #endif

@@ -122,35 +122,6 @@ static uint8_t *xc_slurp(const char *path, size_t *len)
 	return d;
 }
 
-/* The map's things as sprites, as the hand-run viewer places them. */
-static int xc_things(const struct map *m, const struct tex_set *t, struct r_sprite *out)
-{
-	int n = 0;
-
-	for (uint32_t i = 0; i < m->num_things; i++) {
-		const struct map_thing *th = &m->things[i];
-		const struct th_info *in = th_find(th->type);
-		const struct map_sector *sec;
-		int s;
-
-		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
-			continue;
-		s = tex_find_sprite(t, in->sprite);
-		if (s < 0)
-			continue;
-		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
-		out[n].x = th->x;
-		out[n].y = th->y;
-		out[n].z = (in->flags & TH_HANGING) ? sec->ceil_h - in->height * FX_ONE : sec->floor_h;
-		out[n].angle = th->angle;
-		out[n].sprite = (uint16_t)s;
-		out[n].frame = (uint16_t)(in->frame - 'A');
-		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
-		n++;
-	}
-	return n;
-}
-
 /* Distance (map units) from (x, y) to the segment of line l. */
 static double xc_line_dist(const struct map *m, const struct map_line *l, double x, double y)
 {
@@ -324,7 +295,7 @@ static double xc_map(struct xc_run *x, const struct map *m, const struct tex_set
 	}
 	for (const char *c = name; *c; c++)
 		rng = (rng ^ (uint8_t)*c) * 0x100000001b3ull;
-	nspr = o->sprites ? xc_things(m, t, spr) : 0;
+	nspr = o->sprites ? th_sprites(m, t, spr) : 0;
 	for (int k = 0; k < o->views; k++) {
 		struct r_view v;
 		long same = 0, csame = 0;

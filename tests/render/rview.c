@@ -56,35 +56,6 @@ static uint8_t *slurp(const char *path, size_t *len)
 	return d;
 }
 
-/* The map's things as sprites (players and invisible things left out). */
-static int things(const struct map *m, const struct tex_set *t, struct r_sprite *out)
-{
-	int n = 0;
-
-	for (uint32_t i = 0; i < m->num_things; i++) {
-		const struct map_thing *th = &m->things[i];
-		const struct th_info *in = th_find(th->type);
-		const struct map_sector *sec;
-		int s;
-
-		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
-			continue;
-		s = tex_find_sprite(t, in->sprite);
-		if (s < 0)
-			continue;
-		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
-		out[n].x = th->x;
-		out[n].y = th->y;
-		out[n].z = (in->flags & TH_HANGING) ? sec->ceil_h - in->height * FX_ONE : sec->floor_h;
-		out[n].angle = th->angle;
-		out[n].sprite = (uint16_t)s;
-		out[n].frame = (uint16_t)(in->frame - 'A');
-		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
-		n++;
-	}
-	return n;
-}
-
 static double now(void)
 {
 	struct timespec ts;
@@ -163,7 +134,7 @@ int main(int argc, char **argv)
 	}
 loaded:
 	spr = calloc(m->num_things + 1, sizeof(*spr));
-	nspr = sprites ? things(m, t, spr) : 0;
+	nspr = sprites ? th_sprites(m, t, spr) : 0;
 	for (uint32_t i = 0; i < m->num_things; i++)
 		if (m->things[i].type == 1) {
 			v.x = m->things[i].x;

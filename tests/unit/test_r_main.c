@@ -804,36 +804,6 @@ static void fwad_close(struct fwad *f)
 	free(f->data);
 }
 
-/* The map's things as sprites, as the game places them (feet on the floor,
- * hanging ones under the ceiling); players and markers left out. */
-static int map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out)
-{
-	int n = 0;
-
-	for (uint32_t i = 0; i < m->num_things; i++) {
-		const struct map_thing *th = &m->things[i];
-		const struct th_info *in = th_find(th->type);
-		const struct map_sector *sec;
-		int sp;
-
-		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
-			continue;
-		sp = tex_find_sprite(t, in->sprite);
-		if (sp < 0)
-			continue;
-		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
-		out[n].x = th->x;
-		out[n].y = th->y;
-		out[n].z = (in->flags & TH_HANGING) ? sec->ceil_h - in->height * FX_ONE : sec->floor_h;
-		out[n].angle = th->angle;
-		out[n].sprite = (uint16_t)sp;
-		out[n].frame = (uint16_t)(in->frame - 'A');
-		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
-		n++;
-	}
-	return n;
-}
-
 /* Every map of a Freedoom WAD, from its player 1 start and from 50 seeded
  * views (random points of the map's box, the eye 41 above the floor there,
  * random angle and shear; some outside every sector), with the map's
@@ -866,7 +836,7 @@ static int freedoom_views(const char *path)
 		assert_int_equal(map_load_wad(f.w, f.t, names[i], &m, err, sizeof(err)), 0);
 		spr = calloc(m->num_things + 1, sizeof(*spr));
 		assert_non_null(spr);
-		nspr = map_sprites(m, f.t, spr);
+		nspr = th_sprites(m, f.t, spr);
 		for (uint32_t k = 0; k < m->num_vertices; k++) {
 			const struct map_vertex *p = &m->vertices[k];
 

@@ -234,36 +234,6 @@ static uint8_t *slurp(const char *path, size_t *len)
 	return d;
 }
 
-/* The map's things as sprites (feet on the floor, hanging ones under the
- * ceiling), players and markers left out. */
-static int map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out)
-{
-	int n = 0;
-
-	for (uint32_t i = 0; i < m->num_things; i++) {
-		const struct map_thing *th = &m->things[i];
-		const struct th_info *in = th_find(th->type);
-		const struct map_sector *sec;
-		int sp;
-
-		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
-			continue;
-		sp = tex_find_sprite(t, in->sprite);
-		if (sp < 0)
-			continue;
-		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
-		out[n].x = th->x;
-		out[n].y = th->y;
-		out[n].z = (in->flags & TH_HANGING) ? sec->ceil_h - in->height * FX_ONE : sec->floor_h;
-		out[n].angle = th->angle;
-		out[n].sprite = (uint16_t)sp;
-		out[n].frame = (uint16_t)(in->frame - 'A');
-		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
-		n++;
-	}
-	return n;
-}
-
 /* Freedoom maps E1M1..E1M4 with their things as sprites: the player start
  * and seeded views from near things (where sprites, masked middles and
  * their clipping are), at 320x200 and 1280x720. */
@@ -299,7 +269,7 @@ static void freedoom_maps_same_frame_every_way(void **state)
 			assert_int_equal(map_load_wad(wd, t, maps[i], &m, err, sizeof(err)), 0);
 			spr = calloc(m->num_things + 1, sizeof(*spr));
 			assert_non_null(spr);
-			nspr = map_sprites(m, t, spr);
+			nspr = th_sprites(m, t, spr);
 			for (int n = 0; n < (z == 0 ? 40 : 12); n++) {
 				const struct map_thing *th = &m->things[lcg(&seed) % m->num_things];
 				struct r_view v = { 0 };
