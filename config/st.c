@@ -245,11 +245,47 @@ static int st_keep_prev(int dfd, const char *name, const char *prev, const char 
 	return 0;
 }
 
+/* Writes the parts (pieces of one file, in order) to TMP in dfd and
+ * fsyncs it: 0, or -errno with TMP removed. */
+static int st_write_tmp(int dfd, const char *tmp, const void *const *part, const size_t *plen,
+			int nparts)
+{
+	int fd, ret = 0;
+
+	fd = openat(dfd, tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
+	if (fd < 0)
+		return -errno;
+	for (int i = 0; i < nparts && ret == 0; i++)
+		ret = st_write_all(fd, part[i], plen[i]);
+	if (ret == 0 && fsync(fd) < 0)
+		ret = -errno;
+	if (close(fd) < 0 && ret == 0 && errno != EINTR)
+		ret = -errno;
+	if (ret < 0)
+		unlinkat(dfd, tmp, 0);
+	return ret;
+}
+
+/* Publishes TMP as NAME in dfd and makes it durable: the rename, then the
+ * directory's fsync. On a failed rename TMP is removed. */
+static int st_publish(int dfd, const char *tmp, const char *name)
+{
+	if (renameat(dfd, tmp, dfd, name) < 0) {
+		int ret = -errno;
+
+		unlinkat(dfd, tmp, 0);
+		return ret;
+	}
+	return fsync(dfd) < 0 ? -errno : 0;
+}
+
 int st_save(const char *dir, const char *name, const void *data, size_t len)
 {
 	char tmp[ST_NAME_MAX + 16], prev[ST_NAME_MAX + 16], prevtmp[ST_NAME_MAX + 16];
 	uint8_t hdr[ST_HEADER_SIZE];
-	int dfd, fd = -1, ret;
+	const void *part[2] = { hdr, data };
+	size_t plen[2] = { sizeof(hdr), len };
+	int dfd, ret;
 
 	if (!st_name_ok(name) || len > ST_MAX_LEN || (!data && len))
 		return -EINVAL;
@@ -260,40 +296,37 @@ int st_save(const char *dir, const char *name, const void *data, size_t len)
 	if (dfd < 0)
 		return -errno;
 
-	fd = openat(dfd, tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0644);
-	if (fd < 0) {
-		ret = -errno;
+	st_header(hdr, data, len);
+	ret = st_write_tmp(dfd, tmp, part, plen, len ? 2 : 1);
+	if (ret < 0)
+		goto out;
+	ret = st_valid(dfd, name);
+	if (ret == 1)
+		ret = st_keep_prev(dfd, name, prev, prevtmp);
+	if (ret < 0) {
+		unlinkat(dfd, tmp, 0);
 		goto out;
 	}
-	st_header(hdr, data, len);
-	ret = st_write_all(fd, hdr, sizeof(hdr));
-	if (ret == 0)
-		ret = st_write_all(fd, data, len);
-	if (ret == 0 && fsync(fd) < 0)
-		ret = -errno;
-	if (close(fd) < 0 && ret == 0 && errno != EINTR)
-		ret = -errno;
-	fd = -1;
-	if (ret < 0)
-		goto fail_unlink;
-
-	ret = st_valid(dfd, name);
-	if (ret < 0)
-		goto fail_unlink;
-	if (ret == 1) {
-		ret = st_keep_prev(dfd, name, prev, prevtmp);
-		if (ret < 0)
-			goto fail_unlink;
-	}
-	if (renameat(dfd, tmp, dfd, name) < 0) {
-		ret = -errno;
-		goto fail_unlink;
-	}
-	ret = fsync(dfd) < 0 ? -errno : 0;
-	goto out;
-fail_unlink:
-	unlinkat(dfd, tmp, 0);
+	ret = st_publish(dfd, tmp, name);
 out:
+	close(dfd);
+	return ret;
+}
+
+int st_write_plain(const char *dir, const char *name, const void *data, size_t len)
+{
+	char tmp[ST_NAME_MAX + 16];
+	int dfd, ret;
+
+	if (!st_name_ok(name) || len > ST_MAX_LEN || (!data && len))
+		return -EINVAL;
+	snprintf(tmp, sizeof(tmp), "%s.tmp", name);
+	dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+	if (dfd < 0)
+		return -errno;
+	ret = st_write_tmp(dfd, tmp, &data, &len, len ? 1 : 0);
+	if (ret == 0)
+		ret = st_publish(dfd, tmp, name);
 	close(dfd);
 	return ret;
 }

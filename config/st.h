@@ -18,6 +18,9 @@
  * DIR/NAME.prev holds a complete, checksummed copy of the last saved or
  * the one before; st_load finds it.
  *
+ * st_write_plain is the same write-fsync-rename-fsync sequence for a plain
+ * file without the header (one copy, no .prev).
+ *
  * Nothing here logs or keeps state; the functions block on disk I/O.
  */
 #ifndef ARCADED_CONFIG_ST_H
@@ -45,6 +48,17 @@ enum st_which {
  * failed: the .tmp is removed and DIR/NAME and DIR/NAME.prev are as they
  * were). */
 int st_save(const char *dir, const char *name, const void *data, size_t len);
+
+/* Writes len bytes of data (len <= ST_MAX_LEN) as the plain file DIR/NAME
+ * (no header: text other programs read, like STATE_DIR/bindings.ini),
+ * atomically: DIR/NAME.tmp is written and fsynced, renamed over DIR/NAME,
+ * then DIR is fsynced. Whenever the process dies or the power fails,
+ * DIR/NAME is the whole old file or the whole new one (no .prev is kept:
+ * the rename alone guarantees that). NAME as for st_save. Returns 0 once
+ * the file and its directory entry are on disk, or -errno: -EINVAL (bad
+ * name or length), -ENOENT (no DIR), -ENOTDIR, -EACCES, or the write,
+ * fsync or rename error (the .tmp is removed; DIR/NAME is as it was). */
+int st_write_plain(const char *dir, const char *name, const void *data, size_t len);
 
 /* Loads DIR/NAME, or DIR/NAME.prev when NAME is missing or fails its
  * checks (magic, version, sizes, both CRCs). On success returns 0, *buf

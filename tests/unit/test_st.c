@@ -355,6 +355,111 @@ static void test_bad_arguments_are_refused(void **state)
 	assert_string_equal(msg, "/nonexistent/dir: No such file or directory");
 }
 
+/* The whole content of file NAME in dir, NUL-terminated, into buf. */
+static size_t read_plain(const char *name, char *buf, size_t len)
+{
+	char p[128];
+	size_t n;
+	FILE *f;
+
+	path_of(p, sizeof(p), name);
+	f = fopen(p, "rb");
+	assert_non_null(f);
+	n = fread(buf, 1, len - 1, f);
+	fclose(f);
+	buf[n] = '\0';
+	return n;
+}
+
+/* Names in dir that start with prefix. */
+static int count_entries(const char *prefix)
+{
+	DIR *d = opendir(dir);
+	struct dirent *e;
+	int n = 0;
+
+	assert_non_null(d);
+	while ((e = readdir(d)))
+		n += strncmp(e->d_name, prefix, strlen(prefix)) == 0;
+	closedir(d);
+	return n;
+}
+
+static void test_plain_write_replaces_the_whole_file_without_header(void **state)
+{
+	const char *one = "[keyboard]\nfire = KEY_SPACE\n", *two = "short\n";
+	char buf[256];
+
+	(void)state;
+	assert_int_equal(st_write_plain(dir, "plain.ini", one, strlen(one)), 0);
+	assert_int_equal(read_plain("plain.ini", buf, sizeof(buf)), strlen(one));
+	assert_string_equal(buf, one);
+	/* a shorter file replaces a longer one whole (no tail of the old) */
+	assert_int_equal(st_write_plain(dir, "plain.ini", two, strlen(two)), 0);
+	assert_int_equal(read_plain("plain.ini", buf, sizeof(buf)), strlen(two));
+	assert_string_equal(buf, two);
+	/* nothing else is left: no .tmp, no .prev */
+	assert_int_equal(count_entries("plain.ini"), 1);
+	assert_false(exists("plain.ini.tmp"));
+	assert_false(exists("plain.ini.prev"));
+	/* empty content (data may be NULL then) */
+	assert_int_equal(st_write_plain(dir, "plain.ini", NULL, 0), 0);
+	assert_int_equal(file_size("plain.ini"), 0);
+}
+
+static void test_plain_write_over_a_leftover_temp(void **state)
+{
+	char p[128], buf[64];
+	FILE *f;
+
+	(void)state;
+	path_of(p, sizeof(p), "left.ini.tmp");
+	f = fopen(p, "w");
+	assert_non_null(f);
+	fputs("half a write of something much longer", f);
+	fclose(f);
+	assert_int_equal(st_write_plain(dir, "left.ini", "new\n", 4), 0);
+	read_plain("left.ini", buf, sizeof(buf));
+	assert_string_equal(buf, "new\n");
+	assert_int_equal(count_entries("left.ini"), 1);
+}
+
+static void test_plain_write_errors_keep_the_old_file(void **state)
+{
+	static char big[64 * 1024];
+	struct rlimit old, lim;
+	char notdir[128], buf[64];
+	int ret;
+
+	(void)state;
+	assert_int_equal(st_write_plain("/nonexistent/dir", "b.ini", "x", 1), -ENOENT);
+	assert_int_equal(st_write_plain(dir, "a/b", "x", 1), -EINVAL);
+	assert_int_equal(st_write_plain(dir, "..", "x", 1), -EINVAL);
+	assert_int_equal(st_write_plain(dir, "", "x", 1), -EINVAL);
+	assert_int_equal(st_write_plain(dir, "x", NULL, 1), -EINVAL);
+	assert_int_equal(st_write_plain(dir, "x", "x", (size_t)ST_MAX_LEN + 1), -EINVAL);
+	/* a file where the directory should be */
+	assert_int_equal(st_write_plain(dir, "file", "f", 1), 0);
+	path_of(notdir, sizeof(notdir), "file");
+	assert_int_equal(st_write_plain(notdir, "b.ini", "x", 1), -ENOTDIR);
+
+	/* a write cut short (as by a full disk): the old file stays whole */
+	assert_int_equal(st_write_plain(dir, "cut.ini", "old\n", 4), 0);
+	memset(big, 'q', sizeof(big));
+	assert_int_equal(getrlimit(RLIMIT_FSIZE, &old), 0);
+	signal(SIGXFSZ, SIG_IGN);
+	lim = old;
+	lim.rlim_cur = 4096;
+	assert_int_equal(setrlimit(RLIMIT_FSIZE, &lim), 0);
+	ret = st_write_plain(dir, "cut.ini", big, sizeof(big));
+	assert_int_equal(setrlimit(RLIMIT_FSIZE, &old), 0);
+	signal(SIGXFSZ, SIG_DFL);
+	assert_int_equal(ret, -EFBIG);
+	assert_false(exists("cut.ini.tmp"));
+	read_plain("cut.ini", buf, sizeof(buf));
+	assert_string_equal(buf, "old\n");
+}
+
 static int count_fds(void)
 {
 	DIR *d = opendir("/proc/self/fd");
@@ -382,6 +487,11 @@ static void test_no_descriptor_leaks(void **state)
 		free(buf);
 		assert_int_equal(st_load(dir, "fd-none", &buf, &len, NULL, NULL, 0), -ENOENT);
 	}
+	for (int i = 0; i < 20; i++) {
+		assert_int_equal(st_write_plain(dir, "fd.ini", "x\n", 2), 0);
+		assert_int_equal(st_write_plain(dir, "a/b", "x", 1), -EINVAL);
+		assert_int_equal(st_write_plain("/nonexistent/dir", "x", "x", 1), -ENOENT);
+	}
 	assert_int_equal(st_save(dir, "a/b", "x", 1), -EINVAL);
 	assert_int_equal(count_fds(), before);
 }
@@ -400,6 +510,9 @@ int main(void)
 		cmocka_unit_test(test_leftovers_of_a_killed_save_do_not_matter),
 		cmocka_unit_test(test_short_write_loses_nothing),
 		cmocka_unit_test(test_bad_arguments_are_refused),
+		cmocka_unit_test(test_plain_write_replaces_the_whole_file_without_header),
+		cmocka_unit_test(test_plain_write_over_a_leftover_temp),
+		cmocka_unit_test(test_plain_write_errors_keep_the_old_file),
 		cmocka_unit_test(test_no_descriptor_leaks),
 	};
 
