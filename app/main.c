@@ -21,7 +21,7 @@ static void usage(FILE *f)
 {
 	fputs("usage: arcaded [options]\n"
 	      "       arcaded replay FILE [options]   (same as --replay FILE)\n"
-	      "       arcaded devices                 (HID devices, GPIO chips, their profiles)\n"
+	      "       arcaded devices                 (HID, evdev, GPIO devices, their profiles)\n"
 	      "Runs the arcade cabinet daemon: input, game, framebuffer.\n"
 	      "\n"
 	      "  --config-dir DIR   read DIR/*.ini in name order (default /etc/arcaded)\n"
@@ -57,7 +57,8 @@ static void usage(FILE *f)
 }
 
 /* `arcaded devices`: every HID device with its decoded report fields and
- * the profile that would configure it, and every GPIO chip and line. */
+ * the profile that would configure it, every evdev device, and every GPIO
+ * chip and line. */
 static int list_devices(const char *config_dir)
 {
 	struct in_hid_info *hid = NULL;
@@ -93,6 +94,27 @@ static int list_devices(const char *config_dir)
 			printf("    fields: %s\n", hid[i].why);
 	}
 	in_hid_list_free(hid, n);
+	struct in_evdev_info *ev = NULL;
+	rc = in_evdev_list(NULL, &ev, &n);
+	printf("evdev devices (/dev/input): %zu%s\n", n, rc < 0 ? " (listing failed)" : "");
+	for (size_t i = 0; i < n; i++) {
+		const struct in_ident *id = &ev[i].id;
+		const struct prof *p;
+
+		if (!ev[i].opened) {
+			printf("  %s  not readable: %s\n", ev[i].node, ev[i].why);
+			continue;
+		}
+		p = prof_match(profs, "evdev", id);
+		printf("  %s  %04x:%04x  \"%s\"  port %s  %s\n    bindings section: ", ev[i].node,
+		       id->vid, id->pid, id->name, id->port[0] ? id->port : "-",
+		       ev[i].keyboard ? "keyboard (input.evdev = auto takes the first)" : "not a keyboard");
+		if (id->port[0])
+			printf("[device \"usb-%s\"] or ", id->port);
+		printf("[device \"%04x:%04x\"], else [keyboard]; profile: %s\n", id->vid, id->pid,
+		       p ? p->name : "none");
+	}
+	free(ev);
 	rc = in_gpio_list(&gpio);
 	printf("GPIO chips:%s\n%s", rc < 0 ? " (listing failed)" : "", gpio ? gpio : "");
 	free(gpio);

@@ -63,11 +63,34 @@ extern const struct in_backend in_evdev, in_tty, in_hid, in_gpio;
  * The rule is in in_evdev.c and docs/input.md. */
 int in_evdev_open_dir(const char *dir, struct in_dev **out, char *why, size_t whylen);
 
+/* One evdev device as `arcaded devices` lists it. */
+struct in_evdev_info {
+	char node[64];           /* /dev/input/eventN */
+	int opened;              /* 0: could not be opened (why says why) */
+	int keyboard;            /* auto-detection would take it (a keyboard) */
+	struct in_ident id;
+	char why[160];
+};
+
+/* Every DIR/event* (NULL: /dev/input), in number order, opened briefly to
+ * read its name, ids and USB port (never grabbed). *out is malloc'd (free
+ * it). 0 or -errno when DIR cannot be listed. */
+int in_evdev_list(const char *dir, struct in_evdev_info **out, size_t *count);
+
 /* Key code by name: "KEY_UP", "up", "w", "space", "enter", "BTN_SOUTH", ...
  * (case-insensitive; a bare letter or digit is that key). -1 if unknown. */
 int in_key_from_name(const char *name);
 /* Canonical name ("KEY_UP") of a code, or NULL. */
 const char *in_key_name(int code);
+
+/* The USB port path ("1-1.2") of the device whose sysfs directory (or a
+ * link to it) is dir, after dropping `up` trailing path components: the
+ * port when the last remaining component is a USB interface directory
+ * ("1-1.2:1.0") or that component's parent is one (a HID device under its
+ * interface); port is "" otherwise (uinput, Bluetooth behind a dongle:
+ * the dongle's port is not the pad's). 0 or -errno (dir unresolvable,
+ * -ENAMETOOLONG). in_sysfs.c. */
+int in_usb_port(const char *dir, int up, char *port, size_t len);
 
 /* CLOCK_MONOTONIC now, ns (for backends whose source has no timestamp). */
 uint64_t in_now_ns(void);

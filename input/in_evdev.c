@@ -39,6 +39,7 @@ struct in_dev {
 	int grab_err;            /* 0: grabbed; else the errno of the failed grab */
 	int stamp_now;           /* the kernel keeps another clock: stamp at the read */
 	int syncing;             /* draining the sync events after a SYN_DROPPED */
+	struct in_ident id;      /* VID:PID, USB port, name: per-device bindings */
 	char desc[320];
 };
 
@@ -127,6 +128,32 @@ static void evdev_close(struct in_dev *d)
 	free(d);
 }
 
+/* Who the device is: its ids as the kernel reports them and, on USB, the
+ * port it is plugged into (sysfs: class/input/eventN/device is the
+ * inputN directory, under input/ of the HID device or USB interface). */
+static void identify(struct in_dev *d, const char *path, const char *name)
+{
+	const char *base = strrchr(path, '/');
+	char link[96];
+
+	memset(&d->id, 0, sizeof(d->id));
+	d->id.vid = (uint16_t)libevdev_get_id_vendor(d->ev);
+	d->id.pid = (uint16_t)libevdev_get_id_product(d->ev);
+	snprintf(d->id.name, sizeof(d->id.name), "%s", name ? name : "");
+	base = base ? base + 1 : path;
+	if (strncmp(base, "event", 5) == 0 &&
+	    snprintf(link, sizeof(link), "/sys/class/input/%s/device", base) < (int)sizeof(link))
+		in_usb_port(link, 2, d->id.port, sizeof(d->id.port));
+	if (d->id.port[0])
+		append(d->desc, sizeof(d->desc), ", %04x:%04x port %s", d->id.vid, d->id.pid,
+		       d->id.port);
+}
+
+static void evdev_ident(struct in_dev *d, struct in_ident *id)
+{
+	*id = d->id;
+}
+
 /* Grabs d and switches its clock; fills describe. */
 static void take_over(struct in_dev *d, const char *path)
 {
@@ -137,6 +164,7 @@ static void take_over(struct in_dev *d, const char *path)
 	rc = libevdev_grab(d->ev, LIBEVDEV_GRAB);
 	d->grab_err = rc < 0 ? -rc : 0;
 	snprintf(d->desc, sizeof(d->desc), "%s (%s)", name ? name : "unnamed", path);
+	identify(d, path, name);
 	if (d->grab_err)
 		append(d->desc, sizeof(d->desc), ", not grabbed: %s", strerror(d->grab_err));
 	if (d->stamp_now)
@@ -239,6 +267,44 @@ int in_evdev_open_dir(const char *dir, struct in_dev **out, char *why, size_t wh
 	return -ENODEV;
 }
 
+int in_evdev_list(const char *dir, struct in_evdev_info **out, size_t *count)
+{
+	unsigned *nums = NULL;
+	struct in_evdev_info *l;
+	size_t n = 0;
+	int rc;
+
+	*out = NULL;
+	*count = 0;
+	rc = list_events(dir ? dir : "/dev/input", &nums, &n);
+	if (rc < 0)
+		return rc;
+	l = calloc(n ? n : 1, sizeof(*l));
+	if (!l) {
+		free(nums);
+		return -ENOMEM;
+	}
+	for (size_t i = 0; i < n; i++) {
+		struct in_dev *d;
+		char why[160] = "";
+
+		snprintf(l[i].node, sizeof(l[i].node), "%s/event%u", dir ? dir : "/dev/input", nums[i]);
+		if (probe(l[i].node, &d, why, sizeof(why)) < 0) {
+			snprintf(l[i].why, sizeof(l[i].why), "%s", why);
+			continue;
+		}
+		l[i].opened = 1;
+		l[i].keyboard = looks_like_keyboard(d->ev);
+		identify(d, l[i].node, libevdev_get_name(d->ev));
+		l[i].id = d->id;
+		evdev_close(d);   /* never grabbed */
+	}
+	free(nums);
+	*out = l;
+	*count = n;
+	return 0;
+}
+
 static int evdev_open(const char *path, struct in_dev **out, char *why, size_t whylen)
 {
 	struct in_dev *d;
@@ -320,4 +386,5 @@ const struct in_backend in_evdev = {
 	.read = evdev_read,
 	.close = evdev_close,
 	.describe = evdev_describe,
+	.ident = evdev_ident,
 };

@@ -8,6 +8,8 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <pthread.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -25,6 +27,8 @@
 
 #define HID_SYSFS "/sys"
 #define HID_MAX_READS 256        /* reports per read call: bounds the work of a tick */
+#define HID_RING 64              /* reports the reader thread may hold for the loop */
+#define HID_WAIT_MS 50           /* reader's read timeout: how soon it sees a stop */
 
 #define HID_MAGIC 0x68696472u       /* "hidr": in_hid_configure checks its device */
 
@@ -39,7 +43,20 @@ struct in_dev {
 	struct in_ident id;
 	char node[64];
 	char text[400];
-	uint8_t buf[HIDD_MAX_REPORT_BYTES + 1];
+	/* Reports with their arrival times, from the reader thread to read():
+	 * slot (head + k) % HID_RING for k < n. The slot at head belongs to
+	 * read() while n > 0, the one at head + n to the thread while n <
+	 * HID_RING; mu guards head, n, stop and gone. */
+	pthread_t th;
+	bool th_on;
+	pthread_mutex_t mu;
+	pthread_cond_t cv;           /* signalled when a slot frees or stop is set */
+	unsigned head, n;
+	bool stop, gone;
+	uint64_t t[HID_RING];
+	uint32_t len[HID_RING];
+	uint8_t *ring;               /* HID_RING * slot bytes */
+	size_t slot;
 };
 
 /* hidapi keeps global state (hid_init/hid_exit); count the open devices
@@ -244,61 +261,16 @@ static const char *node_base(const char *node)
 	return b ? b + 1 : node;
 }
 
-/* "1-1.2:1.0": a USB interface directory (bus-port[.port...]:config.iface). */
-static bool usb_interface_dir(const char *s, size_t len)
-{
-	size_t i = 0, colon;
-	bool dash = false;
-
-	while (i < len && isdigit((unsigned char)s[i]))
-		i++;
-	if (i == 0 || i == len || s[i] != '-')
-		return false;
-	for (i++; i < len && s[i] != ':'; i++) {
-		if (!isdigit((unsigned char)s[i]) && s[i] != '.')
-			return false;
-		dash = true;
-	}
-	if (!dash || i == len)
-		return false;
-	colon = i;
-	for (i++; i < len; i++)
-		if (!isdigit((unsigned char)s[i]) && s[i] != '.')
-			return false;
-	return colon + 1 < len;
-}
-
 int in_hid_port(const char *sysroot, const char *node, char *port, size_t len)
 {
-	char link[PATH_MAX], real[PATH_MAX];
-	const char *end;
+	char link[PATH_MAX];
 
 	if (len)
 		port[0] = '\0';
 	if (snprintf(link, sizeof(link), "%s/class/hidraw/%s/device", sysroot, node_base(node)) >=
 	    (int)sizeof(link))
 		return -ENAMETOOLONG;
-	if (!realpath(link, real))
-		return -errno;
-	/* .../1-1.2/1-1.2:1.0/0003:1209:0001.0005: the HID device's parent
-	 * is a USB interface. A Bluetooth pad behind a USB dongle has hci
-	 * directories between: the dongle's port is not the pad's. */
-	end = strrchr(real, '/');
-	if (end) {
-		const char *start = end;
-
-		while (start > real && start[-1] != '/')
-			start--;
-		if (usb_interface_dir(start, (size_t)(end - start))) {
-			size_t n = (size_t)(strchr(start, ':') - start);
-
-			if (n >= len)
-				return -ENAMETOOLONG;
-			memcpy(port, start, n);
-			port[n] = '\0';
-		}
-	}
-	return 0;
+	return in_usb_port(link, 0, port, len);
 }
 
 int in_hid_read_desc(const char *sysroot, const char *node, uint8_t **buf, size_t *len)
@@ -469,10 +441,75 @@ static bool game_device(const struct hidd_desc *d)
 	return false;
 }
 
+/* The reader: blocks in hidapi's read (hidraw has no timestamps, so the
+ * time a report arrives is taken as soon as the read returns, not at the
+ * next tick) and queues each report for hid_rd. A full queue waits: the
+ * kernel keeps what arrives meanwhile, and no release is ever dropped. */
+static void *hid_reader(void *arg)
+{
+	struct in_dev *d = arg;
+
+	for (;;) {
+		unsigned tail;
+		int r;
+
+		pthread_mutex_lock(&d->mu);
+		while (d->n == HID_RING && !d->stop)
+			pthread_cond_wait(&d->cv, &d->mu);
+		if (d->stop) {
+			pthread_mutex_unlock(&d->mu);
+			return NULL;
+		}
+		tail = (d->head + d->n) % HID_RING;
+		pthread_mutex_unlock(&d->mu);
+		r = hid_read_timeout(d->h, d->ring + (size_t)tail * d->slot, d->slot, HID_WAIT_MS);
+		uint64_t t = in_now_ns();
+		pthread_mutex_lock(&d->mu);
+		if (r < 0) {
+			d->gone = true;
+			pthread_mutex_unlock(&d->mu);
+			return NULL;
+		}
+		if (r > 0) {
+			d->t[tail] = t;
+			d->len[tail] = (uint32_t)r;
+			d->n++;
+		}
+		pthread_mutex_unlock(&d->mu);
+	}
+}
+
+/* Starts the reader with every signal blocked: signals are the main
+ * loop's (its sleeps end on SIGTERM). */
+static int hid_start_reader(struct in_dev *d)
+{
+	sigset_t all, old;
+	int rc;
+
+	sigfillset(&all);
+	pthread_sigmask(SIG_SETMASK, &all, &old);
+	rc = pthread_create(&d->th, NULL, hid_reader, d);
+	pthread_sigmask(SIG_SETMASK, &old, NULL);
+	if (rc != 0)
+		return -rc;
+	d->th_on = true;
+	return 0;
+}
+
 static void hid_close_dev(struct in_dev *d)
 {
 	if (!d)
 		return;
+	if (d->th_on) {
+		pthread_mutex_lock(&d->mu);
+		d->stop = true;
+		pthread_cond_signal(&d->cv);
+		pthread_mutex_unlock(&d->mu);
+		pthread_join(d->th, NULL);
+	}
+	pthread_cond_destroy(&d->cv);
+	pthread_mutex_destroy(&d->mu);
+	free(d->ring);
 	if (d->h)
 		hid_close(d->h);
 	hidr_free(d->dec);
@@ -527,9 +564,34 @@ static int open_one(struct in_dev *d, const struct in_hid_info *i, const struct 
 		say(why, whylen, "%s: %s", i->node, strerror(-rc));
 		goto fail;
 	}
-	hid_set_nonblocking(d->h, 1);
+	/* A slot holds the longest input report the descriptor declares, with
+	 * its id byte (at least 64: devices send more than they declare, and
+	 * hidraw cuts a report to the buffer). */
+	d->slot = 64;
+	for (size_t k = 0; k < d->desc->nreport; k++) {
+		size_t b = (d->desc->report[k].bits + 7) / 8 + 1;
+		if (b > d->slot)
+			d->slot = b;
+	}
+	if (d->slot > HIDD_MAX_REPORT_BYTES + 1)
+		d->slot = HIDD_MAX_REPORT_BYTES + 1;
+	d->ring = malloc(HID_RING * d->slot);
+	if (!d->ring) {
+		rc = -ENOMEM;
+		goto fail;
+	}
+	rc = hid_start_reader(d);
+	if (rc < 0) {
+		say(why, whylen, "%s: reader thread: %s", i->node, strerror(-rc));
+		goto fail;
+	}
 	return 0;
 fail:
+	if (d->h)
+		hid_close(d->h);
+	d->h = NULL;
+	free(d->ring);
+	d->ring = NULL;
 	hidr_free(d->dec);
 	hidd_free(d->desc);
 	free(d->q);
@@ -557,6 +619,8 @@ static int hid_open_dev(const char *path, struct in_dev **out, char *why, size_t
 	if (!d)
 		return -ENOMEM;
 	d->magic = HID_MAGIC;
+	pthread_mutex_init(&d->mu, NULL);
+	pthread_cond_init(&d->cv, NULL);
 	if (hid_users++ == 0 && hid_init() < 0) {
 		say(why, whylen, "hidapi: initialisation failed");
 		rc = -EIO;
@@ -653,7 +717,9 @@ static int hid_rd(struct in_dev *d, struct in_event *out, int max)
 	int n = 0;
 
 	for (int reads = 0;; reads++) {
-		int k = d->qn < max - n ? d->qn : max - n, r;
+		int k = d->qn < max - n ? d->qn : max - n;
+		unsigned have, head;
+		bool gone;
 
 		memcpy(out + n, d->q + d->qhead, (size_t)k * sizeof(*out));
 		d->qhead += k;
@@ -661,14 +727,22 @@ static int hid_rd(struct in_dev *d, struct in_event *out, int max)
 		n += k;
 		if (n == max || reads == HID_MAX_READS)
 			return n;
-		r = hid_read(d->h, d->buf, sizeof(d->buf));
-		if (r < 0)
-			return n > 0 ? n : -ENODEV;   /* the next call fails again */
-		if (r == 0)
-			return n;
-		k = hidr_decode(d->dec, d->buf, (size_t)r, in_now_ns(), d->q, d->qcap);
+		pthread_mutex_lock(&d->mu);
+		have = d->n;
+		head = d->head;
+		gone = d->gone;
+		pthread_mutex_unlock(&d->mu);
+		if (!have)   /* after the last report: gone, and the next call fails again */
+			return n > 0 || !gone ? n : -ENODEV;
+		k = hidr_decode(d->dec, d->ring + (size_t)head * d->slot, d->len[head], d->t[head],
+				d->q, d->qcap);
 		d->qhead = 0;
 		d->qn = k > 0 ? k : 0;
+		pthread_mutex_lock(&d->mu);
+		d->head = (head + 1) % HID_RING;
+		d->n--;
+		pthread_cond_signal(&d->cv);
+		pthread_mutex_unlock(&d->mu);
 	}
 }
 

@@ -23,11 +23,16 @@
  * device whose descriptor has a joystick or gamepad application collection
  * with buttons, axes or a hat (keyboards are left to evdev).
  *
- * Reading: hidapi 0.13 gives no file descriptor (fd returns -1), so the
- * app calls read every tick; reports are read with hid_read in
- * non-blocking mode until none is left (at most 256 per call), decoded by
- * hidr into changes, and stamped with in_now_ns() at the read (hidraw has
- * no timestamps). A failed read (the device was unplugged) is -ENODEV.
+ * Reading: hidapi 0.13 gives no file descriptor (fd returns -1). Each open
+ * device has a reader thread blocked in hid_read_timeout that stamps every
+ * report with in_now_ns() as it arrives (hidraw has no timestamps, so this
+ * is the closest to the kernel's time) and queues up to 64 reports; the
+ * app calls read every tick, which decodes the queued reports (at most 256
+ * per call) by hidr into changes with their arrival times. A full queue
+ * makes the thread wait (the kernel buffers meanwhile): no report is
+ * dropped. A failed read (the device was unplugged) is -ENODEV once the
+ * reports before it are delivered; close stops and joins the thread
+ * (within 50 ms).
  * Codes: BTN_TRIGGER_HAPPY*, BTN_DPAD_*, KEY_* and ABS_* as hid_dec.h
  * says.
  *
