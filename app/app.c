@@ -38,6 +38,7 @@
 #include "engine/r_main.h"
 #include "engine/sim.h"
 #include "input/gpo.h"
+#include "input/hp.h"
 #include "input/in.h"
 #include "input/in_gpio.h"
 #include "input/in_hid.h"
@@ -49,7 +50,13 @@
 #define APP_KEYS 1024             /* key codes tracked per device (KEY_CNT is 768) */
 #define APP_TICK_NS(t) ((uint64_t)(t) * 1000000000ull / SIM_TICRATE)
 #define APP_RESYNC_NS 250000000ull /* further behind than this: drop the backlog */
+/* Rescan for lost or absent devices this often; hotplug notices (hp.h)
+ * make a slot retry at once, this is the fallback. */
 #define APP_REOPEN_NS 1000000000ull
+
+/* Latency is kept per kind of input source as well as overall. */
+enum app_src { APP_SRC_EVDEV, APP_SRC_TTY, APP_SRC_HID, APP_SRC_GPIO, APP_SRC_SCRIPT, APP_SRCS };
+static const char *const app_src_name[APP_SRCS] = { "evdev", "tty", "hid", "gpio", "script" };
 
 /* Set by signal handlers only; read by the loop. File-scope because a
  * handler has no other way to reach the loop. */
@@ -103,8 +110,11 @@ struct app {
 	struct rec_verify verify;  /* --verify: stored hashes against the replay's */
 	struct scr *scr;
 	size_t scr_next;
+	struct hp *hp;             /* hotplug notices, NULL: periodic rescans only */
 	struct lat_series frame_time, latency;
+	struct lat_series src_latency[APP_SRCS];
 	uint64_t pending_ns;       /* earliest unpresented input event, 0 none */
+	uint64_t src_pending_ns[APP_SRCS];  /* the same per kind of source */
 	uint64_t start_ns, ticks_run, frames, dropped;
 	int failures;
 	int ready;
@@ -317,8 +327,15 @@ static void open_inputs(struct app *a)
 		add_inputs(a, &in_hid, a->cfg->input.hid);
 	if (strcmp(a->cfg->input.gpio, "none") != 0)
 		add_inputs(a, &in_gpio, a->cfg->input.gpio);
-	if (a->nin == 0)
+	if (a->nin == 0) {
 		logf_("no input device configured: the game runs, but nothing controls it");
+		return;
+	}
+	char why[256];
+	if (hp_open(NULL, 0, HP_INOTIFY | HP_LIBUSB, &a->hp, why, sizeof(why)) < 0)
+		logf_("input hotplug: %s; devices are looked for every second", why);
+	else
+		logf_("input hotplug: %s", hp_sources(a->hp));
 }
 
 /* A device went away: release every control it held so nothing stays
@@ -342,6 +359,52 @@ static void drop_input(struct app *a, struct app_in *in)
 	in->retry_ns = in_now_ns() + APP_REOPEN_NS;
 }
 
+static enum app_src src_of(const struct in_backend *be)
+{
+	if (be == &in_hid)
+		return APP_SRC_HID;
+	if (be == &in_gpio)
+		return APP_SRC_GPIO;
+	if (be == &in_tty)
+		return APP_SRC_TTY;
+	return APP_SRC_EVDEV;
+}
+
+/* An input event of source k at time t (kernel stamp) changed an action:
+ * its effect is due on the next presented frame. */
+static void input_pending(struct app *a, enum app_src k, uint64_t t)
+{
+	if (a->pending_ns == 0 || t < a->pending_ns)
+		a->pending_ns = t;
+	if (a->src_pending_ns[k] == 0 || t < a->src_pending_ns[k])
+		a->src_pending_ns[k] = t;
+}
+
+/* input.log: one line per press and release, with who sent it and what it
+ * does (the operator's view of a device; the VM tests read it too). */
+static void log_key(const struct app_in *in, int code, int down, const int *acts, int n)
+{
+	char dev[48], what[160] = "";
+	const char *name = in_key_name(code);
+	size_t len = 0;
+
+	if (in->id.port[0])
+		snprintf(dev, sizeof(dev), "usb-%s", in->id.port);
+	else if (in->id.vid || in->id.pid)
+		snprintf(dev, sizeof(dev), "%04x:%04x", in->id.vid, in->id.pid);
+	else
+		snprintf(dev, sizeof(dev), "-");
+	for (int i = 0; i < n && len < sizeof(what); i++)
+		len += (size_t)snprintf(what + len, sizeof(what) - len, "%s%s", i ? "," : "",
+					act_name(acts[i]));
+	if (name)
+		logf_("input: %s %s %s %s -> %s", in->be->name, dev, name, down ? "down" : "up",
+		      n ? what : "unbound");
+	else
+		logf_("input: %s %s code %d %s -> %s", in->be->name, dev, code,
+		      down ? "down" : "up", n ? what : "unbound");
+}
+
 static void key_event(struct app *a, struct app_in *in, const struct in_event *e)
 {
 	int acts[ACT_COUNT], n, down = e->value != 0;
@@ -359,16 +422,24 @@ static void key_event(struct app *a, struct app_in *in, const struct in_event *e
 	else
 		in->down[e->code / 8] &= (uint8_t)~bit;
 	n = bind_lookup_dev(&a->binds, &in->id, e->code, acts, ACT_COUNT);
+	if (a->cfg->input.log)
+		log_key(in, e->code, down, acts, n);
 	for (int i = 0; i < n; i++)
 		cmd_action(&a->cs, acts[i], down);
-	if (n > 0 && (a->pending_ns == 0 || e->time_ns < a->pending_ns))
-		a->pending_ns = e->time_ns;
+	if (n > 0)
+		input_pending(a, src_of(in->be), e->time_ns);
 }
 
 static void read_inputs(struct app *a)
 {
 	struct in_event ev[64];
 	uint64_t now = 0;
+
+	/* A device node appeared or changed (udev grants access right after
+	 * the kernel creates it): every closed slot tries now. */
+	if (hp_poll(a->hp))
+		for (int i = 0; i < a->nin; i++)
+			a->in[i].retry_ns = 0;
 
 	for (int i = 0; i < a->nin; i++) {
 		struct app_in *in = &a->in[i];
@@ -467,8 +538,8 @@ static void script_inputs(struct app *a, uint32_t t)
 		const struct scr_step *st = &a->scr->steps[i];
 		if (st->op == SCR_PRESS || st->op == SCR_RELEASE) {
 			cmd_action(&a->cs, st->action, st->op == SCR_PRESS);
-			if (st->op == SCR_PRESS && (a->pending_ns == 0))
-				a->pending_ns = in_now_ns();
+			if (st->op == SCR_PRESS && a->pending_ns == 0)
+				input_pending(a, APP_SRC_SCRIPT, in_now_ns());
 		}
 	}
 }
@@ -1002,6 +1073,8 @@ static int setup(struct app *a)
 	}
 	lat_reset(&a->frame_time);
 	lat_reset(&a->latency);
+	for (int k = 0; k < APP_SRCS; k++)
+		lat_reset(&a->src_latency[k]);
 	return 0;
 }
 
@@ -1036,10 +1109,19 @@ static void print_summary(struct app *a)
 	fprintf(stderr, "arcaded: summary: %s\n", line);
 	lat_format(&a->latency, "input-to-present latency", line, sizeof(line));
 	fprintf(stderr, "arcaded: summary: %s\n", line);
+	for (int k = 0; k < APP_SRCS; k++) {
+		char name[64];
+		if (!a->src_latency[k].count)
+			continue;   /* only the kinds that gave input */
+		snprintf(name, sizeof(name), "input-to-present latency (%s)", app_src_name[k]);
+		lat_format(&a->src_latency[k], name, line, sizeof(line));
+		fprintf(stderr, "arcaded: summary: %s\n", line);
+	}
 }
 
 static void teardown(struct app *a)
 {
+	hp_close(a->hp);
 	for (int i = 0; i < a->nin; i++)
 		if (a->in[i].dev)
 			a->in[i].be->close(a->in[i].dev);
@@ -1120,6 +1202,13 @@ static int render_and_present(struct app *a)
 		if (t1 > a->pending_ns)
 			lat_add_ns(&a->latency, t1 - a->pending_ns);
 		a->pending_ns = 0;
+	}
+	for (int k = 0; k < APP_SRCS; k++) {
+		if (!a->src_pending_ns[k])
+			continue;
+		if (t1 > a->src_pending_ns[k])
+			lat_add_ns(&a->src_latency[k], t1 - a->src_pending_ns[k]);
+		a->src_pending_ns[k] = 0;
 	}
 	return rc;
 }

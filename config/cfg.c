@@ -85,6 +85,7 @@ static const struct cfg_key cfg_keys[] = {
 	CFG_STRKEY(input, bindings, input.bindings, CFG_T_STR),
 	CFG_STRKEY(input, hid, input.hid, CFG_T_STR),
 	CFG_STRKEY(input, gpio, input.gpio, CFG_T_STR),
+	CFG_BOOLKEY(input, log, input.log),
 	CFG_STRKEY(paths, state_dir, paths.state_dir, CFG_T_STR),
 	CFG_INTKEY(recorder, keep, recorder.keep, 0, 1000),
 	CFG_INTKEY(recorder, max_mb, recorder.max_mb, 0, 1048576),

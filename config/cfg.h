@@ -42,6 +42,7 @@ struct cfg {
 		char bindings[CFG_PATH_MAX]; /* extra bindings file, "" none */
 		char hid[CFG_PATH_MAX];      /* auto | none | HID device specs, blank-separated */
 		char gpio[CFG_PATH_MAX];     /* none | a GPIO spec (docs/input.md) */
+		int log;                     /* log every control press and release (0) */
 	} input;
 	struct {
 		char state_dir[CFG_PATH_MAX]; /* $STATE_DIRECTORY or /var/lib/arcaded */
