@@ -78,6 +78,32 @@ static void bind_report(struct bind_ctx *x, int line, const char *fmt, ...)
 	x->fn(x->user, x->file, line, msg);
 }
 
+/* "0x" or "0X" and 1 to 4 hex digits, 0x0001..0xffff: a code by number
+ * (for codes libevdev has no name for). The code, or -1. */
+static int bind_numeric_key(const char *name)
+{
+	size_t n = strlen(name);
+	int code = 0;
+
+	if (n < 3 || n > 6 || name[0] != '0' || (name[1] != 'x' && name[1] != 'X'))
+		return -1;
+	for (size_t i = 2; i < n; i++) {
+		char c = name[i];
+		int d;
+
+		if (c >= '0' && c <= '9')
+			d = c - '0';
+		else if (c >= 'a' && c <= 'f')
+			d = c - 'a' + 10;
+		else if (c >= 'A' && c <= 'F')
+			d = c - 'A' + 10;
+		else
+			return -1;
+		code = code * 16 + d;
+	}
+	return code >= BIND_CODE_MIN ? code : -1;
+}
+
 int bind_parse_keys(const char *value, int keys[BIND_MAX], char *why, size_t whylen)
 {
 	const char *p = value;
@@ -110,7 +136,9 @@ int bind_parse_keys(const char *value, int keys[BIND_MAX], char *why, size_t why
 		}
 		memcpy(name, b, len);
 		name[len] = '\0';
-		code = in_key_from_name(name);
+		code = bind_numeric_key(name);
+		if (code < 0)
+			code = in_key_from_name(name);
 		if (code < 0) {
 			snprintf(why, whylen, "unknown key name '%s'", name);
 			return -EINVAL;
@@ -369,4 +397,62 @@ int bind_lookup_dev(const struct bind_table *b, const struct in_ident *id, int c
 		}
 	}
 	return n;
+}
+
+/* Appends to out what snprintf would, counting what does not fit. */
+struct bind_out {
+	char *buf;
+	size_t len, n;
+};
+
+__attribute__((format(printf, 2, 3)))
+static void bind_put(struct bind_out *o, const char *fmt, ...)
+{
+	va_list ap;
+	int w;
+
+	va_start(ap, fmt);
+	w = vsnprintf(o->n < o->len ? o->buf + o->n : NULL, o->n < o->len ? o->len - o->n : 0,
+		      fmt, ap);
+	va_end(ap);
+	if (w > 0)
+		o->n += (size_t)w;
+}
+
+static void bind_put_section(struct bind_out *o, const int key[ACT_COUNT][BIND_MAX])
+{
+	for (int a = 0; a < ACT_COUNT; a++) {
+		int first = 1;
+
+		bind_put(o, "%s =", act_name(a));
+		for (int i = 0; i < BIND_MAX; i++) {
+			int code = key[a][i];
+			const char *name = in_key_name(code);
+
+			if (code < BIND_CODE_MIN || code > BIND_CODE_MAX)
+				continue;
+			if (name)
+				bind_put(o, "%s %s", first ? "" : ",", name);
+			else
+				bind_put(o, "%s 0x%04x", first ? "" : ",", (unsigned)code);
+			first = 0;
+		}
+		bind_put(o, "\n");
+	}
+}
+
+size_t bind_format(const struct bind_table *b, char *buf, size_t len)
+{
+	struct bind_out o = { .buf = buf, .len = len };
+
+	if (buf && len)
+		buf[0] = '\0';
+	bind_put(&o, "# arcaded key bindings: every action of [keyboard] and of each device\n");
+	bind_put(&o, "[keyboard]\n");
+	bind_put_section(&o, b->key);
+	for (int d = 0; d < b->ndev; d++) {
+		bind_put(&o, "\n[device \"%s\"]\n", b->dev[d].id);
+		bind_put_section(&o, b->dev[d].key);
+	}
+	return o.n;
 }

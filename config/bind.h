@@ -3,7 +3,8 @@
  *
  * File format (INI, read by config/cini.c):
  *   [keyboard]
- *   forward = up, w          # key names as in_key_from_name accepts
+ *   forward = up, w          # key names as in_key_from_name accepts,
+ *   coin = 0x2c0             # or codes by number (see BIND_CODE_MIN)
  *   fire = leftctrl, space
  *   use =                    # empty: the action has no key
  *   [device "usb-1-1.2"]     # one device, by USB port path
@@ -49,6 +50,13 @@ struct bind_table {
 	struct bind_dev dev[BIND_DEVICES];
 };
 
+/* Codes a bindings file can name: key names (in_key_name) cover the
+ * kernel's KEY_* / BTN_*; any code of this range may also be written as
+ * "0x" and 1..4 hex digits ("0x2c0"), which is how bind_format writes
+ * codes libevdev has no name for. */
+#define BIND_CODE_MIN 1
+#define BIND_CODE_MAX 0xffff
+
 /* Built-in defaults: forward up/w, back down/s, turn left/right arrows,
  * strafe a/comma and d/dot, fire leftctrl/space, use e, start 1/enter,
  * coin 5, service 9/F2 (1/5/9 as in MAME). */
@@ -79,10 +87,25 @@ int bind_lookup_dev(const struct bind_table *b, const struct in_ident *id, int c
 		    int max);
 
 /* Parses a list of key names ("up, w"; empty: none) into keys (BIND_MAX
- * slots, -1 filled; a name given twice counts once). 0, or -EINVAL with the
- * reason in why ("unknown key name 'x'", "empty key name in list", "too
- * many keys (at most 4)"). */
+ * slots, -1 filled; a name given twice counts once). A name is one
+ * in_key_from_name knows or a code by number ("0x2c0", BIND_CODE_MIN..
+ * BIND_CODE_MAX). 0, or -EINVAL with the reason in why ("unknown key
+ * name 'x'", "empty key name in list", "too many keys (at most 4)"). */
 int bind_parse_keys(const char *value, int keys[BIND_MAX], char *why, size_t whylen);
+
+/* Writes b as bindings text that bind_load_text reads back to the same
+ * table: a comment line, [keyboard], then [device "ID"] for every device
+ * section in table order; every action of every section on its own line
+ * ("fire = KEY_LEFTCTRL, KEY_SPACE", "use =" for none), so loading the
+ * text replaces each section whole whatever it is loaded over. Keys by
+ * in_key_name, codes without a name as "0x" and 4 hex digits; slots
+ * holding -1 (or any code outside BIND_CODE_MIN..BIND_CODE_MAX, which no
+ * file can name) are left out. "The same table" means: each list in
+ * order, its free slots last and no code twice, as bind_load_text makes
+ * lists. Like snprintf: writes at most len bytes including a terminating
+ * NUL (buf may be NULL when len is 0) and returns the length of the whole
+ * text, so a return >= len means it was cut. */
+size_t bind_format(const struct bind_table *b, char *buf, size_t len);
 
 /* Normalises a device section id ("USB-1-1.2", "0079:0006") into out
  * (BIND_ID_MAX bytes). 0, or -EINVAL when it is neither form. */

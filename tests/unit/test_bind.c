@@ -388,6 +388,187 @@ static void test_set_device_replaces_a_section(void **state)
 	assert_int_equal(bind_device_id("0079:000G", id), -EINVAL);
 }
 
+static void test_codes_by_number(void **state)
+{
+	int keys[BIND_MAX];
+	char why[128];
+
+	(void)state;
+	assert_int_equal(bind_parse_keys("0x54, 0X2C0, 0xffff, 0x1", keys, why, sizeof(why)), 0);
+	assert_int_equal(keys[0], 84);
+	assert_int_equal(keys[1], BTN_TRIGGER_HAPPY1);
+	assert_int_equal(keys[2], 65535);
+	assert_int_equal(keys[3], KEY_ESC);
+	/* the same code by name and by number counts once */
+	assert_int_equal(bind_parse_keys("esc, 0x0001", keys, why, sizeof(why)), 0);
+	assert_int_equal(keys[0], KEY_ESC);
+	assert_int_equal(keys[1], -1);
+	static const char *const bad[] = { "0x0", "0x0000", "0x10000", "0x", "0xg1", "x54",
+					   "0x-1", "0x 1" };
+	for (size_t i = 0; i < sizeof(bad) / sizeof(bad[0]); i++) {
+		char want[64];
+
+		snprintf(want, sizeof(want), "unknown key name '%s'", bad[i]);
+		assert_int_equal(bind_parse_keys(bad[i], keys, why, sizeof(why)), -EINVAL);
+		assert_string_equal(why, want);
+	}
+}
+
+/* Whether a and b bind the same: [keyboard], then the sections in order. */
+static void expect_same_table(const struct bind_table *a, const struct bind_table *b)
+{
+	assert_memory_equal(a->key, b->key, sizeof(a->key));
+	assert_int_equal(a->ndev, b->ndev);
+	for (int d = 0; d < a->ndev; d++) {
+		assert_string_equal(a->dev[d].id, b->dev[d].id);
+		assert_memory_equal(a->dev[d].key, b->dev[d].key, sizeof(a->dev[d].key));
+	}
+}
+
+/* Every action unbound, no sections; other bytes garbage. */
+static void blank_table(struct bind_table *b)
+{
+	memset(b, 0x5a, sizeof(*b));
+	for (int a = 0; a < ACT_COUNT; a++)
+		for (int i = 0; i < BIND_MAX; i++)
+			b->key[a][i] = -1;
+	b->ndev = 0;
+}
+
+static void test_format_writes_every_action_of_every_section(void **state)
+{
+	/* Written out by hand from the defaults table of docs/config.md. */
+	static const char want[] =
+		"# arcaded key bindings: every action of [keyboard] and of each device\n"
+		"[keyboard]\n"
+		"forward = KEY_UP, KEY_W\n"
+		"back = KEY_DOWN, KEY_S\n"
+		"turn_left = KEY_LEFT\n"
+		"turn_right = KEY_RIGHT\n"
+		"strafe_left = KEY_A, KEY_COMMA\n"
+		"strafe_right = KEY_D, KEY_DOT\n"
+		"fire = KEY_LEFTCTRL, KEY_SPACE\n"
+		"use = KEY_E\n"
+		"start = KEY_1, KEY_ENTER\n"
+		"coin = KEY_5\n"
+		"service = KEY_9, KEY_F2\n"
+		"\n"
+		"[device \"usb-1-1.2\"]\n"
+		"forward = BTN_DPAD_UP\n"
+		"back =\n"
+		"turn_left =\n"
+		"turn_right =\n"
+		"strafe_left =\n"
+		"strafe_right =\n"
+		"fire = BTN_TRIGGER_HAPPY1, 0x0054, 0xffff\n"
+		"use =\n"
+		"start =\n"
+		"coin =\n"
+		"service =\n";
+	int key[ACT_COUNT][BIND_MAX];
+	struct bind_table b, back;
+	char buf[2048];
+	struct errs e;
+	size_t n;
+
+	(void)state;
+	bind_defaults(&b);
+	memset(key, 0xff, sizeof(key));
+	key[ACT_FORWARD][0] = BTN_DPAD_UP;
+	key[ACT_FIRE][0] = BTN_TRIGGER_HAPPY1;
+	key[ACT_FIRE][1] = 84;          /* between KEY_KPDOT (83) and KEY_ZENKAKUHANKAKU (85) */
+	key[ACT_FIRE][2] = 0xffff;
+	assert_int_equal(bind_set_device(&b, "usb-1-1.2", key), 0);
+	n = bind_format(&b, buf, sizeof(buf));
+	assert_int_equal(n, strlen(want));
+	assert_string_equal(buf, want);
+	/* read back over a table that binds nothing, and over the defaults */
+	blank_table(&back);
+	assert_int_equal(load(&back, buf, &e), 0);
+	expect_same_table(&back, &b);
+	bind_defaults(&back);
+	assert_int_equal(load(&back, buf, &e), 0);
+	expect_same_table(&back, &b);
+}
+
+static void test_format_cut_short_like_snprintf(void **state)
+{
+	struct bind_table b;
+	char full[1024], cut[40];
+	size_t n;
+
+	(void)state;
+	bind_defaults(&b);
+	n = bind_format(&b, full, sizeof(full));
+	assert_true(n > sizeof(cut) && n < sizeof(full));
+	assert_int_equal(strlen(full), n);
+	assert_int_equal(bind_format(&b, NULL, 0), n);
+	memset(cut, 'z', sizeof(cut));
+	assert_int_equal(bind_format(&b, cut, sizeof(cut)), n);
+	assert_int_equal(strlen(cut), sizeof(cut) - 1);
+	assert_memory_equal(cut, full, sizeof(cut) - 1);
+}
+
+/* Random tables of every shape (codes 1..0xffff, named or not, lists of 0
+ * to 4, up to 16 sections of both id forms) read back equal. */
+static void test_format_round_trips_random_tables(void **state)
+{
+	uint32_t seed = 12345;
+	static char buf[64 * 1024];
+	struct bind_table b, back;
+	struct errs e;
+
+#define RND() (seed = seed * 1103515245u + 12345u, seed >> 8)
+	(void)state;
+	for (int round = 0; round < 500; round++) {
+		int (*sec)[BIND_MAX];
+
+		blank_table(&b);
+		b.ndev = (int)(RND() % (BIND_DEVICES + 1));
+		for (int d = -1; d < b.ndev; d++) {
+			if (d >= 0) {
+				if (RND() % 2)
+					snprintf(b.dev[d].id, BIND_ID_MAX, "usb-%d-%d.%d", d + 1,
+						 (int)(RND() % 9) + 1, round);
+				else
+					snprintf(b.dev[d].id, BIND_ID_MAX, "%04x:%04x",
+						 (unsigned)d, (unsigned)(RND() & 0xffff));
+			}
+			sec = d < 0 ? b.key : b.dev[d].key;
+			for (int a = 0; a < ACT_COUNT; a++) {
+				int k = (int)(RND() % (BIND_MAX + 1));
+
+				for (int i = 0; i < BIND_MAX; i++)
+					sec[a][i] = -1;
+				for (int i = 0; i < k; i++) {
+					/* half kernel codes (mostly named), half anything */
+					int code = RND() % 2 ? (int)(RND() % (KEY_MAX - 1)) + 1
+							     : (int)(RND() % 0xffff) + 1;
+					int dup = 0;
+
+					for (int j = 0; j < i; j++)
+						dup |= sec[a][j] == code;
+					if (!dup)
+						sec[a][i] = code;
+				}
+				/* compact: free slots last, as parsed lists are */
+				for (int i = 0, w = 0; i < BIND_MAX; i++) {
+					int c = sec[a][i];
+
+					sec[a][i] = -1;
+					if (c >= 0)
+						sec[a][w++] = c;
+				}
+			}
+		}
+		assert_true(bind_format(&b, buf, sizeof(buf)) < sizeof(buf));
+		blank_table(&back);
+		assert_int_equal(load(&back, buf, &e), 0);
+		expect_same_table(&back, &b);
+	}
+#undef RND
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -403,6 +584,10 @@ int main(void)
 		cmocka_unit_test(test_device_sections_layer_action_by_action),
 		cmocka_unit_test(test_device_section_errors),
 		cmocka_unit_test(test_set_device_replaces_a_section),
+		cmocka_unit_test(test_codes_by_number),
+		cmocka_unit_test(test_format_writes_every_action_of_every_section),
+		cmocka_unit_test(test_format_cut_short_like_snprintf),
+		cmocka_unit_test(test_format_round_trips_random_tables),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);
