@@ -278,7 +278,7 @@ static void add_input(struct app *a, const struct in_backend *be, const char *pa
 		 * device that is unplugged): keep the slot and retry once a
 		 * second. */
 		if (!quiet)
-			logf_("input %s: %s; retrying every second", be->name,
+			logf_("input %s: %s; retrying as devices appear, and every second", be->name,
 			      why[0] ? why : strerror(-rc));
 		in->dev = NULL;
 		in->retry_ns = in_now_ns() + APP_REOPEN_NS;
