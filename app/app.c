@@ -47,6 +47,7 @@
 #include "systemd/svc.h"
 
 #define APP_MAX_IN 8
+#define APP_HID_AUTO 4            /* pads input.hid = auto opens: a 4-player cabinet */
 #define APP_KEYS 1024             /* key codes tracked per device (KEY_CNT is 768) */
 #define APP_TICK_NS(t) ((uint64_t)(t) * 1000000000ull / SIM_TICRATE)
 #define APP_RESYNC_NS 250000000ull /* further behind than this: drop the backlog */
@@ -319,10 +320,12 @@ static void open_inputs(struct app *a)
 		add_input(a, &in_evdev, strcmp(ev, "auto") == 0 ? NULL : ev, 0);
 	if (a->dpb == &dp_term)
 		add_input(a, &in_tty, NULL, 0);
-	/* USB encoders and pads: auto opens the first joystick or gamepad
-	 * (retried quietly: it may be plugged in later). */
+	/* USB encoders and pads: auto opens every joystick or gamepad, up to
+	 * APP_HID_AUTO of them (each slot takes one no other slot has;
+	 * retried quietly: they may be plugged in later). */
 	if (strcmp(a->cfg->input.hid, "auto") == 0)
-		add_input(a, &in_hid, NULL, 1);
+		for (int k = 0; k < APP_HID_AUTO; k++)
+			add_input(a, &in_hid, NULL, 1);
 	else if (strcmp(a->cfg->input.hid, "none") != 0)
 		add_inputs(a, &in_hid, a->cfg->input.hid);
 	if (strcmp(a->cfg->input.gpio, "none") != 0)

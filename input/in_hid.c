@@ -57,11 +57,24 @@ struct in_dev {
 	uint32_t len[HID_RING];
 	uint8_t *ring;               /* HID_RING * slot bytes */
 	size_t slot;
+	struct in_dev *next;         /* hid_open_devs */
 };
 
 /* hidapi keeps global state (hid_init/hid_exit); count the open devices
  * so the last close releases it. */
 static int hid_users;
+/* The devices open in this process: an open never takes a node another
+ * slot has (two auto slots get two pads; two slots never share one). Used
+ * by the thread that opens and closes (the main loop's). */
+static struct in_dev *hid_open_devs;
+
+static bool node_in_use(const char *node)
+{
+	for (const struct in_dev *o = hid_open_devs; o; o = o->next)
+		if (strcmp(o->node, node) == 0)
+			return true;
+	return false;
+}
 
 __attribute__((format(printf, 3, 4)))
 static void say(char *buf, size_t len, const char *fmt, ...)
@@ -500,6 +513,11 @@ static void hid_close_dev(struct in_dev *d)
 {
 	if (!d)
 		return;
+	for (struct in_dev **p = &hid_open_devs; *p; p = &(*p)->next)
+		if (*p == d) {
+			*p = d->next;
+			break;
+		}
 	if (d->th_on) {
 		pthread_mutex_lock(&d->mu);
 		d->stop = true;
@@ -636,10 +654,16 @@ static int hid_open_dev(const char *path, struct in_dev **out, char *why, size_t
 		if (any)
 			say(why, whylen, "; ");
 		any = true;
+		if (node_in_use(l[k].node)) {
+			say(why, whylen, "%s: already open", l[k].node);
+			continue;
+		}
 		rc = open_one(d, &l[k], &s, need_game, why, whylen);
 		if (rc < 0)
 			continue;
 		strcpy(d->node, l[k].node);
+		d->next = hid_open_devs;
+		hid_open_devs = d;
 		snprintf(d->id.port, sizeof(d->id.port), "%s", l[k].port);
 		snprintf(d->id.name, sizeof(d->id.name), "%s", l[k].name);
 		d->id.vid = l[k].vid;

@@ -22,6 +22,8 @@
  * A NULL path, "hid" or "hid:" with no device term auto-detects: the first
  * device whose descriptor has a joystick or gamepad application collection
  * with buttons, axes or a hat (keyboards are left to evdev).
+ * A node this process already has open (through another in_dev) is passed
+ * over by every open, so several auto-detecting opens take several pads.
  *
  * Reading: hidapi 0.13 gives no file descriptor (fd returns -1). Each open
  * device has a reader thread blocked in hid_read_timeout that stamps every
