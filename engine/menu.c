@@ -103,6 +103,9 @@ static int menu_main(struct sim *s, uint8_t pressed, uint8_t nav)
 		m->confirm = m->cursor;
 		m->yes = 0;
 		break;
+	case MENU_I_WIZARD:
+		m->page = MENU_WIZARD;
+		break;
 	case MENU_I_EXIT:
 	default:
 		return 1;
@@ -226,6 +229,10 @@ int menu_tick(struct sim *s, uint8_t pressed, uint8_t nav)
 	case MENU_BOOKS:
 		if (pressed & (SIM_BT_SERVICE | SIM_BT_FIRE))
 			menu_back(m);
+		break;
+	case MENU_WIZARD:
+		/* one tick: the app has seen the request (menu.h) */
+		menu_back(m);
 		break;
 	case MENU_CONFIRM:
 	default:

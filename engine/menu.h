@@ -23,6 +23,15 @@
  *             factory defaults
  *   BOOKS     bookkeeping: coins, plays, play time, average, uptime
  *   CONFIRM   reset of the high scores or the bookkeeping: NO / YES
+ *   WIZARD    the operator chose CONFIGURE INPUTS: a request to the app,
+ *             which runs the input configuration wizard (app/wiz.h) outside
+ *             the sim. The page lasts exactly one tick: the next tick
+ *             returns to MAIN with the cursor on the item, whatever the
+ *             commands. The app looks at the state after every tick, sees
+ *             page == MENU_WIZARD once per choice and starts the wizard; it
+ *             never writes sim state. A page value rather than a new
+ *             counter field: every field is hashed and snapshotted
+ *             (sim_hash.c), so a new one would change every recorded hash.
  */
 #ifndef ARCADED_ENGINE_MENU_H
 #define ARCADED_ENGINE_MENU_H
@@ -34,11 +43,11 @@ struct r_frame;
 struct hud_env;
 
 enum menu_page { MENU_MAIN, MENU_INPUT, MENU_DISPLAY, MENU_SETTINGS, MENU_BOOKS, MENU_CONFIRM,
-		 MENU_PAGES };
+		 MENU_WIZARD, MENU_PAGES };
 
 /* Items of the main page, in order. */
 enum menu_item { MENU_I_INPUT, MENU_I_DISPLAY, MENU_I_SETTINGS, MENU_I_BOOKS,
-		 MENU_I_RESET_SCORES, MENU_I_RESET_BOOKS, MENU_I_EXIT, MENU_ITEMS };
+		 MENU_I_RESET_SCORES, MENU_I_RESET_BOOKS, MENU_I_WIZARD, MENU_I_EXIT, MENU_ITEMS };
 
 /* Items of the settings page. */
 enum menu_setting { MENU_S_DIFFICULTY, MENU_S_LIVES, MENU_S_COINS, MENU_S_FREEPLAY,

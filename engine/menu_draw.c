@@ -51,7 +51,7 @@ static void menu_main_page(struct menu_ctx *m)
 		[MENU_I_INPUT] = "INPUT TEST", [MENU_I_DISPLAY] = "DISPLAY TEST",
 		[MENU_I_SETTINGS] = "GAME SETTINGS", [MENU_I_BOOKS] = "BOOKKEEPING",
 		[MENU_I_RESET_SCORES] = "RESET HIGH SCORES", [MENU_I_RESET_BOOKS] = "RESET BOOKKEEPING",
-		[MENU_I_EXIT] = "EXIT",
+		[MENU_I_WIZARD] = "CONFIGURE INPUTS", [MENU_I_EXIT] = "EXIT",
 	};
 	const struct menu *mn = &m->s->menu;
 
@@ -256,6 +256,7 @@ void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f
 		menu_confirm_page(&m);
 		break;
 	case MENU_MAIN:
+	case MENU_WIZARD:              /* its one tick: the app draws the wizard */
 	default:
 		menu_main_page(&m);
 		break;

@@ -257,6 +257,42 @@ static void the_exit_item_leaves(void **state)
 	assert_int_equal(s.mode, SIM_ATTRACT);
 }
 
+/* CONFIGURE INPUTS (just above EXIT): the page says so for exactly the
+ * tick of the choice, then MAIN is back with the cursor on the item,
+ * whatever that next tick's commands are (a SERVICE press does not leave);
+ * only a new press of fire asks again. */
+static void configure_inputs_is_a_one_tick_request(void **state)
+{
+	struct sim s;
+	(void)state;
+	in_menu(&s, &base);
+	press(&s, UP);                         /* wraps to EXIT */
+	press(&s, UP);
+	assert_int_equal(s.menu.cursor, MENU_I_WIZARD);
+	assert_int_equal(MENU_I_WIZARD + 1, MENU_I_EXIT);
+	sim_tick(&s, &FIRE);
+	assert_int_equal(s.menu.page, MENU_WIZARD);
+	assert_int_equal(s.mode, SIM_SERVICE);
+	sim_tick(&s, &FIRE);                   /* held: no new choice */
+	assert_int_equal(s.menu.page, MENU_MAIN);
+	assert_int_equal(s.menu.cursor, MENU_I_WIZARD);
+	sim_tick(&s, &FIRE);
+	assert_int_equal(s.menu.page, MENU_MAIN);
+	sim_tick(&s, &none);
+	sim_tick(&s, &FIRE);                   /* pressed again: a new request */
+	assert_int_equal(s.menu.page, MENU_WIZARD);
+	sim_tick(&s, &SERVICE);                /* the request's tick swallows it */
+	assert_int_equal(s.menu.page, MENU_MAIN);
+	assert_int_equal(s.menu.cursor, MENU_I_WIZARD);
+	assert_int_equal(s.mode, SIM_SERVICE);
+	sim_tick(&s, &none);
+	/* and the menu goes on as before */
+	press(&s, DOWN);
+	assert_int_equal(s.menu.cursor, MENU_I_EXIT);
+	press(&s, FIRE);
+	assert_int_equal(s.mode, SIM_ATTRACT);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -268,6 +304,7 @@ int main(void)
 		cmocka_unit_test(factory_defaults_restore_every_setting),
 		cmocka_unit_test(resets_need_a_yes),
 		cmocka_unit_test(the_exit_item_leaves),
+		cmocka_unit_test(configure_inputs_is_a_one_tick_request),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
