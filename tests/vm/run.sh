@@ -121,6 +121,10 @@ cp tests/vm/vm-test.service tests/vm/vm-late-fb.service "$ST/overlay/lib/systemd
 # The fault-injection switch (off by default) is enabled for the watchdog test.
 mkdir -p "$ST/overlay/etc/systemd/system/arcaded.service.d"
 cp tests/vm/arcaded-vm.conf "$ST/overlay/etc/systemd/system/arcaded.service.d/vm.conf"
+# Settings of the VM tests (input.log on, the GPIO spec), read after the
+# installed arcaded.ini.
+mkdir -p "$ST/overlay/etc/arcaded"
+cp tests/vm/arcaded-vm.ini "$ST/overlay/etc/arcaded/zz-vm.ini"
 
 # The frame the daemon shows after coin and start: rendered headless by the
 # same binary with the installed configuration.
@@ -313,6 +317,11 @@ judge() {
 	[ -e "$res/hp-turned.ppm" ] && screen usb-keyboard-changes-screen "$H" differ "$res/hp-before.ppm" "$res/hp-turned.ppm"
 	[ -e "$res/hp-still-2.ppm" ] && screen hotplug-no-stuck-input \
 		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/hp-still-1.ppm" "$res/hp-still-2.ppm"
+	[ -e "$res/hid-turned.ppm" ] && screen hid-changes-screen "$H" differ "$res/hid-before.ppm" "$res/hid-turned.ppm"
+	[ -e "$res/hid-still-2.ppm" ] && screen hid-no-stuck-input \
+		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/hid-still-1.ppm" "$res/hid-still-2.ppm"
+	[ -e "$res/hid-replug-still-2.ppm" ] && screen hid-replug-no-stuck-input \
+		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/hid-replug-still-1.ppm" "$res/hid-replug-still-2.ppm"
 	[ -e "$res/after-stop.ppm" ] && screen sigterm-console-shows-text "$H" text "$res/after-stop.ppm"
 	[ -e "$res/late-screen.ppm" ] && screen late-fb-picture "$H" picture "$res/late-screen.ppm" "$render_w" "$render_h"
 	if [ -e "$res/wd-attract-1.ppm" ]; then

@@ -34,6 +34,32 @@
  *                           write the bytes HEX (pairs of hex digits, blanks
  *                           allowed) to PATH in one write(): a report to a
  *                           gadget's /dev/hidgN, a descriptor to configfs
+ *   vm_guest hidsend PATH HEX SECONDS
+ *                           write the bytes HEX to a gadget's /dev/hidgN in
+ *                           one write(), waiting up to SECONDS for the
+ *                           gadget to take it (a report is taken once the
+ *                           host polls: only while the host has the device
+ *                           open); exit 1 on timeout, with nothing written
+ *   vm_guest waitnofd PID PATH SECONDS
+ *                           wait until process PID no longer has PATH open;
+ *                           prints how long it took; exit 1 on timeout
+ *   vm_guest pulls DIR STEP...
+ *                           drive a gpio-sim line from outside: each STEP
+ *                           is "d" (write pull-down to DIR/pull: the line
+ *                           reads 0) or "u" (pull-up: 1), optionally
+ *                           ":MS" to stay so for MS milliseconds (busy
+ *                           waiting on the clock after a sleep, so the
+ *                           time is close). Prints the time the steps
+ *                           took: "steps N total MS ms" and, for each step
+ *                           with a hold, "hold K MS ms" (measured)
+ *   vm_guest meter FILE SECONDS OUT
+ *                           poll FILE (a gpio-sim line's value, "0"/"1")
+ *                           every millisecond for SECONDS and write to OUT
+ *                           "rises N polls P maxgap MS ms" and one line
+ *                           "pulse MS ms" per high period seen (measured
+ *                           from the first poll that read 1 to the first
+ *                           that read 0); "ready" is written to OUT.ready
+ *                           once polling started
  *   vm_guest books FILE     check a bookkeeping state file written by the
  *                           daemon (docs/persistence.md): magic "ARCDSTA",
  *                           version 1, header size 24, payload length 28,
@@ -52,6 +78,7 @@
 #include <fcntl.h>
 #include <grp.h>
 #include <limits.h>
+#include <poll.h>
 #include <pwd.h>
 #include <linux/fb.h>
 #include <linux/kd.h>
@@ -71,8 +98,9 @@ static int usage(void)
 {
 	fputs("usage: vm_guest kbd FIFO | kdmode TTY | open PATH r|w|rw |\n"
 	      "       probe CGROUP USER PATH:MODE:WANT... | waitfd PID PATH SECONDS |\n"
-	      "       waitdev PID NAME SECONDS |\n"
-	      "       hidwrite PATH HEX | books FILE | fbinfo DEV | now\n",
+	      "       waitnofd PID PATH SECONDS | waitdev PID NAME SECONDS |\n"
+	      "       hidwrite PATH HEX | hidsend PATH HEX SECONDS | pulls DIR STEP... |\n"
+	      "       meter FILE SECONDS OUT | books FILE | fbinfo DEV | now\n",
 	      stderr);
 	return 2;
 }
@@ -390,11 +418,25 @@ static int cmd_waitfd(const char *pid, const char *path, const char *secs)
 	return 0;
 }
 
-static int cmd_hidwrite(const char *path, const char *hex)
+static int cmd_waitnofd(const char *pid, const char *path, const char *secs)
 {
-	uint8_t b[4096];
+	double t0 = mono(), limit = atof(secs);
+
+	while (holds(pid, path)) {
+		if (mono() - t0 > limit) {
+			printf("%.2f (timeout)\n", mono() - t0);
+			return 1;
+		}
+		sleep_ms(20);
+	}
+	printf("%.2f\n", mono() - t0);
+	return 0;
+}
+
+/* Pairs of hex digits (blanks allowed) into b; the count, or -1. */
+static int parse_hex(const char *hex, uint8_t *b, size_t cap)
+{
 	size_t n = 0;
-	int fd;
 
 	while (*hex) {
 		unsigned v;
@@ -404,13 +446,160 @@ static int cmd_hidwrite(const char *path, const char *hex)
 			hex++;
 			continue;
 		}
-		if (n == sizeof(b) || sscanf(hex, "%2x%n", &v, &used) != 1 || used != 2)
-			return usage();
+		if (n == cap || sscanf(hex, "%2x%n", &v, &used) != 1 || used != 2)
+			return -1;
 		b[n++] = (uint8_t)v;
 		hex += 2;
 	}
+	return (int)n;
+}
+
+static int cmd_hidsend(const char *path, const char *hex, const char *secs)
+{
+	uint8_t b[4096];
+	int n = parse_hex(hex, b, sizeof(b)), fd;
+	double t0 = mono(), limit = atof(secs);
+
+	if (n <= 0)
+		return usage();
+	fd = open(path, O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+	if (fd < 0) {
+		fprintf(stderr, "vm_guest: %s: %s\n", path, strerror(errno));
+		return 1;
+	}
+	for (;;) {
+		struct pollfd p = { .fd = fd, .events = POLLOUT };
+		ssize_t w = write(fd, b, (size_t)n);
+
+		if (w == n)
+			break;
+		/* EAGAIN: the last report is not taken yet; ESHUTDOWN: the
+		 * gadget is not bound (yet). */
+		if (w >= 0 || (errno != EAGAIN && errno != EINTR && errno != ESHUTDOWN)) {
+			fprintf(stderr, "vm_guest: %s: %s\n", path,
+				w >= 0 ? "short write" : strerror(errno));
+			close(fd);
+			return 1;
+		}
+		if (mono() - t0 > limit) {
+			fprintf(stderr, "vm_guest: %s: not taken within %s s (%s)\n", path, secs,
+				strerror(errno));
+			close(fd);
+			return 1;
+		}
+		poll(&p, 1, 20);
+	}
+	close(fd);
+	return 0;
+}
+
+static int cmd_pulls(const char *dir, char **steps, int n)
+{
+	char path[PATH_MAX];
+	double t0 = mono();
+	int fd;
+
+	for (int i = 0; i < n; i++)
+		if ((steps[i][0] != 'd' && steps[i][0] != 'u') ||
+		    (steps[i][1] != '\0' && steps[i][1] != ':'))
+			return usage();
+	snprintf(path, sizeof(path), "%s/pull", dir);
 	fd = open(path, O_WRONLY | O_CLOEXEC);
-	if (fd < 0 || write(fd, b, n) != (ssize_t)n) {
+	if (fd < 0) {
+		fprintf(stderr, "vm_guest: %s: %s\n", path, strerror(errno));
+		return 1;
+	}
+	for (int i = 0; i < n; i++) {
+		const char *v, *st = steps[i];
+		long ms = 0;
+
+		v = st[0] == 'd' ? "pull-down" : "pull-up";
+		if (st[1] == ':')
+			ms = atol(st + 2);
+		/* sysfs ignores the offset: each write is one store. */
+		if (pwrite(fd, v, strlen(v), 0) != (ssize_t)strlen(v)) {
+			fprintf(stderr, "vm_guest: %s: %s\n", path, strerror(errno));
+			close(fd);
+			return 1;
+		}
+		if (ms > 0) {
+			double t = mono();
+
+			if (ms > 2)
+				sleep_ms(ms - 2);
+			while (mono() - t < (double)ms / 1000)
+				;
+			printf("hold %d %.2f ms\n", i, (mono() - t) * 1000);
+		}
+	}
+	close(fd);
+	printf("steps %d total %.2f ms\n", n, (mono() - t0) * 1000);
+	return 0;
+}
+
+static int cmd_meter(const char *file, const char *secs, const char *out)
+{
+	double t0 = mono(), limit = atof(secs), last = 0, maxgap = 0, rise = 0;
+	double pulse[64];
+	char ready[PATH_MAX];
+	int fd, prev = -1, rises = 0, np = 0, ffd;
+	long polls = 0;
+	FILE *o;
+
+	fd = open(file, O_RDONLY | O_CLOEXEC);
+	o = fopen(out, "we");
+	if (fd < 0 || !o) {
+		fprintf(stderr, "vm_guest: %s / %s: %s\n", file, out, strerror(errno));
+		if (fd >= 0)
+			close(fd);
+		if (o)
+			fclose(o);
+		return 1;
+	}
+	snprintf(ready, sizeof(ready), "%s.ready", out);
+	for (double now; (now = mono()) - t0 < limit; sleep_ms(1)) {
+		char c[8];
+		int v;
+
+		/* A read at offset 0 shows the attribute afresh. */
+		if (pread(fd, c, sizeof(c), 0) < 1) {
+			fprintf(o, "read error: %s\n", strerror(errno));
+			break;
+		}
+		v = c[0] == '1';
+		if (polls++ == 0) {
+			ffd = open(ready, O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+			if (ffd >= 0)
+				close(ffd);
+		} else if (now - last > maxgap) {
+			maxgap = now - last;
+		}
+		last = now;
+		if (prev == 0 && v == 1) {
+			rises++;
+			rise = now;
+		} else if (prev == 1 && v == 0 && rise > 0 && np < 64) {
+			pulse[np++] = now - rise;
+		}
+		prev = v;
+	}
+	close(fd);
+	fprintf(o, "rises %d polls %ld maxgap %.2f ms\n", rises, polls, maxgap * 1000);
+	for (int i = 0; i < np; i++)
+		fprintf(o, "pulse %.1f ms\n", pulse[i] * 1000);
+	fclose(o);
+	return 0;
+}
+
+static int cmd_hidwrite(const char *path, const char *hex)
+{
+	uint8_t b[4096];
+	int n = parse_hex(hex, b, sizeof(b)), fd;
+
+	if (n < 0)
+		return usage();
+	fd = open(path, O_WRONLY | O_CLOEXEC);
+	if (fd < 0 || write(fd, b, (size_t)n) != (ssize_t)n) {
 		fprintf(stderr, "vm_guest: %s: %s\n", path, strerror(errno));
 		if (fd >= 0)
 			close(fd);
@@ -509,8 +698,16 @@ int main(int argc, char **argv)
 		return cmd_waitfd(argv[2], argv[3], argv[4]);
 	if (argc == 5 && strcmp(argv[1], "waitdev") == 0)
 		return cmd_waitdev(argv[2], argv[3], argv[4]);
+	if (argc == 5 && strcmp(argv[1], "waitnofd") == 0)
+		return cmd_waitnofd(argv[2], argv[3], argv[4]);
 	if (argc == 4 && strcmp(argv[1], "hidwrite") == 0)
 		return cmd_hidwrite(argv[2], argv[3]);
+	if (argc == 5 && strcmp(argv[1], "hidsend") == 0)
+		return cmd_hidsend(argv[2], argv[3], argv[4]);
+	if (argc >= 4 && strcmp(argv[1], "pulls") == 0)
+		return cmd_pulls(argv[2], argv + 3, argc - 3);
+	if (argc == 5 && strcmp(argv[1], "meter") == 0)
+		return cmd_meter(argv[2], argv[3], argv[4]);
 	if (argc == 3 && strcmp(argv[1], "books") == 0)
 		return cmd_books(argv[2]);
 	if (argc == 3 && strcmp(argv[1], "fbinfo") == 0)
