@@ -21,6 +21,7 @@
 #include "app/pool.h"
 #include "app/demo.h"
 #include "app/view.h"
+#include "app/wiz.h"
 #include "config/bind.h"
 #include "config/fr.h"
 #include "config/prof.h"
@@ -112,6 +113,9 @@ struct app {
 	struct scr *scr;
 	size_t scr_next;
 	struct hp *hp;             /* hotplug notices, NULL: periodic rescans only */
+	struct wiz wiz;            /* the input configuration wizard (app/wiz.h) */
+	int wiz_on;                /* it runs: raw controls go to it, not to the game */
+	int wiz_auto;              /* it may still start by itself (first boot) */
 	struct lat_series frame_time, latency;
 	struct lat_series src_latency[APP_SRCS];
 	uint64_t pending_ns;       /* earliest unpresented input event, 0 none */
@@ -238,6 +242,68 @@ static void report_cfg_error(void *user, const char *file, int line, const char 
 
 /* ---- input ---------------------------------------------------------- */
 
+/* ---- the input configuration wizard (app/wiz.h, docs/wizard.md) ----- */
+
+static void wizard_start(struct app *a, const char *why)
+{
+	if (a->wiz_on || headless(a))
+		return;
+	if (a->rec) {
+		/* its screens are not the sim's: they would not replay */
+		logf_("input wizard: not while recording (%s)", a->o->record);
+		return;
+	}
+	a->wiz_auto = 0;
+	cmd_reset(&a->cs);   /* nothing stays held for the game meanwhile */
+	wiz_start(&a->wiz, &a->binds, in_now_ns());
+	a->wiz_on = 1;
+	logf_("input wizard: started (%s)", why);
+}
+
+/* Saves the bindings as STATE_DIR/bindings.ini, replaced atomically (a
+ * power cut leaves the old file or the new one). */
+static void wizard_save(struct app *a)
+{
+	const char *dir = a->cfg->paths.state_dir;
+	size_t n = bind_format(&a->binds, NULL, 0);
+	char *text = malloc(n + 1);
+	int rc;
+
+	if (!text) {
+		logf_("input wizard: bindings not saved: out of memory");
+		return;
+	}
+	bind_format(&a->binds, text, n + 1);
+	rc = dir[0] ? st_write_plain(dir, "bindings.ini", text, n) : -ENOENT;
+	if (rc < 0)
+		logf_("input wizard: %s/bindings.ini not saved: %s (the bindings apply until the "
+		      "daemon stops)", dir, strerror(-rc));
+	else
+		logf_("input wizard: bindings saved in %s/bindings.ini", dir);
+	free(text);
+}
+
+static void wizard_tick(struct app *a)
+{
+	struct bind_table t;
+	enum wiz_status st;
+
+	if (!a->wiz_on)
+		return;
+	st = wiz_tick(&a->wiz, in_now_ns());
+	if (st == WIZ_RUNNING)
+		return;
+	a->wiz_on = 0;
+	if (st == WIZ_DONE && wiz_result(&a->wiz, &t)) {
+		a->binds = t;
+		logf_("input wizard: done: new bindings in effect");
+		if (a->persist)
+			wizard_save(a);
+	} else {
+		logf_("input wizard: %s: bindings unchanged", st == WIZ_DONE ? "done" : "cancelled");
+	}
+}
+
 /* A device just opened: who it is, and a profile's bindings when the
  * operator has none for it (a known encoder works without configuration). */
 static void identify(struct app *a, struct app_in *in)
@@ -249,6 +315,14 @@ static void identify(struct app *a, struct app_in *in)
 	if (in->be->ident)
 		in->be->ident(in->dev, &in->id);
 	p = prof_match(&a->profs, in->be->name, &in->id);
+	if ((!p || p->any) && a->wiz_auto && in->be == &in_hid &&
+	    !bind_find_device(&a->binds, &in->id)) {
+		/* First boot: a pad nothing names (no bindings file, no
+		 * profile for it but the generic guess): ask the operator. */
+		logf_("input %s: %s: no bindings and no profile for it", in->be->name,
+		      in->be->describe(in->dev));
+		wizard_start(a, "first boot");
+	}
 	if (!p)
 		return;
 	prof_bind(p, &a->binds, &in->id);
@@ -355,6 +429,8 @@ static void drop_input(struct app *a, struct app_in *in)
 			cmd_action(&a->cs, acts[i], 0);
 	}
 	memset(in->down, 0, sizeof(in->down));
+	if (a->wiz_on)
+		wiz_drop(&a->wiz, &in->id);
 	logf_("input %s: %s went away; its controls are released", in->be->name,
 	      in->be->describe(in->dev));
 	in->be->close(in->dev);
@@ -424,6 +500,11 @@ static void key_event(struct app *a, struct app_in *in, const struct in_event *e
 		in->down[e->code / 8] |= bit;
 	else
 		in->down[e->code / 8] &= (uint8_t)~bit;
+	if (a->wiz_on) {
+		wiz_event(&a->wiz, in->be->name, in->be->ident ? &in->id : NULL, e->code, down,
+			  e->time_ns);
+		return;
+	}
 	n = bind_lookup_dev(&a->binds, &in->id, e->code, acts, ACT_COUNT);
 	if (a->cfg->input.log)
 		log_key(in, e->code, down, acts, n);
@@ -1017,26 +1098,34 @@ static int setup(struct app *a)
 		return rc;
 
 	bind_defaults(&a->binds);
+	/* No bindings file anywhere: a first boot, when the wizard starts by
+	 * itself for a pad nothing names (wizard_start, identify). */
+	int files = 0;
 	if (a->o->config_dir) {
 		char path[CFG_PATH_MAX + 32];
 		snprintf(path, sizeof(path), "%s/bindings.ini", a->o->config_dir);
-		bind_load(&a->binds, path, report_cfg_error, NULL);
+		files += bind_load(&a->binds, path, report_cfg_error, NULL) != -ENOENT;
 	}
 	if (c->paths.state_dir[0]) {
+		/* what the wizard saved: the operator's choice on screen wins
+		 * over the configuration directory's file */
 		char path[CFG_PATH_MAX + 32];
 		snprintf(path, sizeof(path), "%s/bindings.ini", c->paths.state_dir);
-		bind_load(&a->binds, path, report_cfg_error, NULL);
+		files += bind_load(&a->binds, path, report_cfg_error, NULL) != -ENOENT;
 	}
 	if (c->input.bindings[0]) {
 		rc = bind_load(&a->binds, c->input.bindings, report_cfg_error, NULL);
 		if (rc == -ENOENT)
 			logf_("%s: %s", c->input.bindings, strerror(-rc));
+		files++;
 	}
 	if (a->o->bindings) {
 		rc = bind_load(&a->binds, a->o->bindings, report_cfg_error, NULL);
 		if (rc < 0)
 			logf_("%s: %s", a->o->bindings, strerror(-rc));
+		files++;
 	}
+	a->wiz_auto = a->persist && files == 0;
 	prof_init(&a->profs);
 	if (a->o->config_dir) {
 		/* the operator's profiles first: they win ties */
@@ -1196,7 +1285,10 @@ static int render_and_present(struct app *a)
 	uint64_t t0 = in_now_ns(), t1;
 	int rc;
 
-	view_draw(&a->view, &a->sim, demo_under(&a->demo, &a->sim), &a->frame);
+	if (a->wiz_on)
+		wiz_draw(&a->wiz, &a->tex->pal, &a->frame);
+	else
+		view_draw(&a->view, &a->sim, demo_under(&a->demo, &a->sim), &a->frame);
 	rc = a->dpb->present(a->dp, a->frame.px, a->frame.w, a->frame.h, a->frame.pitch);
 	t1 = in_now_ns();
 	a->frames++;
@@ -1255,9 +1347,13 @@ static int loop(struct app *a)
 		}
 		if (!next_tick(a, t, &rt))
 			break;
+		wizard_tick(a);
 		flight_before(a, &rt.cmd);
 		sim_tick(&a->sim, &rt.cmd);
 		flight_after(a, &rt.cmd);
+		/* CONFIGURE INPUTS: the menu shows its request for one tick */
+		if (a->sim.mode == SIM_SERVICE && a->sim.menu.page == MENU_WIZARD)
+			wizard_start(a, "service menu");
 		demo_tick(&a->demo, &a->sim);
 		update_outputs(a);
 		a->ticks_run++;
