@@ -261,7 +261,7 @@ BOOT_KBD_DESC="05 01 09 06 a1 01 05 07 19 e0 29 e7 15 00 25 01 75 01 95 08 81 02
 GADGET=/sys/kernel/config/usb_gadget/arcvm
 GADGET_NAME="arcaded-vm USB keyboard"
 # HID boot keyboard report: modifiers, reserved, up to 6 usages (0x50 left).
-hid_key() { "$G" hidwrite /dev/hidg0 "00 00 $1 00 00 00 00 00"; }
+hid_key() { "$G" hidwrite "$(hidg_of arcvm)" "00 00 $1 00 00 00 00 00"; }
 plug() { echo dummy_udc.0 > "$GADGET/UDC"; }
 unplug() { echo "" > "$GADGET/UDC"; }
 # Plugs the gadget in and waits until the daemon ($pid) has its event node
@@ -300,17 +300,11 @@ phase_hotplug() {
 	hid_key 00
 	sleep 0.5
 	shot hp-turned
-	# 20 unplugs with a key held, each followed by a replug.
-	i=0
-	ok=1
-	while [ $i -lt 20 ]; do
-		i=$((i + 1))
-		hid_key 50
-		sleep 0.2
-		unplug
-		sleep 0.2
-		plug_attach > /dev/null || { ok=0; break; }
-	done
+	# 20 unplugs with Left held, each followed by a replug.
+	"$G" replug "$pid" input "$GADGET" dummy_udc.0 "$(hidg_of arcvm)" 20 200 \
+		"00 00 00 00 00 00 00 00" "00 00 50 00 00 00 00 00" > "$R/kbd-replug.txt" 2>&1
+	ok=$((! $?))
+	i=$(grep -c '^plug [0-9]* closed' "$R/kbd-replug.txt")
 	# Re-attach times from the journal: the kernel's "new ... USB device"
 	# to the daemon's "attached" line.
 	journal=$(all_since "$t_hp")
@@ -323,7 +317,8 @@ phase_hotplug() {
 		}')
 	n=$(echo "$journal" | grep -c "$GADGET_NAME.* went away; its controls are released")
 	figure "hotplug: USB keyboard plugged (kernel enumerates it) to the daemon reading it: $stats"
-	check hotplug-cycles "$i unplugs with a key held, each replugged and read again ($stats); the daemon logged $n release(s) of the gadget's controls; main PID $pid -> $(prop MainPID)" \
+	figure "hotplug, medians over $i plugs: UDC bound to event node $(stage node "$R/kbd-replug.txt"), node to udev done with it $(stage udev "$R/kbd-replug.txt"), node to the daemon having it open $(stage open "$R/kbd-replug.txt")"
+	check hotplug-cycles "$i unplugs with a key held, each replugged and read again ($stats)$([ "$ok" = 1 ] || echo "; $(tail -n 1 "$R/kbd-replug.txt")"); the daemon logged $n release(s) of the gadget's controls; main PID $pid -> $(prop MainPID)" \
 		[ "$ok" = 1 -a "$n" -ge 20 -a "$(prop MainPID)" = "$pid" ]
 	# No stuck input: nothing held now, so the view must stay still.
 	sleep 1
@@ -439,6 +434,13 @@ all_since() {
 	journalctl -o short-monotonic --no-pager -q |
 		sed -n 's/^\[ *\([0-9]*\.[0-9]*\)\] [^ ]* \(.*\)$/\1 \2/p' |
 		awk -v t="$1" '$1 + 0 >= t + 0'
+}
+
+# Median and max of stage $1 ("closed", "node", "udev", "open") over the
+# lines of a vm_guest replug output in $R/hid-replug.txt (or file $2).
+stage() {
+	sed -n "s/^plug [0-9]* .*$1 \([-0-9.]*\).*/\1/p" "${2:-$R/hid-replug.txt}" | sort -n |
+		awk '{ v[++n] = $1 } END { if (n) printf "%.3f s (max %.3f)", v[int((n + 1) / 2)], v[n] }'
 }
 
 # The game is being played: coin and start on the joystick are logged and
@@ -603,26 +605,15 @@ phase_hid_replug() {
 		joy_unplug arcjoy
 		return
 	fi
-	node=$(hidraw_on 0)
 	port=$(port_on 0)
-	i=0
+	# Each cycle: the stick at rest (a direction needs it seen at rest),
+	# then fire and left held; 0.3 s later the plug is pulled.
+	"$G" replug "$pid" hidraw "$GADGETS/arcjoy" dummy_udc.0 "$hg" 20 300 "$JOY_IDLE" \
+		"$JOY_FIRE_LEFT" > "$R/hid-replug.txt" 2>&1
+	rrc=$?
+	i=$(grep -c '^plug [0-9]* closed' "$R/hid-replug.txt")
 	why=""
-	while [ $i -lt 20 ]; do
-		i=$((i + 1))
-		# At rest first (a direction needs the stick seen at rest), then
-		# fire and left held as the plug is pulled.
-		joy "$hg" "$JOY_IDLE" && joy "$hg" "$JOY_FIRE_LEFT" ||
-			{ why="plug $i: the gadget's report was not taken"; break; }
-		sleep 0.3
-		joy_unplug arcjoy
-		"$G" waitnofd "$pid" "$node" 5 > /dev/null ||
-			{ why="unplug $i: the daemon still has $node open 5 s later"; break; }
-		if ! err=$(joy_attach arcjoy 0); then
-			why="replug $i: $err"
-			break
-		fi
-		node=$(hidraw_on 0)
-	done
+	[ "$rrc" = 0 ] || why=$(tail -n 1 "$R/hid-replug.txt")
 	# Every release so far came from an unplug: no report released fire.
 	t_rp_end=$(now)
 	joy "$hg" "$JOY_IDLE"
@@ -643,6 +634,7 @@ phase_hid_replug() {
 	upf=$(echo "$held" | grep -c -F "arcaded: input: hid usb-$port BTN_TRIGGER_HAPPY1 up -> fire")
 	upl=$(echo "$held" | grep -c -F "arcaded: input: hid usb-$port BTN_DPAD_LEFT up -> turn_left")
 	figure "hid replug: DragonRise joystick plugged (kernel enumerates it) to the daemon's attached line, per plug: $times s ($stats)"
+	figure "hid replug, medians over $i plugs: UDC bound to hidraw node $(stage node), node to udev done with it (its ctime) $(stage udev), node to the daemon having it open $(stage open); UDC unbound to the daemon closing it $(stage closed)"
 	check hid-replug-cycles "$i unplugs with fire and left held${why:+ ($why)}; the daemon logged $gone 'went away; its controls are released', $upf 'BTN_TRIGGER_HAPPY1 up -> fire' and $upl 'BTN_DPAD_LEFT up -> turn_left' lines, and attached the device $nplug time(s); main PID $pid -> $(prop MainPID)" \
 		[ -z "$why" -a "$gone" = 20 -a "$upf" = 20 -a "$upl" = 20 -a "$nplug" = 21 -a "$(prop MainPID)" = "$pid" ]
 	check hid-replug-reattach "re-attach $stats (limit 0.5 s each)" \
@@ -683,15 +675,17 @@ phase_twin() {
 	done
 	hga=$(hidg_of arcjoy)
 	hgb=$(hidg_of arcjoy2)
+	# A first: it gets the lower hidraw number.
 	joy_plug arcjoy 0
+	wait_until 20 hidraw_on 0 > /dev/null
 	joy_plug arcjoy2 1
 	both() { hidraw_on 0 > /dev/null && hidraw_on 1 > /dev/null; }
 	wait_until 20 both || { fail twin-plugged "the two gadgets did not both get a hidraw node"; return; }
 	pa=$(port_on 0)
 	pb=$(port_on 1)
 	printf '[device "usb-%s"]\nfire = BTN_TRIGGER_HAPPY1\n[device "usb-%s"]\nuse = BTN_TRIGGER_HAPPY1\n' \
-		"$pa" "$pb" > /etc/arcaded/vm-twin-bindings.ini
-	printf '[input]\nbindings = /etc/arcaded/vm-twin-bindings.ini\n' > /etc/arcaded/zz-vm-twin.ini
+		"$pa" "$pb" > /etc/arcaded/vm-twin.bindings
+	printf '[input]\nbindings = /etc/arcaded/vm-twin.bindings\n' > /etc/arcaded/zz-vm-twin.ini
 	systemctl restart "$U"
 	pid=$(prop MainPID)
 	na=$(hidraw_on 0)
@@ -724,7 +718,7 @@ phase_twin() {
 	twin_press reversed "after a restart, B plugged first"
 	joy_unplug arcjoy
 	joy_unplug arcjoy2
-	rm -f /etc/arcaded/zz-vm-twin.ini /etc/arcaded/vm-twin-bindings.ini
+	rm -f /etc/arcaded/zz-vm-twin.ini /etc/arcaded/vm-twin.bindings
 }
 
 # --- a framebuffer that appears after the daemon started --------------------
@@ -759,15 +753,24 @@ unit_tests() {
 	done
 }
 
+# Runs the phases given, each timed (a figure).
+run() {
+	for ph in "$@"; do
+		tp=$(now)
+		$ph
+		figure "phase ${ph#phase_}: $(sub "$tp" "$(now)") s"
+	done
+}
+
 kbd_pid=""
 case $BOOT in
 fb32)
-	phase_boot; phase_input; phase_sandbox; phase_watchdog
-	phase_hid; phase_gpio; phase_latency; phase_sigterm; unit_tests
+	run phase_boot phase_input phase_sandbox phase_watchdog phase_hid phase_gpio \
+		phase_latency phase_sigterm unit_tests
 	;;
 fb16)
-	phase_boot; phase_input; phase_sandbox; phase_hotplug; phase_hid_replug; phase_twin
-	phase_sigterm
+	run phase_boot phase_input phase_sandbox phase_hotplug phase_hid_replug phase_twin \
+		phase_sigterm
 	;;
 latefb) phase_latefb ;;
 units) systemctl stop "$U"; unit_tests ;;

@@ -40,6 +40,24 @@
  *                           gadget to take it (a report is taken once the
  *                           host polls: only while the host has the device
  *                           open); exit 1 on timeout, with nothing written
+ *   vm_guest replug PID CLASS GADGET UDC HIDG N HOLD_MS IDLE HELD
+ *                           N unplug/replug cycles of configfs gadget
+ *                           directory GADGET on UDC (dummy_udc.K), whose
+ *                           device must be open in process PID at the
+ *                           start: the node is the first of sysfs class
+ *                           CLASS (hidraw, or input for its eventN) whose
+ *                           device lies under dummy_hcd.K. Each cycle
+ *                           sends reports IDLE then HELD (hex) through
+ *                           HIDG, waits HOLD_MS, unbinds the UDC, waits
+ *                           until PID has closed the node and the node is
+ *                           gone, binds the UDC
+ *                           again and waits until PID has the new node
+ *                           open. One line per cycle: "plug I closed S
+ *                           node S udev S open S": unbind to closed, bind
+ *                           to node, node to its ctime (when udev last
+ *                           changed it), node to opened, in seconds (the
+ *                           waits poll every 2 ms). Exit 1 at the first
+ *                           cycle that times out, saying where
  *   vm_guest waitnofd PID PATH SECONDS
  *                           wait until process PID no longer has PATH open;
  *                           prints how long it took; exit 1 on timeout
@@ -88,6 +106,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ioctl.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -100,7 +119,9 @@ static int usage(void)
 	      "       probe CGROUP USER PATH:MODE:WANT... | waitfd PID PATH SECONDS |\n"
 	      "       waitnofd PID PATH SECONDS | waitdev PID NAME SECONDS |\n"
 	      "       hidwrite PATH HEX | hidsend PATH HEX SECONDS | pulls DIR STEP... |\n"
-	      "       meter FILE SECONDS OUT | books FILE | fbinfo DEV | now\n",
+	      "       meter FILE SECONDS OUT |\n"
+	      "       replug PID CLASS GADGET UDC HIDG N HOLD_MS IDLE HELD |\n"
+	      "       books FILE | fbinfo DEV | now\n",
 	      stderr);
 	return 2;
 }
@@ -454,14 +475,13 @@ static int parse_hex(const char *hex, uint8_t *b, size_t cap)
 	return (int)n;
 }
 
-static int cmd_hidsend(const char *path, const char *hex, const char *secs)
+/* Writes report b (n bytes) to gadget node path in one write, waiting up
+ * to limit seconds for the gadget to take it; 0, or -1 with a message. */
+static int send_report(const char *path, const uint8_t *b, int n, double limit)
 {
-	uint8_t b[4096];
-	int n = parse_hex(hex, b, sizeof(b)), fd;
-	double t0 = mono(), limit = atof(secs);
+	double t0 = mono();
+	int fd;
 
-	if (n <= 0)
-		return usage();
 	fd = open(path, O_WRONLY | O_NONBLOCK | O_CLOEXEC);
 	if (fd < 0) {
 		fprintf(stderr, "vm_guest: %s: %s\n", path, strerror(errno));
@@ -482,7 +502,7 @@ static int cmd_hidsend(const char *path, const char *hex, const char *secs)
 			return 1;
 		}
 		if (mono() - t0 > limit) {
-			fprintf(stderr, "vm_guest: %s: not taken within %s s (%s)\n", path, secs,
+			fprintf(stderr, "vm_guest: %s: not taken within %.1f s (%s)\n", path, limit,
 				strerror(errno));
 			close(fd);
 			return 1;
@@ -490,6 +510,151 @@ static int cmd_hidsend(const char *path, const char *hex, const char *secs)
 		poll(&p, 1, 20);
 	}
 	close(fd);
+	return 0;
+}
+
+static int cmd_hidsend(const char *path, const char *hex, const char *secs)
+{
+	uint8_t b[4096];
+	int n = parse_hex(hex, b, sizeof(b));
+
+	if (n <= 0)
+		return usage();
+	return send_report(path, b, n, atof(secs)) < 0 ? 1 : 0;
+}
+
+/* The node (/dev/...) of the first device of sysfs class cls (for "input"
+ * only its eventN) whose device lies under platform device dummy_hcd.k and
+ * whose node exists; 0 if there is none. */
+static int find_on_hcd(const char *cls, int k, char *node, size_t len)
+{
+	char dir[64], want[32];
+	struct dirent *de;
+	int input = strcmp(cls, "input") == 0, found = 0;
+	DIR *d;
+
+	snprintf(dir, sizeof(dir), "/sys/class/%s", cls);
+	snprintf(want, sizeof(want), "/dummy_hcd.%d/", k);
+	d = opendir(dir);
+	if (!d)
+		return 0;
+	while (!found && (de = readdir(d)) != NULL) {
+		char path[PATH_MAX], real[PATH_MAX];
+
+		if (de->d_name[0] == '.' || (input && strncmp(de->d_name, "event", 5) != 0))
+			continue;
+		snprintf(path, sizeof(path), "%s/%s", dir, de->d_name);
+		if (!realpath(path, real) || !strstr(real, want))
+			continue;
+		snprintf(node, len, "/dev/%s%s", input ? "input/" : "", de->d_name);
+		found = access(node, F_OK) == 0;
+	}
+	closedir(d);
+	return found;
+}
+
+/* When path's inode last changed (udev's chown and chmod), on the
+ * CLOCK_MONOTONIC scale; -1 if it cannot be read. */
+static double ctime_mono(const char *path)
+{
+	struct timespec rt, mt;
+	struct stat st;
+
+	if (stat(path, &st) < 0)
+		return -1;
+	clock_gettime(CLOCK_REALTIME, &rt);
+	clock_gettime(CLOCK_MONOTONIC, &mt);
+	return (double)st.st_ctim.tv_sec + (double)st.st_ctim.tv_nsec / 1e9 -
+	       ((double)rt.tv_sec + (double)rt.tv_nsec / 1e9 - (double)mt.tv_sec -
+		(double)mt.tv_nsec / 1e9);
+}
+
+static int put_str(const char *path, const char *v)
+{
+	int fd = open(path, O_WRONLY | O_CLOEXEC);
+	ssize_t w;
+
+	if (fd < 0)
+		return -1;
+	w = write(fd, v, strlen(v));
+	close(fd);
+	return w == (ssize_t)strlen(v) ? 0 : -1;
+}
+
+static int cmd_replug(char **a)
+{
+	const char *pid = a[0], *cls = a[1], *gadget = a[2], *udc = a[3], *hidg = a[4];
+	const char *dot = strrchr(udc, '.');
+	int n = atoi(a[5]), k, ni, nh;
+	long hold = atol(a[6]);
+	uint8_t idle[64], held[64];
+	char udcfile[PATH_MAX], node[PATH_MAX];
+
+	ni = parse_hex(a[7], idle, sizeof(idle));
+	nh = parse_hex(a[8], held, sizeof(held));
+	if (!dot || ni <= 0 || nh <= 0 || n <= 0)
+		return usage();
+	k = atoi(dot + 1);
+	snprintf(udcfile, sizeof(udcfile), "%s/UDC", gadget);
+	if (!find_on_hcd(cls, k, node, sizeof(node)) || !holds(pid, node)) {
+		printf("not attached at the start\n");
+		return 1;
+	}
+	for (int i = 1; i <= n; i++) {
+		double t_un, t_closed, t_pl, t_node, t_open, c;
+
+		if (send_report(hidg, idle, ni, 5) < 0 || send_report(hidg, held, nh, 5) < 0) {
+			printf("plug %d: a report was not taken\n", i);
+			return 1;
+		}
+		sleep_ms(hold);
+		t_un = mono();
+		if (put_str(udcfile, "\n") < 0) {
+			printf("plug %d: unbind: %s\n", i, strerror(errno));
+			return 1;
+		}
+		while (holds(pid, node)) {
+			if (mono() - t_un > 5) {
+				printf("plug %d: %s still open 5 s after the unplug\n", i, node);
+				return 1;
+			}
+			sleep_ms(2);
+		}
+		t_closed = mono();
+		/* The old node gone too, so the next one found is the new one. */
+		while (find_on_hcd(cls, k, node, sizeof(node))) {
+			if (mono() - t_un > 5) {
+				printf("plug %d: %s still there 5 s after the unplug\n", i, node);
+				return 1;
+			}
+			sleep_ms(2);
+		}
+		t_pl = mono();
+		if (put_str(udcfile, udc) < 0) {
+			printf("plug %d: bind %s: %s\n", i, udc, strerror(errno));
+			return 1;
+		}
+		while (!find_on_hcd(cls, k, node, sizeof(node))) {
+			if (mono() - t_pl > 10) {
+				printf("plug %d: no %s node 10 s after the plug\n", i, cls);
+				return 1;
+			}
+			sleep_ms(2);
+		}
+		t_node = mono();
+		while (!holds(pid, node)) {
+			if (mono() - t_node > 10) {
+				printf("plug %d: %s not opened within 10 s\n", i, node);
+				return 1;
+			}
+			sleep_ms(2);
+		}
+		t_open = mono();
+		c = ctime_mono(node);
+		printf("plug %d closed %.3f node %.3f udev %.3f open %.3f\n", i, t_closed - t_un,
+		       t_node - t_pl, c - t_node, t_open - t_node);
+		fflush(stdout);
+	}
 	return 0;
 }
 
@@ -706,6 +871,8 @@ int main(int argc, char **argv)
 		return cmd_hidsend(argv[2], argv[3], argv[4]);
 	if (argc >= 4 && strcmp(argv[1], "pulls") == 0)
 		return cmd_pulls(argv[2], argv + 3, argc - 3);
+	if (argc == 11 && strcmp(argv[1], "replug") == 0)
+		return cmd_replug(argv + 2);
 	if (argc == 5 && strcmp(argv[1], "meter") == 0)
 		return cmd_meter(argv[2], argv[3], argv[4]);
 	if (argc == 3 && strcmp(argv[1], "books") == 0)
