@@ -78,8 +78,8 @@ static void bind_report(struct bind_ctx *x, int line, const char *fmt, ...)
 	x->fn(x->user, x->file, line, msg);
 }
 
-/* "0x" or "0X" and 1 to 4 hex digits, 0x0001..0xffff: a code by number
- * (for codes libevdev has no name for). The code, or -1. */
+/* "0x" or "0X" and 1 to 4 hex digits, BIND_CODE_MIN..BIND_CODE_MAX: a
+ * code by number (for codes libevdev has no name for). The code, or -1. */
 static int bind_numeric_key(const char *name)
 {
 	size_t n = strlen(name);
@@ -101,7 +101,7 @@ static int bind_numeric_key(const char *name)
 			return -1;
 		code = code * 16 + d;
 	}
-	return code >= BIND_CODE_MIN ? code : -1;
+	return code >= BIND_CODE_MIN && code <= BIND_CODE_MAX ? code : -1;
 }
 
 int bind_parse_keys(const char *value, int keys[BIND_MAX], char *why, size_t whylen)

@@ -50,12 +50,13 @@ struct bind_table {
 	struct bind_dev dev[BIND_DEVICES];
 };
 
-/* Codes a bindings file can name: key names (in_key_name) cover the
- * kernel's KEY_* / BTN_*; any code of this range may also be written as
- * "0x" and 1..4 hex digits ("0x2c0"), which is how bind_format writes
- * codes libevdev has no name for. */
+/* Codes a bindings file can name: the kernel's key codes, KEY_RESERVED
+ * (0) and KEY_MAX (0x2ff) excluded as in_key_name excludes them. Key
+ * names (in_key_name) cover most; any code of this range may also be
+ * written as "0x" and 1..4 hex digits ("0x2c0", "0x02e8"), which is how
+ * bind_format writes the codes libevdev has no name for. */
 #define BIND_CODE_MIN 1
-#define BIND_CODE_MAX 0xffff
+#define BIND_CODE_MAX 0x2fe
 
 /* Built-in defaults: forward up/w, back down/s, turn left/right arrows,
  * strafe a/comma and d/dot, fire leftctrl/space, use e, start 1/enter,
