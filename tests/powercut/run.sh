@@ -4,6 +4,8 @@
 #     after a random delay (0..3 ms, seeded); each time the state must load
 #     with a valid checksum and hold the last save known complete or the
 #     one after it: never torn, never older;
+#     the same for a plain file written by st_write_plain (the wizard's
+#     bindings.ini): old or new, whole;
 #  2. on a full file system (a 96 KiB tmpfs in a private mount namespace;
 #     skipped loudly where that cannot be made) a failing save returns
 #     ENOSPC and the previous state still loads.
@@ -24,6 +26,13 @@ if "$tmp/stsave" kill "$tmp/state" "$RUNS" "$SEED" 3000; then
 	echo "PASS power-cut kills"
 else
 	echo "FAIL power-cut kills"; fail=1
+fi
+
+mkdir "$tmp/plain"
+if "$tmp/stsave" kill-plain "$tmp/plain" "$RUNS" "$SEED" 3000; then
+	echo "PASS power-cut kills of the plain file (bindings.ini)"
+else
+	echo "FAIL power-cut kills of the plain file"; fail=1
 fi
 
 mkdir "$tmp/full"

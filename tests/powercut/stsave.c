@@ -10,6 +10,10 @@
  *     is the last one reported complete ("old") or the one after ("new",
  *     finished but not yet reported), never older, never torn. Prints the
  *     counts; exit 1 on any violation.
+ *   stsave kill-plain DIR RUNS SEED MAXUS
+ *     The same with st_write_plain (the bindings file the input wizard
+ *     saves: one plain copy, no header, no .prev): the file must hold the
+ *     last save known complete or the one after, whole.
  *   stsave fill DIR
  *     Saves ever larger payloads until the file system is full: the
  *     failing save must return -ENOSPC (or -EFBIG/-EDQUOT) and the last
@@ -34,6 +38,11 @@
 #include "config/st.h"
 
 #define SS_NAME "state"
+
+/* kill-plain: st_write_plain and plain reads instead of st_save/st_load.
+ * Set once by main before any fork. */
+static int ss_plain;
+static const char *ss_name = SS_NAME;
 #define SS_MAX_PAYLOAD (64 * 1024)
 
 static size_t ss_len(uint64_t seq)
@@ -76,6 +85,29 @@ static int ss_load(const char *dir, uint64_t *seq, enum st_which *which, char *m
 	size_t len;
 	int ret;
 
+	if (ss_plain) {
+		static uint8_t pbuf[SS_MAX_PAYLOAD + 1];
+		char p[4096];
+		ssize_t n;
+		int fd;
+
+		snprintf(p, sizeof(p), "%s/%s", dir, ss_name);
+		fd = open(p, O_RDONLY | O_CLOEXEC);
+		if (fd < 0 && errno == ENOENT)
+			return 0;
+		if (fd < 0) {
+			snprintf(msg, ml, "%.200s: %s", p, strerror(errno));
+			return -1;
+		}
+		n = read(fd, pbuf, sizeof(pbuf));   /* a regular file: one read */
+		close(fd);
+		*which = ST_MAIN;
+		if (n < 0 || ss_parse(pbuf, (size_t)n, seq) != 0) {
+			snprintf(msg, ml, "%zd bytes that are not any save's", n);
+			return -1;
+		}
+		return 1;
+	}
 	ret = st_load(dir, SS_NAME, &buf, &len, which, msg, ml);
 	if (ret == -ENOENT)
 		return 0;
@@ -101,7 +133,8 @@ static void ss_saver(const char *dir, int report_fd)
 		size_t len = ss_len(++seq);
 
 		ss_fill(buf, seq, len);
-		if (st_save(dir, SS_NAME, buf, len) < 0)
+		if ((ss_plain ? st_write_plain(dir, ss_name, buf, len)
+			      : st_save(dir, SS_NAME, buf, len)) < 0)
 			_exit(4);
 		if (write(report_fd, &seq, sizeof(seq)) != (ssize_t)sizeof(seq))
 			_exit(5);
@@ -112,7 +145,7 @@ static int ss_take_tmp(const char *dir)
 {
 	char p[4096];
 
-	snprintf(p, sizeof(p), "%s/" SS_NAME ".tmp", dir);
+	snprintf(p, sizeof(p), "%s/%s.tmp", dir, ss_name);
 	/* Removed once counted, so the next kill's count is its own. */
 	return unlink(p) == 0;
 }
@@ -192,10 +225,10 @@ static int ss_kill(const char *dir, long runs, uint32_t seed, long maxus)
 		known = seq;
 	}
 	clock_gettime(CLOCK_MONOTONIC, &t1);
-	printf("powercut: %ld kills in %.1f s (delays 0..%ld us, seed %u), %ld of them inside "
+	printf("powercut%s: %ld kills in %.1f s (delays 0..%ld us, seed %u), %ld of them inside "
 	       "a save (.tmp left): loaded %ld old, %ld new (%ld of them from .prev), %ld "
 	       "before the first save, %ld torn or lost; %" PRIu64 " saves in all\n",
-	       runs, (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) / 1e9,
+	       ss_plain ? " (plain file, st_write_plain)" : "", runs, (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) / 1e9,
 	       maxus, (unsigned)seed0, mid, old, fresh, prev, none, bad, known);
 	return bad ? 1 : 0;
 }
@@ -244,11 +277,17 @@ int main(int argc, char **argv)
 	if (argc == 6 && strcmp(argv[1], "kill") == 0)
 		return ss_kill(argv[2], strtol(argv[3], NULL, 10),
 			       (uint32_t)strtoul(argv[4], NULL, 10), strtol(argv[5], NULL, 10));
+	if (argc == 6 && strcmp(argv[1], "kill-plain") == 0) {
+		ss_plain = 1;
+		ss_name = "bindings.ini";
+		return ss_kill(argv[2], strtol(argv[3], NULL, 10),
+			       (uint32_t)strtoul(argv[4], NULL, 10), strtol(argv[5], NULL, 10));
+	}
 	if (argc == 3 && strcmp(argv[1], "fill") == 0) {
 		if (chdir(argv[2]) < 0)
 			return 2;
 		return ss_full(".");
 	}
-	fprintf(stderr, "usage: stsave kill DIR RUNS SEED MAXUS | stsave fill DIR\n");
+	fprintf(stderr, "usage: stsave kill|kill-plain DIR RUNS SEED MAXUS | stsave fill DIR\n");
 	return 2;
 }
