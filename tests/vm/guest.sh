@@ -639,6 +639,12 @@ phase_hid_replug() {
 		[ -z "$why" -a "$gone" = 20 -a "$upf" = 20 -a "$upl" = 20 -a "$nplug" = 21 -a "$(prop MainPID)" = "$pid" ]
 	check hid-replug-reattach "re-attach $stats (limit 0.5 s each)" \
 		awk -v m="${maxt:-99}" -v n="$nplug" 'BEGIN { exit !(n == 21 && m <= 0.5) }'
+	# The daemon's own share: from udev's last change of the new node (the
+	# earliest the service's user may open it) to the daemon having it open.
+	react=$(awk '/^plug [0-9]+ closed/ { print $10 - $8 }' "$R/hid-replug.txt" | sort -n |
+		awk '{ v[++n] = $1 } END { if (n) printf "median %.3f max %.3f s over %d plugs", v[int((n + 1) / 2)], v[n], n }')
+	check hid-replug-daemon-reattach "udev done with the new hidraw node (its ctime) to the daemon having it open: ${react:-no plugs} (limit 0.5 s each)" \
+		sh -c "echo '$react' | awk '{ exit !(\$7 == 20 && \$4 <= 0.5) }'"
 	# Nothing held now: the view must stay still.
 	sleep 1
 	shot hid-replug-still-1
@@ -652,17 +658,16 @@ phase_hid_replug() {
 # by port give button 1 fire on one and use on the other. The daemon opens
 # both with input.hid = auto. Checked, then again after a restart with the
 # plug order reversed (the hidraw numbers swap).
-twin_press() { # round: button 1 on A, then on B; checks the input.log lines
-	t_tw=$(now)
+twin_press() { # button 1 pressed and released on A, then on B
 	joy "$hga" "$JOY_FIRE" && sleep 0.2 && joy "$hga" "$JOY_IDLE" &&
-		sleep 0.2 && joy "$hgb" "$JOY_FIRE" && sleep 0.2 && joy "$hgb" "$JOY_IDLE" ||
-		{ fail "twin-$1" "a report was not taken"; return; }
-	sleep 0.5
-	journal=$(log_since "$t_tw")
-	echo "$journal" >> "$R/twin-journal.txt"
-	la=$(echo "$journal" | grep -F "arcaded: input: hid usb-$pa BTN_TRIGGER_HAPPY1 down" | sed 's/.*arcaded: input: //' | tr '\n' ';')
-	lb=$(echo "$journal" | grep -F "arcaded: input: hid usb-$pb BTN_TRIGGER_HAPPY1 down" | sed 's/.*arcaded: input: //' | tr '\n' ';')
-	check "twin-$1" "$2; A ($pa, $na): $la B ($pb, $nb): $lb" \
+		sleep 0.2 && joy "$hgb" "$JOY_FIRE" && sleep 0.2 && joy "$hgb" "$JOY_IDLE"
+}
+# Checks round $1 (described by $2) in the journal text $3: A's button 1
+# gave fire and B's use, once each.
+twin_check() {
+	la=$(echo "$3" | grep -F "arcaded: input: hid usb-$pa BTN_TRIGGER_HAPPY1 down" | sed 's/.*arcaded: input: //' | tr '\n' ';')
+	lb=$(echo "$3" | grep -F "arcaded: input: hid usb-$pb BTN_TRIGGER_HAPPY1 down" | sed 's/.*arcaded: input: //' | tr '\n' ';')
+	check "twin-$1" "$2; A (usb-$pa): $la B (usb-$pb): $lb" \
 		[ "$la" = "hid usb-$pa BTN_TRIGGER_HAPPY1 down -> fire;" -a \
 			"$lb" = "hid usb-$pb BTN_TRIGGER_HAPPY1 down -> use;" ]
 }
@@ -696,7 +701,9 @@ phase_twin() {
 		fail twin-plugged "the restarted daemon does not have both $na and $nb open"
 		return
 	fi
-	twin_press first "bindings by port: A's button 1 fire, B's use"
+	t_tw1=$(now)
+	twin_press || fail twin-first "a report was not taken"
+	desc1="A on $na, B on $nb"
 	# Restart with nothing plugged, then B first: B gets the lower hidraw
 	# number and the daemon's first HID slot.
 	joy_unplug arcjoy
@@ -715,7 +722,16 @@ phase_twin() {
 	fi
 	na=$(hidraw_on 0)
 	nb=$(hidraw_on 1)
-	twin_press reversed "after a restart, B plugged first"
+	t_tw2=$(now)
+	twin_press || fail twin-reversed "a report was not taken"
+	sleep 0.5
+	journal=$(log_since "$t_tw1")
+	echo "$journal" > "$R/twin-journal.txt"
+	twin_check first "bindings by port give A's button 1 fire and B's use; $desc1" \
+		"$(echo "$journal" | awk -v e="$t_tw2" '$1 + 0 < e + 0')"
+	# The test needs the numbers swapped: B now has the lower one.
+	twin_check reversed "after a restart with B plugged first: A on $na, B on $nb$([ "${nb#/dev/hidraw}" -lt "${na#/dev/hidraw}" ] || echo ' (NOT swapped: the plug order did not change the numbering)')" \
+		"$( [ "${nb#/dev/hidraw}" -lt "${na#/dev/hidraw}" ] && echo "$journal" | awk -v s="$t_tw2" '$1 + 0 >= s + 0')"
 	joy_unplug arcjoy
 	joy_unplug arcjoy2
 	rm -f /etc/arcaded/zz-vm-twin.ini /etc/arcaded/vm-twin.bindings

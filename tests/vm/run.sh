@@ -5,11 +5,16 @@
 # running the real arcaded.service on real kernel devices. Boots:
 #   fb32    bochs-drm framebuffer, 32 bpp (DRM fbdev emulation): boot time,
 #           screen = the daemon's frame, uinput keyboard, unprivileged user
-#           and device policy, watchdog restart, SIGTERM; then the unit
-#           tests that need real devices (uinput, fbdev, uhid, gpio-sim);
+#           and device policy, watchdog restart, a DragonRise USB joystick
+#           (HID gadget on dummy_hcd, read through hidraw), GPIO on gpio-sim
+#           (bouncing coin, start, coin meter), latency per kind of input,
+#           SIGTERM; then the unit tests that need real devices (uinput,
+#           fbdev, uhid, gpio-sim);
 #   fb16    vesafb, 16 bpp RGB565 (vga=0x317): screen = the daemon's frame;
 #           a USB keyboard (HID gadget on dummy_hcd) unplugged and replugged
-#           20 times with a key held;
+#           20 times with a key held; the joystick likewise with buttons
+#           held; two identical joysticks on two ports keep their bindings
+#           across a restart;
 #   latefb  the framebuffer driver loads only after the daemon started: the
 #           daemon must still draw on it;
 #   units   only the device unit tests (quicker, to debug them).
