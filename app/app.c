@@ -317,8 +317,9 @@ static void identify(struct app *a, struct app_in *in)
 	p = prof_match(&a->profs, in->be->name, &in->id);
 	if ((!p || p->any) && a->wiz_auto && in->be == &in_hid &&
 	    !bind_find_device(&a->binds, &in->id)) {
-		/* First boot: a pad nothing names (no bindings file, no
-		 * profile for it but the generic guess): ask the operator. */
+		/* First boot (the wizard never saved): a pad nothing names (no
+		 * section of its own, no profile but the generic guess): ask
+		 * the operator. */
 		logf_("input %s: %s: no bindings and no profile for it", in->be->name,
 		      in->be->describe(in->dev));
 		wizard_start(a, "first boot");
@@ -415,6 +416,31 @@ static void open_inputs(struct app *a)
 		logf_("input hotplug: %s", hp_sources(a->hp));
 }
 
+/* input.log: one line per press and release, with who sent it and what it
+ * does (the operator's view of a device; the VM tests read it too). */
+static void log_key(const struct app_in *in, int code, int down, const int *acts, int n)
+{
+	char dev[48], what[160] = "";
+	const char *name = in_key_name(code);
+	size_t len = 0;
+
+	if (in->id.port[0])
+		snprintf(dev, sizeof(dev), "usb-%s", in->id.port);
+	else if (in->id.vid || in->id.pid)
+		snprintf(dev, sizeof(dev), "%04x:%04x", in->id.vid, in->id.pid);
+	else
+		snprintf(dev, sizeof(dev), "-");
+	for (int i = 0; i < n && len < sizeof(what); i++)
+		len += (size_t)snprintf(what + len, sizeof(what) - len, "%s%s", i ? "," : "",
+					act_name(acts[i]));
+	if (name)
+		logf_("input: %s %s %s %s -> %s", in->be->name, dev, name, down ? "down" : "up",
+		      n ? what : "unbound");
+	else
+		logf_("input: %s %s code %d %s -> %s", in->be->name, dev, code,
+		      down ? "down" : "up", n ? what : "unbound");
+}
+
 /* A device went away: release every control it held so nothing stays
  * pressed, then close it and try again later. */
 static void drop_input(struct app *a, struct app_in *in)
@@ -425,6 +451,8 @@ static void drop_input(struct app *a, struct app_in *in)
 		if (!(in->down[code / 8] & (1u << (code % 8))))
 			continue;
 		int n = bind_lookup_dev(&a->binds, &in->id, code, acts, ACT_COUNT);
+		if (a->cfg->input.log)
+			log_key(in, code, 0, acts, n);
 		for (int i = 0; i < n; i++)
 			cmd_action(&a->cs, acts[i], 0);
 	}
@@ -457,31 +485,6 @@ static void input_pending(struct app *a, enum app_src k, uint64_t t)
 		a->pending_ns = t;
 	if (a->src_pending_ns[k] == 0 || t < a->src_pending_ns[k])
 		a->src_pending_ns[k] = t;
-}
-
-/* input.log: one line per press and release, with who sent it and what it
- * does (the operator's view of a device; the VM tests read it too). */
-static void log_key(const struct app_in *in, int code, int down, const int *acts, int n)
-{
-	char dev[48], what[160] = "";
-	const char *name = in_key_name(code);
-	size_t len = 0;
-
-	if (in->id.port[0])
-		snprintf(dev, sizeof(dev), "usb-%s", in->id.port);
-	else if (in->id.vid || in->id.pid)
-		snprintf(dev, sizeof(dev), "%04x:%04x", in->id.vid, in->id.pid);
-	else
-		snprintf(dev, sizeof(dev), "-");
-	for (int i = 0; i < n && len < sizeof(what); i++)
-		len += (size_t)snprintf(what + len, sizeof(what) - len, "%s%s", i ? "," : "",
-					act_name(acts[i]));
-	if (name)
-		logf_("input: %s %s %s %s -> %s", in->be->name, dev, name, down ? "down" : "up",
-		      n ? what : "unbound");
-	else
-		logf_("input: %s %s code %d %s -> %s", in->be->name, dev, code,
-		      down ? "down" : "up", n ? what : "unbound");
 }
 
 static void key_event(struct app *a, struct app_in *in, const struct in_event *e)
@@ -1098,34 +1101,34 @@ static int setup(struct app *a)
 		return rc;
 
 	bind_defaults(&a->binds);
-	/* No bindings file anywhere: a first boot, when the wizard starts by
-	 * itself for a pad nothing names (wizard_start, identify). */
-	int files = 0;
+	/* Until the wizard has saved STATE_DIR/bindings.ini the cabinet was
+	 * never configured on screen (a first boot): the wizard then starts
+	 * by itself for a pad nothing names (identify). The shipped
+	 * CONFIG_DIR/bindings.ini only repeats the keyboard defaults. */
+	int saved = 0;
 	if (a->o->config_dir) {
 		char path[CFG_PATH_MAX + 32];
 		snprintf(path, sizeof(path), "%s/bindings.ini", a->o->config_dir);
-		files += bind_load(&a->binds, path, report_cfg_error, NULL) != -ENOENT;
+		bind_load(&a->binds, path, report_cfg_error, NULL);
 	}
 	if (c->paths.state_dir[0]) {
 		/* what the wizard saved: the operator's choice on screen wins
 		 * over the configuration directory's file */
 		char path[CFG_PATH_MAX + 32];
 		snprintf(path, sizeof(path), "%s/bindings.ini", c->paths.state_dir);
-		files += bind_load(&a->binds, path, report_cfg_error, NULL) != -ENOENT;
+		saved = bind_load(&a->binds, path, report_cfg_error, NULL) != -ENOENT;
 	}
 	if (c->input.bindings[0]) {
 		rc = bind_load(&a->binds, c->input.bindings, report_cfg_error, NULL);
 		if (rc == -ENOENT)
 			logf_("%s: %s", c->input.bindings, strerror(-rc));
-		files++;
 	}
 	if (a->o->bindings) {
 		rc = bind_load(&a->binds, a->o->bindings, report_cfg_error, NULL);
 		if (rc < 0)
 			logf_("%s: %s", a->o->bindings, strerror(-rc));
-		files++;
 	}
-	a->wiz_auto = a->persist && files == 0;
+	a->wiz_auto = a->persist && !saved;
 	prof_init(&a->profs);
 	if (a->o->config_dir) {
 		/* the operator's profiles first: they win ties */
