@@ -116,6 +116,14 @@ struct app {
 	struct wiz wiz;            /* the input configuration wizard (app/wiz.h) */
 	int wiz_on;                /* it runs: raw controls go to it, not to the game */
 	int wiz_auto;              /* it may still start by itself (first boot) */
+	/* Device sections profiles added at run time, with their profile: the
+	 * wizard's file leaves them out while they are as the profile made
+	 * them (a newer profile then still applies). */
+	int nprof_secs;
+	struct {
+		char id[BIND_ID_MAX];
+		const struct prof *p;
+	} prof_secs[BIND_DEVICES];
 	struct lat_series frame_time, latency;
 	struct lat_series src_latency[APP_SRCS];
 	uint64_t pending_ns;       /* earliest unpresented input event, 0 none */
@@ -265,15 +273,37 @@ static void wizard_start(struct app *a, const char *why)
 static void wizard_save(struct app *a)
 {
 	const char *dir = a->cfg->paths.state_dir;
-	size_t n = bind_format(&a->binds, NULL, 0);
-	char *text = malloc(n + 1);
+	struct bind_table *t = malloc(sizeof(*t));
+	size_t n;
+	char *text;
 	int rc;
 
-	if (!text) {
+	if (!t) {
 		logf_("input wizard: bindings not saved: out of memory");
 		return;
 	}
-	bind_format(&a->binds, text, n + 1);
+	/* What the operator set: [keyboard] and every device section except
+	 * those a profile made and nobody changed. */
+	*t = a->binds;
+	for (int k = 0; k < a->nprof_secs; k++)
+		for (int d = 0; d < t->ndev; d++) {
+			if (strcmp(t->dev[d].id, a->prof_secs[k].id) != 0 ||
+			    memcmp(t->dev[d].key, a->prof_secs[k].p->key, sizeof(t->dev[d].key)) != 0)
+				continue;
+			memmove(&t->dev[d], &t->dev[d + 1], (size_t)(t->ndev - d - 1) * sizeof(t->dev[0]));
+			t->ndev--;
+			break;
+		}
+	n = bind_format(t, NULL, 0);
+	text = malloc(n + 1);
+
+	if (!text) {
+		logf_("input wizard: bindings not saved: out of memory");
+		free(t);
+		return;
+	}
+	bind_format(t, text, n + 1);
+	free(t);
 	rc = dir[0] ? st_write_plain(dir, "bindings.ini", text, n) : -ENOENT;
 	if (rc < 0)
 		logf_("input wizard: %s/bindings.ini not saved: %s (the bindings apply until the "
@@ -310,26 +340,34 @@ static void identify(struct app *a, struct app_in *in)
 {
 	const struct prof *p;
 	char why[160];
+	int named;
 
 	memset(&in->id, 0, sizeof(in->id));
 	if (in->be->ident)
 		in->be->ident(in->dev, &in->id);
 	p = prof_match(&a->profs, in->be->name, &in->id);
-	if ((!p || p->any) && a->wiz_auto && in->be == &in_hid &&
-	    !bind_find_device(&a->binds, &in->id)) {
+	/* Checked before the profile adds its section: whether anything but
+	 * the generic guess names this device. */
+	named = (p && !p->any) || bind_find_device(&a->binds, &in->id);
+	if (p) {
+		if (prof_bind(p, &a->binds, &in->id) == 1 && a->nprof_secs < BIND_DEVICES) {
+			const struct bind_dev *d = bind_find_device(&a->binds, &in->id);
+			snprintf(a->prof_secs[a->nprof_secs].id, BIND_ID_MAX, "%s", d->id);
+			a->prof_secs[a->nprof_secs++].p = p;
+		}
+		if (in->be == &in_hid && p->hid[0] &&
+		    in_hid_configure(in->dev, p->hid, why, sizeof(why)) < 0)
+			logf_("input hid: profile %s: %s", p->name, why);
+		logf_("input %s: %s: profile %s", in->be->name, in->be->describe(in->dev), p->name);
+	}
+	if (!named && a->wiz_auto && in->be == &in_hid) {
 		/* First boot (the wizard never saved): a pad nothing names (no
 		 * section of its own, no profile but the generic guess): ask
-		 * the operator. */
+		 * the operator, starting from that guess. */
 		logf_("input %s: %s: no bindings and no profile for it", in->be->name,
 		      in->be->describe(in->dev));
 		wizard_start(a, "first boot");
 	}
-	if (!p)
-		return;
-	prof_bind(p, &a->binds, &in->id);
-	if (in->be == &in_hid && p->hid[0] && in_hid_configure(in->dev, p->hid, why, sizeof(why)) < 0)
-		logf_("input hid: profile %s: %s", p->name, why);
-	logf_("input %s: %s: profile %s", in->be->name, in->be->describe(in->dev), p->name);
 }
 
 static void add_input(struct app *a, const struct in_backend *be, const char *path, int quiet)

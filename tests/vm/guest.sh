@@ -430,6 +430,105 @@ joy_attach() {
 }
 # The whole journal (kernel lines too) as "MONOTONIC-SECONDS message"
 # lines, from time $1 on.
+# --- the input wizard, by itself at first boot ------------------------------
+# A gamepad no profile names (pid.codes' test id 1209:0002, so only the
+# generic guess) is plugged into a cabinet whose wizard never saved: the
+# wizard starts, is answered with the pad's buttons 1..10 for the first
+# ten steps, the eleventh (SERVICE) is skipped by holding button 1 for
+# 1.4 s, and a short press on the summary saves. The bindings file it wrote
+# must hold exactly those, and after a restart the pad's buttons do what
+# the wizard set (button 5 is FIRE) and the wizard does not ask again.
+pad_gadget() {
+	gd=$GADGETS/$1
+	[ -d "$gd" ] && return 0
+	gadget_modules || return 1
+	mkdir -p "$gd/strings/0x409" "$gd/functions/hid.usb0" "$gd/configs/c.1"
+	echo 0x1209 > "$gd/idVendor"
+	echo 0x0002 > "$gd/idProduct"
+	echo "arcaded" > "$gd/strings/0x409/manufacturer"
+	echo "arcaded-vm unknown pad" > "$gd/strings/0x409/product"
+	echo 0 > "$gd/functions/hid.usb0/protocol"
+	echo 0 > "$gd/functions/hid.usb0/subclass"
+	echo 8 > "$gd/functions/hid.usb0/report_length"
+	"$G" hidwrite "$gd/functions/hid.usb0/report_desc" "$JOY_DESC" || return 1
+	ln -s "$gd/functions/hid.usb0" "$gd/configs/c.1/"
+}
+# The report with button $1 (1..10) down and the stick and hat at rest:
+# buttons 1-4 are bits 4-7 of byte 5 (its low nibble is the hat), 5-10
+# bits 0-5 of byte 6.
+pad_button() {
+	if [ "$1" -le 4 ]; then
+		printf '7f 7f 7f 7f 7f %02x 00 00' $((0x0f | (1 << (3 + $1))))
+	else
+		printf '7f 7f 7f 7f 7f 0f %02x 00' $((1 << ($1 - 5)))
+	fi
+}
+pad_tap() { # gadget-side node, button, seconds held
+	joy "$1" "$(pad_button "$2")" && sleep "$3" && joy "$1" "$JOY_IDLE"
+	sleep 0.4
+}
+phase_wizard() {
+	pid=$(prop MainPID)
+	if ! err=$(pad_gadget arcpad); then
+		fail wizard-first-boot "$err"
+		return
+	fi
+	hg=$(hidg_of arcpad)
+	t_w=$(now)
+	if ! err=$(joy_attach arcpad 0); then
+		fail wizard-first-boot "$err"
+		joy_unplug arcpad
+		return
+	fi
+	port=$(port_on 0)
+	joy "$hg" "$JOY_IDLE"
+	started() { log_since "$t_w" | grep -q 'input wizard: started (first boot)'; }
+	if ! wait_until 10 started; then
+		fail wizard-first-boot "no 'input wizard: started (first boot)' after the pad (usb-$port) attached: $(log_since "$t_w" | grep -m 3 'input hid\|wizard' | cut -d' ' -f2- | tr '\n' ';')"
+		joy_unplug arcpad
+		return
+	fi
+	pass wizard-first-boot "the unknown pad on usb-$port attached and the wizard started by itself"
+	shot wizard-step-1
+	for b in 1 2 3 4 5 6 7 8 9 10; do
+		pad_tap "$hg" "$b" 0.15
+	done
+	pad_tap "$hg" 1 1.4     # SERVICE: held 1 s, skipped
+	shot wizard-summary
+	pad_tap "$hg" 2 0.15    # a short press on the summary saves
+	saved() { log_since "$t_w" | grep -q 'input wizard: bindings saved in /var/lib/arcaded/bindings.ini'; }
+	wait_until 10 saved
+	f=/var/lib/arcaded/bindings.ini
+	cp "$f" "$R/wizard-bindings.ini" 2>/dev/null
+	# The section of the pad's port, as the file has it, action by action.
+	got=$(awk -v s="[device \"usb-$port\"]" '$0 == s { on = 1; next } /^\[/ { on = 0 }
+		on && / = / { printf "%s=%s;", $1, $3 }' "$f" 2>/dev/null)
+	want="forward=BTN_TRIGGER_HAPPY1;back=BTN_TRIGGER_HAPPY2;turn_left=BTN_TRIGGER_HAPPY3;turn_right=BTN_TRIGGER_HAPPY4;strafe_left=BTN_TRIGGER_HAPPY7;strafe_right=BTN_TRIGGER_HAPPY8;fire=BTN_TRIGGER_HAPPY5;use=BTN_TRIGGER_HAPPY6;start=BTN_TRIGGER_HAPPY9;coin=BTN_TRIGGER_HAPPY10;"
+	svc=$(awk -v s="[device \"usb-$port\"]" '$0 == s { on = 1; next } /^\[/ { on = 0 }
+		on && $1 == "service" { print }' "$f" 2>/dev/null)
+	meta=$(stat -c '%U %a' "$f" 2>&1)
+	# SERVICE was skipped: it keeps what the pad had, the generic gamepad
+	# profile's empty list (a cabinet's service switch is its own).
+	check wizard-saved "$f ($meta), section usb-$port: ${got:-none}; skipped: '$svc'" \
+		sh -c "[ '$got' = '$want' ] && [ '$svc' = 'service =' ] && [ '$meta' = 'arcaded 600' ] && [ ! -e $f.tmp ]"
+	# The new bindings after a restart, and no second wizard.
+	t_r=$(now)
+	systemctl restart "$U"
+	pid=$(prop MainPID)
+	jn=$(hidraw_on 0)
+	"$G" waitfd "$pid" "$jn" 20 > /dev/null || fail wizard-after-restart "the restarted daemon did not open $jn"
+	joy "$hg" "$JOY_IDLE"
+	sleep 0.3
+	pad_tap "$hg" 5 0.2
+	sleep 0.5
+	j=$(log_since "$t_r")
+	echo "$j" > "$R/wizard-restart-journal.txt"
+	fire=$(echo "$j" | grep -c -F "arcaded: input: hid usb-$port BTN_TRIGGER_HAPPY5 down -> fire")
+	again=$(echo "$j" | grep -c 'input wizard: started')
+	check wizard-after-restart "after a restart button 5 of usb-$port logged '-> fire' $fire time(s); the wizard started $again time(s)" \
+		[ "$fire" = 1 -a "$again" = 0 ]
+	joy_unplug arcpad
+}
 all_since() {
 	journalctl -o short-monotonic --no-pager -q |
 		sed -n 's/^\[ *\([0-9]*\.[0-9]*\)\] [^ ]* \(.*\)$/\1 \2/p' |
@@ -792,7 +891,7 @@ kbd_pid=""
 case $BOOT in
 fb32)
 	run phase_boot phase_input phase_sandbox phase_watchdog phase_hid phase_gpio \
-		phase_latency phase_sigterm unit_tests
+		phase_latency phase_wizard phase_sigterm unit_tests
 	;;
 fb16)
 	run phase_boot phase_input phase_sandbox phase_hotplug phase_hid_replug phase_twin \
