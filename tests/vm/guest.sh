@@ -595,13 +595,17 @@ phase_hid() {
 	done
 	check hid-controls "input.log lines for the gadget (usb-$port): coin, start and the stick left, each down and up;${missing:+ missing:$missing}" \
 		[ -z "$missing" ]
+	# Latency samples (phase_latency): 40 presses of fire.
+	for i in $(seq 40); do
+		joy "$hg" "$JOY_FIRE" && sleep 0.06 && joy "$hg" "$JOY_IDLE" && sleep 0.06
+	done
 	joy_unplug arcjoy
 }
 
 # --- GPIO: a bouncing coin switch, a start button and a coin meter ----------
 # A gpio-sim chip labelled arcaded-vm (8 lines) is what the VM's input.gpio
-# names (tests/vm/arcaded-vm.ini): line 0 coin, 1 start, 2 the meter
-# output. Inputs are active low with the pull-up the daemon requests; the
+# names (tests/vm/arcaded-vm.ini): line 0 coin, 1 start, 3 fire, 2 the
+# meter output. Inputs are active low with the pull-up the daemon requests; the
 # test pulls a line down (pressed) and up (released) through sysfs.
 GPIO_SIM=/sys/kernel/config/gpio-sim/arcvm
 gpio_sim_module() {
@@ -624,6 +628,7 @@ phase_gpio() {
 	gd=/sys/devices/platform/$(cat "$GPIO_SIM/dev_name")/$chip
 	echo pull-up > "$gd/sim_gpio0/pull"
 	echo pull-up > "$gd/sim_gpio1/pull"
+	echo pull-up > "$gd/sim_gpio3/pull"
 	# The udev rules give group arcaded the chip node.
 	grp() { [ "$(stat -c %G "/dev/$chip" 2>/dev/null)" = arcaded ]; }
 	wait_until 10 grp
@@ -668,6 +673,8 @@ phase_gpio() {
 		[ "${rises:-0}" = 1 ]
 	check gpio-start "a clean 100 ms press on the start line: the daemon logged $nstart start press(es)" \
 		[ "$nstart" = 1 ]
+	# Latency samples (phase_latency): 40 presses of the fire line.
+	"$G" pulls "$gd/sim_gpio3" d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 > /dev/null 2>&1
 }
 
 # --- input-to-present latency per kind of input ----------------------------
