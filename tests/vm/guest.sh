@@ -463,8 +463,8 @@ pad_button() {
 		printf '7f 7f 7f 7f 7f 0f %02x 00' $((1 << ($1 - 5)))
 	fi
 }
-pad_tap() { # gadget-side node, button, seconds held
-	joy "$1" "$(pad_button "$2")" && sleep "$3" && joy "$1" "$JOY_IDLE"
+pad_tap() { # gadget-side node, button, milliseconds held
+	"$G" hidtap "$1" "$(pad_button "$2")" "$JOY_IDLE" "$3"
 	sleep 0.4
 }
 phase_wizard() {
@@ -491,11 +491,11 @@ phase_wizard() {
 	pass wizard-first-boot "the unknown pad on usb-$port attached and the wizard started by itself"
 	shot wizard-step-1
 	for b in 1 2 3 4 5 6 7 8 9 10; do
-		pad_tap "$hg" "$b" 0.15
+		pad_tap "$hg" "$b" 150
 	done
-	pad_tap "$hg" 1 1.4     # SERVICE: held 1 s, skipped
+	pad_tap "$hg" 1 1400    # SERVICE: held 1 s, skipped
 	shot wizard-summary
-	pad_tap "$hg" 2 0.15    # a short press on the summary saves
+	pad_tap "$hg" 2 150     # a short press on the summary saves
 	saved() { log_since "$t_w" | grep -q 'input wizard: bindings saved in /var/lib/arcaded/bindings.ini'; }
 	wait_until 10 saved
 	f=/var/lib/arcaded/bindings.ini
@@ -519,7 +519,7 @@ phase_wizard() {
 	"$G" waitfd "$pid" "$jn" 20 > /dev/null || fail wizard-after-restart "the restarted daemon did not open $jn"
 	joy "$hg" "$JOY_IDLE"
 	sleep 0.3
-	pad_tap "$hg" 5 0.2
+	pad_tap "$hg" 5 200
 	sleep 0.5
 	j=$(log_since "$t_r")
 	echo "$j" > "$R/wizard-restart-journal.txt"
@@ -595,9 +595,11 @@ phase_hid() {
 	done
 	check hid-controls "input.log lines for the gadget (usb-$port): coin, start and the stick left, each down and up;${missing:+ missing:$missing}" \
 		[ -z "$missing" ]
-	# Latency samples (phase_latency): 40 presses of fire.
+	# Latency samples (phase_latency): 40 presses of start, which does
+	# nothing during play (fire would wake enemies it hits, and the GPIO
+	# phase needs a still picture).
 	for i in $(seq 40); do
-		joy "$hg" "$JOY_FIRE" && sleep 0.06 && joy "$hg" "$JOY_IDLE" && sleep 0.06
+		"$G" hidtap "$hg" "$JOY_START" "$JOY_IDLE" 60 && sleep 0.06
 	done
 	joy_unplug arcjoy
 }
@@ -673,8 +675,16 @@ phase_gpio() {
 		[ "${rises:-0}" = 1 ]
 	check gpio-start "a clean 100 ms press on the start line: the daemon logged $nstart start press(es)" \
 		[ "$nstart" = 1 ]
-	# Latency samples (phase_latency): 40 presses of the fire line.
+	# The fire line changes the picture (the game is in play, still: two
+	# screendumps 1 s apart are equal first; firing uses up ammunition,
+	# which the HUD shows), and gives latency samples (phase_latency): 40
+	# presses.
+	shot gpio-still-1
+	sleep 1
+	shot gpio-still-2
 	"$G" pulls "$gd/sim_gpio3" d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 d:60 u:60 > /dev/null 2>&1
+	sleep 0.5
+	shot gpio-fired
 }
 
 # --- input-to-present latency per kind of input ----------------------------

@@ -325,6 +325,9 @@ judge() {
 	[ -e "$res/hid-turned.ppm" ] && screen hid-changes-screen "$H" differ "$res/hid-before.ppm" "$res/hid-turned.ppm"
 	[ -e "$res/hid-still-2.ppm" ] && screen hid-no-stuck-input \
 		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/hid-still-1.ppm" "$res/hid-still-2.ppm"
+	[ -e "$res/gpio-still-2.ppm" ] && screen gpio-still-before \
+		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/gpio-still-1.ppm" "$res/gpio-still-2.ppm"
+	[ -e "$res/gpio-fired.ppm" ] && screen gpio-changes-screen "$H" differ "$res/gpio-still-2.ppm" "$res/gpio-fired.ppm"
 	[ -e "$res/hid-replug-still-2.ppm" ] && screen hid-replug-no-stuck-input \
 		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/hid-replug-still-1.ppm" "$res/hid-replug-still-2.ppm"
 	[ -e "$res/after-stop.ppm" ] && screen sigterm-console-shows-text "$H" text "$res/after-stop.ppm"

@@ -34,6 +34,9 @@
  *                           write the bytes HEX (pairs of hex digits, blanks
  *                           allowed) to PATH in one write(): a report to a
  *                           gadget's /dev/hidgN, a descriptor to configfs
+ *   vm_guest hidtap PATH DOWN UP MS
+ *                           hidsend DOWN, MS milliseconds, hidsend UP (5 s
+ *                           each): a button tap in one process
  *   vm_guest hidsend PATH HEX SECONDS
  *                           write the bytes HEX to a gadget's /dev/hidgN in
  *                           one write(), waiting up to SECONDS for the
@@ -118,7 +121,8 @@ static int usage(void)
 	fputs("usage: vm_guest kbd FIFO | kdmode TTY | open PATH r|w|rw |\n"
 	      "       probe CGROUP USER PATH:MODE:WANT... | waitfd PID PATH SECONDS |\n"
 	      "       waitnofd PID PATH SECONDS | waitdev PID NAME SECONDS |\n"
-	      "       hidwrite PATH HEX | hidsend PATH HEX SECONDS | pulls DIR STEP... |\n"
+	      "       hidwrite PATH HEX | hidsend PATH HEX SECONDS | hidtap PATH DOWN UP MS |\n"
+	      "       pulls DIR STEP... |\n"
 	      "       meter FILE SECONDS OUT |\n"
 	      "       replug PID CLASS GADGET UDC HIDG N HOLD_MS IDLE HELD |\n"
 	      "       books FILE | fbinfo DEV | now\n",
@@ -523,6 +527,24 @@ static int cmd_hidsend(const char *path, const char *hex, const char *secs)
 	return send_report(path, b, n, atof(secs)) < 0 ? 1 : 0;
 }
 
+/* A tap in one process: the down report, MS milliseconds, the up report
+ * (under a loaded emulator two process starts alone can take longer than
+ * the wizard's 1 s hold). */
+static int cmd_hidtap(const char *path, const char *down, const char *up, const char *ms)
+{
+	uint8_t d[4096], u[4096];
+	int nd = parse_hex(down, d, sizeof(d)), nu = parse_hex(up, u, sizeof(u));
+	long t = atol(ms);
+	struct timespec ts = { .tv_sec = t / 1000, .tv_nsec = t % 1000 * 1000000L };
+
+	if (nd <= 0 || nu <= 0 || t < 0)
+		return usage();
+	if (send_report(path, d, nd, 5) < 0)
+		return 1;
+	nanosleep(&ts, NULL);
+	return send_report(path, u, nu, 5) < 0 ? 1 : 0;
+}
+
 /* The node (/dev/...) of the first device of sysfs class cls (for "input"
  * only its eventN) whose device lies under platform device dummy_hcd.k and
  * whose node exists; 0 if there is none. */
@@ -869,6 +891,8 @@ int main(int argc, char **argv)
 		return cmd_hidwrite(argv[2], argv[3]);
 	if (argc == 5 && strcmp(argv[1], "hidsend") == 0)
 		return cmd_hidsend(argv[2], argv[3], argv[4]);
+	if (argc == 6 && strcmp(argv[1], "hidtap") == 0)
+		return cmd_hidtap(argv[2], argv[3], argv[4], argv[5]);
 	if (argc >= 4 && strcmp(argv[1], "pulls") == 0)
 		return cmd_pulls(argv[2], argv + 3, argc - 3);
 	if (argc == 11 && strcmp(argv[1], "replug") == 0)
