@@ -8,20 +8,26 @@ BUILD ?= build
 CC ?= cc
 OPT ?= -O2 -g
 SAN ?=
-PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod libusb-1.0 osmesa
+PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod libusb-1.0
 TEST_PKGS := cmocka
 
 WARN := -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes
-CPPFLAGS += -I. -D_GNU_SOURCE -DARCADED_DATADIR='"$(PREFIX)/share/arcaded"'
+CPPFLAGS += -I. -D_GNU_SOURCE -DARCADED_DATADIR='"$(PREFIX)/share/arcaded"' \
+	-DARCADED_LIBDIR='"$(PREFIX)/lib/arcaded"'
 CFLAGS += -std=c11 $(OPT) $(SAN) $(WARN) -fno-strict-aliasing
 PKG_CFLAGS = $(shell pkg-config --cflags $(PKGS))
 PKG_LIBS = $(shell pkg-config --libs $(PKGS))
 TEST_CFLAGS = $(shell pkg-config --cflags $(TEST_PKGS))
 TEST_LIBS = $(shell pkg-config --libs $(TEST_PKGS))
-LDLIBS += $(PKG_LIBS) -lpthread -lm
+LDLIBS += $(PKG_LIBS) -lpthread -lm -ldl
 
-# Every .c of the layers is part of the library the daemon and tests link.
-LIB_SRC := $(sort $(wildcard engine/*.c engine/gl/*.c input/*.c display/*.c config/*.c systemd/*.c))
+# Every .c of the layers is part of the library the daemon and tests link,
+# except engine/gl: the OSMesa renderer is a plugin (app/glr.h), built
+# position-independent and linked with OSMesa on its own.
+LIB_SRC := $(sort $(wildcard engine/*.c input/*.c display/*.c config/*.c systemd/*.c))
+GL_SRC := $(sort $(wildcard engine/gl/*.c))
+GL_OBJ := $(GL_SRC:%.c=$(BUILD)/pic/%.o)
+GL_SO := $(BUILD)/arcaded-gl.so
 APP_SRC := $(sort $(wildcard app/*.c))
 APP_MAIN := app/main.c
 APP_LIB_SRC := $(filter-out $(APP_MAIN),$(APP_SRC))
@@ -50,7 +56,7 @@ TMPFILESDIR ?= /usr/lib/tmpfiles.d
 .PHONY: all setup run test test-unit test-asan test-script test-replay test-clang \
 	check-layers check-tables check-systemd check-install check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
 
-all: $(BIN) tools
+all: $(BIN) $(GL_SO) tools
 
 setup:
 	@scripts/setup.sh
@@ -73,8 +79,16 @@ $(LIB): $(LIB_OBJ)
 	rm -f $@
 	ar rcs $@ $^
 
+# -rdynamic: the plugin's calls into the engine resolve against the daemon.
 $(BIN): $(BUILD)/$(APP_MAIN:.c=.o) $(LIB)
-	$(CC) $(CFLAGS) $(LDFLAGS) -o $@ $^ $(LDLIBS)
+	$(CC) $(CFLAGS) $(LDFLAGS) -rdynamic -o $@ $^ $(LDLIBS)
+
+$(BUILD)/pic/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -fPIC $(shell pkg-config --cflags osmesa) -MMD -MP -c $< -o $@
+
+$(GL_SO): $(GL_OBJ)
+	$(CC) $(CFLAGS) $(LDFLAGS) -shared -o $@ $^ $(shell pkg-config --libs osmesa) -lm
 
 $(BUILD)/tests/%: tests/unit/%.c $(LIB)
 	@mkdir -p $(dir $@)
@@ -137,8 +151,9 @@ check-levels: $(BUILD)/tools/mklevels
 bench: all
 	@tests/bench.sh $(BIN)
 
-install: $(BIN)
+install: $(BIN) $(GL_SO)
 	install -D -m 0755 $(BIN) $(DESTDIR)$(PREFIX)/bin/arcaded
+	install -D -m 0644 $(GL_SO) $(DESTDIR)$(PREFIX)/lib/arcaded/arcaded-gl.so
 	install -D -m 0644 systemd/arcaded.service $(DESTDIR)$(SYSTEMD_UNITDIR)/arcaded.service
 	sed -i 's|@BINDIR@|$(PREFIX)/bin|g' $(DESTDIR)$(SYSTEMD_UNITDIR)/arcaded.service
 	install -D -m 0644 systemd/70-arcaded.rules $(DESTDIR)$(UDEV_RULESDIR)/70-arcaded.rules

@@ -20,6 +20,7 @@
 #include "app/lat.h"
 #include "app/pool.h"
 #include "app/demo.h"
+#include "app/glr.h"
 #include "app/view.h"
 #include "app/wiz.h"
 #include "config/bind.h"
@@ -29,7 +30,6 @@
 #include "display/shot.h"
 #include "config/st.h"
 #include "engine/g_game.h"
-#include "engine/gl/r_gl.h"
 #include "engine/hash.h"
 #include "engine/hud.h"
 #include "engine/menu.h"
@@ -88,7 +88,8 @@ struct app {
 	uint64_t map_hash;         /* of every stage: what recordings are tied to */
 	struct view view;          /* draws the sim's frame */
 	struct pool *pool;         /* render worker threads, NULL: one thread */
-	struct rgl_ctx *gl;        /* --renderer gl: the OSMesa renderer */
+	struct glr glr;            /* --renderer gl: the OSMesa renderer plugin */
+	struct rgl_ctx *gl;        /* its context */
 	struct r_par par;
 	struct demo demo;          /* the attract mode's demo */
 	struct fr *fr;             /* flight recorder: the last games, NULL when off */
@@ -933,7 +934,9 @@ static void save_settings(struct app *a)
 static void gl_world(void *ctx, const struct map *m, const struct tex_set *t,
 		     const struct r_view *v, const struct r_sprite *spr, int nspr, struct r_frame *f)
 {
-	rgl_render(ctx, m, t, v, spr, nspr, f);
+	struct app *a = ctx;
+
+	a->glr.render(a->gl, m, t, v, spr, nspr, f);
 }
 
 /* (Re)allocates the frame and the renderer for w x h. */
@@ -956,20 +959,23 @@ static int resize(struct app *a, int w, int h)
 		r_set_par(r, &a->par);
 	if (a->o->gl) {
 		/* the OSMesa renderer, the software one's oracle, as the game's */
-		char gerr[256] = "";
+		char gerr[1024] = "";
 		struct rgl_ctx *g = NULL;
-		rc = rgl_new(w, h, &g, gerr, sizeof(gerr));
+		rc = a->glr.so ? 0 : glr_load(&a->glr, gerr, sizeof(gerr));
+		if (rc == 0)
+			rc = a->glr.create(w, h, &g, gerr, sizeof(gerr));
 		if (rc < 0) {
 			logf_("renderer gl %dx%d: %s", w, h, gerr[0] ? gerr : strerror(-rc));
 			r_free(r);
 			free(px);
 			return rc;
 		}
-		rgl_free(a->gl);
+		if (a->gl)
+			a->glr.destroy(a->gl);
 		a->gl = g;
 		a->view.world = gl_world;
-		a->view.world_ctx = g;
-		logf_("renderer: gl (%s)", rgl_name(g));
+		a->view.world_ctx = a;
+		logf_("renderer: gl (%s, %s)", a->glr.name(g), a->glr.path);
 	}
 	r_free(a->r);
 	free(a->frame.px);
@@ -1278,7 +1284,9 @@ static void teardown(struct app *a)
 		save_state(a, "books", buf, G_BOOKS_BYTES);
 	}
 	r_free(a->r);
-	rgl_free(a->gl);
+	if (a->gl)
+		a->glr.destroy(a->gl);
+	glr_unload(&a->glr);
 	pool_free(a->pool);
 	free(a->frame.px);
 	view_free(&a->view);
