@@ -19,8 +19,7 @@
 /* Freedoom 2 is 28 MiB; anything far larger is not a WAD meant for us. */
 #define CT_FILE_MAX (512u << 20)
 
-/* Reads a whole file into a new buffer (caller frees). 0 or -errno. */
-static int read_file(const char *path, uint8_t **buf, size_t *len)
+int ct_read_file(const char *path, uint8_t **buf, size_t *len)
 {
 	struct stat st;
 	size_t got = 0;
@@ -71,7 +70,7 @@ static int load_wads(struct ct *c, const struct ct_spec *s, char *err, size_t er
 	rc = wad_new(&w);
 	for (i = 0; rc == 0 && i < s->nwads; i++) {
 		size_t len = 0;
-		rc = read_file(s->wads[i], &bufs[i], &len);
+		rc = ct_read_file(s->wads[i], &bufs[i], &len);
 		if (rc < 0)
 			snprintf(err, errlen, "%s: %s", s->wads[i], strerror(-rc));
 		else
@@ -124,7 +123,7 @@ static int load_grid(struct ct *c, const struct ct_spec *s, char *err, size_t er
 	if (strcmp(s->grid, "builtin") == 0) {
 		text = grid_builtin_text(&len);
 	} else {
-		rc = read_file(s->grid, &buf, &len);
+		rc = ct_read_file(s->grid, &buf, &len);
 		if (rc < 0) {
 			snprintf(err, errlen, "%s: %s", s->grid, strerror(-rc));
 			return rc;

@@ -8,6 +8,7 @@
 #define ARCADED_APP_CONTENT_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 struct lmap;
 struct map;
@@ -40,6 +41,12 @@ struct ct {
 /* Loads the content s names. 0, or -errno with err naming the file, lump
  * or entry. On error c holds nothing (ct_free is still safe). */
 int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen);
+
+/* Reads the whole regular file path (at most 512 MiB: a WAD) into *buf, a
+ * new buffer the caller frees, of *len bytes. 0, or -errno: -EINVAL (not a
+ * regular file), -EFBIG (too large), -ENOMEM, or open's or read's error.
+ * Also the one file reader of the tests and tools that load WADs. */
+int ct_read_file(const char *path, uint8_t **buf, size_t *len);
 
 /* The light maps of stage map m (NULL if none or unknown). */
 struct lmap *ct_lmap_for(const struct ct *c, const struct map *m);

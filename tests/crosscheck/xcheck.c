@@ -37,6 +37,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "app/content.h"
 #include "display/shot.h"
 #include "engine/gl/r_gl.h"
 #include "engine/grid.h"
@@ -102,24 +103,12 @@ static uint64_t xc_rand(uint64_t *s)
 	return z ^ (z >> 31);
 }
 
-static uint8_t *xc_slurp(const char *path, size_t *len)
+/* The file at path, or NULL (ct_read_file, app/content.h). */
+static uint8_t *slurp(const char *path, size_t *len)
 {
-	FILE *f = fopen(path, "rbe");
 	uint8_t *d = NULL;
-	long n;
 
-	if (!f)
-		return NULL;
-	if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) > 0 && fseek(f, 0, SEEK_SET) == 0) {
-		d = malloc((size_t)n);
-		if (d && fread(d, 1, (size_t)n, f) != (size_t)n) {
-			free(d);
-			d = NULL;
-		}
-		*len = (size_t)n;
-	}
-	fclose(f);
-	return d;
+	return ct_read_file(path, &d, len) == 0 ? d : NULL;
 }
 
 /* Distance (map units) from (x, y) to the segment of line l. */
@@ -429,7 +418,7 @@ static int xc_grid(struct xc_run *x, const char *file)
 	if (strcmp(file, "builtin") == 0) {
 		text = grid_builtin_text(&len);
 	} else {
-		buf = xc_slurp(file, &len);
+		buf = slurp(file, &len);
 		if (!buf) {
 			fprintf(stderr, "xcheck: %s: %s\n", file, strerror(errno));
 			tex_free(t);
@@ -462,7 +451,7 @@ static int xc_wad(struct xc_run *x, const char *file, const char *only)
 	struct wad *wd = NULL;
 	struct tex_set *t = NULL;
 	size_t len = 0;
-	uint8_t *d = xc_slurp(file, &len);
+	uint8_t *d = slurp(file, &len);
 	int n, done = 0;
 
 	if (!d || wad_new(&wd) < 0 || wad_add(wd, d, len, file, err, sizeof(err)) < 0 ||

@@ -13,6 +13,7 @@
 #include <time.h>
 #include <cmocka.h>
 
+#include "app/content.h"
 #include "engine/map.h"
 #include "engine/map_wad.h"
 #include "engine/tex.h"
@@ -442,24 +443,12 @@ static void builtin_levels_round_trip_through_a_wad(void **state)
 
 /* ---- Freedoom ------------------------------------------------------------ */
 
+/* The file at path, or NULL (ct_read_file, app/content.h). */
 static uint8_t *slurp(const char *path, size_t *len)
 {
-	FILE *f = fopen(path, "rbe");
 	uint8_t *d = NULL;
-	long n;
 
-	if (!f)
-		return NULL;
-	if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) > 0 && fseek(f, 0, SEEK_SET) == 0) {
-		d = malloc((size_t)n);
-		if (d && fread(d, 1, (size_t)n, f) != (size_t)n) {
-			free(d);
-			d = NULL;
-		}
-		*len = (size_t)n;
-	}
-	fclose(f);
-	return d;
+	return ct_read_file(path, &d, len) == 0 ? d : NULL;
 }
 
 /* For each sector with an area, some seg of it whose midpoint, nudged 1/16
