@@ -2,11 +2,11 @@
  * hp: hotplug notices from inotify and libusb (contract in hp.h).
  */
 #include "input/hp.h"
+#include "input/in.h"
 
 #include <errno.h>
 #include <fcntl.h>
 #include <libusb.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,17 +35,6 @@ static int hp_wanted(const char *name)
 	return 0;
 }
 
-static void hp_note(struct hp *h, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void hp_note(struct hp *h, const char *fmt, ...)
-{
-	size_t n = strlen(h->sources);
-	va_list ap;
-
-	va_start(ap, fmt);
-	vsnprintf(h->sources + n, sizeof(h->sources) - n, fmt, ap);
-	va_end(ap);
-}
-
 /* libusb calls this from inside libusb_handle_events (hp_poll). */
 static int LIBUSB_CALL hp_usb_cb(libusb_context *ctx, libusb_device *dev,
 				 libusb_hotplug_event ev, void *user)
@@ -63,7 +52,7 @@ static void hp_open_usb(struct hp *h)
 	int rc;
 
 	if (!libusb_has_capability(LIBUSB_CAP_HAS_HOTPLUG)) {
-		hp_note(h, "%slibusb: no hotplug support in this libusb", h->sources[0] ? "; " : "");
+		in_say(h->sources, sizeof(h->sources), "%slibusb: no hotplug support in this libusb", h->sources[0] ? "; " : "");
 		return;
 	}
 	rc = libusb_init(&h->usb);
@@ -73,14 +62,14 @@ static void hp_open_usb(struct hp *h)
 			LIBUSB_HOTPLUG_MATCH_ANY, LIBUSB_HOTPLUG_MATCH_ANY, LIBUSB_HOTPLUG_MATCH_ANY,
 			hp_usb_cb, h, &h->cb);
 	if (rc != 0) {
-		hp_note(h, "%slibusb: not available: %s", h->sources[0] ? "; " : "",
+		in_say(h->sources, sizeof(h->sources), "%slibusb: not available: %s", h->sources[0] ? "; " : "",
 			libusb_strerror(rc));
 		if (h->usb)
 			libusb_exit(h->usb);
 		h->usb = NULL;
 		return;
 	}
-	hp_note(h, "%slibusb hotplug", h->sources[0] ? "; " : "");
+	in_say(h->sources, sizeof(h->sources), "%slibusb hotplug", h->sources[0] ? "; " : "");
 }
 
 int hp_open(const char *const *dirs, int ndirs, unsigned flags, struct hp **out, char *why,
@@ -106,16 +95,16 @@ int hp_open(const char *const *dirs, int ndirs, unsigned flags, struct hp **out,
 	if (flags & HP_INOTIFY) {
 		h->fd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
 		if (h->fd < 0) {
-			hp_note(h, "inotify: %s", strerror(errno));
+			in_say(h->sources, sizeof(h->sources), "inotify: %s", strerror(errno));
 		} else {
-			hp_note(h, "inotify");
+			in_say(h->sources, sizeof(h->sources), "inotify");
 			for (int i = 0; i < ndirs; i++) {
 				if (inotify_add_watch(h->fd, dirs[i], IN_CREATE | IN_ATTRIB | IN_DELETE |
 						      IN_MOVED_TO | IN_MOVED_FROM | IN_ONLYDIR) < 0) {
-					hp_note(h, " (%s: %s)", dirs[i], strerror(errno));
+					in_say(h->sources, sizeof(h->sources), " (%s: %s)", dirs[i], strerror(errno));
 					continue;
 				}
-				hp_note(h, " %s", dirs[i]);
+				in_say(h->sources, sizeof(h->sources), " %s", dirs[i]);
 				watched++;
 			}
 			if (!watched) {

@@ -92,6 +92,11 @@ const char *in_key_name(int code);
  * -ENAMETOOLONG). in_sysfs.c. */
 int in_usb_port(const char *dir, int up, char *port, size_t len);
 
+/* Appends printf output to the NUL-terminated text in buf (len bytes in
+ * all), cutting it to fit; nothing when buf is full. The backends' reasons
+ * ("why") and descriptions are built with it. */
+void in_say(char *buf, size_t len, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
 /* CLOCK_MONOTONIC now, ns (for backends whose source has no timestamp). */
 uint64_t in_now_ns(void);
 

@@ -24,7 +24,6 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,19 +41,6 @@ struct in_dev {
 	struct in_ident id;      /* VID:PID, USB port, name: per-device bindings */
 	char desc[320];
 };
-
-/* Appends printf output to buf (NUL-terminated, size len), truncating. */
-static void append(char *buf, size_t len, const char *fmt, ...)
-{
-	size_t used = strnlen(buf, len);
-	va_list ap;
-
-	if (used + 1 >= len)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(buf + used, len - used, fmt, ap);
-	va_end(ap);
-}
 
 static int has_key(const struct libevdev *ev, unsigned code)
 {
@@ -91,18 +77,18 @@ static int probe(const char *path, struct in_dev **out, char *why, size_t whylen
 
 	d = calloc(1, sizeof(*d));
 	if (!d) {
-		append(why, whylen, "%s: out of memory", path);
+		in_say(why, whylen, "%s: out of memory", path);
 		return -ENOMEM;
 	}
 	d->fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
 	if (d->fd < 0) {
 		rc = -errno;
-		append(why, whylen, "%s: %s", path, strerror(-rc));
+		in_say(why, whylen, "%s: %s", path, strerror(-rc));
 		goto fail;
 	}
 	rc = libevdev_new_from_fd(d->fd, &d->ev);
 	if (rc < 0) {
-		append(why, whylen, "%s: not an input event device (%s)", path, strerror(-rc));
+		in_say(why, whylen, "%s: not an input event device (%s)", path, strerror(-rc));
 		goto fail_fd;
 	}
 	*out = d;
@@ -145,7 +131,7 @@ static void identify(struct in_dev *d, const char *path, const char *name)
 	    snprintf(link, sizeof(link), "/sys/class/input/%s/device", base) < (int)sizeof(link))
 		in_usb_port(link, 2, d->id.port, sizeof(d->id.port));
 	if (d->id.port[0])
-		append(d->desc, sizeof(d->desc), ", %04x:%04x port %s", d->id.vid, d->id.pid,
+		in_say(d->desc, sizeof(d->desc), ", %04x:%04x port %s", d->id.vid, d->id.pid,
 		       d->id.port);
 }
 
@@ -166,9 +152,9 @@ static void take_over(struct in_dev *d, const char *path)
 	snprintf(d->desc, sizeof(d->desc), "%s (%s)", name ? name : "unnamed", path);
 	identify(d, path, name);
 	if (d->grab_err)
-		append(d->desc, sizeof(d->desc), ", not grabbed: %s", strerror(d->grab_err));
+		in_say(d->desc, sizeof(d->desc), ", not grabbed: %s", strerror(d->grab_err));
 	if (d->stamp_now)
-		append(d->desc, sizeof(d->desc), ", stamped at read");
+		in_say(d->desc, sizeof(d->desc), ", stamped at read");
 }
 
 static int cmp_uint(const void *a, const void *b)
@@ -232,27 +218,27 @@ int in_evdev_open_dir(const char *dir, struct in_dev **out, char *why, size_t wh
 		why[0] = '\0';
 	rc = list_events(dir, &nums, &n);
 	if (rc < 0) {
-		append(why, whylen, "%s: %s", dir, strerror(-rc));
+		in_say(why, whylen, "%s: %s", dir, strerror(-rc));
 		return rc == -ENOMEM ? rc : -ENODEV;
 	}
 	if (n == 0) {
-		append(why, whylen, "no %s/event* devices", dir);
+		in_say(why, whylen, "no %s/event* devices", dir);
 		free(nums);
 		return -ENODEV;
 	}
-	append(why, whylen, "no keyboard among %s/event*: ", dir);
+	in_say(why, whylen, "no keyboard among %s/event*: ", dir);
 	for (size_t i = 0; i < n; i++) {
 		struct in_dev *d;
 
 		snprintf(path, sizeof(path), "%s/event%u", dir, nums[i]);
 		if (i > 0)
-			append(why, whylen, "; ");
+			in_say(why, whylen, "; ");
 		if (probe(path, &d, why, whylen) < 0)
 			continue;
 		if (!looks_like_keyboard(d->ev)) {
 			const char *name = libevdev_get_name(d->ev);
 
-			append(why, whylen, "%s (%s): not a keyboard", path, name ? name : "unnamed");
+			in_say(why, whylen, "%s (%s): not a keyboard", path, name ? name : "unnamed");
 			evdev_close(d);
 			continue;
 		}

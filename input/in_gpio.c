@@ -74,19 +74,6 @@ struct in_dev {
 	char text[512];              /* base and the coin counters */
 };
 
-__attribute__((format(printf, 3, 4)))
-static void say(char *buf, size_t len, const char *fmt, ...)
-{
-	size_t used = len ? strnlen(buf, len) : 0;
-	va_list ap;
-
-	if (used + 1 >= len)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(buf + used, len - used, fmt, ap);
-	va_end(ap);
-}
-
 /* ---- spec ------------------------------------------------------------ */
 
 static int parse_line(const char *t, size_t len, struct in_gpio_line *l)
@@ -150,12 +137,12 @@ static int parse_map(struct in_gpio_spec *s, char *t, char *why, size_t whylen)
 	int code = -1, coin = 0;
 
 	if (s->nin == IN_GPIO_MAX_LINES) {
-		say(why, whylen, "more than %d input lines", IN_GPIO_MAX_LINES);
+		in_say(why, whylen, "more than %d input lines", IN_GPIO_MAX_LINES);
 		return -EINVAL;
 	}
 	l = &s->in[s->nin];
 	if (!eq || parse_line(t, (size_t)(eq - t), l) < 0) {
-		say(why, whylen, "bad line '%s' (LINE=ROLE with LINE an offset or a name)", t);
+		in_say(why, whylen, "bad line '%s' (LINE=ROLE with LINE an offset or a name)", t);
 		return -EINVAL;
 	}
 	for (size_t i = 0; i < sizeof(gpio_roles) / sizeof(gpio_roles[0]); i++) {
@@ -167,14 +154,14 @@ static int parse_map(struct in_gpio_spec *s, char *t, char *why, size_t whylen)
 	if (code < 0)
 		code = in_key_from_name(eq + 1);
 	if (code < 0) {
-		say(why, whylen, "unknown role or key '%s'", eq + 1);
+		in_say(why, whylen, "unknown role or key '%s'", eq + 1);
 		return -EINVAL;
 	}
 	l->code = code;
 	l->coin = coin;
 	for (int i = 0; i < s->nin; i++) {
 		if (same_line(&s->in[i], l)) {
-			say(why, whylen, "line '%.*s' given twice", (int)(eq - t), t);
+			in_say(why, whylen, "line '%.*s' given twice", (int)(eq - t), t);
 			return -EINVAL;
 		}
 	}
@@ -244,7 +231,7 @@ static int parse_option(struct in_gpio_spec *s, char *t, char *why, size_t whyle
 		return 0;
 	*eq = '=';
 bad:
-	say(why, whylen, "bad option '%s'", t);
+	in_say(why, whylen, "bad option '%s'", t);
 	return -EINVAL;
 }
 
@@ -293,11 +280,11 @@ int in_gpio_parse_spec(const char *s, struct in_gpio_spec *out, char *why, size_
 	if (s && strncmp(s, "gpio:", 5) == 0)
 		s += 5;
 	if (!s || !*s) {
-		say(why, whylen, "a GPIO device needs a spec (gpio:CHIP:LINE=ROLE,...)");
+		in_say(why, whylen, "a GPIO device needs a spec (gpio:CHIP:LINE=ROLE,...)");
 		return -EINVAL;
 	}
 	if (strlen(s) >= sizeof(buf)) {
-		say(why, whylen, "GPIO spec longer than %zu bytes", sizeof(buf) - 1);
+		in_say(why, whylen, "GPIO spec longer than %zu bytes", sizeof(buf) - 1);
 		return -EINVAL;
 	}
 	strcpy(buf, s);
@@ -310,7 +297,7 @@ int in_gpio_parse_spec(const char *s, struct in_gpio_spec *out, char *why, size_
 	if (colon && (!eq || colon < eq)) {
 		*colon = '\0';
 		if (!*map || strlen(map) >= sizeof(out->chip)) {
-			say(why, whylen, "bad chip '%s'", map);
+			in_say(why, whylen, "bad chip '%s'", map);
 			return -EINVAL;
 		}
 		strcpy(out->chip, map);
@@ -322,11 +309,11 @@ int in_gpio_parse_spec(const char *s, struct in_gpio_spec *out, char *why, size_
 	if (rc < 0)
 		return rc;
 	if (out->nin == 0 && !line_set(&out->meter) && !line_set(&out->lamp_start)) {
-		say(why, whylen, "no lines in GPIO spec");
+		in_say(why, whylen, "no lines in GPIO spec");
 		return -EINVAL;
 	}
 	if (out->coin_min_ns > out->coin_max_ns) {
-		say(why, whylen, "coin_min_ms above coin_max_ms");
+		in_say(why, whylen, "coin_min_ms above coin_max_ms");
 		return -EINVAL;
 	}
 	for (int i = 0; i < out->nin + 2; i++) {
@@ -334,7 +321,7 @@ int in_gpio_parse_spec(const char *s, struct in_gpio_spec *out, char *why, size_
 					       : i == out->nin ? &out->meter : &out->lamp_start;
 
 		if (!out->chip[0] && l->offset >= 0) {
-			say(why, whylen, "line offset %d needs a chip (gpio:CHIP:...)", l->offset);
+			in_say(why, whylen, "line offset %d needs a chip (gpio:CHIP:...)", l->offset);
 			return -EINVAL;
 		}
 		if (i < out->nin && ((line_set(&out->meter) && same_line(l, &out->meter)) ||
@@ -345,7 +332,7 @@ int in_gpio_parse_spec(const char *s, struct in_gpio_spec *out, char *why, size_
 		goto twice;
 	return 0;
 twice:
-	say(why, whylen, "an output line is also used for something else");
+	in_say(why, whylen, "an output line is also used for something else");
 	return -EINVAL;
 }
 
@@ -388,7 +375,7 @@ static struct gpiod_line *find_line(struct in_dev *d, const struct in_gpio_line 
 	}
 	if (!line) {
 		line_text(l, name, sizeof(name));
-		say(why, whylen, "line %s: %s", name,
+		in_say(why, whylen, "line %s: %s", name,
 		    errno && errno != ENOENT ? strerror(errno) : "not found");
 	}
 	return line;
@@ -455,19 +442,19 @@ static int open_input(struct in_dev *d, int i, char *why, size_t whylen)
 						       input_flags(&d->spec)) < 0) {
 		int rc = -errno;
 
-		say(why, whylen, "line %s: edge events: %s", name, strerror(-rc));
+		in_say(why, whylen, "line %s: edge events: %s", name, strerror(-rc));
 		return rc;
 	}
 	g->fd = gpiod_line_event_get_fd(g->line);
 	if (g->fd < 0 || fcntl(g->fd, F_SETFL, fcntl(g->fd, F_GETFL) | O_NONBLOCK) < 0) {
-		say(why, whylen, "line %s: no event fd", name);
+		in_say(why, whylen, "line %s: no event fd", name);
 		return -EIO;
 	}
 	ev.data.u32 = (uint32_t)i;
 	if (epoll_ctl(d->epfd, EPOLL_CTL_ADD, g->fd, &ev) < 0) {
 		int rc = -errno;
 
-		say(why, whylen, "line %s: epoll: %s", name, strerror(-rc));
+		in_say(why, whylen, "line %s: epoll: %s", name, strerror(-rc));
 		return rc;
 	}
 	v = gpiod_line_get_value(g->line);
@@ -511,7 +498,7 @@ static int open_output(struct in_dev *d, const struct in_gpio_line *l, struct gp
 		/* not requested: release only what find_line took */
 		drop_line(o->line, o->found);
 		o->line = NULL;
-		say(why, whylen, "line %s: output: %s", name, strerror(-rc));
+		in_say(why, whylen, "line %s: output: %s", name, strerror(-rc));
 		return rc;
 	}
 	return 0;
@@ -529,16 +516,16 @@ static void describe_dev(struct in_dev *d)
 		const char *key = in_key_name(d->in[i].code);
 
 		line_text(&d->spec.in[i], name, sizeof(name));
-		say(d->base, sizeof(d->base), "%s %s=%s%s", i ? "," : "", name, key ? key : "?",
+		in_say(d->base, sizeof(d->base), "%s %s=%s%s", i ? "," : "", name, key ? key : "?",
 		    d->in[i].coin ? " (coin)" : "");
 	}
 	if (d->meter.line) {
 		line_text(&d->spec.meter, name, sizeof(name));
-		say(d->base, sizeof(d->base), "; meter %s", name);
+		in_say(d->base, sizeof(d->base), "; meter %s", name);
 	}
 	if (d->lamp.line) {
 		line_text(&d->spec.lamp_start, name, sizeof(name));
-		say(d->base, sizeof(d->base), "; start lamp %s", name);
+		in_say(d->base, sizeof(d->base), "; start lamp %s", name);
 	}
 }
 
@@ -566,7 +553,7 @@ static int gpio_open(const char *path, struct in_dev **out, char *why, size_t wh
 		d->chip = gpiod_chip_open_lookup(d->spec.chip);
 		if (!d->chip) {
 			rc = errno ? -errno : -ENODEV;
-			say(why, whylen, "%s: %s", d->spec.chip, strerror(-rc));
+			in_say(why, whylen, "%s: %s", d->spec.chip, strerror(-rc));
 			goto fail;
 		}
 	}
@@ -695,7 +682,7 @@ static const char *gpio_describe(struct in_dev *d)
 	}
 	snprintf(d->text, sizeof(d->text), "%s", d->base);
 	if (coins || rejected)
-		say(d->text, sizeof(d->text), " [coins %u, rejected pulses %u]", coins, rejected);
+		in_say(d->text, sizeof(d->text), " [coins %u, rejected pulses %u]", coins, rejected);
 	return d->text;
 }
 

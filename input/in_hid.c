@@ -10,7 +10,6 @@
 #include <limits.h>
 #include <pthread.h>
 #include <signal.h>
-#include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -74,19 +73,6 @@ static bool node_in_use(const char *node)
 		if (strcmp(o->node, node) == 0)
 			return true;
 	return false;
-}
-
-__attribute__((format(printf, 3, 4)))
-static void say(char *buf, size_t len, const char *fmt, ...)
-{
-	size_t used = len ? strnlen(buf, len) : 0;
-	va_list ap;
-
-	if (used + 1 >= len)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(buf + used, len - used, fmt, ap);
-	va_end(ap);
 }
 
 static int axis_usage(const char *v)
@@ -211,7 +197,7 @@ static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
 bad:
 	if (eq)
 		*eq = '=';
-	say(why, whylen, "bad term '%s' in HID device spec", t);
+	in_say(why, whylen, "bad term '%s' in HID device spec", t);
 	return -EINVAL;
 }
 
@@ -226,7 +212,7 @@ static int apply_terms(const char *s, struct in_hid_spec *out, char *why, size_t
 	if (strncmp(s, "hid", 3) == 0 && (s[3] == '\0' || s[3] == ':'))
 		s += s[3] ? 4 : 3;
 	if (strlen(s) >= sizeof(buf)) {
-		say(why, whylen, "HID device spec longer than %zu bytes", sizeof(buf) - 1);
+		in_say(why, whylen, "HID device spec longer than %zu bytes", sizeof(buf) - 1);
 		return -EINVAL;
 	}
 	strcpy(buf, s);
@@ -245,7 +231,7 @@ static int apply_terms(const char *s, struct in_hid_spec *out, char *why, size_t
 			return rc;
 	}
 	if (out->opts.release > out->opts.press) {
-		say(why, whylen, "release (%u) above press (%u)", out->opts.release,
+		in_say(why, whylen, "release (%u) above press (%u)", out->opts.release,
 		    out->opts.press);
 		return -EINVAL;
 	}
@@ -416,7 +402,7 @@ static int enumerate(struct in_hid_info **out, size_t *count)
 		append_wide(l[n].name, sizeof(l[n].name), e->manufacturer_string);
 		if (e->product_string && e->product_string[0]) {
 			if (l[n].name[0])
-				say(l[n].name, sizeof(l[n].name), " ");
+				in_say(l[n].name, sizeof(l[n].name), " ");
 			append_wide(l[n].name, sizeof(l[n].name), e->product_string);
 		}
 		append_wide(l[n].serial, sizeof(l[n].serial), e->serial_number);
@@ -548,17 +534,17 @@ static int open_one(struct in_dev *d, const struct in_hid_info *i, const struct 
 	int rc = in_hid_read_desc(HID_SYSFS, i->node, &raw, &len);
 
 	if (rc < 0) {
-		say(why, whylen, "%s: report descriptor: %s", i->node, strerror(-rc));
+		in_say(why, whylen, "%s: report descriptor: %s", i->node, strerror(-rc));
 		return rc;
 	}
 	rc = hidd_parse(raw, len, &d->desc, err, sizeof(err));
 	free(raw);
 	if (rc < 0) {
-		say(why, whylen, "%s: report descriptor refused: %s", i->node, err);
+		in_say(why, whylen, "%s: report descriptor refused: %s", i->node, err);
 		return rc;
 	}
 	if (need_game && !game_device(d->desc)) {
-		say(why, whylen, "%s (%04x:%04x): not a joystick or gamepad", i->node, i->vid,
+		in_say(why, whylen, "%s (%04x:%04x): not a joystick or gamepad", i->node, i->vid,
 		    i->pid);
 		rc = -ENODEV;
 		goto fail;
@@ -566,7 +552,7 @@ static int open_one(struct in_dev *d, const struct in_hid_info *i, const struct 
 	d->opts = s->opts;
 	rc = hidr_new(d->desc, &s->opts, &d->dec);
 	if (rc < 0) {
-		say(why, whylen, "%s: decoder: %s", i->node, strerror(-rc));
+		in_say(why, whylen, "%s: decoder: %s", i->node, strerror(-rc));
 		goto fail;
 	}
 	d->qcap = hidr_max_events(d->dec);
@@ -579,7 +565,7 @@ static int open_one(struct in_dev *d, const struct in_hid_info *i, const struct 
 	d->h = hid_open_path(i->node);
 	if (!d->h) {
 		rc = errno ? -errno : -EIO;
-		say(why, whylen, "%s: %s", i->node, strerror(-rc));
+		in_say(why, whylen, "%s: %s", i->node, strerror(-rc));
 		goto fail;
 	}
 	/* A slot holds the longest input report the descriptor declares, with
@@ -600,7 +586,7 @@ static int open_one(struct in_dev *d, const struct in_hid_info *i, const struct 
 	}
 	rc = hid_start_reader(d);
 	if (rc < 0) {
-		say(why, whylen, "%s: reader thread: %s", i->node, strerror(-rc));
+		in_say(why, whylen, "%s: reader thread: %s", i->node, strerror(-rc));
 		goto fail;
 	}
 	return 0;
@@ -640,7 +626,7 @@ static int hid_open_dev(const char *path, struct in_dev **out, char *why, size_t
 	pthread_mutex_init(&d->mu, NULL);
 	pthread_cond_init(&d->cv, NULL);
 	if (hid_users++ == 0 && hid_init() < 0) {
-		say(why, whylen, "hidapi: initialisation failed");
+		in_say(why, whylen, "hidapi: initialisation failed");
 		rc = -EIO;
 		goto fail;
 	}
@@ -652,10 +638,10 @@ static int hid_open_dev(const char *path, struct in_dev **out, char *why, size_t
 		if (!matches(&s, &l[k]))
 			continue;
 		if (any)
-			say(why, whylen, "; ");
+			in_say(why, whylen, "; ");
 		any = true;
 		if (node_in_use(l[k].node)) {
-			say(why, whylen, "%s: already open", l[k].node);
+			in_say(why, whylen, "%s: already open", l[k].node);
 			continue;
 		}
 		rc = open_one(d, &l[k], &s, need_game, why, whylen);
@@ -679,7 +665,7 @@ static int hid_open_dev(const char *path, struct in_dev **out, char *why, size_t
 		return 0;
 	}
 	if (!any)
-		say(why, whylen, "no HID device matches '%s' (%zu hidraw device(s) found)",
+		in_say(why, whylen, "no HID device matches '%s' (%zu hidraw device(s) found)",
 		    path ? path : "hid", n);
 	free(l);
 fail:
@@ -697,7 +683,7 @@ int in_hid_configure(struct in_dev *d, const char *terms, char *why, size_t whyl
 	if (whylen)
 		why[0] = '\0';
 	if (!d || d->magic != HID_MAGIC) {
-		say(why, whylen, "not a HID device");
+		in_say(why, whylen, "not a HID device");
 		return -EINVAL;
 	}
 	memset(&s, 0, sizeof(s));
@@ -707,12 +693,12 @@ int in_hid_configure(struct in_dev *d, const char *terms, char *why, size_t whyl
 	if (rc < 0)
 		return rc;
 	if (in_hid_spec_names_device(&s)) {
-		say(why, whylen, "'%s' names a device: only decoder options can be changed", terms);
+		in_say(why, whylen, "'%s' names a device: only decoder options can be changed", terms);
 		return -EINVAL;
 	}
 	rc = hidr_new(d->desc, &s.opts, &dec);
 	if (rc < 0) {
-		say(why, whylen, "decoder options refused");
+		in_say(why, whylen, "decoder options refused");
 		return rc;
 	}
 	q = calloc((size_t)hidr_max_events(dec), sizeof(*q));
@@ -815,13 +801,13 @@ int in_hid_list(struct in_hid_info **out, size_t *count)
 
 		rc = in_hid_read_desc(HID_SYSFS, l[i].node, &raw, &len);
 		if (rc < 0) {
-			say(l[i].why, sizeof(l[i].why), "report descriptor: %s", strerror(-rc));
+			in_say(l[i].why, sizeof(l[i].why), "report descriptor: %s", strerror(-rc));
 			continue;
 		}
 		rc = hidd_parse(raw, len, &d, err, sizeof(err));
 		free(raw);
 		if (rc < 0) {
-			say(l[i].why, sizeof(l[i].why), "report descriptor refused: %s", err);
+			in_say(l[i].why, sizeof(l[i].why), "report descriptor refused: %s", err);
 			continue;
 		}
 		need = hidd_describe(d, NULL, 0) + 1;
@@ -829,7 +815,7 @@ int in_hid_list(struct in_hid_info **out, size_t *count)
 		if (l[i].fields)
 			hidd_describe(d, l[i].fields, need);
 		else
-			say(l[i].why, sizeof(l[i].why), "out of memory");
+			in_say(l[i].why, sizeof(l[i].why), "out of memory");
 		hidd_free(d);
 	}
 	*out = l;
