@@ -469,17 +469,8 @@ pad_tap() { # gadget-side node, button, milliseconds held
 }
 phase_wizard() {
 	pid=$(prop MainPID)
-	if ! err=$(pad_gadget arcpad); then
-		fail wizard-first-boot "$err"
-		return
-	fi
-	hg=$(hidg_of arcpad)
-	t_w=$(now)
-	if ! err=$(joy_attach arcpad 0); then
-		fail wizard-first-boot "$err"
-		joy_unplug arcpad
-		return
-	fi
+	gadget_up pad_gadget arcpad wizard-first-boot || return
+	t_w=$t_plug
 	port=$(port_on 0)
 	joy "$hg" "$JOY_IDLE"
 	started() { log_since "$t_w" | grep -q 'input wizard: started (first boot)'; }
@@ -529,6 +520,23 @@ phase_wizard() {
 		[ "$fire" = 1 -a "$again" = 0 ]
 	joy_unplug arcpad
 }
+# Makes gadget $2 with $1 (joy_gadget or pad_gadget), plugs it into
+# dummy_udc.0 and waits until the daemon ($pid) has its hidraw node open.
+# Sets hg (the gadget-side node) and t_plug (when it was plugged); on
+# failure reports FAIL $3 with the reason, unplugs it and returns 1.
+gadget_up() {
+	if ! err=$($1 "$2"); then
+		fail "$3" "$err"
+		return 1
+	fi
+	hg=$(hidg_of "$2")
+	t_plug=$(now)
+	if ! err=$(joy_attach "$2" 0); then
+		fail "$3" "$err"
+		joy_unplug "$2"
+		return 1
+	fi
+}
 all_since() {
 	journalctl -o short-monotonic --no-pager -q |
 		sed -n 's/^\[ *\([0-9]*\.[0-9]*\)\] [^ ]* \(.*\)$/\1 \2/p' |
@@ -546,17 +554,8 @@ stage() {
 # counted (a start during play starts nothing), the stick turns the view.
 phase_hid() {
 	pid=$(prop MainPID)
-	if ! err=$(joy_gadget arcjoy); then
-		fail hid-joystick "$err"
-		return
-	fi
-	hg=$(hidg_of arcjoy)
-	t_hid=$(now)
-	if ! err=$(joy_attach arcjoy 0); then
-		fail hid-joystick "$err"
-		joy_unplug arcjoy
-		return
-	fi
+	gadget_up joy_gadget arcjoy hid-joystick || return
+	t_hid=$t_plug
 	node=$(hidraw_on 0)
 	port=$(port_on 0)
 	pass hid-joystick "DragonRise 0079:0006 gadget on dummy_hcd, port $port: the daemon has $node open $(sub "$t_hid" "$(now)") s after the plug"
@@ -710,17 +709,8 @@ phase_latency() {
 # --- the joystick unplugged with a button held, 20 times --------------------
 phase_hid_replug() {
 	pid=$(prop MainPID)
-	if ! err=$(joy_gadget arcjoy); then
-		fail hid-replug "$err"
-		return
-	fi
-	hg=$(hidg_of arcjoy)
-	t_rp=$(now)
-	if ! err=$(joy_attach arcjoy 0); then
-		fail hid-replug "$err"
-		joy_unplug arcjoy
-		return
-	fi
+	gadget_up joy_gadget arcjoy hid-replug || return
+	t_rp=$t_plug
 	port=$(port_on 0)
 	# Each cycle: the stick at rest (a direction needs it seen at rest),
 	# then fire and left held; 0.3 s later the plug is pulled.
