@@ -203,21 +203,12 @@ static void r_fallback_colours(struct r_ctx *r)
 
 const struct tex_pic *r_wall_pic(struct r_ctx *r, uint16_t num)
 {
-	const struct tex_set *t = r->tex;
-	const struct tex_pic *p;
-	int n = num;
+	int n = tex_wall_index(r->tex, num);
 
+	if (n > 0)
+		return &r->tex->textures[n];
 	if (n == 0)
 		return NULL;
-	if (t->tex_xlat && n < t->num_textures)
-		n = t->tex_xlat[n];
-	if (n <= 0 || n >= t->num_textures || !t->textures)
-		goto fallback;
-	p = &t->textures[n];
-	if (p->w <= 0 || p->h <= 0 || !p->px)
-		goto fallback;
-	return p;
-fallback:
 	r->st.missing++;
 	return &r->fb_pic;
 }

@@ -194,6 +194,23 @@ void tex_free(struct tex_set *t)
 	free(t);
 }
 
+int tex_wall_index(const struct tex_set *t, uint16_t num)
+{
+	const struct tex_pic *p;
+	int n = num;
+
+	if (n == 0)
+		return 0;
+	if (t->tex_xlat && n < t->num_textures)
+		n = t->tex_xlat[n];
+	if (n <= 0 || n >= t->num_textures || !t->textures)
+		return -1;
+	p = &t->textures[n];
+	if (p->w <= 0 || p->h <= 0 || !p->px)
+		return -1;
+	return n;
+}
+
 int tex_find(const struct tex_set *t, const char *name)
 {
 	char key[9];

@@ -119,6 +119,13 @@ int tex_find(const struct tex_set *t, const char *name);
 int tex_find_flat(const struct tex_set *t, const char *name);
 int tex_find_sprite(const struct tex_set *t, const char *name);
 
+/* The picture a wall shows for texture number num (a sidedef's), after
+ * the animation's translation: its index (> 0), 0 for "no texture" (num 0),
+ * or -1 when it cannot be drawn (out of range, empty or without pixels):
+ * the renderers then draw their fallback checker and count it missing.
+ * One rule for the software and the OSMesa renderer. */
+int tex_wall_index(const struct tex_set *t, uint16_t num);
+
 /* Sets sky_tex for map `map` by Doom's rule, when that texture exists:
  * ExMy -> SKYx; MAP01-11 -> SKY1, MAP12-20 -> SKY2, MAP21 on -> SKY3;
  * otherwise (and for other names) sky_tex stays as it is. */

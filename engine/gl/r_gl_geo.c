@@ -59,25 +59,11 @@ int rgl_light_base(int light)
 
 const struct tex_pic *rgl_wall_pic(const struct tex_set *t, uint16_t num, int *index, int *fb)
 {
-	const struct tex_pic *p;
-	int n = num;
+	int n = tex_wall_index(t, num);
 
-	*fb = 0;
-	*index = 0;
-	if (n == 0)
-		return NULL;
-	if (t->tex_xlat && n < t->num_textures)
-		n = t->tex_xlat[n];
-	if (n <= 0 || n >= t->num_textures || !t->textures)
-		goto fallback;
-	p = &t->textures[n];
-	if (p->w <= 0 || p->h <= 0 || !p->px)
-		goto fallback;
-	*index = n;
-	return p;
-fallback:
-	*fb = 1;
-	return NULL;
+	*fb = n < 0;
+	*index = n > 0 ? n : 0;
+	return n > 0 ? &t->textures[n] : NULL;
 }
 
 /* ---- subsector polygons ---------------------------------------------- */
