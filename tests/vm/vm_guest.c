@@ -428,26 +428,13 @@ static int cmd_waitdev(const char *pid, const char *name, const char *secs)
 	return 0;
 }
 
-static int cmd_waitfd(const char *pid, const char *path, const char *secs)
+/* waitfd (want 1) and waitnofd (want 0): polls until process pid has
+ * path open (or no longer), printing the seconds it took. */
+static int cmd_waitfd(const char *pid, const char *path, const char *secs, int want)
 {
 	double t0 = mono(), limit = atof(secs);
 
-	while (!holds(pid, path)) {
-		if (mono() - t0 > limit) {
-			printf("%.2f (timeout)\n", mono() - t0);
-			return 1;
-		}
-		sleep_ms(20);
-	}
-	printf("%.2f\n", mono() - t0);
-	return 0;
-}
-
-static int cmd_waitnofd(const char *pid, const char *path, const char *secs)
-{
-	double t0 = mono(), limit = atof(secs);
-
-	while (holds(pid, path)) {
+	while (holds(pid, path) != want) {
 		if (mono() - t0 > limit) {
 			printf("%.2f (timeout)\n", mono() - t0);
 			return 1;
@@ -882,11 +869,11 @@ int main(int argc, char **argv)
 	if (argc >= 5 && strcmp(argv[1], "probe") == 0)
 		return cmd_probe(argv[2], argv[3], argv + 4, argc - 4);
 	if (argc == 5 && strcmp(argv[1], "waitfd") == 0)
-		return cmd_waitfd(argv[2], argv[3], argv[4]);
+		return cmd_waitfd(argv[2], argv[3], argv[4], 1);
 	if (argc == 5 && strcmp(argv[1], "waitdev") == 0)
 		return cmd_waitdev(argv[2], argv[3], argv[4]);
 	if (argc == 5 && strcmp(argv[1], "waitnofd") == 0)
-		return cmd_waitnofd(argv[2], argv[3], argv[4]);
+		return cmd_waitfd(argv[2], argv[3], argv[4], 0);
 	if (argc == 4 && strcmp(argv[1], "hidwrite") == 0)
 		return cmd_hidwrite(argv[2], argv[3]);
 	if (argc == 5 && strcmp(argv[1], "hidsend") == 0)
