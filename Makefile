@@ -24,7 +24,8 @@ LDLIBS += $(PKG_LIBS) -lpthread -lm -ldl
 # Every .c of the layers is part of the library the daemon and tests link,
 # except engine/gl: the OSMesa renderer is a plugin (app/glr.h), built
 # position-independent and linked with OSMesa on its own.
-LIB_SRC := $(sort $(wildcard engine/*.c input/*.c display/*.c config/*.c systemd/*.c))
+ENGINE_DIRS := core map game render ui
+LIB_SRC := $(sort $(wildcard $(ENGINE_DIRS:%=engine/%/*.c) input/*.c display/*.c config/*.c systemd/*.c))
 GL_SRC := $(sort $(wildcard engine/gl/*.c))
 GL_OBJ := $(GL_SRC:%.c=$(BUILD)/pic/%.o)
 GL_SO := $(BUILD)/arcaded-gl.so
@@ -121,9 +122,9 @@ test-unit: $(TEST_BIN)
 
 check-tables: $(BUILD)/tools/gentab
 	@$(BUILD)/tools/gentab > $(BUILD)/tab_data.c.new
-	@cmp -s $(BUILD)/tab_data.c.new engine/tab_data.c || \
-		{ echo "engine/tab_data.c differs from tools/gentab output"; exit 1; }
-	@echo "check-tables: engine/tab_data.c matches tools/gentab"
+	@cmp -s $(BUILD)/tab_data.c.new engine/core/tab_data.c || \
+		{ echo "engine/core/tab_data.c differs from tools/gentab output"; exit 1; }
+	@echo "check-tables: engine/core/tab_data.c matches tools/gentab"
 
 check-layers:
 	@tests/check_layers.sh
@@ -144,7 +145,7 @@ docs-shots: $(BIN)
 	@scripts/docs-shots.sh $(BIN)
 	@scripts/game-shots.sh $(BIN)
 
-# engine/lvl_wad.c is exactly what tools/mklevels makes of levels/*.txt.
+# engine/map/lvl_wad.c is exactly what tools/mklevels makes of levels/*.txt.
 check-levels: $(BUILD)/tools/mklevels
 	@BUILD=$(BUILD) tests/check_levels.sh
 

@@ -11,7 +11,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "app/content.h"
+#include "app/ct.h"
 #include "config/cfg.h"
 
 struct app_opts {

@@ -8,7 +8,7 @@
 
 #include <stdint.h>
 
-#include "engine/sim.h"
+#include "engine/game/sim.h"
 #include "input/act.h"
 
 /* Turn speed while a turn action is held: 1/65536 turns per tick

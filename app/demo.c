@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "app/cmd.h"
-#include "app/content.h"
+#include "app/ct.h"
 #include "input/scr.h"
 
 /* The demo: into the hall, shooting, through the doorway and the yard. The

@@ -15,7 +15,7 @@
 
 #include <stdint.h>
 
-#include "engine/sim.h"
+#include "engine/game/sim.h"
 
 struct ct;
 

@@ -18,7 +18,7 @@
 
 #include <stddef.h>
 
-#include "engine/gl/r_gl.h"
+#include "engine/gl/rgl.h"
 
 #define GLR_FILE "arcaded-gl.so"
 

@@ -30,7 +30,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "engine/r_main.h"
+#include "engine/render/r_main.h"
 
 /* Polls before sleeping, between batches and while waiting for the last
  * job: a few tens of microseconds. */

@@ -1,6 +1,6 @@
 /*
  * pool: a persistent pool of worker threads that runs batches of jobs, for
- * the renderer's strips (engine/r_main.h struct r_par; the engine has no
+ * the renderer's strips (engine/render/r_main.h struct r_par; the engine has no
  * threads of its own).
  *
  * A pool of t threads is the caller plus t - 1 workers started once. A

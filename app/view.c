@@ -4,13 +4,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "app/content.h"
-#include "engine/g_game.h"
-#include "engine/hud.h"
-#include "engine/map.h"
-#include "engine/r_main.h"
-#include "engine/sim.h"
-#include "engine/tex.h"
+#include "app/ct.h"
+#include "engine/game/g_game.h"
+#include "engine/game/sim.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
+#include "engine/render/r_game.h"
+#include "engine/render/r_main.h"
+#include "engine/ui/hud.h"
 
 int view_init(struct view *v, const struct ct *ct, struct r_ctx *r, int rotate)
 {
@@ -19,8 +20,8 @@ int view_init(struct view *v, const struct ct *ct, struct r_ctx *r, int rotate)
 	v->r = r;
 	v->rotate = rotate;
 	for (int i = 0; i < ct->nmaps; i++)
-		if (G_SPRITES_MAX(ct->maps[i]) > v->spr_max)
-			v->spr_max = G_SPRITES_MAX(ct->maps[i]);
+		if (R_GAME_SPRITES_MAX(ct->maps[i]) > v->spr_max)
+			v->spr_max = R_GAME_SPRITES_MAX(ct->maps[i]);
 	v->spr = calloc((size_t)v->spr_max, sizeof(*v->spr));
 	return v->spr ? 0 : -ENOMEM;
 }
@@ -52,8 +53,8 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	/* Animated textures follow the game tick, so replays see the same. */
 	tex_animate(tex, s->tick);
 	if (hud_world(s)) {
-		int n = g_sprites(s, tex, v->spr, v->spr_max);
-		sim_view(s, &rv);
+		int n = r_game_sprites(s, tex, v->spr, v->spr_max);
+		r_game_view(s, &rv);
 		if (v->world)
 			v->world(v->world_ctx, s->map, tex, &rv, v->spr, n, f);
 		else

@@ -9,9 +9,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "engine/hud.h"
-#include "engine/r_main.h"
-#include "engine/v_video.h"
+#include "engine/render/r_main.h"
+#include "engine/ui/hud.h"
+#include "engine/ui/v_video.h"
 #include "input/act.h"
 
 enum { WIZ_P_STEPS, WIZ_P_SUMMARY, WIZ_P_END };

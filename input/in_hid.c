@@ -1,6 +1,6 @@
 /*
  * in_hid: the hidapi backend. Spec syntax, sysfs lookups and reading rules
- * are in in_hid.h; parsing and decoding are hid_desc.c and hid_dec.c.
+ * are in in_hid.h; parsing and decoding are hidd.c and hidr.c.
  */
 #include "input/in_hid.h"
 
@@ -21,7 +21,7 @@
 
 #include <hidapi.h>
 
-#include "input/hid_desc.h"
+#include "input/hidd.h"
 #include "input/in.h"
 
 #define HID_SYSFS "/sys"

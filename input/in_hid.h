@@ -15,7 +15,7 @@
  *   /dev/hidrawN     that node (also node=/dev/hidrawN)
  *   if=N             USB interface number (encoders with a keyboard and a
  *                    joystick interface)
- * and decoder options (input/hid_dec.h):
+ * and decoder options (input/hidr.h):
  *   split=auto|none|usage, deadzone=N, press=N, release=N (per mille),
  *   p2_button=N (first button of player 2), p2_x=AXIS, p2_y=AXIS (AXIS: x
  *   y z rx ry rz slider dial wheel).
@@ -35,7 +35,7 @@
  * dropped. A failed read (the device was unplugged) is -ENODEV once the
  * reports before it are delivered; close stops and joins the thread
  * (within 50 ms).
- * Codes: BTN_TRIGGER_HAPPY*, BTN_DPAD_*, KEY_* and ABS_* as hid_dec.h
+ * Codes: BTN_TRIGGER_HAPPY*, BTN_DPAD_*, KEY_* and ABS_* as hidr.h
  * says.
  *
  * The report descriptor comes from sysfs, SYSFS/class/hidraw/hidrawN/
@@ -51,7 +51,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "input/hid_dec.h"
+#include "input/hidr.h"
 
 struct in_hid_spec {
 	int vid, pid;            /* -1: any */

@@ -1,6 +1,6 @@
 /*
  * in_tty: keys typed in a terminal (the terminal preview's input). The
- * bytes are decoded by ttyk (in_ttykeys.h), which also synthesizes the
+ * bytes are decoded by ttyk (ttyk.h), which also synthesizes the
  * releases a terminal never sends.
  *
  * Terminal modes belong to the display (dp_term puts the terminal in raw
@@ -20,7 +20,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "input/in_ttykeys.h"
+#include "input/ttyk.h"
 
 struct in_dev {
 	int fd;

@@ -16,7 +16,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "engine/hash.h"
+#include "engine/core/hash.h"
 
 static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 

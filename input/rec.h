@@ -27,9 +27,9 @@
  *  52  4  REC_HAS_SNAPSHOT: the snapshot's length in bytes; else reserved 0
  *  56  8  map name, NUL-padded ("MAP01"; empty for a built-in level)
  *  64  8  start time, seconds since 1970 (0: unknown; never read by replay)
- *  72  8  REC_HAS_SNAPSHOT: FNV-1a (engine/hash.h, from HASH_INIT) of the
+ *  72  8  REC_HAS_SNAPSHOT: FNV-1a (engine/core/hash.h, from HASH_INIT) of the
  *        snapshot's bytes; else reserved 0
- *  80  ... REC_HAS_SNAPSHOT: the snapshot (sim_snapshot, engine/sim.h): the
+ *  80  ... REC_HAS_SNAPSHOT: the snapshot (sim_snapshot, engine/game/sim.h): the
  *        sim state before the first record's tick, which a replay restores
  *        (sim_init_stages, then sim_restore) instead of starting from
  *        sim_init. The header size is 80 + its length.
@@ -58,13 +58,13 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "engine/sim.h"
+#include "engine/game/sim.h"
 
 #define REC_VERSION 1               /* commands only (see REC_VERSION_2) */
 #define REC_VERSION_2 2             /* run description and per-tick hashes */
 #define REC_VERSION_MAX 2           /* newest version this build reads */
 #define REC_ENGINE_VERSION 2         /* 2: the game: enemies, stages, modes, menu */
-/* Bumped whenever the renderer draws any frame differently (engine/r_*.c,
+/* Bumped whenever the renderer draws any frame differently (engine/render/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */
 #define REC_RENDER_VERSION 4

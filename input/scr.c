@@ -15,13 +15,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "engine/sim.h"
+#include "engine/game/sim.h"
 #include "input/act.h"
 
 #define SCR_FILE_MAX (1 << 20)
 #define SCR_PATH_MAX 4096
 
-/* The fields are the sim's named values (sim_field_*, engine/g_field.c):
+/* The fields are the sim's named values (sim_field_*, engine/game/sim_field.c):
  * the first nine are SCR_F_X .. SCR_F_MODE in that order. */
 _Static_assert(SCR_F_MODE == 8, "scr_field follows the sim's field order");
 

@@ -10,7 +10,7 @@
  *   TICK snapshot              print the frame hash of TICK
  *   TICK screenshot FILE       write TICK's frame as PNG
  *   TICK end                   stop after TICK
- * FIELD: the sim's named values (sim_field_*, engine/g_field.c; listed in
+ * FIELD: the sim's named values (sim_field_*, engine/game/sim_field.c; listed in
  * docs/game.md): x y z (map units, decimals allowed), angle (degrees,
  * integer), sector, credits, coins, tick, mode (attract|play|gameover|
  * initials|service), and the game's: score, lives, health, ammo, stage,

@@ -56,7 +56,7 @@ $CC $CFL -o "$tmp/chart" tests/bench/chart.c "$B/libarcaded.a" $LIBS
 $CC $CFL -o "$tmp/demo" tests/bench/demo.c
 $CC $CFL -o "$tmp/runstat" tests/bench/runstat.c
 gl=0
-if [ -f engine/gl/r_gl.h ] && pkg-config --exists osmesa &&
+if [ -f engine/gl/rgl.h ] && pkg-config --exists osmesa &&
 	$CC $CFL -DRBENCH_GL -o "$tmp/rbench-gl" tests/bench/rbench.c engine/gl/*.c \
 		"$B/libarcaded.a" $LIBS $(pkg-config --libs osmesa) 2>"$tmp/gl.err"; then
 	gl=1

@@ -1,48 +1,172 @@
 #!/bin/sh
-# Proves the layering rules of STYLE.md on the sources:
-# - engine/ includes only C standard headers and its own headers;
-# - engine/ has no floating point and no mutable file-scope state
-#   (checked on the compiled objects: no .data/.bss symbols);
-# - engine/gl/ (the OSMesa renderer, docs/crosscheck.md) is outside the two
-#   rules above (the globs are engine/*): it has floating point and is the
-#   only code that includes OSMesa or GL headers, in engine/gl/r_gl.c alone;
+# Proves the layering rules of STYLE.md and engine/README.md on the sources
+# and the compiled objects:
+# - engine/ is folders by subsystem, and calls and includes go one way
+#   between them: core < map < game < render < ui, and gl (the OSMesa
+#   plugin) above render beside ui. A folder may use its own and the ones
+#   below it, never one above or a sibling. Checked twice: on the
+#   `#include "engine/..."` lines, and on the compiled objects (each
+#   undefined symbol of an object that another engine object defines must
+#   be defined in an allowed folder);
+# - inside every engine folder but render (whose stages call each other in
+#   a loop, as Doom's do), the modules call each other one way: the call
+#   graph between object files has no cycle (tsort finds one);
+# - engine/ includes only C standard headers and its own headers, has no
+#   floating point and no mutable file-scope state (no .data/.bss symbols
+#   in the objects); engine/gl/ is exempt from these three: it is the only
+#   code with floating point and with OSMesa or GL headers (in rgl.c);
 # - outside engine/, only backend files include Linux or device-library
-#   headers.
+#   headers;
+# - every exported symbol of shipped code starts with its file's prefix
+#   (the name up to the first '_': in_evdev.c exports in_*, hidr.c hidr_*).
+# BUILD (default build) names the build whose objects are checked.
 set -u
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
+# The objects of the sources that exist now (a build folder may hold stale
+# ones of renamed files): objs_of FOLDER [PREFIX].
+objs_of() {
+	for c in "$1"/*.c; do
+		[ -f "$c" ] || continue
+		o="$BUILD/${2:-}${c%.c}.o"
+		[ -f "$o" ] && echo "$o"
+	done
+}
 fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
 
-bad=$(grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*<' engine/*.c engine/*.h |
-	grep -vE '<(stdint|stddef|stdlib|string|errno|limits|stdbool|assert)\.h>' || true)
-if [ -n "$bad" ]; then
-	echo "FAIL engine includes a non-standard header:"; echo "$bad"; fail=1
+DIRS="core map game render ui"
+# Folders each folder may use (itself included).
+allowed() {
+	case $1 in
+	core) echo "core" ;;
+	map) echo "core map" ;;
+	game) echo "core map game" ;;
+	render) echo "core map game render" ;;
+	ui) echo "core map game render ui" ;;
+	gl) echo "core map game render gl" ;;
+	*) echo "" ;;
+	esac
+}
+may_use() { # $1 folder, $2 folder used
+	for a in $(allowed "$1"); do [ "$a" = "$2" ] && return 0; done
+	return 1
+}
+
+# ---- the folders ------------------------------------------------------
+stray=$(ls engine/*.c engine/*.h 2>/dev/null)
+if [ -n "$stray" ]; then
+	echo "FAIL files directly in engine/ (put them in a subsystem folder):"; echo "$stray"; fail=1
 fi
-bad=$(grep -nwE 'float|double|long double' engine/*.c engine/*.h || true)
-if [ -n "$bad" ]; then
-	echo "FAIL engine uses floating point:"; echo "$bad"; fail=1
-fi
-objs=$(ls "$BUILD"/engine/*.o 2>/dev/null)
-if [ -z "$objs" ]; then
+for d in $DIRS gl; do
+	if [ ! -f "engine/$d/README.md" ]; then
+		echo "FAIL engine/$d has no README.md"; fail=1
+	fi
+done
+
+# ---- includes between folders -----------------------------------------
+for d in $DIRS gl; do
+	for f in engine/"$d"/*.c engine/"$d"/*.h; do
+		[ -f "$f" ] || continue
+		grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*"engine/' "$f" |
+			sed -E 's#^([0-9]+):.*"engine/([a-z]+)/.*#\1 \2#' > "$tmp/inc"
+		while read -r line used; do
+			if ! may_use "$d" "$used"; then
+				echo "FAIL $f:$line includes engine/$used/ (engine/$d may use: $(allowed "$d"))"
+				fail=1
+			fi
+		done < "$tmp/inc"
+	done
+done
+
+# ---- calls between folders and modules (objects) ----------------------
+objs=""
+for d in $DIRS; do
+	objs="$objs $(objs_of engine/"$d" | tr '\n' ' ')"
+done
+if [ -z "$(echo "$objs" | tr -d ' ')" ]; then
 	echo "FAIL no engine objects in $BUILD (build first)"; fail=1
 else
-	bad=$(nm "$BUILD"/engine/*.o | grep -E ' [bBdD] ' || true)
+	# defined symbols: "symbol folder module"
+	for o in $objs; do
+		d=$(basename "$(dirname "$o")"); m=$(basename "$o" .o)
+		nm -g --defined-only "$o" | awk -v d="$d" -v m="$m" 'NF == 3 { print $3, d, m }'
+	done > "$tmp/defs"
+	glo=$(objs_of engine/gl pic/ | tr '\n' ' ')
+	for o in $objs $glo; do
+		d=$(basename "$(dirname "$o")"); m=$(basename "$o" .o)
+		nm -u "$o" | awk -v d="$d" -v m="$m" '{ print $NF, d, m }'
+	done > "$tmp/uses"
+	# "caller-folder caller-module callee-folder callee-module symbol"
+	awk 'NR == FNR { df[$1] = $2; dm[$1] = $3; next }
+	     ($1 in df) && dm[$1] != $3 { print $2, $3, df[$1], dm[$1], $1 }' \
+		"$tmp/defs" "$tmp/uses" > "$tmp/calls"
+	while read -r cd cm ed em sym; do
+		if ! may_use "$cd" "$ed"; then
+			echo "FAIL engine/$cd/$cm calls $sym of engine/$ed/$em (engine/$cd may use: $(allowed "$cd"))"
+			fail=1
+		fi
+	done < "$tmp/calls"
+	for d in core map game ui; do
+		awk -v d="$d" '$1 == d && $3 == d { print $2, $4 }' "$tmp/calls" | sort -u > "$tmp/edges-$d"
+		if ! tsort "$tmp/edges-$d" > /dev/null 2> "$tmp/loop-$d"; then
+			echo "FAIL modules of engine/$d call each other in a loop:"
+			grep -v 'input contains a loop' "$tmp/loop-$d" | sed 's/^tsort: /  /'
+			fail=1
+		fi
+	done
+	bad=$(nm $objs | grep -E ' [bBdD] ' || true)
 	if [ -n "$bad" ]; then
 		echo "FAIL engine has mutable file-scope state:"; echo "$bad"; fail=1
 	fi
 fi
-bad=$(grep -rlE '#[[:space:]]*include[[:space:]]*<(GL|EGL)/' app config display engine input \
-	systemd tests tools 2>/dev/null | grep -vx 'engine/gl/r_gl.c' || true)
+
+# ---- portable C -------------------------------------------------------
+src=""
+for d in $DIRS; do src="$src $(ls engine/"$d"/*.c engine/"$d"/*.h 2>/dev/null | tr '\n' ' ')"; done
+# shellcheck disable=SC2086
+bad=$(grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*<' $src |
+	grep -vE '<(stdint|stddef|stdlib|string|errno|limits|stdbool|assert)\.h>' || true)
 if [ -n "$bad" ]; then
-	echo "FAIL OSMesa/GL headers outside engine/gl/r_gl.c:"; echo "$bad"; fail=1
+	echo "FAIL engine includes a non-standard header:"; echo "$bad"; fail=1
 fi
-# Backends (one file each) are the only users of kernel and device headers.
-allowed='^(display/dp_fbdev\.c|display/dp_term\.c|input/in_evdev\.c|input/in_tty\.c|input/in_ttykeys\.c|input/in_keys\.c|input/hid_dec\.c|input/in_hid\.c|input/in_gpio\.c|systemd/svc\.c)$'
+# shellcheck disable=SC2086
+bad=$(grep -nwE 'float|double|long double' $src || true)
+if [ -n "$bad" ]; then
+	echo "FAIL engine uses floating point:"; echo "$bad"; fail=1
+fi
+bad=$(grep -rlE '#[[:space:]]*include[[:space:]]*<(GL|EGL)/' app config display engine input \
+	systemd tests tools 2>/dev/null | grep -vx 'engine/gl/rgl.c' || true)
+if [ -n "$bad" ]; then
+	echo "FAIL OSMesa/GL headers outside engine/gl/rgl.c:"; echo "$bad"; fail=1
+fi
+
+# ---- platform headers only in backends --------------------------------
+allowed_platform='^(display/dp_fbdev\.c|display/dp_term\.c|input/in_evdev\.c|input/in_tty\.c|input/ttyk\.c|input/in_keys\.c|input/hidr\.c|input/in_hid\.c|input/in_gpio\.c|systemd/svc\.c)$'
 for f in $(grep -lE '#[[:space:]]*include[[:space:]]*<(linux/|sys/ioctl|sys/kd|termios|libevdev|systemd/|hidapi|gpiod)' \
 	app/*.c app/*.h input/*.c input/*.h display/*.c display/*.h config/*.c config/*.h 2>/dev/null); do
-	if ! echo "$f" | grep -qE "$allowed"; then
+	if ! echo "$f" | grep -qE "$allowed_platform"; then
 		echo "FAIL $f includes a platform header but is not a backend"; fail=1
 	fi
 done
-[ "$fail" -eq 0 ] && echo "check-layers: engine is portable and state-free; platform headers only in backends"
+
+# ---- exported names match their files ----------------------------------
+shipped=""
+for d in $DIRS; do shipped="$shipped $(objs_of engine/"$d" | tr '\n' ' ')"; done
+shipped="$shipped $(objs_of engine/gl pic/ | tr '\n' ' ')"
+for d in app input display config systemd; do
+	shipped="$shipped $(objs_of "$d" | tr '\n' ' ')"
+done
+for o in $shipped; do
+	pre=$(basename "$o" .o | sed 's/_.*//')
+	nm -g --defined-only "$o" | awk -v p="$pre" -v f="$o" 'NF == 3 {
+		s = $3; sub(/_.*/, "", s)
+		if (s != p) printf "FAIL %s exports %s (prefix %s_ expected)\n", f, $3, p }'
+done > "$tmp/names"
+if [ -s "$tmp/names" ]; then
+	cat "$tmp/names"; fail=1
+fi
+
+[ "$fail" -eq 0 ] && echo "check-layers: engine folders call one way (core < map < game < render < ui, gl), no module loops outside the renderer; engine is portable and state-free; platform headers only in backends; exported names match their files"
 exit "$fail"

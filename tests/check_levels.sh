@@ -1,5 +1,5 @@
 #!/bin/sh
-# The built-in levels' compiled-in PWAD (engine/lvl_wad.c) is exactly what
+# The built-in levels' compiled-in PWAD (engine/map/lvl_wad.c) is exactly what
 # tools/mklevels makes of levels/arena*.txt (docs/maps.md, "The built-in
 # levels"). Needs $BUILD/tools/mklevels (make tools).
 set -u
@@ -11,9 +11,9 @@ if [ ! -x "$gen" ]; then
 	exit 1
 fi
 "$gen" levels/arena*.txt > "$BUILD/lvl_wad.c.new" || exit 1
-if ! cmp -s "$BUILD/lvl_wad.c.new" engine/lvl_wad.c; then
-	echo "FAIL engine/lvl_wad.c differs from what tools/mklevels makes of levels/arena*.txt;"
-	echo "     regenerate: $gen levels/arena*.txt > engine/lvl_wad.c"
+if ! cmp -s "$BUILD/lvl_wad.c.new" engine/map/lvl_wad.c; then
+	echo "FAIL engine/map/lvl_wad.c differs from what tools/mklevels makes of levels/arena*.txt;"
+	echo "     regenerate: $gen levels/arena*.txt > engine/map/lvl_wad.c"
 	exit 1
 fi
-echo "check-levels: engine/lvl_wad.c matches tools/mklevels levels/arena*.txt"
+echo "check-levels: engine/map/lvl_wad.c matches tools/mklevels levels/arena*.txt"

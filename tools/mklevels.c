@@ -2,10 +2,10 @@
  * mklevels: the built-in levels' generator. Reads level descriptions
  * (levels/arena*.txt; the syntax is in docs/maps.md, "The built-in
  * levels"), writes them as one PWAD in Doom's format and prints that
- * PWAD as C source for engine/lvl_wad.c, which the engine loads through
- * its own WAD and map loaders (engine/lvl_builtin.c):
+ * PWAD as C source for engine/map/lvl_wad.c, which the engine loads through
+ * its own WAD and map loaders (engine/map/lvl_builtin.c):
  *
- *   mklevels [--wad OUT.wad] levels/arena1.txt levels/arena2.txt ... > engine/lvl_wad.c
+ *   mklevels [--wad OUT.wad] levels/arena1.txt levels/arena2.txt ... > engine/map/lvl_wad.c
  *
  * --wad also writes the PWAD itself (to look at with WAD tools or an
  * editor; its texture names are the built-in set's, which Freedoom lacks).
@@ -471,7 +471,7 @@ static void ml_c(const struct ml_out *o, char **files, int nfiles)
 	for (int i = 0; i < nfiles; i++)
 		printf(" %s", files[i]);
 	printf(";\n * do not edit: change the text and regenerate (docs/maps.md).\n */\n"
-	       "#include \"engine/lvl_wad.h\"\n\nconst uint8_t lvl_wad[%zu] = {", o->n);
+	       "#include \"engine/map/lvl_wad.h\"\n\nconst uint8_t lvl_wad[%zu] = {", o->n);
 	for (size_t i = 0; i < o->n; i++)
 		printf("%s%u,", i % 20 ? " " : "\n\t", o->d[i]);
 	printf("\n};\n\nconst size_t lvl_wad_len = sizeof(lvl_wad);\n");
@@ -489,7 +489,7 @@ int main(int argc, char **argv)
 		first = 3;
 	}
 	if (first >= argc || argv[first][0] == '-') {
-		fprintf(stderr, "usage: mklevels [--wad OUT.wad] LEVEL.txt... > engine/lvl_wad.c\n");
+		fprintf(stderr, "usage: mklevels [--wad OUT.wad] LEVEL.txt... > engine/map/lvl_wad.c\n");
 		return 2;
 	}
 	for (int i = first; i < argc; i++)

@@ -16,8 +16,8 @@
 #include <string.h>
 
 #include "display/shot.h"
-#include "engine/r_main.h"
-#include "engine/v_video.h"
+#include "engine/render/r_main.h"
+#include "engine/ui/v_video.h"
 
 #define MAXS 24
 #define MAXZ 8

@@ -14,7 +14,7 @@
  *
  *   rbench --rec walk.rec --level 1 --size 1280x720 --threads 2
  *
- * --renderer gl draws the world with the OSMesa renderer (engine/gl/r_gl.h)
+ * --renderer gl draws the world with the OSMesa renderer (engine/gl/rgl.h)
  * instead, HUD and present alike; built in only when compiled with
  * -DRBENCH_GL and the files of engine/gl/ (tests/bench.sh does when OSMesa
  * is there).
@@ -37,20 +37,21 @@
 #include <sys/resource.h>
 #include <time.h>
 
-#include "app/content.h"
+#include "app/ct.h"
 #include "app/pool.h"
 #include "app/view.h"
 #include "display/px.h"
 #include "display/shot.h"
-#include "engine/g_game.h"
-#include "engine/hud.h"
-#include "engine/map.h"
-#include "engine/r_main.h"
-#include "engine/sim.h"
-#include "engine/tex.h"
+#include "engine/game/g_game.h"
+#include "engine/game/sim.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
+#include "engine/render/r_game.h"
+#include "engine/render/r_main.h"
+#include "engine/ui/hud.h"
 #include "input/rec.h"
 #ifdef RBENCH_GL
-#include "engine/gl/r_gl.h"
+#include "engine/gl/rgl.h"
 
 /* view_draw (app/view.c) with the OSMesa renderer for the world. */
 static void draw_gl(struct rgl_ctx *g, struct view *v, const struct sim *s, struct r_frame *f)
@@ -61,9 +62,9 @@ static void draw_gl(struct rgl_ctx *g, struct view *v, const struct sim *s, stru
 
 	tex_animate(tex, s->tick);
 	if (hud_world(s)) {
-		int n = g_sprites(s, tex, v->spr, v->spr_max);
+		int n = r_game_sprites(s, tex, v->spr, v->spr_max);
 
-		sim_view(s, &rv);
+		r_game_view(s, &rv);
 		rgl_render(g, s->map, tex, &rv, v->spr, n, f);
 	}
 	hud_draw(s, &env, f);

@@ -21,7 +21,7 @@ rm -rf "$out/diff"
 $CC -I. -D_GNU_SOURCE -std=c11 -O2 -g -Wall -Wextra -Werror -Wshadow -Wvla \
 	-Wstrict-prototypes -Wmissing-prototypes -fno-strict-aliasing \
 	$(pkg-config --cflags osmesa libpng) -o "$out/xcheck" tests/crosscheck/xcheck.c \
-	engine/gl/r_gl.c engine/gl/r_gl_geo.c "$BUILD/libarcaded.a" \
+	engine/gl/rgl.c engine/gl/rgl_geo.c "$BUILD/libarcaded.a" \
 	$(pkg-config --libs osmesa libpng) -lm -lpthread
 if [ $# -gt 0 ]; then
 	exec "$out/xcheck" --diff "$out/diff" "$@"

@@ -1,6 +1,6 @@
 /*
  * xcheck: renders maps from seeded viewpoints with both renderers, the
- * software one (engine/r_main.h) and the OSMesa one (engine/gl/r_gl.h), in
+ * software one (engine/render/r_main.h) and the OSMesa one (engine/gl/rgl.h), in
  * surface-id mode, and prints per view and per map how many pixels show
  * the same surface. Views below the threshold fail the run and get a
  * difference image: software frame | OSMesa frame | the software frame
@@ -37,18 +37,20 @@
 #include <sys/stat.h>
 #include <time.h>
 
-#include "app/content.h"
+#include "app/ct.h"
 #include "display/shot.h"
-#include "engine/gl/r_gl.h"
-#include "engine/grid.h"
-#include "engine/map.h"
-#include "engine/map_wad.h"
-#include "engine/pal.h"
-#include "engine/r_id.h"
-#include "engine/r_main.h"
-#include "engine/tex.h"
-#include "engine/th.h"
-#include "engine/wad.h"
+#include "engine/core/pal.h"
+#include "engine/gl/rgl.h"
+#include "engine/map/grid.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
+#include "engine/map/map_wad.h"
+#include "engine/map/tex.h"
+#include "engine/map/th.h"
+#include "engine/map/wad.h"
+#include "engine/render/r_game.h"
+#include "engine/render/r_id.h"
+#include "engine/render/r_main.h"
 
 #define XC_MAX_SETS 16
 #define XC_MAX_MAPS 64
@@ -103,7 +105,7 @@ static uint64_t xc_rand(uint64_t *s)
 	return z ^ (z >> 31);
 }
 
-/* The file at path, or NULL (ct_read_file, app/content.h). */
+/* The file at path, or NULL (ct_read_file, app/ct.h). */
 static uint8_t *slurp(const char *path, size_t *len)
 {
 	uint8_t *d = NULL;
@@ -284,7 +286,7 @@ static double xc_map(struct xc_run *x, const struct map *m, const struct tex_set
 	}
 	for (const char *c = name; *c; c++)
 		rng = (rng ^ (uint8_t)*c) * 0x100000001b3ull;
-	nspr = o->sprites ? th_sprites(m, t, spr) : 0;
+	nspr = o->sprites ? r_map_sprites(m, t, spr) : 0;
 	for (int k = 0; k < o->views; k++) {
 		struct r_view v;
 		long same = 0, csame = 0;
@@ -378,7 +380,7 @@ static void xc_set_end(struct xc_run *x, const char *what, int nmaps)
 static int xc_builtin(struct xc_run *x)
 {
 	struct tex_set *t;
-	int n = map_builtin_count();
+	int n = lvl_builtin_count();
 
 	if (r_pal_set_new(&t) < 0)
 		return -ENOMEM;
@@ -387,7 +389,7 @@ static int xc_builtin(struct xc_run *x)
 		struct map *m;
 		char name[64];
 
-		if (map_builtin(i, &m) < 0) {
+		if (lvl_builtin(i, &m) < 0) {
 			r_pal_set_free(t);
 			return -ENOMEM;
 		}

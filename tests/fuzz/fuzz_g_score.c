@@ -1,11 +1,11 @@
 /* libFuzzer target: the state-file decoders of the high-score table and
- * the bookkeeping (engine/g_score.c). Any bytes decode or are refused; a
+ * the bookkeeping (engine/game/g_score.c). Any bytes decode or are refused; a
  * decoded table re-encodes to exactly the same bytes and is sorted. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine/g_game.h"
+#include "engine/game/g_game.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t len);
 

@@ -1,4 +1,4 @@
-/* libFuzzer target: the grid map parser (engine/grid.c). Any bytes must
+/* libFuzzer target: the grid map parser (engine/map/grid.c). Any bytes must
  * import or fail with a message; an imported map must be finished (a BSP
  * whose point location works) with exactly one player start, and its
  * light maps must build. */
@@ -6,9 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine/grid.h"
-#include "engine/lmap.h"
-#include "engine/map.h"
+#include "engine/map/grid.h"
+#include "engine/map/lmap.h"
+#include "engine/map/map.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t len);
 

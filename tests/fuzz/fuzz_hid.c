@@ -1,5 +1,5 @@
 /* libFuzzer target: the HID report descriptor parser and the report
- * decoder (input/hid_desc.c, input/hid_dec.c).
+ * decoder (input/hidd.c, input/hidr.c).
  *
  * Input: 2 bytes little-endian descriptor length L, L descriptor bytes,
  * then reports, each one length byte and that many bytes. Whatever the
@@ -10,8 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "input/hid_dec.h"
-#include "input/hid_desc.h"
+#include "input/hidd.h"
+#include "input/hidr.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t len);
 

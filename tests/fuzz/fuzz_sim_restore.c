@@ -1,4 +1,4 @@
-/* libFuzzer target: sim_restore (engine/sim_hash.c), which reads the start
+/* libFuzzer target: sim_restore (engine/game/sim_hash.c), which reads the start
  * snapshot a recording carries: outside bytes that become the whole sim
  * state. Random bytes almost never pass the stages hash at the front, so
  * the input is a list of changes to a real snapshot (the built-in stages,
@@ -11,8 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine/map.h"
-#include "engine/sim.h"
+#include "engine/game/sim.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
 #include "input/rec.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t len);
@@ -32,9 +33,9 @@ static void fz_setup(void)
 	struct sim_cmd go = { .forward = 100, .turn = 90 };
 	struct sim s;
 
-	nmaps = map_builtin_count();
+	nmaps = lvl_builtin_count();
 	for (int i = 0; i < nmaps; i++)
-		if (map_builtin(i, &maps[i]) < 0)
+		if (lvl_builtin(i, &maps[i]) < 0)
 			abort();
 	sim_init_stages(&s, (const struct map *const *)maps, nmaps, &set, NULL, NULL);
 	sim_tick(&s, &coin);

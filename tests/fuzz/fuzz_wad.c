@@ -1,5 +1,5 @@
 /* libFuzzer target: the WAD reader, the texture loader and the map loader
- * (engine/wad.c, tex*.c, map_wad.c). Any bytes are added as a WAD; if they
+ * (engine/map/wad.c, tex*.c, map_wad.c). Any bytes are added as a WAD; if they
  * load, their textures load (or the built-in set stands in) and every map
  * they list loads or fails with a message. A loaded map must be finished:
  * point location from a few points ends in a subsector of a valid sector,
@@ -8,10 +8,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine/map.h"
-#include "engine/map_wad.h"
-#include "engine/tex.h"
-#include "engine/wad.h"
+#include "engine/map/map.h"
+#include "engine/map/map_wad.h"
+#include "engine/map/tex.h"
+#include "engine/map/wad.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t len);
 

@@ -26,18 +26,20 @@
 #include <string.h>
 #include <time.h>
 
+#include "app/ct.h"
 #include "display/shot.h"
-#include "app/content.h"
-#include "engine/map.h"
-#include "engine/map_wad.h"
-#include "engine/r_main.h"
-#include "engine/tex.h"
-#include "engine/th.h"
-#include "engine/wad.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
+#include "engine/map/map_wad.h"
+#include "engine/map/tex.h"
+#include "engine/map/th.h"
+#include "engine/map/wad.h"
+#include "engine/render/r_game.h"
+#include "engine/render/r_main.h"
 
 #define MAX_WADS 8
 
-/* The file at path, or NULL (ct_read_file, app/content.h). */
+/* The file at path, or NULL (ct_read_file, app/ct.h). */
 static uint8_t *slurp(const char *path, size_t *len)
 {
 	uint8_t *d = NULL;
@@ -100,7 +102,7 @@ int main(int argc, char **argv)
 	}
 	if (builtin > 0) {
 		wd = NULL;
-		if (map_builtin(builtin - 1, &m) < 0 || tex_builtin(&t) < 0)
+		if (lvl_builtin(builtin - 1, &m) < 0 || tex_builtin(&t) < 0)
 			return 1;
 		mapname = "built-in";
 		goto loaded;
@@ -123,7 +125,7 @@ int main(int argc, char **argv)
 	}
 loaded:
 	spr = calloc(m->num_things + 1, sizeof(*spr));
-	nspr = sprites ? th_sprites(m, t, spr) : 0;
+	nspr = sprites ? r_map_sprites(m, t, spr) : 0;
 	for (uint32_t i = 0; i < m->num_things; i++)
 		if (m->things[i].type == 1) {
 			v.x = m->things[i].x;

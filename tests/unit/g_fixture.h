@@ -9,7 +9,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "engine/map.h"
+#include "engine/map/map.h"
 
 struct gf_thing {
 	int x, y;

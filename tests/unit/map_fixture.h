@@ -8,7 +8,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "engine/map.h"
+#include "engine/map/map.h"
 
 struct fix_sector {
 	int floor, ceil, light;

@@ -13,9 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "engine/map.h"
-#include "engine/pal.h"
-#include "engine/tex.h"
+#include "engine/core/pal.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
 
 #define U(x) ((fx_t)((x) * FX_ONE))
 

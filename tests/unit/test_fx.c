@@ -1,11 +1,11 @@
-/* Tests for engine/fx.h: 16.16 arithmetic, rounding, saturation, sqrt. */
+/* Tests for engine/core/fx.h: 16.16 arithmetic, rounding, saturation, sqrt. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
 #include <cmocka.h>
 
-#include "engine/fx.h"
+#include "engine/core/fx.h"
 
 static void mul_is_exact_for_both_signs(void **state)
 {

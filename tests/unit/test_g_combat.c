@@ -1,4 +1,4 @@
-/* Tests for engine/g_combat.c: line of sight, the hitscan shot, damage to
+/* Tests for engine/game/g_combat.c: line of sight, the hitscan shot, damage to
  * the player at the enemies' rates, pickups. */
 #include <stdarg.h>
 #include <stddef.h>
@@ -7,9 +7,10 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/g_local.h"
-#include "engine/map.h"
-#include "engine/sim.h"
+#include "engine/game/g_local.h"
+#include "engine/game/sim.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
 #include "g_fixture.h"
 
 #define U(v) fx_from_int(v)
@@ -61,7 +62,7 @@ static void sight_through_a_window_depends_on_the_heights(void **state)
 {
 	struct map *m;
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	assert_true(g_sight(m, U(600), U(192), U(41), U(700), U(192), U(41)));
 	assert_true(g_sight(m, U(600), U(192), U(20), U(700), U(192), U(60)));
 	assert_false(g_sight(m, U(600), U(192), U(20), U(700), U(192), U(39)));

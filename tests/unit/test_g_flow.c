@@ -25,10 +25,11 @@
 #include <cmocka.h>
 
 #include "app/cmd.h"
-#include "engine/g_local.h"
-#include "engine/map.h"
-#include "engine/sim.h"
-#include "engine/tab.h"
+#include "engine/core/tab.h"
+#include "engine/game/g_local.h"
+#include "engine/game/sim.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
 #include "input/act.h"
 #include "input/scr.h"
 
@@ -229,7 +230,7 @@ static void play_flow(struct flow *f)
 
 	memset(f, 0, sizeof(*f));
 	for (int i = 0; i < 3; i++) {
-		assert_int_equal(map_builtin(i, &f->maps[i]), 0);
+		assert_int_equal(lvl_builtin(i, &f->maps[i]), 0);
 		mp[i] = f->maps[i];
 	}
 	sim_init_stages(&f->s, mp, 3, &set, NULL, NULL);

@@ -1,4 +1,4 @@
-/* Tests for engine/g_score.c: the high-score table and the byte encodings
+/* Tests for engine/game/g_score.c: the high-score table and the byte encodings
  * of scores and bookkeeping. */
 #include <errno.h>
 #include <stdarg.h>
@@ -8,7 +8,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/g_game.h"
+#include "engine/game/g_game.h"
 
 static void the_default_table_is_sorted_with_valid_names(void **state)
 {

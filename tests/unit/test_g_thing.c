@@ -1,4 +1,4 @@
-/* Tests for engine/g_thing.c: Doom thing types as enemy kinds, pickups,
+/* Tests for engine/game/g_thing.c: Doom thing types as enemy kinds, pickups,
  * lights and decorations, with th.h's sprites. */
 #include <stdarg.h>
 #include <stddef.h>
@@ -7,8 +7,8 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/g_game.h"
-#include "engine/th.h"
+#include "engine/game/g_game.h"
+#include "engine/map/th.h"
 
 static int kind_of(uint16_t type)
 {

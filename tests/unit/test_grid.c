@@ -1,4 +1,4 @@
-/* Tests for engine/grid.c (ASCII tile maps) and engine/grid_lvl.c (the
+/* Tests for engine/map/grid.c (ASCII tile maps) and engine/map/grid_lvl.c (the
  * built-in grid level). Expected counts come from drawing the maps on
  * paper: tile (row r, column c) of an R-row map covers x in [64c, 64c+64),
  * y in [64(R-1-r), 64(R-r)). */
@@ -12,11 +12,11 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/grid.h"
-#include "engine/map.h"
-#include "engine/r_main.h"
-#include "engine/tex.h"
-#include "engine/th.h"
+#include "engine/map/grid.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
+#include "engine/map/th.h"
+#include "engine/render/r_main.h"
 
 static struct map *parse_ok(const char *text)
 {

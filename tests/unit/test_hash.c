@@ -1,11 +1,11 @@
-/* Tests for engine/hash.c: FNV-1a 64 and its little-endian encodings. */
+/* Tests for engine/core/hash.c: FNV-1a 64 and its little-endian encodings. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
 #include <cmocka.h>
 
-#include "engine/hash.h"
+#include "engine/core/hash.h"
 
 /* Published FNV-1a 64-bit test vectors (isthe.com FNV test suite). */
 static void published_vectors_match(void **state)

@@ -1,4 +1,4 @@
-/* Tests for engine/hud.c, hud_page.c and menu_draw.c: what the HUD draws
+/* Tests for engine/ui/hud.c, hud_page.c and menu_draw.c: what the HUD draws
  * from the sim state (the minimap arrow, crosshair, warnings, weapon
  * flash, pages), and that it is a pure function of the state. */
 #include <stdarg.h>
@@ -9,12 +9,12 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/hud.h"
-#include "engine/map.h"
-#include "engine/pal.h"
-#include "engine/r_main.h"
-#include "engine/sim.h"
-#include "engine/tab.h"
+#include "engine/core/pal.h"
+#include "engine/core/tab.h"
+#include "engine/game/sim.h"
+#include "engine/map/map.h"
+#include "engine/render/r_main.h"
+#include "engine/ui/hud.h"
 #include "g_fixture.h"
 
 #define W 320

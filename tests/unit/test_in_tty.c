@@ -21,7 +21,7 @@
 #include <linux/input-event-codes.h>
 
 #include "input/in.h"
-#include "input/in_ttykeys.h"
+#include "input/ttyk.h"
 
 struct pty {
 	int master;

@@ -1,4 +1,4 @@
-/* Tests for engine/lmap.c: falloff values worked out by hand from the
+/* Tests for engine/map/lmap.c: falloff values worked out by hand from the
  * formula in lmap.h, shadows checked against a second visibility method
  * (where a ray crosses the pillar's rows, by interval arithmetic), the 3D
  * opening of a window, walls that stop light, determinism, and the light
@@ -14,11 +14,11 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/grid.h"
-#include "engine/lmap.h"
-#include "engine/map.h"
-#include "engine/r_main.h"
-#include "engine/tex.h"
+#include "engine/map/grid.h"
+#include "engine/map/lmap.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
+#include "engine/render/r_main.h"
 
 static struct map *grid(const char *text)
 {

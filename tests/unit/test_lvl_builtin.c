@@ -1,6 +1,6 @@
-/* Tests for engine/lvl_builtin.c: the built-in levels are maps of the
+/* Tests for engine/map/lvl_builtin.c: the built-in levels are maps of the
  * project's own, loaded from the compiled-in PWAD (levels/arena*.txt,
- * engine/lvl_wad.c) with tex_builtin's texture names; and as game stages
+ * engine/map/lvl_wad.c) with tex_builtin's texture names; and as game stages
  * every one has one start, enemies and pickups that stand clear of the
  * walls, and the stages grow harder in order. */
 #include <stdarg.h>
@@ -10,13 +10,14 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/g_local.h"
-#include "engine/lvl_wad.h"
-#include "engine/map.h"
-#include "engine/map_wad.h"
-#include "engine/sim.h"
-#include "engine/tex.h"
-#include "engine/wad.h"
+#include "engine/game/g_local.h"
+#include "engine/game/sim.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/lvl_wad.h"
+#include "engine/map/map.h"
+#include "engine/map/map_wad.h"
+#include "engine/map/tex.h"
+#include "engine/map/wad.h"
 
 /* Whether a circle of radius r at (x, y) overlaps a wall that blocks a
  * body standing at z there (same rule as movement). Exact: squared
@@ -56,12 +57,12 @@ static void every_stage_is_playable(void **state)
 {
 	static const struct sim_settings set = { 1, 0, 1, 1, 3 };
 	(void)state;
-	assert_true(map_builtin_count() >= 3);
-	for (int i = 0; i < map_builtin_count(); i++) {
+	assert_true(lvl_builtin_count() >= 3);
+	for (int i = 0; i < lvl_builtin_count(); i++) {
 		struct map *m;
 		struct sim s;
 		int starts = 0;
-		assert_int_equal(map_builtin(i, &m), 0);
+		assert_int_equal(lvl_builtin(i, &m), 0);
 		for (uint32_t k = 0; k < m->num_things; k++)
 			starts += m->things[k].type == 1;
 		assert_int_equal(starts, 1);
@@ -96,7 +97,7 @@ static void stages_grow_harder(void **state)
 		struct map *m;
 		struct sim s, h;
 		int64_t hp = 0, dps = 0;
-		assert_int_equal(map_builtin(i, &m), 0);
+		assert_int_equal(lvl_builtin(i, &m), 0);
 		sim_init(&s, m, &normal);
 		sim_init(&h, m, &hard);
 		for (int k = 0; k < s.g.num_enemies; k++) {
@@ -114,7 +115,7 @@ static void stages_grow_harder(void **state)
 	}
 }
 
-/* The compiled-in PWAD holds ARENA1..3 in play order, and map_builtin
+/* The compiled-in PWAD holds ARENA1..3 in play order, and lvl_builtin
  * gives exactly what loading that WAD's map with tex_builtin's set gives. */
 static void levels_are_the_compiled_in_wad(void **state)
 {
@@ -128,11 +129,11 @@ static void levels_are_the_compiled_in_wad(void **state)
 	assert_int_equal(wad_add(w, lvl_wad, lvl_wad_len, "lvl_wad", err, sizeof err), 0);
 	assert_int_equal(memcmp(lvl_wad, "PWAD", 4), 0);
 	assert_int_equal(map_list_wad(w, names, 8), 3);
-	assert_int_equal(map_builtin_count(), 3);
+	assert_int_equal(lvl_builtin_count(), 3);
 	for (int i = 0; i < 3; i++) {
 		struct map *a, *b;
 		assert_string_equal(names[i], want[i]);
-		assert_int_equal(map_builtin(i, &a), 0);
+		assert_int_equal(lvl_builtin(i, &a), 0);
 		assert_int_equal(map_load_wad(w, t, want[i], &b, err, sizeof err), 0);
 		assert_string_equal(a->name, want[i]);
 		assert_true(a->content_hash == b->content_hash);
@@ -161,10 +162,10 @@ static void levels_are_textured_by_name(void **state)
 	struct tex_set *t;
 	(void)state;
 	assert_int_equal(tex_builtin(&t), 0);
-	for (int i = 0; i < map_builtin_count(); i++) {
+	for (int i = 0; i < lvl_builtin_count(); i++) {
 		struct map *m;
 		int grates = 0;
-		assert_int_equal(map_builtin(i, &m), 0);
+		assert_int_equal(lvl_builtin(i, &m), 0);
 		for (uint32_t k = 0; k < m->num_lines; k++) {
 			const struct map_line *l = &m->lines[k];
 			for (int sd = 0; sd < 2 && l->side[sd] != MAP_NONE; sd++) {

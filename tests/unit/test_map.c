@@ -1,5 +1,5 @@
-/* Tests for engine/map.c (validation, hash, point location) and
- * engine/lvl_builtin.c (the built-in levels). */
+/* Tests for engine/map/map.c (validation, hash, point location) and
+ * engine/map/lvl_builtin.c (the built-in levels). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -8,7 +8,9 @@
 #include <stdlib.h>
 #include <cmocka.h>
 
-#include "engine/map.h"
+#include "engine/core/msg.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
 #include "map_fixture.h"
 
 static const int two_v[][2] = {
@@ -162,11 +164,11 @@ static void builtin_levels_are_listed(void **state)
 {
 	struct map *m = (struct map *)1;
 	(void)state;
-	assert_true(map_builtin_count() >= 1);
-	assert_int_equal(map_builtin(-1, &m), -EINVAL);
+	assert_true(lvl_builtin_count() >= 1);
+	assert_int_equal(lvl_builtin(-1, &m), -EINVAL);
 	assert_null(m);
-	assert_int_equal(map_builtin(map_builtin_count(), &m), -EINVAL);
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(lvl_builtin_count(), &m), -EINVAL);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	assert_string_equal(m->name, "ARENA1");
 	assert_true(m->num_nodes > 0);
 	map_free(m);
@@ -196,7 +198,7 @@ static void builtin_points_land_in_their_sectors(void **state)
 	struct map *m;
 	unsigned i;
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	for (i = 0; i < sizeof pts / sizeof pts[0]; i++) {
 		uint32_t s = map_point_sector(m, fx_from_int(pts[i].x), fx_from_int(pts[i].y));
 		if (s != pts[i].sector)
@@ -219,7 +221,7 @@ static void builtin_level_has_its_features(void **state)
 	uint32_t i, steps = 0, windows = 0, ledges = 0, starts = 0;
 	uint8_t lo = 255, hi = 0;
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	for (i = 0; i < m->num_lines; i++) {
 		const struct map_line *l = &m->lines[i];
 		const struct map_sector *f, *b;
@@ -256,8 +258,8 @@ static void builtin_level_is_rebuilt_identically(void **state)
 {
 	struct map *a, *b;
 	(void)state;
-	assert_int_equal(map_builtin(0, &a), 0);
-	assert_int_equal(map_builtin(0, &b), 0);
+	assert_int_equal(lvl_builtin(0, &a), 0);
+	assert_int_equal(lvl_builtin(0, &b), 0);
 	assert_true(a->content_hash == b->content_hash);
 	assert_int_equal(a->num_segs, b->num_segs);
 	assert_int_equal(a->num_nodes, b->num_nodes);
@@ -285,14 +287,14 @@ static void messages_format_numbers(void **state)
 {
 	char err[64] = "";
 	(void)state;
-	map_msg_int(err, sizeof err, INT64_MIN);
+	msg_int(err, sizeof err, INT64_MIN);
 	assert_string_equal(err, "-9223372036854775808");
 	err[0] = '\0';
-	map_msg_fx(err, sizeof err, -FX_ONE - FX_ONE / 4);
-	map_msg(err, sizeof err, " ");
-	map_msg_fx(err, sizeof err, 1);
-	map_msg(err, sizeof err, " ");
-	map_msg_fx(err, sizeof err, FX_MIN);
+	msg_fx(err, sizeof err, -FX_ONE - FX_ONE / 4);
+	msg_cat(err, sizeof err, " ");
+	msg_fx(err, sizeof err, 1);
+	msg_cat(err, sizeof err, " ");
+	msg_fx(err, sizeof err, FX_MIN);
 	assert_string_equal(err, "-1.25 0.00001 -32768");
 }
 

@@ -1,4 +1,4 @@
-/* Tests for engine/map_wad.c: the two-room fixture read field by field, a
+/* Tests for engine/map/map_wad.c: the two-room fixture read field by field, a
  * corpus of corrupted maps each naming map, lump and entry, BSP rebuild,
  * normalisations, layering, and every map of Freedoom (skipped loudly when
  * the freedoom package is not installed). Fixture: wad_fixture.h. */
@@ -13,11 +13,12 @@
 #include <time.h>
 #include <cmocka.h>
 
-#include "app/content.h"
-#include "engine/map.h"
-#include "engine/map_wad.h"
-#include "engine/tex.h"
-#include "engine/wad.h"
+#include "app/ct.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
+#include "engine/map/map_wad.h"
+#include "engine/map/tex.h"
+#include "engine/map/wad.h"
 #include "wad_fixture.h"
 
 /* The fixture graphics plus map MAP01 changed by fix (NULL: as is), and E1M1
@@ -380,7 +381,7 @@ static void builtin_levels_round_trip_through_a_wad(void **state)
 
 	(void)state;
 	assert_int_equal(tex_builtin(&t), 0);
-	for (int i = 0; i < map_builtin_count(); i++) {
+	for (int i = 0; i < lvl_builtin_count(); i++) {
 		struct map *m, *back;
 		uint8_t *img;
 		size_t len;
@@ -389,7 +390,7 @@ static void builtin_levels_round_trip_through_a_wad(void **state)
 		const char *name = "MAP07";
 		const struct map *maps[1];
 
-		assert_int_equal(map_builtin(i, &m), 0);
+		assert_int_equal(lvl_builtin(i, &m), 0);
 		for (uint32_t k = 0; k < m->num_sides; k++) {
 			struct map_side *s = &m->sides[k];
 			s->top_tex = s->top_tex ? (uint16_t)(1 + s->top_tex % (t->num_textures - 2)) : 0;
@@ -443,7 +444,7 @@ static void builtin_levels_round_trip_through_a_wad(void **state)
 
 /* ---- Freedoom ------------------------------------------------------------ */
 
-/* The file at path, or NULL (ct_read_file, app/content.h). */
+/* The file at path, or NULL (ct_read_file, app/ct.h). */
 static uint8_t *slurp(const char *path, size_t *len)
 {
 	uint8_t *d = NULL;

@@ -1,4 +1,4 @@
-/* Tests for engine/menu.c: navigating the service menu with the game's
+/* Tests for engine/game/menu.c: navigating the service menu with the game's
  * commands, changing settings, resets with confirmation. */
 #include <stdarg.h>
 #include <stddef.h>
@@ -7,9 +7,9 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/map.h"
-#include "engine/menu.h"
-#include "engine/sim.h"
+#include "engine/game/menu.h"
+#include "engine/game/sim.h"
+#include "engine/map/map.h"
 #include "g_fixture.h"
 
 static const struct sim_cmd none = { 0 };

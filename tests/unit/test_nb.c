@@ -1,4 +1,4 @@
-/* Tests for engine/nb.c: the BSP node builder. Geometry checks use doubles
+/* Tests for engine/map/nb.c: the BSP node builder. Geometry checks use doubles
  * (a second method, independent of the builder's integer arithmetic). */
 #include <stdarg.h>
 #include <stddef.h>
@@ -9,9 +9,10 @@
 #include <stdlib.h>
 #include <cmocka.h>
 
-#include "engine/map.h"
-#include "engine/nb.h"
-#include "engine/tab.h"
+#include "engine/core/tab.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
+#include "engine/map/nb.h"
 #include "map_fixture.h"
 
 #define U(v) ((double)(v) / 65536.0)   /* fx to map units */
@@ -538,7 +539,7 @@ static void builtin_level_bsp_is_valid(void **state)
 {
 	struct map *m;
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	check_all(m, arena1_sector, -10, 1034);
 	map_free(m);
 }

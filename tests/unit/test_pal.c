@@ -1,4 +1,4 @@
-/* Tests for engine/pal.c: the built-in palette and its colormaps. */
+/* Tests for engine/core/pal.c: the built-in palette and its colormaps. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -6,7 +6,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/pal.h"
+#include "engine/core/pal.h"
 
 static struct pal p;
 

@@ -15,7 +15,7 @@
 #include <cmocka.h>
 
 #include "app/pool.h"
-#include "engine/r_main.h"
+#include "engine/render/r_main.h"
 
 enum { MAXJ = 300 };
 

@@ -1,5 +1,5 @@
 /*
- * Tests for engine/r_bsp.c: the solid-column list (through engine/r_local.h)
+ * Tests for engine/render/r_bsp.c: the solid-column list (through engine/render/r_local.h)
  * and the traversal's culling, seen in the frame statistics.
  */
 #include <stdarg.h>
@@ -10,10 +10,10 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/map.h"
-#include "engine/pal.h"
-#include "engine/r_local.h"
-#include "engine/r_main.h"
+#include "engine/core/pal.h"
+#include "engine/map/map.h"
+#include "engine/render/r_local.h"
+#include "engine/render/r_main.h"
 #include "tests/unit/r_testmap.h"
 
 static struct ttex *tt;

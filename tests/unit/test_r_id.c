@@ -1,5 +1,5 @@
 /*
- * Tests for surface ids (engine/r_id.h) in the software renderer
+ * Tests for surface ids (engine/render/r_id.h) in the software renderer
  * (r_set_idbuf): the packing, ids worked out by hand on the hand-built test
  * maps, ids counted against the renderer's own pixel counters, and frames
  * that are the same bytes with and without an id buffer.
@@ -16,9 +16,9 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/map.h"
-#include "engine/r_id.h"
-#include "engine/r_main.h"
+#include "engine/map/map.h"
+#include "engine/render/r_id.h"
+#include "engine/render/r_main.h"
 #include "tests/unit/r_testmap.h"
 
 static struct ttex *tt;

@@ -1,5 +1,5 @@
 /*
- * Tests for the renderer (engine/r_main.c, r_bsp.c, r_seg.c, r_draw.c).
+ * Tests for the renderer (engine/render/r_main.c, r_bsp.c, r_seg.c, r_draw.c).
  *
  * Expected pixels come from the projection geometry worked by hand in the
  * comments: focal length w/2, horizon at row centre h/2, a height H above
@@ -19,14 +19,16 @@
 
 #include <stdio.h>
 
-#include "engine/map.h"
-#include "engine/map_wad.h"
-#include "engine/pal.h"
-#include "engine/r_local.h"
-#include "engine/r_main.h"
-#include "engine/tex.h"
-#include "engine/th.h"
-#include "engine/wad.h"
+#include "engine/core/pal.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
+#include "engine/map/map_wad.h"
+#include "engine/map/tex.h"
+#include "engine/map/th.h"
+#include "engine/map/wad.h"
+#include "engine/render/r_game.h"
+#include "engine/render/r_local.h"
+#include "engine/render/r_main.h"
 #include "tests/unit/r_testmap.h"
 
 static struct pal pal;
@@ -169,7 +171,7 @@ static int teardown(void **state)
 
 /* ---- tests ---- */
 
-/* ---- geometry (r_main.c internals, through engine/r_local.h) ---- */
+/* ---- geometry (r_main.c internals, through engine/render/r_local.h) ---- */
 
 /* A segment across the whole view at depth 100 is cut at the frustum
  * edges l = -d and l = d; the kept ends are inside, within 2 units of 1/65536
@@ -592,7 +594,7 @@ static void same_view_gives_identical_bytes(void **state)
 	struct map *m;
 	struct shot s1, s2;
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	shot_open(&s1, 320, 240);
 	shot_open(&s2, 320, 240);
 	shot_take(&s1, m, 96, 192, 41, 0x12345678);
@@ -669,7 +671,7 @@ static void builtin_level_500_views_write_every_pixel_once(void **state)
 	uint32_t seed = 12345;
 	int inside = 0;
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	for (int i = 0; i < 4; i++)
 		shot_open(&s[i], sizes[i][0], sizes[i][1]);
 	for (int n = 0; n < 500; n++) {
@@ -836,7 +838,7 @@ static int freedoom_views(const char *path)
 		assert_int_equal(map_load_wad(f.w, f.t, names[i], &m, err, sizeof(err)), 0);
 		spr = calloc(m->num_things + 1, sizeof(*spr));
 		assert_non_null(spr);
-		nspr = th_sprites(m, f.t, spr);
+		nspr = r_map_sprites(m, f.t, spr);
 		for (uint32_t k = 0; k < m->num_vertices; k++) {
 			const struct map_vertex *p = &m->vertices[k];
 

@@ -1,5 +1,5 @@
 /*
- * Tests for engine/r_plane.c: floors and ceilings as visplanes drawn in
+ * Tests for engine/render/r_plane.c: floors and ceilings as visplanes drawn in
  * spans (the flat texel under each pixel from the plane equations), the sky
  * (columns by view angle, rows around the horizon, no light), and lists
  * that grow without limit.
@@ -21,9 +21,9 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/map.h"
-#include "engine/r_main.h"
-#include "engine/tex.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
+#include "engine/render/r_main.h"
 #include "tests/unit/r_testmap.h"
 
 static struct ttex *tt;

@@ -1,5 +1,5 @@
 /*
- * Tests for engine/r_seg.c: textured wall columns (horizontal mapping,
+ * Tests for engine/render/r_seg.c: textured wall columns (horizontal mapping,
  * offsets, pegging, wrapping at any height and width), the sky rule between
  * two sky ceilings, animation translation.
  *
@@ -22,9 +22,9 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/map.h"
-#include "engine/r_main.h"
-#include "engine/tex.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
+#include "engine/render/r_main.h"
 #include "tests/unit/r_testmap.h"
 
 static struct ttex *tt;

@@ -1,5 +1,5 @@
 /*
- * Tests for engine/r_strip.c: the frame does not depend on how it is cut
+ * Tests for engine/render/r_strip.c: the frame does not depend on how it is cut
  * into strips and bands, nor on how many threads draw the strips.
  *
  * The reference is one strip as wide as the frame with one band as tall as
@@ -23,15 +23,17 @@
 
 #include <errno.h>
 
-#include "app/content.h"
+#include "app/ct.h"
 #include "app/pool.h"
-#include "engine/map.h"
-#include "engine/map_wad.h"
-#include "engine/r_local.h"
-#include "engine/r_main.h"
-#include "engine/tex.h"
-#include "engine/th.h"
-#include "engine/wad.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
+#include "engine/map/map_wad.h"
+#include "engine/map/tex.h"
+#include "engine/map/th.h"
+#include "engine/map/wad.h"
+#include "engine/render/r_game.h"
+#include "engine/render/r_local.h"
+#include "engine/render/r_main.h"
 
 static uint32_t lcg(uint32_t *s)
 {
@@ -192,10 +194,10 @@ static void builtin_levels_same_frame_every_way(void **state)
 		struct way w[WAYS];
 
 		ways_open(w, sizes[z][0], sizes[z][1]);
-		for (int lv = 0; lv < map_builtin_count(); lv++) {
+		for (int lv = 0; lv < lvl_builtin_count(); lv++) {
 			struct map *m;
 
-			assert_int_equal(map_builtin(lv, &m), 0);
+			assert_int_equal(lvl_builtin(lv, &m), 0);
 			for (int n = 0; n < 60; n++) {
 				struct r_view v = { 0 };
 				const struct map_vertex *a = &m->vertices[lcg(&seed) % m->num_vertices];
@@ -218,7 +220,7 @@ static void builtin_levels_same_frame_every_way(void **state)
 }
 
 /* The file at path, or NULL when it does not exist (ct_read_file,
- * app/content.h); any other failure fails the test. */
+ * app/ct.h); any other failure fails the test. */
 static uint8_t *slurp(const char *path, size_t *len)
 {
 	uint8_t *d = NULL;
@@ -265,7 +267,7 @@ static void freedoom_maps_same_frame_every_way(void **state)
 			assert_int_equal(map_load_wad(wd, t, maps[i], &m, err, sizeof(err)), 0);
 			spr = calloc(m->num_things + 1, sizeof(*spr));
 			assert_non_null(spr);
-			nspr = th_sprites(m, t, spr);
+			nspr = r_map_sprites(m, t, spr);
 			for (int n = 0; n < (z == 0 ? 40 : 12); n++) {
 				const struct map_thing *th = &m->things[lcg(&seed) % m->num_things];
 				struct r_view v = { 0 };

@@ -1,5 +1,5 @@
 /*
- * Tests for engine/r_things.c: sprites (projection, rotation and mirroring,
+ * Tests for engine/render/r_things.c: sprites (projection, rotation and mirroring,
  * light, occlusion by walls through drawseg silhouettes, back-to-front
  * order) and masked middle textures (holes show what is behind, drawn over
  * sprites behind them); shear moves all of it.
@@ -20,9 +20,9 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/map.h"
-#include "engine/r_main.h"
-#include "engine/tex.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
+#include "engine/render/r_main.h"
 #include "tests/unit/r_testmap.h"
 
 static struct ttex *tt;

@@ -895,7 +895,7 @@ static void check_snap(const char *path)
 
 /* The snapshot's header fields, by hand: header size 80 + 5, flag 0x04,
  * length 5 at 52, FNV-1a of "ABCDE" at 72 (0x65f9a54a4f1d65c8, computed
- * apart from engine/hash.c). */
+ * apart from engine/core/hash.c). */
 static void test_snapshot_header_encode_is_byte_exact(void **state)
 {
 	struct rec_header h = sample_header_v2(), d;

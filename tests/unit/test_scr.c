@@ -16,7 +16,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "engine/sim.h"
+#include "engine/game/sim.h"
 #include "input/act.h"
 #include "input/scr.h"
 

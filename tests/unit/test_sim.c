@@ -1,4 +1,4 @@
-/* Tests for engine/sim.c: movement, collision, modes, determinism, hash. */
+/* Tests for engine/game/sim.c: movement, collision, modes, determinism, hash. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -7,10 +7,12 @@
 #include <math.h>
 #include <cmocka.h>
 
-#include "engine/map.h"
-#include "engine/r_main.h"
-#include "engine/sim.h"
-#include "engine/g_local.h"
+#include "engine/game/g_local.h"
+#include "engine/game/sim.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
+#include "engine/render/r_game.h"
+#include "engine/render/r_main.h"
 #include "g_fixture.h"
 #include "map_fixture.h"
 
@@ -227,7 +229,7 @@ static void builtin_window_blocks_and_door_passes(void **state)
 	struct sim s;
 	struct sim_cmd fwd = { .forward = 127 };
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	sim_init(&s, m, &play);
 	no_enemies(&s);
 	assert_int_equal(s.pl.x, fx_from_int(96));
@@ -250,7 +252,7 @@ static void builtin_ledge_is_a_one_way_drop(void **state)
 	struct sim s;
 	struct sim_cmd fwd = { .forward = 127 };
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	sim_init(&s, m, &play);
 	no_enemies(&s);
 	s.pl.x = fx_from_int(500);             /* on the gallery (floor 64) */
@@ -317,7 +319,7 @@ static void random_walk_stays_inside_the_level(void **state)
 	uint32_t r = 99, visited = 0;
 	struct sim_cmd c = { 0 };
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	sim_init(&s, m, &play);
 	no_enemies(&s);
 	for (int t = 0; t < 30000; t++) {
@@ -487,7 +489,7 @@ static void same_commands_give_same_hashes_every_tick(void **state)
 	struct sim a, b;
 	int t;
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	sim_init(&a, m, &attract2);
 	sim_init(&b, m, &attract2);
 	assert_true(sim_hash(&a) == sim_hash(&b));
@@ -507,7 +509,7 @@ static void a_different_command_changes_the_hash(void **state)
 	struct sim a, b;
 	int t;
 	(void)state;
-	assert_int_equal(map_builtin(0, &m), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
 	sim_init(&a, m, &play);
 	sim_init(&b, m, &play);
 	for (t = 0; t < 100; t++) {
@@ -574,7 +576,7 @@ static void view_follows_the_player(void **state)
 	(void)state;
 	sim_init(&s, m, &play);
 	memset(&v, 0x55, sizeof v);
-	sim_view(&s, &v);
+	r_game_view(&s, &v);
 	assert_int_equal(v.x, s.pl.x);
 	assert_int_equal(v.y, s.pl.y);
 	assert_int_equal(v.z, SIM_VIEW_HEIGHT);

@@ -1,4 +1,4 @@
-/* Tests for engine/sim_hash.c: the state walk behind sim_hash, sim_snapshot
+/* Tests for engine/game/sim_hash.c: the state walk behind sim_hash, sim_snapshot
  * and sim_restore. (sim_hash's coverage of each field is tested in
  * test_sim.c; that its values are unchanged is proven by the golden
  * recordings, tests/replay/run.sh and tests/xbuild/run.sh.) */
@@ -11,9 +11,10 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/g_local.h"
-#include "engine/map.h"
-#include "engine/sim.h"
+#include "engine/game/g_local.h"
+#include "engine/game/sim.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
 #include "g_fixture.h"
 
 /* Brutal, one life, no free play: games end soon. */
@@ -28,10 +29,10 @@ struct stages {
 
 static void stages_load(struct stages *st)
 {
-	st->n = map_builtin_count();
+	st->n = lvl_builtin_count();
 	assert_true(st->n >= 1 && st->n <= G_MAX_STAGES);
 	for (int i = 0; i < st->n; i++)
-		assert_int_equal(map_builtin(i, &st->m[i]), 0);
+		assert_int_equal(lvl_builtin(i, &st->m[i]), 0);
 }
 
 static void stages_free(struct stages *st)

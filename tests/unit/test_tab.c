@@ -1,4 +1,4 @@
-/* Tests for engine/tab.c and the generated tables (doubles as the second
+/* Tests for engine/core/tab.c and the generated tables (doubles as the second
  * method: tests may use libm, the engine may not). */
 #include <stdarg.h>
 #include <stddef.h>
@@ -7,7 +7,7 @@
 #include <math.h>
 #include <cmocka.h>
 
-#include "engine/tab.h"
+#include "engine/core/tab.h"
 
 #define PI 3.14159265358979323846
 /* Half a step of the slope table (0.5/2048 rad, atan' <= 1) in binary angle

@@ -1,4 +1,4 @@
-/* Tests for engine/tex*.c: palette and light maps, texture composition from
+/* Tests for engine/map/tex*.c: palette and light maps, texture composition from
  * patches, flats, sprites and their rotations, animation, fallbacks,
  * layering, and the built-in set. Fixture values: wad_fixture.h. */
 #include <stdarg.h>
@@ -11,8 +11,8 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/tex.h"
-#include "engine/wad.h"
+#include "engine/map/tex.h"
+#include "engine/map/wad.h"
 #include "wad_fixture.h"
 
 struct fx {
@@ -432,7 +432,7 @@ static void builtin_set_is_complete_and_deterministic(void **state)
 }
 
 /* The built-in set's one-view sprites: pickups, decorations, the shot's
- * puff and blood (4 frames each, as g_sprite.c shows them), and the HUD
+ * puff and blood (4 frames each, as r_game.c shows them), and the HUD
  * pistol, whose every frame reaches the bottom of Doom's 320x168 view
  * (hud.c draws a picture's top left at (1 - left, 32 - top)) with the
  * recoil frames higher than the ready one. */

@@ -1,4 +1,4 @@
-/* Tests for engine/th.c: Doom's thing types and arcaded's light thing. */
+/* Tests for engine/map/th.c: Doom's thing types and arcaded's light thing. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -8,12 +8,12 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "app/content.h"
-#include "engine/map.h"
-#include "engine/map_wad.h"
-#include "engine/tex.h"
-#include "engine/th.h"
-#include "engine/wad.h"
+#include "app/ct.h"
+#include "engine/map/map.h"
+#include "engine/map/map_wad.h"
+#include "engine/map/tex.h"
+#include "engine/map/th.h"
+#include "engine/map/wad.h"
 
 static void doom_types_by_number(void **state)
 {
@@ -120,7 +120,7 @@ static void builtin_set_draws_its_thing_types(void **state)
 	tex_free(t);
 }
 
-/* The file at path, or NULL (ct_read_file, app/content.h). */
+/* The file at path, or NULL (ct_read_file, app/ct.h). */
 static uint8_t *slurp(const char *path, size_t *len)
 {
 	uint8_t *d = NULL;

@@ -1,4 +1,4 @@
-/* Tests for engine/v_video.c: fills, lines, triangles, text from the
+/* Tests for engine/ui/v_video.c: fills, lines, triangles, text from the
  * built-in font, numbers, pictures; everything clipped. */
 #include <stdarg.h>
 #include <stddef.h>
@@ -8,9 +8,9 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/r_main.h"
-#include "engine/tex.h"
-#include "engine/v_video.h"
+#include "engine/map/tex.h"
+#include "engine/render/r_main.h"
+#include "engine/ui/v_video.h"
 
 /* A 40 x 30 frame inside a buffer with a 48-byte pitch and guard rows, so
  * writes outside the frame are seen. */

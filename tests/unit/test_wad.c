@@ -1,4 +1,4 @@
-/* Tests for engine/wad.c: header and directory checks, names, lookups and
+/* Tests for engine/map/wad.c: header and directory checks, names, lookups and
  * layering. */
 #include <stdarg.h>
 #include <stddef.h>
@@ -10,7 +10,7 @@
 #include <string.h>
 #include <cmocka.h>
 
-#include "engine/wad.h"
+#include "engine/map/wad.h"
 #include "wad_fixture.h"
 
 /* A PWAD of three lumps: "e1m1" (lower case in the file, 0 bytes, offset

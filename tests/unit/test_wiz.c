@@ -18,10 +18,10 @@
 
 #include "app/wiz.h"
 #include "config/bind.h"
-#include "engine/hud.h"
-#include "engine/pal.h"
-#include "engine/r_main.h"
-#include "engine/v_video.h"
+#include "engine/core/pal.h"
+#include "engine/render/r_main.h"
+#include "engine/ui/hud.h"
+#include "engine/ui/v_video.h"
 
 #define MS 1000000ull
 #define S 1000000000ull

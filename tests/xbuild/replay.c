@@ -43,7 +43,7 @@
  * unreadable or refused recording).
  *
  * It loads content and draws frames with the daemon's own code
- * (app/content.c ct_load, app/view.c view_draw), and mirrors app/app.c's
+ * (app/ct.c ct_load, app/view.c view_draw), and mirrors app/app.c's
  * replay set-up (level, render size and settings from the recording,
  * sim_init_stages with the default tables) and loop (rec_reader_next_tick,
  * sim_tick, view_draw, hash_frame). run.sh fails when their hashes differ.
@@ -55,13 +55,13 @@
 #include <string.h>
 #include <time.h>
 
-#include "engine/hash.h"
-#include "engine/map.h"
-#include "engine/r_main.h"
-#include "engine/sim.h"
-#include "app/content.h"
+#include "app/ct.h"
 #include "app/demo.h"
 #include "app/view.h"
+#include "engine/core/hash.h"
+#include "engine/game/sim.h"
+#include "engine/map/map.h"
+#include "engine/render/r_main.h"
 #include "input/rec.h"
 
 #define RP_DEFAULT_W 320
@@ -333,7 +333,7 @@ int main(int argc, char **argv)
 		run.render_w = RP_DEFAULT_W;
 		run.render_h = RP_DEFAULT_H;
 	}
-	/* The same content the daemon loads (app/content.c): the built-in
+	/* The same content the daemon loads (app/ct.c): the built-in
 	 * stages from run.level on, with their light maps. */
 	spec.level = run.level;
 	/* a map from WADs, as the daemon's --wad/--map */

@@ -36,13 +36,13 @@ ok() { say "PASS $*"; pass=$((pass + 1)); }
 bad() { say "FAIL $*"; fail=$((fail + 1)); }
 
 # ---- static checks: what would make builds differ ----------------------
-if grep -nE '\b(float|double)\b|<math\.h>' engine/*.c engine/*.h >"$tmp/fp" 2>/dev/null; then
+if grep -nE '\b(float|double)\b|<math\.h>' engine/core/*.c engine/core/*.h engine/map/*.c engine/map/*.h engine/game/*.c engine/game/*.h engine/render/*.c engine/render/*.h engine/ui/*.c engine/ui/*.h >"$tmp/fp" 2>/dev/null; then
 	bad "floating point in the engine (fp contraction and x87/NEON differences):"
 	cat "$tmp/fp"
 else
 	ok "no floating point in the engine (-ffp-contract cannot matter)"
 fi
-if grep -nE 'pthread|<threads\.h>' engine/*.c engine/*.h >/dev/null 2>&1; then
+if grep -nE 'pthread|<threads\.h>' engine/core/*.c engine/core/*.h engine/map/*.c engine/map/*.h engine/game/*.c engine/game/*.h engine/render/*.c engine/render/*.h engine/ui/*.c engine/ui/*.h >/dev/null 2>&1; then
 	THREADS=1
 else
 	THREADS=0
@@ -51,7 +51,7 @@ fi
 # ---- builds --------------------------------------------------------------
 WARN="-std=c11 -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes"
 FLAGS="$WARN -fno-strict-aliasing -I. -D_GNU_SOURCE"
-SRC="tests/xbuild/replay.c $(ls engine/*.c | tr '\n' ' ') input/rec.c input/scr.c input/act.c app/content.c app/view.c app/demo.c app/cmd.c"
+SRC="tests/xbuild/replay.c $(ls engine/core/*.c engine/map/*.c engine/game/*.c engine/render/*.c engine/ui/*.c | tr '\n' ' ') input/rec.c input/scr.c input/act.c app/ct.c app/view.c app/demo.c app/cmd.c"
 build() { # $1 name; rest: compiler and flags
 	name=$1; shift
 	# shellcheck disable=SC2086

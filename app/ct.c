@@ -1,0 +1,231 @@
+#include "app/ct.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "engine/map/grid.h"
+#include "engine/map/lmap.h"
+#include "engine/map/lvl_builtin.h"
+#include "engine/map/map.h"
+#include "engine/map/map_wad.h"
+#include "engine/map/tex.h"
+#include "engine/map/wad.h"
+
+/* Freedoom 2 is 28 MiB; anything far larger is not a WAD meant for us. */
+#define CT_FILE_MAX (512u << 20)
+
+int ct_read_file(const char *path, uint8_t **buf, size_t *len)
+{
+	struct stat st;
+	size_t got = 0;
+	int fd, rc = 0;
+
+	fd = open(path, O_RDONLY | O_CLOEXEC);
+	if (fd < 0)
+		return -errno;
+	if (fstat(fd, &st) < 0) {
+		rc = -errno;
+		goto out;
+	}
+	if (!S_ISREG(st.st_mode) || (uint64_t)st.st_size > CT_FILE_MAX) {
+		rc = S_ISREG(st.st_mode) ? -EFBIG : -EINVAL;
+		goto out;
+	}
+	*buf = malloc(st.st_size ? (size_t)st.st_size : 1);
+	if (!*buf) {
+		rc = -ENOMEM;
+		goto out;
+	}
+	while (got < (size_t)st.st_size) {
+		ssize_t n = read(fd, *buf + got, (size_t)st.st_size - got);
+		if (n < 0 && errno == EINTR)
+			continue;
+		if (n <= 0) {
+			rc = n < 0 ? -errno : -EIO;
+			free(*buf);
+			*buf = NULL;
+			goto out;
+		}
+		got += (size_t)n;
+	}
+	*len = got;
+out:
+	close(fd);
+	return rc;
+}
+
+static int load_wads(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
+{
+	uint8_t *bufs[CT_MAX_WADS] = { 0 };
+	char names[64][9];
+	struct wad *w = NULL;
+	const char *name;
+	int rc, i;
+
+	rc = wad_new(&w);
+	for (i = 0; rc == 0 && i < s->nwads; i++) {
+		size_t len = 0;
+		rc = ct_read_file(s->wads[i], &bufs[i], &len);
+		if (rc < 0)
+			snprintf(err, errlen, "%s: %s", s->wads[i], strerror(-rc));
+		else
+			rc = wad_add(w, bufs[i], len, s->wads[i], err, errlen);
+	}
+	if (rc == 0)
+		rc = tex_load_wad(w, &c->tex, err, errlen);
+	if (rc == 0) {
+		name = s->map;
+		if (!name) {
+			if (map_list_wad(w, names, 64) < 1) {
+				snprintf(err, errlen, "%s: no maps in the WADs", s->wads[0]);
+				rc = -ENOENT;
+			}
+			name = names[0];
+		}
+		if (rc == 0 && !s->grid) {
+			rc = map_load_wad(w, c->tex, name, &c->maps[0], err, errlen);
+			c->nmaps = rc == 0;
+		}
+		if (rc == 0) {
+			tex_pick_sky(c->tex, name);
+			snprintf(c->what, sizeof(c->what), "%s%s %s", s->wads[s->nwads - 1],
+				 s->nwads > 1 ? " (layered)" : "", s->grid ? "textures" : name);
+		}
+	}
+	/* The texture set and the map copy what they need: the file images
+	 * can go now (28 MiB for Freedoom 2). */
+	wad_free(w);
+	for (i = 0; i < CT_MAX_WADS; i++)
+		free(bufs[i]);
+	return rc;
+}
+
+static int load_grid(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
+{
+	struct grid_names names;
+	uint8_t *buf = NULL;
+	const char *text;
+	size_t len = 0;
+	int rc;
+
+	if (!c->tex) {
+		rc = tex_builtin(&c->tex);
+		if (rc < 0) {
+			snprintf(err, errlen, "built-in textures: %s", strerror(-rc));
+			return rc;
+		}
+	}
+	if (strcmp(s->grid, "builtin") == 0) {
+		text = grid_builtin_text(&len);
+	} else {
+		rc = ct_read_file(s->grid, &buf, &len);
+		if (rc < 0) {
+			snprintf(err, errlen, "%s: %s", s->grid, strerror(-rc));
+			return rc;
+		}
+		text = (const char *)buf;
+	}
+	grid_names_from_tex(&names, c->tex);
+	rc = grid_parse(text, len, s->grid, &names, &c->maps[0], err, errlen);
+	c->nmaps = rc == 0;
+	free(buf);
+	if (rc == 0)
+		snprintf(c->what, sizeof(c->what), "grid map %s", s->grid);
+	return rc;
+}
+
+static int load_lights(struct ct *c, int i, char *err, size_t errlen)
+{
+	struct lmap_light *lights;
+	int n, rc;
+
+	n = lmap_lights_from_map(c->maps[i], LMAP_DECOR, NULL, 0);
+	if (i == 0)
+		c->nlights = n;
+	if (n <= 0)
+		return 0;
+	lights = calloc((size_t)n, sizeof(*lights));
+	if (!lights)
+		return -ENOMEM;
+	lmap_lights_from_map(c->maps[i], LMAP_DECOR, lights, n);
+	rc = lmap_new(c->maps[i], lights, n, &c->lms[i]);
+	free(lights);
+	if (rc < 0)
+		snprintf(err, errlen, "light maps of %s: %s", c->maps[i]->name, strerror(-rc));
+	return rc;
+}
+
+/* The built-in stages: level `first` and every one after it. */
+static int load_builtin(struct ct *c, int first, char *err, size_t errlen)
+{
+	int n = lvl_builtin_count(), rc = 0;
+
+	if (first < 1 || first > n) {
+		snprintf(err, errlen, "built-in level %d: no such level (there are %d)", first, n);
+		return -EINVAL;
+	}
+	for (int i = first - 1; i < n && c->nmaps < CT_MAX_STAGES && rc == 0; i++) {
+		rc = lvl_builtin(i, &c->maps[c->nmaps]);
+		if (rc < 0)
+			snprintf(err, errlen, "built-in level %d: %s", i + 1, strerror(-rc));
+		else
+			c->nmaps++;
+	}
+	if (rc < 0)
+		return rc;
+	/* The built-in levels' texture numbers index tex_builtin's set
+	 * (map.h: lvl_builtin). */
+	rc = tex_builtin(&c->tex);
+	if (rc < 0) {
+		snprintf(err, errlen, "built-in textures: %s", strerror(-rc));
+		return rc;
+	}
+	snprintf(c->what, sizeof(c->what), "built-in levels %d..%d (%s first)", first,
+		 first + c->nmaps - 1, c->maps[0]->name);
+	return 0;
+}
+
+int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
+{
+	int rc;
+
+	memset(c, 0, sizeof(*c));
+	if (s->nwads > 0)
+		rc = load_wads(c, s, err, errlen);
+	else
+		rc = 0;
+	if (rc == 0 && s->grid)
+		rc = load_grid(c, s, err, errlen);
+	else if (rc == 0 && s->nwads == 0)
+		rc = load_builtin(c, s->level, err, errlen);
+	for (int i = 0; rc == 0 && s->lights && i < c->nmaps; i++)
+		rc = load_lights(c, i, err, errlen);
+	c->map = c->maps[0];
+	if (rc < 0)
+		ct_free(c);
+	return rc;
+}
+
+struct lmap *ct_lmap_for(const struct ct *c, const struct map *m)
+{
+	for (int i = 0; i < c->nmaps; i++)
+		if (c->maps[i] == m)
+			return c->lms[i];
+	return NULL;
+}
+
+void ct_free(struct ct *c)
+{
+	for (int i = 0; i < c->nmaps; i++) {
+		lmap_free(c->lms[i]);
+		map_free(c->maps[i]);
+	}
+	tex_free(c->tex);
+	memset(c, 0, sizeof(*c));
+}

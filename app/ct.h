@@ -1,0 +1,57 @@
+/*
+ * ct: content, what the game is played on: a map, the texture set it is drawn
+ * with, and its shadowed light maps. From the built-in levels, a grid map
+ * (--grid), or Doom-format WADs (--wad, repeatable, later files override
+ * earlier ones; --map picks the map).
+ */
+#ifndef ARCADED_APP_CT_H
+#define ARCADED_APP_CT_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+struct lmap;
+struct map;
+struct tex_set;
+
+#define CT_MAX_WADS 8
+#define CT_MAX_STAGES 8
+
+struct ct_spec {
+	const char *wads[CT_MAX_WADS];
+	int nwads;
+	const char *map;        /* map name in the WADs; NULL: the first one */
+	const char *grid;       /* grid map file, or "builtin" for GRID1 */
+	int level;              /* built-in level, 1-based (no WAD, no grid) */
+	int lights;             /* build light maps (arcaded lights + Doom lamps) */
+};
+
+struct ct {
+	/* The game's stages, played in order: every built-in level starting
+	 * with the chosen one, or the one WAD/grid map. */
+	struct map *maps[CT_MAX_STAGES];
+	struct lmap *lms[CT_MAX_STAGES];   /* per stage; NULL: no lights */
+	int nmaps;
+	struct map *map;        /* = maps[0] */
+	struct tex_set *tex;
+	int nlights;            /* lights of the first stage */
+	char what[160];         /* "freedoom1.wad E1M1", "built-in level 1 (ARENA1)" */
+};
+
+/* Loads the content s names. 0, or -errno with err naming the file, lump
+ * or entry. On error c holds nothing (ct_free is still safe). */
+int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen);
+
+/* Reads the whole regular file path (at most 512 MiB: a WAD) into *buf, a
+ * new buffer the caller frees, of *len bytes. 0, or -errno: -EINVAL (not a
+ * regular file), -EFBIG (too large), -ENOMEM, or open's or read's error.
+ * Also the one file reader of the tests and tools that load WADs. */
+int ct_read_file(const char *path, uint8_t **buf, size_t *len);
+
+/* The light maps of stage map m (NULL if none or unknown). */
+struct lmap *ct_lmap_for(const struct ct *c, const struct map *m);
+
+/* NULL-safe members; frees everything ct_load made. */
+void ct_free(struct ct *c);
+
+#endif

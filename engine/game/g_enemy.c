@@ -1,0 +1,263 @@
+/*
+ * g_enemy: the enemy kinds, spawning them (and the pickups) from a stage
+ * map's things, and their behaviour: wake on sight, chase, attack.
+ *
+ * An enemy wakes when it sees the player within its sight distance (idle
+ * enemies look every 8 ticks, staggered by index) or when it is shot. Awake,
+ * it attacks while the player's centre is within its range and in line of
+ * sight: the first attack `reaction` ticks after it came into range, then
+ * one every `period` ticks, each taking `damage` (scaled by difficulty).
+ * Otherwise it walks straight at the player with the player's own
+ * collision (g_move); when a wall stops it, it walks a random detour
+ * (left or right of its heading) for 16..31 ticks. Sentries never move.
+ */
+#include <stddef.h>
+
+#include "engine/core/tab.h"
+#include "engine/game/g_local.h"
+#include "engine/map/map.h"
+
+#define G_IDLE_LOOK 8                  /* idle enemies look every 8 ticks */
+#define G_PAIN_TICKS 8
+#define G_FLASH_TICKS 8
+#define G_HURT_TICKS 12
+
+/* Per difficulty 0..3: percent of the kinds' damage and speed. Each loop
+ * through all stages adds 25% damage and 10% speed (speed capped at 200%). */
+static const uint8_t g_damage_pct[4] = { 50, 100, 150, 200 };
+static const uint8_t g_speed_pct[4] = { 80, 100, 115, 130 };
+
+/* Chance (of 256) that a hit makes an enemy flinch, per kind. */
+static const uint8_t g_pain_chance[G_KINDS] = { 200, 80, 128 };
+
+fx_t g_enemy_damage(const struct sim *s, int kind)
+{
+	int64_t pct = g_damage_pct[g_difficulty(s)] + 25 * (int64_t)s->g.loop;
+
+	return (fx_t)((int64_t)g_kinds[kind].damage * FX_ONE * pct / 100);
+}
+
+fx_t g_enemy_speed(const struct sim *s, int kind)
+{
+	int64_t pct = g_speed_pct[g_difficulty(s)] + 10 * (int64_t)s->g.loop;
+
+	if (pct > 200)
+		pct = 200;
+	return (fx_t)((int64_t)g_kinds[kind].speed * pct / 100);
+}
+
+static void g_settle_enemy(const struct sim *s, struct g_enemy *e)
+{
+	e->sector = map_point_sector(s->map, e->x, e->y);
+	e->z = s->map->sectors[e->sector].floor_h;
+}
+
+void g_spawn_stage(struct sim *s)
+{
+	const struct map *m = s->map;
+	struct g_game *g = &s->g;
+	int d = g_difficulty(s);
+
+	g->num_enemies = 0;
+	g->num_pickups = 0;
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		const struct map_thing *t = &m->things[i];
+		struct g_thing_info ti;
+
+		g_thing_info(t->type, &ti);
+		if (!g_thing_at_difficulty(t->flags, d))
+			continue;
+		if (ti.cls == G_C_ENEMY && g->num_enemies < G_MAX_ENEMIES) {
+			struct g_enemy *e = &g->en[g->num_enemies++];
+			*e = (struct g_enemy){ 0 };
+			e->x = e->sx = t->x;
+			e->y = e->sy = t->y;
+			e->angle = e->sangle = t->angle;
+			e->type = t->type;
+			e->kind = ti.kind;
+			e->state = G_E_IDLE;
+			e->health = g_kinds[ti.kind].health;
+			g_settle_enemy(s, e);
+		} else if (ti.cls == G_C_PICKUP && g->num_pickups < G_MAX_PICKUPS) {
+			struct g_pickup *p = &g->pk[g->num_pickups++];
+			*p = (struct g_pickup){ 0 };
+			p->x = t->x;
+			p->y = t->y;
+			p->z = m->sectors[map_point_sector(m, t->x, t->y)].floor_h;
+			p->type = t->type;
+			p->kind = ti.kind;
+			p->amount = ti.amount;
+		}
+	}
+	g->alive = g->num_enemies;
+}
+
+void g_enemies_reset(struct sim *s)
+{
+	struct g_game *g = &s->g;
+
+	for (int i = 0; i < g->num_enemies; i++) {
+		struct g_enemy *e = &g->en[i];
+		if (e->state == G_E_DEAD)
+			continue;
+		e->x = e->sx;
+		e->y = e->sy;
+		e->angle = e->sangle;
+		e->state = G_E_IDLE;
+		e->timer = 0;
+		e->anim = 0;
+		e->stuck = 0;
+		e->flash = 0;
+		g_settle_enemy(s, e);
+	}
+}
+
+static uint64_t g_dist2(const struct sim *s, const struct g_enemy *e)
+{
+	int64_t dx = (int64_t)s->pl.x - e->x, dy = (int64_t)s->pl.y - e->y;
+
+	return (uint64_t)(dx * dx) + (uint64_t)(dy * dy);
+}
+
+static int g_within(const struct sim *s, const struct g_enemy *e, fx_t dist)
+{
+	return g_dist2(s, e) <= (uint64_t)((int64_t)dist * dist);
+}
+
+static int g_sees(const struct sim *s, const struct g_enemy *e)
+{
+	return g_sight(s->map, e->x, e->y, e->z + g_kinds[e->kind].eye, s->pl.x, s->pl.y,
+		       s->pl.viewz);
+}
+
+static void g_set_state(struct g_enemy *e, int st, uint16_t timer)
+{
+	e->state = (uint8_t)st;
+	e->timer = timer;
+	e->anim = 0;
+}
+
+/* Walks towards the player (or along the detour). */
+static void g_chase(struct sim *s, int i)
+{
+	struct g_enemy *e = &s->g.en[i];
+	fx_t speed = g_enemy_speed(s, e->kind);
+	ang_t head = tab_atan2(s->pl.y - e->y, s->pl.x - e->x);
+	struct g_body b;
+
+	if (speed == 0)
+		return;
+	if (e->stuck) {
+		head = e->wander;
+		e->stuck--;
+	}
+	e->angle = head;
+	b.x = e->x;
+	b.y = e->y;
+	b.z = e->z;
+	b.momx = fx_mul(speed, tab_cos(head));
+	b.momy = fx_mul(speed, tab_sin(head));
+	b.radius = g_kinds[e->kind].radius;
+	b.self = i;
+	if (g_move(s, &b)) {
+		int64_t mx = (int64_t)b.x - e->x, my = (int64_t)b.y - e->y;
+		/* less than half the intended step: take a detour */
+		if ((uint64_t)(mx * mx + my * my) * 4 < (uint64_t)((int64_t)speed * speed)) {
+			uint32_t r = g_random(s);
+			e->wander = head + ((r & 1) ? ANG90 : (ang_t)0 - ANG90);
+			e->stuck = (uint8_t)(16 + ((r >> 1) & 15));
+		}
+	}
+	e->x = b.x;
+	e->y = b.y;
+	g_settle_enemy(s, e);
+}
+
+static void g_enemy_tick(struct sim *s, int i)
+{
+	struct g_enemy *e = &s->g.en[i];
+	const struct g_kind_info *k = &g_kinds[e->kind];
+	int in_range;
+
+	if (e->anim < UINT16_MAX)
+		e->anim++;
+	if (e->flash)
+		e->flash--;
+	switch (e->state) {
+	case G_E_IDLE:
+		if ((s->tick + (uint32_t)i) % G_IDLE_LOOK == 0 && g_within(s, e, k->sight) &&
+		    g_sees(s, e))
+			g_set_state(e, G_E_CHASE, 0);
+		return;
+	case G_E_PAIN:
+		if (e->timer)
+			e->timer--;
+		if (e->timer == 0)
+			g_set_state(e, G_E_CHASE, 0);
+		return;
+	case G_E_DEAD:
+		return;
+	default:
+		break;
+	}
+	in_range = g_within(s, e, k->range) && g_sees(s, e);
+	if (!in_range) {
+		if (e->state == G_E_ATTACK)
+			g_set_state(e, G_E_CHASE, 0);
+		g_chase(s, i);
+		return;
+	}
+	e->angle = tab_atan2(s->pl.y - e->y, s->pl.x - e->x);
+	if (e->state != G_E_ATTACK) {
+		g_set_state(e, G_E_ATTACK, k->reaction);
+		return;
+	}
+	if (e->timer)
+		e->timer--;
+	if (e->timer == 0) {
+		e->timer = k->period;
+		e->flash = G_FLASH_TICKS;
+		g_hurt_player(s, g_enemy_damage(s, e->kind));
+	}
+}
+
+void g_hurt_player(struct sim *s, fx_t dmg)
+{
+	if (s->g.phase != G_PH_PLAY)
+		return;
+	s->pl.health -= dmg;
+	s->pl.hurt = G_HURT_TICKS;
+	if (s->pl.health <= 0) {
+		s->pl.health = 0;
+		s->g.phase = G_PH_DEAD;
+		s->g.phase_t = 0;
+	}
+}
+
+void g_enemies_tick(struct sim *s)
+{
+	for (int i = 0; i < s->g.num_enemies && s->g.phase == G_PH_PLAY; i++)
+		g_enemy_tick(s, i);
+}
+
+void g_hurt_enemy(struct sim *s, int i, int dmg)
+{
+	struct g_enemy *e = &s->g.en[i];
+
+	if (e->state == G_E_DEAD)
+		return;
+	e->health = (int16_t)(e->health - dmg);
+	if (e->health <= 0) {
+		e->health = 0;
+		g_set_state(e, G_E_DEAD, 0);
+		e->flash = 0;
+		s->g.alive--;
+		s->g.kills++;
+		s->g.score += g_kinds[e->kind].score;
+		return;
+	}
+	if ((g_random(s) & 255) < g_pain_chance[e->kind])
+		g_set_state(e, G_E_PAIN, G_PAIN_TICKS);
+	else if (e->state == G_E_IDLE)
+		g_set_state(e, G_E_CHASE, 0);
+}

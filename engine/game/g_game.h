@@ -1,0 +1,206 @@
+/*
+ * g_game: the arcade game's rules and their state, part of the
+ * deterministic sim (engine/game/sim.h holds these structs by value).
+ *
+ * Everything here is integer or 16.16 fixed point, driven only by the
+ * per-tick commands; the sim's own RNG is the only randomness. The g_ files
+ * split the rules by topic:
+ *   g_thing.c   Doom thing types -> enemy kinds, pickups, lights
+ *   g_enemy.c   enemy kinds, spawning from the map's things, chase, attack
+ *   g_combat.c  line of sight, the player's hitscan shot, damage, pickups
+ *   g_score.c   the high-score table and bookkeeping (and their bytes)
+ *   sim_field.c   named state values for test scripts
+ *   r_game.c  the things to draw, for the renderer
+ */
+#ifndef ARCADED_ENGINE_G_GAME_H
+#define ARCADED_ENGINE_G_GAME_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "engine/core/fx.h"
+
+#define G_MAX_ENEMIES 96
+#define G_MAX_PICKUPS 96
+#define G_MAX_STAGES 8
+#define G_SCORES 10                    /* entries in the high-score table */
+#define G_NAME_LEN 3                   /* initials */
+
+/* Player limits and the weapon (a hitscan pistol). */
+#define G_HEALTH_MAX 100
+#define G_AMMO_START 50
+#define G_AMMO_MAX 200
+#define G_SHOT_DAMAGE 15
+#define G_SHOT_RANGE (2048 * FX_ONE)
+#define G_REFIRE 12                    /* ticks between shots: 5 per second */
+#define G_LIVES_DEFAULT 3
+
+/* Enemy kinds. Each has fixed numbers (g_kinds); difficulty and the
+ * stage loop scale damage and speed (g_enemy.c). */
+enum g_kind { G_GRUNT, G_BRUTE, G_SENTRY, G_KINDS };
+
+struct g_kind_info {
+	char name[8];                  /* "grunt" */
+	fx_t radius;                   /* body circle, map units */
+	fx_t eye;                      /* sight height above its feet */
+	int16_t health;
+	fx_t speed;                    /* chase speed per tick at difficulty 1 */
+	fx_t range;                    /* attack when the player's centre is this near */
+	fx_t sight;                    /* wakes when it sees the player this near */
+	uint8_t damage;                /* per attack at difficulty 1 */
+	uint8_t period;                /* ticks between attacks */
+	uint8_t reaction;              /* ticks from seeing in range to the first attack */
+	uint16_t score;                /* for a kill */
+};
+
+/* The table, indexed by enum g_kind. */
+extern const struct g_kind_info g_kinds[G_KINDS];
+
+enum g_estate {
+	G_E_IDLE,                      /* has not seen the player */
+	G_E_CHASE,                     /* walking towards the player */
+	G_E_ATTACK,                    /* in range with line of sight */
+	G_E_PAIN,                      /* flinching after a hit */
+	G_E_DEAD                       /* a corpse: not solid, not counted */
+};
+
+struct g_enemy {
+	fx_t x, y, z;
+	ang_t angle;                   /* facing, for sprites */
+	uint32_t sector;
+	fx_t sx, sy;                   /* spawn point (respawn after a death) */
+	ang_t sangle;
+	uint16_t type;                 /* the map thing's Doom type (sprite choice) */
+	uint8_t kind;                  /* enum g_kind */
+	uint8_t state;                 /* enum g_estate */
+	int16_t health;
+	uint16_t timer;                /* attack countdown / pain ticks */
+	uint16_t anim;                 /* ticks in the current state */
+	ang_t wander;                  /* detour heading while stuck */
+	uint8_t stuck;                 /* detour ticks left */
+	uint8_t flash;                 /* ticks of the attack flash (sprites) */
+};
+
+enum g_pkind { G_P_HEALTH, G_P_AMMO };
+
+struct g_pickup {
+	fx_t x, y, z;
+	uint16_t type;                 /* Doom thing type */
+	uint8_t kind;                  /* enum g_pkind */
+	uint8_t taken;
+	uint16_t amount;
+};
+
+/* Phases of a game in progress (mode PLAY). */
+enum g_phase {
+	G_PH_PLAY,                     /* fighting */
+	G_PH_DEAD,                     /* the player died: G_DEAD_TICKS, then respawn or game over */
+	G_PH_CLEAR                     /* every enemy is dead: G_CLEAR_TICKS, then the next stage */
+};
+
+#define G_DEAD_TICKS 120
+#define G_CLEAR_TICKS 150
+#define G_BANNER_TICKS 120             /* "STAGE n" shown after a stage starts */
+#define G_CONTINUE_TICKS 600           /* 10 s continue countdown */
+#define G_INITIALS_TICKS 1800          /* 30 s to enter initials */
+#define G_STAGE_BONUS 1000             /* times the stage number, on clearing it */
+
+/* What the last shot did, for the HUD and the puff sprite. */
+enum g_shot { G_SHOT_NONE, G_SHOT_WALL, G_SHOT_ENEMY, G_SHOT_MISS };
+
+struct g_game {
+	uint32_t score;
+	uint8_t lives;                 /* left, including the current one */
+	uint8_t continues;             /* used in this game */
+	uint8_t stage;                 /* index into the sim's stages */
+	uint8_t loop;                  /* times every stage was cleared */
+	uint8_t phase;                 /* enum g_phase */
+	uint16_t phase_t;              /* ticks in the phase */
+	uint32_t stage_t;              /* ticks since the stage started */
+	uint32_t kills;                /* in this game */
+	uint16_t num_enemies, num_pickups;
+	uint16_t alive;                /* enemies not dead */
+	struct g_enemy en[G_MAX_ENEMIES];
+	struct g_pickup pk[G_MAX_PICKUPS];
+	fx_t shot_x, shot_y, shot_z;   /* where the last shot ended */
+	uint8_t shot;                  /* enum g_shot */
+	uint16_t shot_t;               /* ticks since the last shot (saturates) */
+};
+
+/* High-score table, best first; the sim gets it at init and changes it
+ * when a score makes the table; the app stores it (g_scores_encode). */
+struct g_entry {
+	char name[G_NAME_LEN];         /* G_ALPHABET letters, no NUL */
+	uint32_t score;
+	uint8_t stage;                 /* stage reached, 1-based */
+};
+
+struct g_scores {
+	struct g_entry e[G_SCORES];
+};
+
+/* Bookkeeping totals, kept across boots by the app: the sim gets them at
+ * init and counts on from there (deterministically); the service menu
+ * shows and resets them. */
+struct g_books {
+	uint32_t coins;                /* coin pulses */
+	uint32_t plays;                /* games started (continues not counted) */
+	uint64_t play_ticks;           /* ticks in mode PLAY */
+	uint64_t on_ticks;             /* ticks the sim ran (power-on time) */
+};
+
+/* Letters for initials, in the order the joystick steps through them. */
+#define G_ALPHABET "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789. "
+#define G_ALPHABET_LEN 38
+
+/* The factory table: our own initials, 10000 down to 1000. */
+void g_scores_default(struct g_scores *t);
+
+/* Rank (0-based) a score would take, or -1 if it does not make the table.
+ * A new score goes below equal ones already there; 0 never qualifies. */
+int g_scores_rank(const struct g_scores *t, uint32_t score);
+
+/* Inserts at rank (from g_scores_rank, >= 0), moving lower entries down
+ * and dropping the last. */
+void g_scores_insert(struct g_scores *t, int rank, const char name[G_NAME_LEN],
+		     uint32_t score, uint8_t stage);
+
+/* Byte encodings for the state directory: explicit little-endian fields,
+ * a format byte first. decode validates everything (letters from
+ * G_ALPHABET, scores in non-increasing order, stage 1..255) and returns 0,
+ * or -EINVAL leaving *out unchanged. */
+#define G_SCORES_BYTES (4 + G_SCORES * (G_NAME_LEN + 4 + 1))
+#define G_BOOKS_BYTES (4 + 4 + 4 + 8 + 8)
+void g_scores_encode(const struct g_scores *t, uint8_t out[G_SCORES_BYTES]);
+int g_scores_decode(const uint8_t *buf, size_t len, struct g_scores *out);
+void g_books_encode(const struct g_books *b, uint8_t out[G_BOOKS_BYTES]);
+int g_books_decode(const uint8_t *buf, size_t len, struct g_books *out);
+
+/* ---- map things ---------------------------------------------------- */
+
+enum g_class { G_C_NONE, G_C_PLAYER, G_C_ENEMY, G_C_PICKUP, G_C_LIGHT, G_C_DECOR };
+
+struct g_thing_info {
+	uint8_t cls;                   /* enum g_class */
+	uint8_t kind;                  /* enemy: enum g_kind; pickup: enum g_pkind */
+	uint16_t amount;               /* pickup: health or ammo it gives */
+	char sprite[5];                /* Doom sprite name, e.g. "POSS" */
+	uint8_t bright;                /* drawn full bright (lights) */
+	uint8_t stand;                 /* standing frame (0 = 'A'), from th.h */
+	uint8_t frames;                /* frames cycled from it while standing */
+	/* enemies: Doom's frame letters (0 = 'A') of its attack, pain and
+	 * death (first .. last, the last is the corpse) */
+	uint8_t attack, pain, death0, death1;
+};
+
+/* What thing type `type` is in this game (G_C_NONE for types the game
+ * ignores): the class, sprite and standing frame from th.h, enemy kinds,
+ * pickup amounts and enemy frames from g_thing.c. See docs/game.md. */
+void g_thing_info(uint16_t type, struct g_thing_info *out);
+
+/* Whether a thing with Doom flags `flags` appears at difficulty d (0..3):
+ * Doom's skill bits 1 (easy: d 0), 2 (normal: d 1), 4 (hard: d 2, 3).
+ * Flags without any skill bit count as every skill (hand-made maps). */
+int g_thing_at_difficulty(uint16_t flags, int d);
+
+#endif

@@ -1,0 +1,14 @@
+/*
+ * g_kind: the enemy kinds' numbers (g_game.h struct g_kind_info). Data
+ * only: every rule file reads it, and it calls nothing.
+ */
+#include "engine/game/g_game.h"
+
+const struct g_kind_info g_kinds[G_KINDS] = {
+	[G_GRUNT] = { "grunt", 20 * FX_ONE, 40 * FX_ONE, 30, 2 * FX_ONE, 512 * FX_ONE,
+		      1024 * FX_ONE, 5, 60, 30, 100 },
+	[G_BRUTE] = { "brute", 24 * FX_ONE, 44 * FX_ONE, 90, 7 * FX_HALF, 64 * FX_ONE,
+		      1024 * FX_ONE, 10, 30, 15, 300 },
+	[G_SENTRY] = { "sentry", 20 * FX_ONE, 44 * FX_ONE, 50, 0, 768 * FX_ONE,
+		       1024 * FX_ONE, 12, 90, 45, 200 },
+};

@@ -1,0 +1,123 @@
+/*
+ * g_thing: what each map thing type is in this game.
+ *
+ * The thing table th.h says what a Doom type number is (its sprite,
+ * standing frame, and whether it is a monster, pickup, light or
+ * decoration). This file adds the game's meaning: monsters become one of
+ * the three enemy kinds by how they fight in Doom (hitscan soldiers are
+ * grunts, melee and close-range monsters brutes, slow or floating ranged
+ * monsters sentries, which stand their ground); health items, ammo and
+ * weapons become health and ammo pickups (the game has one weapon and one
+ * ammo). Lights are th's light things (Doom's lamps, candles and torches,
+ * and arcaded's point-light types); decorations are drawn and nothing else.
+ * Types th does not know, keys, and monsters not listed here (Commander
+ * Keen, the boss brain) are ignored.
+ */
+#include <string.h>
+
+#include "engine/game/g_game.h"
+#include "engine/map/th.h"
+
+struct g_thing_row {
+	uint16_t type;
+	uint8_t cls, kind;
+	uint16_t amount;
+	/* enemies: walk frames and Doom's frame letters (0 = 'A') of the
+	 * attack, pain and death (first .. last, the last is the corpse);
+	 * pickups: frames cycled */
+	uint8_t frames, attack, pain, death0, death1;
+};
+
+#define E(t, k, walk, att, pain, d0, d1) { t, G_C_ENEMY, k, 0, walk, att, pain, d0, d1 }
+#define H(t, n, frames) { t, G_C_PICKUP, G_P_HEALTH, n, frames, 0, 0, 0, 0 }
+#define M(t, n) { t, G_C_PICKUP, G_P_AMMO, n, 1, 0, 0, 0, 0 }
+
+static const struct g_thing_row g_thing_rows[] = {
+	/* grunts: hitscan soldiers */
+	E(3004, G_GRUNT, 4, 4, 6, 7, 11),             /* zombieman POSS */
+	E(9, G_GRUNT, 4, 4, 6, 7, 11),                /* shotgun guy SPOS */
+	E(65, G_GRUNT, 4, 4, 6, 7, 13),               /* chaingunner CPOS */
+	E(84, G_GRUNT, 4, 5, 7, 8, 12),               /* wolfenstein SS SSWV */
+	/* brutes: melee and close range */
+	E(3001, G_BRUTE, 4, 5, 7, 8, 12),             /* imp TROO */
+	E(3002, G_BRUTE, 4, 5, 7, 8, 13),             /* demon SARG */
+	E(58, G_BRUTE, 4, 5, 7, 8, 13),               /* spectre SARG */
+	E(3006, G_BRUTE, 2, 2, 4, 5, 10),             /* lost soul SKUL */
+	E(3003, G_BRUTE, 4, 5, 7, 8, 14),             /* baron of hell BOSS */
+	E(69, G_BRUTE, 4, 5, 7, 8, 14),               /* hell knight BOS2 */
+	E(66, G_BRUTE, 6, 8, 11, 11, 16),             /* revenant SKEL */
+	E(64, G_BRUTE, 6, 7, 16, 16, 25),             /* arch-vile VILE */
+	/* sentries: ranged, standing their ground */
+	E(3005, G_SENTRY, 1, 2, 4, 6, 11),            /* cacodemon HEAD */
+	E(71, G_SENTRY, 3, 4, 6, 7, 12),              /* pain elemental PAIN */
+	E(68, G_SENTRY, 6, 6, 8, 9, 15),              /* arachnotron BSPI */
+	E(67, G_SENTRY, 6, 7, 9, 10, 19),             /* mancubus FATT */
+	E(16, G_SENTRY, 4, 5, 6, 7, 15),              /* cyberdemon CYBR */
+	E(7, G_SENTRY, 6, 6, 8, 9, 18),               /* spider mastermind SPID */
+	/* health */
+	H(2011, 10, 1),                               /* stimpack STIM */
+	H(2012, 25, 1),                               /* medikit MEDI */
+	H(2014, 2, 4),                                /* health bonus BON1 */
+	H(2013, 100, 4),                              /* soulsphere SOUL */
+	H(83, 100, 4),                                /* megasphere MEGA */
+	/* ammo, and weapons as ammo */
+	M(2007, 10),                                  /* clip CLIP */
+	M(2048, 50),                                  /* box of bullets AMMO */
+	M(2008, 10),                                  /* shells SHEL */
+	M(2049, 25),                                  /* box of shells SBOX */
+	M(2010, 5),                                   /* rocket ROCK */
+	M(2046, 25),                                  /* box of rockets BROK */
+	M(2047, 20),                                  /* cell CELL */
+	M(17, 50),                                    /* cell pack CELP */
+	M(8, 50),                                     /* backpack BPAK */
+	M(2001, 20),                                  /* shotgun SHOT */
+	M(82, 20),                                    /* super shotgun SGN2 */
+	M(2002, 20),                                  /* chaingun MGUN */
+	M(2003, 10),                                  /* rocket launcher LAUN */
+	M(2004, 20),                                  /* plasma rifle PLAS */
+	M(2006, 20),                                  /* BFG9000 BFUG */
+};
+
+void g_thing_info(uint16_t type, struct g_thing_info *out)
+{
+	const struct th_info *th = th_find(type);
+	struct th_light lt;
+
+	memset(out, 0, sizeof(*out));
+	out->cls = G_C_NONE;
+	if (!th)
+		return;
+	memcpy(out->sprite, th->sprite, sizeof(out->sprite));
+	out->stand = (uint8_t)(th->frame >= 'A' && th->frame <= 'Z' ? th->frame - 'A' : 0);
+	out->frames = 1;
+	out->bright = (th->flags & TH_LIGHT) != 0;
+	for (size_t i = 0; i < sizeof(g_thing_rows) / sizeof(g_thing_rows[0]); i++) {
+		const struct g_thing_row *r = &g_thing_rows[i];
+		if (r->type != type)
+			continue;
+		out->cls = r->cls;
+		out->kind = r->kind;
+		out->amount = r->amount;
+		out->frames = r->frames;
+		out->attack = r->attack;
+		out->pain = r->pain;
+		out->death0 = r->death0;
+		out->death1 = r->death1;
+		return;
+	}
+	if (type == 1)
+		out->cls = G_C_PLAYER;
+	else if ((th->flags & TH_LIGHT) || th_light(type, &lt))
+		out->cls = G_C_LIGHT;
+	else if ((th->flags & TH_DECOR) && !(th->flags & TH_INVISIBLE))
+		out->cls = G_C_DECOR;
+}
+
+int g_thing_at_difficulty(uint16_t flags, int d)
+{
+	static const uint16_t bit[4] = { 1, 2, 4, 4 };
+
+	if ((flags & 7) == 0)
+		return 1;
+	return (flags & bit[d < 0 ? 0 : d > 3 ? 3 : d]) != 0;
+}

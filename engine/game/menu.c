@@ -1,0 +1,243 @@
+/*
+ * menu: the service menu's state machine (drawing: menu_draw.c).
+ */
+#include "engine/game/menu.h"
+
+#include <string.h>
+
+#include "engine/game/g_local.h"
+#include "engine/game/sim.h"
+
+#define MENU_DONE_TICKS 180            /* "done" note after a reset: 3 s */
+
+static const uint16_t menu_res[MENU_RES_COUNT][2] = {
+	{ 320, 240 }, { 400, 300 }, { 480, 360 }, { 640, 480 }, { 800, 600 }, { 960, 720 },
+};
+
+void menu_res_size(int i, int *w, int *h)
+{
+	if (i < 1 || i > MENU_RES_COUNT) {
+		*w = 0;
+		*h = 0;
+		return;
+	}
+	*w = menu_res[i - 1][0];
+	*h = menu_res[i - 1][1];
+}
+
+const char *menu_difficulty_name(int d)
+{
+	static const char names[4][8] = { "EASY", "NORMAL", "HARD", "BRUTAL" };
+
+	return d >= 0 && d < 4 ? names[d] : NULL;
+}
+
+void menu_enter(struct menu *m)
+{
+	uint8_t res = m->res;
+
+	memset(m, 0, sizeof(*m));
+	m->res = res;
+	m->page = MENU_MAIN;
+}
+
+static void menu_back(struct menu *m)
+{
+	m->page = MENU_MAIN;
+	m->cursor = m->main_cursor;
+}
+
+/* Steps v by +1 or -1 within lo..hi, wrapping round. */
+static uint8_t menu_step(int v, int dir, int lo, int hi)
+{
+	v += dir;
+	if (v > hi)
+		v = lo;
+	if (v < lo)
+		v = hi;
+	return (uint8_t)v;
+}
+
+static int menu_up_down(struct menu *m, uint8_t nav, int count)
+{
+	if (nav & MENU_NAV_UP) {
+		m->cursor = menu_step(m->cursor, -1, 0, count - 1);
+		return 1;
+	}
+	if (nav & MENU_NAV_DOWN) {
+		m->cursor = menu_step(m->cursor, 1, 0, count - 1);
+		return 1;
+	}
+	return 0;
+}
+
+static int menu_main(struct sim *s, uint8_t pressed, uint8_t nav)
+{
+	struct menu *m = &s->menu;
+
+	if (pressed & SIM_BT_SERVICE)
+		return 1;
+	menu_up_down(m, nav, MENU_ITEMS);
+	if (!(pressed & SIM_BT_FIRE))
+		return 0;
+	m->main_cursor = m->cursor;
+	switch (m->cursor) {
+	case MENU_I_INPUT:
+		m->page = MENU_INPUT;
+		m->coins_seen = 0;
+		break;
+	case MENU_I_DISPLAY:
+		m->page = MENU_DISPLAY;
+		m->display = MENU_D_BARS;
+		break;
+	case MENU_I_SETTINGS:
+		m->page = MENU_SETTINGS;
+		m->cursor = 0;
+		break;
+	case MENU_I_BOOKS:
+		m->page = MENU_BOOKS;
+		break;
+	case MENU_I_RESET_SCORES:
+	case MENU_I_RESET_BOOKS:
+		m->page = MENU_CONFIRM;
+		m->confirm = m->cursor;
+		m->yes = 0;
+		break;
+	case MENU_I_WIZARD:
+		m->page = MENU_WIZARD;
+		break;
+	case MENU_I_EXIT:
+	default:
+		return 1;
+	}
+	return 0;
+}
+
+/* Changes the setting under the cursor by dir (+1 / -1). */
+static void menu_change(struct sim *s, int dir)
+{
+	struct sim_settings *t = &s->set;
+	struct menu *m = &s->menu;
+
+	switch (m->cursor) {
+	case MENU_S_DIFFICULTY:
+		t->difficulty = menu_step(g_difficulty(s), dir, 0, 3);
+		break;
+	case MENU_S_LIVES:
+		t->lives = menu_step(g_lives_setting(s), dir, 1, 9);
+		break;
+	case MENU_S_COINS:
+		t->coins_per_credit =
+			menu_step(t->coins_per_credit ? t->coins_per_credit : 1, dir, 1, 9);
+		break;
+	case MENU_S_FREEPLAY:
+		t->freeplay = (uint8_t)!t->freeplay;
+		break;
+	case MENU_S_RES:
+		m->res = menu_step(m->res, dir, 0, MENU_RES_COUNT);
+		return;
+	default:
+		return;
+	}
+	s->set_gen++;
+}
+
+static void menu_settings(struct sim *s, uint8_t pressed, uint8_t nav)
+{
+	struct menu *m = &s->menu;
+
+	if (pressed & SIM_BT_SERVICE) {
+		menu_back(m);
+		return;
+	}
+	if (menu_up_down(m, nav, MENU_SETTINGS_COUNT))
+		return;
+	if (m->cursor == MENU_S_BACK) {
+		if (pressed & SIM_BT_FIRE)
+			menu_back(m);
+		return;
+	}
+	if (m->cursor == MENU_S_DEFAULTS) {
+		if (pressed & SIM_BT_FIRE) {
+			s->set.coins_per_credit = 1;
+			s->set.freeplay = 0;
+			s->set.difficulty = MENU_DEFAULT_DIFFICULTY;
+			s->set.lives = G_LIVES_DEFAULT;
+			m->res = 0;
+			s->set_gen++;
+		}
+		return;
+	}
+	if (nav & MENU_NAV_LEFT)
+		menu_change(s, -1);
+	else if ((nav & MENU_NAV_RIGHT) || (pressed & SIM_BT_FIRE))
+		menu_change(s, 1);
+}
+
+static void menu_confirm(struct sim *s, uint8_t pressed, uint8_t nav)
+{
+	struct menu *m = &s->menu;
+
+	if (pressed & SIM_BT_SERVICE) {
+		menu_back(m);
+		return;
+	}
+	if (nav)
+		m->yes = (uint8_t)!m->yes;
+	if (!(pressed & SIM_BT_FIRE))
+		return;
+	if (m->yes) {
+		if (m->confirm == MENU_I_RESET_SCORES) {
+			g_scores_default(&s->scores);
+			s->new_rank = -1;
+			s->scores_gen++;
+		} else {
+			memset(&s->books, 0, sizeof(s->books));
+			s->books_gen++;
+		}
+		m->done = m->confirm;
+		m->done_t = 0;
+	}
+	menu_back(m);
+}
+
+int menu_tick(struct sim *s, uint8_t pressed, uint8_t nav)
+{
+	struct menu *m = &s->menu;
+
+	if (m->t < UINT32_MAX)
+		m->t++;
+	if (m->done && ++m->done_t >= MENU_DONE_TICKS)
+		m->done = 0;
+	switch (m->page) {
+	case MENU_MAIN:
+		return menu_main(s, pressed, nav);
+	case MENU_INPUT:
+		m->coins_seen += s->cmd.coins;
+		if (pressed & SIM_BT_SERVICE)
+			menu_back(m);
+		break;
+	case MENU_DISPLAY:
+		if (pressed & SIM_BT_FIRE)
+			m->display = (uint8_t)((m->display + 1) % MENU_D_COUNT);
+		if (pressed & SIM_BT_SERVICE)
+			menu_back(m);
+		break;
+	case MENU_SETTINGS:
+		menu_settings(s, pressed, nav);
+		break;
+	case MENU_BOOKS:
+		if (pressed & (SIM_BT_SERVICE | SIM_BT_FIRE))
+			menu_back(m);
+		break;
+	case MENU_WIZARD:
+		/* one tick: the app has seen the request (menu.h) */
+		menu_back(m);
+		break;
+	case MENU_CONFIRM:
+	default:
+		menu_confirm(s, pressed, nav);
+		break;
+	}
+	return 0;
+}

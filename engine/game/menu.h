@@ -1,0 +1,108 @@
+/*
+ * menu: the operator's service menu, a deterministic state machine inside
+ * the sim (struct sim holds a struct menu). It is driven by the same
+ * per-tick commands as the game, so a service session is recorded and
+ * replays like a game, and the scripts can test it.
+ *
+ * Why in the sim and not in the app: what the menu changes (settings, the
+ * high-score table, bookkeeping) changes the game, and the sim's state hash
+ * must cover every such change; driving it from the recorded commands keeps
+ * one source of truth. The app only applies what the menu decided
+ * (persisting settings, scores and bookkeeping, changing the render size).
+ *
+ * Navigation: forward/back (joystick up/down) move the cursor, turn or
+ * strafe left/right change a value, fire selects, service goes back (to the
+ * main page, and from there out of the menu). Held directions repeat.
+ *
+ * Pages:
+ *   MAIN      the list of pages
+ *   INPUT     input test: each control's state as the game receives it
+ *   DISPLAY   display test: colour bars, convergence grid, orientation
+ *             (fire steps through them)
+ *   SETTINGS  difficulty, lives, coins per credit, free play, render size,
+ *             factory defaults
+ *   BOOKS     bookkeeping: coins, plays, play time, average, uptime
+ *   CONFIRM   reset of the high scores or the bookkeeping: NO / YES
+ *   WIZARD    the operator chose CONFIGURE INPUTS: a request to the app,
+ *             which runs the input configuration wizard (app/wiz.h) outside
+ *             the sim. The page lasts exactly one tick: the next tick
+ *             returns to MAIN with the cursor on the item, whatever the
+ *             commands. The app looks at the state after every tick, sees
+ *             page == MENU_WIZARD once per choice and starts the wizard; it
+ *             never writes sim state. A page value rather than a new
+ *             counter field: every field is hashed and snapshotted
+ *             (sim_hash.c), so a new one would change every recorded hash.
+ */
+#ifndef ARCADED_ENGINE_MENU_H
+#define ARCADED_ENGINE_MENU_H
+
+#include <stdint.h>
+
+struct sim;
+struct r_frame;
+struct hud_env;
+
+enum menu_page { MENU_MAIN, MENU_INPUT, MENU_DISPLAY, MENU_SETTINGS, MENU_BOOKS, MENU_CONFIRM,
+		 MENU_WIZARD, MENU_PAGES };
+
+/* Items of the main page, in order. */
+enum menu_item { MENU_I_INPUT, MENU_I_DISPLAY, MENU_I_SETTINGS, MENU_I_BOOKS,
+		 MENU_I_RESET_SCORES, MENU_I_RESET_BOOKS, MENU_I_WIZARD, MENU_I_EXIT, MENU_ITEMS };
+
+/* Items of the settings page. */
+enum menu_setting { MENU_S_DIFFICULTY, MENU_S_LIVES, MENU_S_COINS, MENU_S_FREEPLAY,
+		    MENU_S_RES, MENU_S_DEFAULTS, MENU_S_BACK, MENU_SETTINGS_COUNT };
+
+/* The factory settings MENU_S_DEFAULTS restores: 1 coin per credit, no
+ * free play, NORMAL difficulty, 3 lives, the configured render size. */
+#define MENU_DEFAULT_DIFFICULTY 1
+
+/* Display test screens, stepped by fire. */
+enum menu_display { MENU_D_BARS, MENU_D_GRID, MENU_D_ORIENT, MENU_D_COUNT };
+
+/* Render sizes the settings page offers (index 1..MENU_RES_COUNT; 0 means
+ * "as configured", the size the cabinet booted with). */
+#define MENU_RES_COUNT 6
+
+/* Navigation bits (sim.c computes them per tick: edges and repeats). */
+#define MENU_NAV_UP 0x01
+#define MENU_NAV_DOWN 0x02
+#define MENU_NAV_LEFT 0x04
+#define MENU_NAV_RIGHT 0x08
+
+struct menu {
+	uint8_t page;                  /* enum menu_page */
+	uint8_t cursor;                /* item on MAIN or SETTINGS */
+	uint8_t main_cursor;           /* MAIN's cursor, kept while on a sub-page */
+	uint8_t display;               /* enum menu_display */
+	uint8_t confirm;               /* CONFIRM: MENU_I_RESET_SCORES or _BOOKS */
+	uint8_t yes;                   /* CONFIRM: YES highlighted */
+	uint8_t res;                   /* render size choice: 0 as configured, 1..MENU_RES_COUNT */
+	uint8_t done;                  /* last reset done: MENU_I_RESET_*, 0 none */
+	uint16_t done_t;               /* ticks the "done" note has shown */
+	uint32_t coins_seen;           /* input test: coin pulses since the page opened */
+	uint32_t t;                    /* ticks since the menu was entered */
+};
+
+/* Opens the menu at the main page (res keeps its value). */
+void menu_enter(struct menu *m);
+
+/* One tick of the menu, with this tick's button presses (edges, SIM_BT_*)
+ * and navigation bits (MENU_NAV_*); may change s->set, s->scores, s->books.
+ * Returns 1 when the operator leaves the menu (the sim returns to attract),
+ * else 0. */
+int menu_tick(struct sim *s, uint8_t pressed, uint8_t nav);
+
+/* Width and height of render size choice i (1..MENU_RES_COUNT); 0 and
+ * other values give 0 x 0. */
+void menu_res_size(int i, int *w, int *h);
+
+/* Names for the screens: "EASY" "NORMAL" "HARD" "BRUTAL" for difficulty
+ * 0..3 (NULL otherwise). */
+const char *menu_difficulty_name(int d);
+
+/* Draws the menu page for s over the whole frame (menu_draw.c), with the
+ * HUD's colours and font (engine/ui/hud.h). */
+void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f);
+
+#endif

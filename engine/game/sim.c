@@ -1,0 +1,506 @@
+/*
+ * sim: the mode machine (attract, play, game over, initials, service),
+ * coins and credits, stages, lives and the player, in 16.16 fixed point.
+ * The rules of the fight live in the g_*.c files, the service menu in
+ * menu.c; this file sequences them, one tick at a time.
+ */
+#include "engine/game/sim.h"
+
+#include <assert.h>
+#include <stddef.h>
+#include <string.h>
+
+#include "engine/core/hash.h"
+#include "engine/core/tab.h"
+#include "engine/game/g_local.h"
+#include "engine/map/map.h"
+
+/*
+ * Movement constants. Each tick: thrust from the command, move by the
+ * momentum (with collision), then friction. At steady state the move per
+ * tick is thrust / (1 - friction) = thrust * 65536 / 6144, so forward 127
+ * (127 * 384 = 48768 = 0.744 units of thrust) gives 7.94 units per tick,
+ * 476 units per second at 60 Hz.
+ */
+#define SIM_FRICTION 0xe800            /* Doom's FRICTION */
+#define SIM_STOPSPEED 0x1000           /* Doom's STOPSPEED: below it, stop */
+#define SIM_THRUST 384                 /* thrust per unit of forward/side */
+#define SIM_MAX_MOVE (16 * FX_ONE)     /* momentum clamp per axis */
+#define SIM_ATTRACT_TURN (ANG90 / (8 * SIM_TICRATE))  /* a turn in 32 s */
+#define SIM_RNG_SEED 0x2545f491u
+#define SIM_SPAWN_INSET (32 * FX_ONE)  /* no player start: this far off a wall */
+#define SIM_DEAD_VIEW (8 * FX_ONE)     /* eye height of a dead player */
+#define SIM_NAV_DELAY 20               /* ticks before a held direction repeats */
+#define SIM_NAV_REPEAT 6               /* ticks between repeats */
+
+/* Names as arrays, not pointers: the tables stay read-only data. */
+static const char sim_modes[SIM_MODE_COUNT][10] = {
+	[SIM_ATTRACT] = "attract", [SIM_PLAY] = "play", [SIM_GAMEOVER] = "gameover",
+	[SIM_INITIALS] = "initials", [SIM_SERVICE] = "service",
+};
+
+static const char sim_pages[SIM_PAGE_COUNT][8] = {
+	[SIM_PAGE_TITLE] = "title", [SIM_PAGE_SCORES] = "scores", [SIM_PAGE_DEMO] = "demo",
+};
+
+const char *sim_mode_name(enum sim_mode m)
+{
+	return (unsigned)m < SIM_MODE_COUNT ? sim_modes[m] : NULL;
+}
+
+int sim_mode_from_name(const char *name)
+{
+	for (int i = 0; i < SIM_MODE_COUNT; i++)
+		if (strcmp(name, sim_modes[i]) == 0)
+			return i;
+	return -1;
+}
+
+const char *sim_page_name(int page)
+{
+	return page >= 0 && page < SIM_PAGE_COUNT ? sim_pages[page] : NULL;
+}
+
+int sim_page_from_name(const char *name)
+{
+	for (int i = 0; i < SIM_PAGE_COUNT; i++)
+		if (strcmp(name, sim_pages[i]) == 0)
+			return i;
+	return -1;
+}
+
+static void sim_settle(struct sim *s)
+{
+	struct sim_player *p = &s->pl;
+
+	p->sector = map_point_sector(s->map, p->x, p->y);
+	p->z = s->map->sectors[p->sector].floor_h;
+	p->viewz = p->z + SIM_VIEW_HEIGHT;
+}
+
+/* Puts the player at the map's player 1 start, or, without one, SPAWN_INSET
+ * in front of the middle of the first line whose front side faces sector 0,
+ * facing along that line. Keeps health and ammo. */
+static void sim_spawn(struct sim *s)
+{
+	const struct map *m = s->map;
+	struct sim_player *p = &s->pl;
+	fx_t health = p->health;
+	uint16_t ammo = p->ammo;
+	uint32_t i;
+
+	memset(p, 0, sizeof *p);
+	p->health = health;
+	p->ammo = ammo;
+	for (i = 0; i < m->num_things; i++) {
+		if (m->things[i].type == 1) {
+			p->x = m->things[i].x;
+			p->y = m->things[i].y;
+			p->angle = m->things[i].angle;
+			sim_settle(s);
+			return;
+		}
+	}
+	for (i = 0; i < m->num_lines; i++) {
+		const struct map_line *l = &m->lines[i];
+		if (m->sides[l->side[0]].sector == 0) {
+			const struct map_vertex *a = &m->vertices[l->v1], *b = &m->vertices[l->v2];
+			ang_t in;
+			p->angle = tab_atan2(b->y - a->y, b->x - a->x);
+			in = p->angle - ANG90;         /* the front side is the right */
+			p->x = (fx_t)(((int64_t)a->x + b->x) / 2) + fx_mul(SIM_SPAWN_INSET, tab_cos(in));
+			p->y = (fx_t)(((int64_t)a->y + b->y) / 2) + fx_mul(SIM_SPAWN_INSET, tab_sin(in));
+			break;
+		}
+	}
+	sim_settle(s);
+}
+
+/* Loads stage i: its map, enemies and pickups, the player at its start. */
+static void sim_start_stage(struct sim *s, int i)
+{
+	s->g.stage = (uint8_t)i;
+	s->map = s->stages[i];
+	s->g.phase = G_PH_PLAY;
+	s->g.phase_t = 0;
+	s->g.stage_t = 0;
+	s->g.shot = G_SHOT_NONE;
+	s->g.shot_t = UINT16_MAX;
+	g_spawn_stage(s);
+	sim_spawn(s);
+}
+
+static void sim_full_health(struct sim *s)
+{
+	s->pl.health = G_HEALTH_MAX * FX_ONE;
+	if (s->pl.ammo < G_AMMO_START)
+		s->pl.ammo = G_AMMO_START;
+}
+
+static void sim_new_game(struct sim *s)
+{
+	memset(&s->g, 0, sizeof s->g);
+	s->g.lives = (uint8_t)g_lives_setting(s);
+	s->pl.ammo = 0;
+	sim_full_health(s);
+	s->new_rank = -1;
+	s->mode = SIM_PLAY;
+	s->mode_t = 0;
+	sim_start_stage(s, 0);
+}
+
+/* Back to attract at `page`: the world is stage 0 again, seen by the idle
+ * camera. */
+static void sim_attract(struct sim *s, int page)
+{
+	s->mode = SIM_ATTRACT;
+	s->page = (uint8_t)page;
+	s->mode_t = 0;
+	sim_start_stage(s, 0);
+}
+
+void sim_init_stages(struct sim *s, const struct map *const *maps, int n,
+		     const struct sim_settings *set, const struct g_scores *scores,
+		     const struct g_books *books)
+{
+	assert(n >= 1 && n <= G_MAX_STAGES);
+	memset(s, 0, sizeof *s);
+	for (int i = 0; i < n; i++)
+		s->stages[i] = maps[i];
+	s->num_stages = (uint8_t)n;
+	s->set = *set;
+	s->rng = SIM_RNG_SEED;
+	s->new_rank = -1;
+	s->ini_rank = -1;
+	if (scores)
+		s->scores = *scores;
+	else
+		g_scores_default(&s->scores);
+	if (books)
+		s->books = *books;
+	if (set->start_in_play)
+		sim_new_game(s);
+	else
+		sim_attract(s, SIM_PAGE_TITLE);
+}
+
+void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set)
+{
+	sim_init_stages(s, &m, 1, set, NULL, NULL);
+}
+
+static fx_t sim_clamp_mom(int64_t v)
+{
+	return (fx_t)(v > SIM_MAX_MOVE ? SIM_MAX_MOVE : v < -SIM_MAX_MOVE ? -SIM_MAX_MOVE : v);
+}
+
+/* Friction, symmetric in sign (fx_mul rounds towards minus infinity). */
+static fx_t sim_friction(fx_t v)
+{
+	int64_t a = ((int64_t)fx_abs(v) * SIM_FRICTION) >> FX_SHIFT;
+	return (fx_t)(v < 0 ? -a : a);
+}
+
+static void sim_player_move(struct sim *s, const struct sim_cmd *cmd)
+{
+	struct sim_player *p = &s->pl;
+	int64_t mx = p->momx, my = p->momy;
+
+	p->angle += (uint32_t)cmd->turn * 65536u;
+	if (cmd->forward) {
+		fx_t f = cmd->forward * SIM_THRUST;
+		mx += fx_mul(f, tab_cos(p->angle));
+		my += fx_mul(f, tab_sin(p->angle));
+	}
+	if (cmd->side) {
+		fx_t f = cmd->side * SIM_THRUST;
+		mx += fx_mul(f, tab_cos(p->angle - ANG90));
+		my += fx_mul(f, tab_sin(p->angle - ANG90));
+	}
+	p->momx = sim_clamp_mom(mx);
+	p->momy = sim_clamp_mom(my);
+	if (p->momx || p->momy) {
+		struct g_body b = { p->x, p->y, p->z, p->momx, p->momy, SIM_PLAYER_RADIUS, -1 };
+		g_move(s, &b);
+		p->x = b.x;
+		p->y = b.y;
+		p->momx = b.momx;
+		p->momy = b.momy;
+		sim_settle(s);
+	}
+	if (!cmd->forward && !cmd->side && fx_abs(p->momx) < SIM_STOPSPEED &&
+	    fx_abs(p->momy) < SIM_STOPSPEED) {
+		p->momx = 0;
+		p->momy = 0;
+	} else {
+		p->momx = sim_friction(p->momx);
+		p->momy = sim_friction(p->momy);
+	}
+}
+
+static void sim_coins(struct sim *s, uint8_t coins)
+{
+	uint32_t per = s->set.coins_per_credit ? s->set.coins_per_credit : 1;
+
+	if (!coins)
+		return;
+	s->coins_total += coins;
+	s->books.coins += coins;
+	s->books_gen++;
+	s->coin_rem += coins;
+	while (s->coin_rem >= per) {
+		s->coin_rem -= per;
+		s->credits++;
+	}
+}
+
+/* Spends a credit for a start or continue; 0 if there is none. */
+static int sim_pay(struct sim *s)
+{
+	if (s->set.freeplay)
+		return 1;
+	if (s->credits == 0)
+		return 0;
+	s->credits--;
+	return 1;
+}
+
+/* The player lost a life (the death phase ended). */
+static void sim_life_lost(struct sim *s)
+{
+	struct g_game *g = &s->g;
+
+	if (g->lives > 0)
+		g->lives--;
+	if (g->lives > 0) {
+		sim_full_health(s);
+		g_enemies_reset(s);
+		g->phase = G_PH_PLAY;
+		g->phase_t = 0;
+		sim_spawn(s);
+		return;
+	}
+	s->mode = SIM_GAMEOVER;
+	s->mode_t = 0;
+	s->countdown = G_CONTINUE_TICKS;
+}
+
+static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd)
+{
+	struct g_game *g = &s->g;
+	struct sim_player *p = &s->pl;
+
+	if (g->stage_t < UINT32_MAX)
+		g->stage_t++;
+	if (g->shot_t < UINT16_MAX)
+		g->shot_t++;
+	if (p->refire)
+		p->refire--;
+	if (p->hurt)
+		p->hurt--;
+	if (p->bonus)
+		p->bonus--;
+	switch (g->phase) {
+	case G_PH_PLAY:
+		sim_player_move(s, cmd);
+		if ((cmd->buttons & SIM_BT_FIRE) && p->refire == 0 && p->ammo > 0)
+			g_fire(s);
+		g_pickups_tick(s);
+		g_enemies_tick(s);
+		if (g->phase == G_PH_PLAY && g->num_enemies > 0 && g->alive == 0) {
+			g->score += G_STAGE_BONUS * ((uint32_t)g->stage + 1);
+			g->phase = G_PH_CLEAR;
+			g->phase_t = 0;
+		}
+		break;
+	case G_PH_DEAD:
+		g->phase_t++;
+		p->momx = p->momy = 0;
+		if (p->viewz - p->z > SIM_DEAD_VIEW)
+			p->viewz -= FX_ONE;
+		if (g->phase_t >= G_DEAD_TICKS)
+			sim_life_lost(s);
+		break;
+	case G_PH_CLEAR:
+	default:
+		/* the player may walk about while the banner shows */
+		g->phase_t++;
+		sim_player_move(s, cmd);
+		if (g->phase_t >= G_CLEAR_TICKS) {
+			int next = g->stage + 1;
+			if (p->ammo < G_AMMO_START)
+				p->ammo = G_AMMO_START;
+			if (next >= s->num_stages) {
+				next = 0;
+				if (g->loop < UINT8_MAX)
+					g->loop++;
+			}
+			sim_start_stage(s, next);
+		}
+		break;
+	}
+}
+
+static void sim_gameover_tick(struct sim *s, uint8_t pressed)
+{
+	int rank;
+
+	if ((pressed & SIM_BT_START) && sim_pay(s)) {
+		struct g_game *g = &s->g;
+		if (g->continues < UINT8_MAX)
+			g->continues++;
+		g->lives = (uint8_t)g_lives_setting(s);
+		sim_full_health(s);
+		g_enemies_reset(s);
+		g->phase = G_PH_PLAY;
+		g->phase_t = 0;
+		sim_spawn(s);
+		s->mode = SIM_PLAY;
+		s->mode_t = 0;
+		return;
+	}
+	if (pressed & SIM_BT_FIRE)
+		s->countdown = s->countdown > SIM_TICRATE ? (uint16_t)(s->countdown - SIM_TICRATE) : 0;
+	else if (s->countdown)
+		s->countdown--;
+	if (s->countdown)
+		return;
+	rank = g_scores_rank(&s->scores, s->g.score);
+	if (rank < 0) {
+		sim_attract(s, SIM_PAGE_TITLE);
+		return;
+	}
+	s->mode = SIM_INITIALS;
+	s->mode_t = 0;
+	s->ini_pos = 0;
+	memset(s->ini, 0, sizeof s->ini);
+	s->ini_rank = (int8_t)rank;
+}
+
+static void sim_initials_done(struct sim *s)
+{
+	char name[G_NAME_LEN];
+
+	for (int i = 0; i < G_NAME_LEN; i++)
+		name[i] = G_ALPHABET[s->ini[i] % G_ALPHABET_LEN];
+	g_scores_insert(&s->scores, s->ini_rank, name, s->g.score, (uint8_t)(s->g.stage + 1));
+	s->scores_gen++;
+	s->new_rank = s->ini_rank;
+	s->ini_rank = -1;
+	sim_attract(s, SIM_PAGE_SCORES);
+}
+
+static void sim_initials_tick(struct sim *s, uint8_t pressed, uint8_t nav)
+{
+	uint8_t *c = &s->ini[s->ini_pos];
+
+	if (nav & (MENU_NAV_UP | MENU_NAV_RIGHT))
+		*c = (uint8_t)((*c + 1) % G_ALPHABET_LEN);
+	else if (nav & (MENU_NAV_DOWN | MENU_NAV_LEFT))
+		*c = (uint8_t)((*c + G_ALPHABET_LEN - 1) % G_ALPHABET_LEN);
+	if (pressed & SIM_BT_FIRE) {
+		s->ini_pos++;
+		if (s->ini_pos >= G_NAME_LEN) {
+			sim_initials_done(s);
+			return;
+		}
+		s->ini[s->ini_pos] = s->ini[s->ini_pos - 1];  /* start from the last letter */
+	}
+	if (s->mode_t >= G_INITIALS_TICKS)
+		sim_initials_done(s);
+}
+
+static void sim_attract_tick(struct sim *s, uint8_t pressed)
+{
+	static const uint32_t len[SIM_PAGE_COUNT] = { SIM_TITLE_TICKS, SIM_SCORES_TICKS,
+						      SIM_DEMO_TICKS };
+
+	if ((pressed & SIM_BT_START) && sim_pay(s)) {
+		s->plays++;
+		s->books.plays++;
+		s->books_gen++;
+		sim_new_game(s);
+		return;
+	}
+	s->pl.angle += SIM_ATTRACT_TURN;
+	if (s->mode_t >= len[s->page % SIM_PAGE_COUNT]) {
+		s->page = (uint8_t)((s->page + 1) % SIM_PAGE_COUNT);
+		s->mode_t = 0;
+	}
+}
+
+/* Directions held in cmd, as MENU_NAV_* bits: forward is up, back is
+ * down, turning or strafing left is left, right is right. */
+static uint8_t sim_dirs(const struct sim_cmd *c)
+{
+	return (uint8_t)((c->forward > 0 ? MENU_NAV_UP : 0) | (c->forward < 0 ? MENU_NAV_DOWN : 0) |
+			 (c->turn > 0 || c->side < 0 ? MENU_NAV_LEFT : 0) |
+			 (c->turn < 0 || c->side > 0 ? MENU_NAV_RIGHT : 0));
+}
+
+/* This tick's navigation: new directions, and held ones every
+ * SIM_NAV_REPEAT ticks after SIM_NAV_DELAY. */
+static uint8_t sim_nav(struct sim *s, const struct sim_cmd *c)
+{
+	uint8_t held = sim_dirs(c), nav = (uint8_t)(held & ~s->prev_nav);
+
+	if (held != s->prev_nav)
+		s->nav_t = 0;
+	else if (s->nav_t < UINT16_MAX)
+		s->nav_t++;
+	if (held && s->nav_t >= SIM_NAV_DELAY && (s->nav_t - SIM_NAV_DELAY) % SIM_NAV_REPEAT == 0)
+		nav |= held;
+	s->prev_nav = held;
+	return nav;
+}
+
+void sim_tick(struct sim *s, const struct sim_cmd *cmd)
+{
+	uint8_t pressed = (uint8_t)(cmd->buttons & ~s->prev_buttons);
+	uint8_t nav = sim_nav(s, cmd);
+
+	s->prev_buttons = cmd->buttons;
+	s->cmd = *cmd;
+	s->books.on_ticks++;
+	if (s->mode_t < UINT32_MAX)
+		s->mode_t++;
+	sim_coins(s, cmd->coins);
+	if ((pressed & SIM_BT_SERVICE) && s->mode != SIM_SERVICE) {
+		s->mode = SIM_SERVICE;
+		s->mode_t = 0;
+		menu_enter(&s->menu);
+		pressed = 0;
+	}
+	switch (s->mode) {
+	case SIM_ATTRACT:
+		sim_attract_tick(s, pressed);
+		break;
+	case SIM_PLAY:
+		s->books.play_ticks++;
+		sim_play_tick(s, cmd);
+		break;
+	case SIM_GAMEOVER:
+		sim_gameover_tick(s, pressed);
+		break;
+	case SIM_INITIALS:
+		sim_initials_tick(s, pressed, nav);
+		break;
+	case SIM_SERVICE:
+	default:
+		if (menu_tick(s, pressed, nav))
+			sim_attract(s, SIM_PAGE_TITLE);
+		break;
+	}
+	g_random(s);                   /* stepped every tick so every tick's hash covers it */
+	s->tick++;
+}
+
+uint64_t sim_stages_hash(const struct map *const *maps, int n)
+{
+	uint64_t h = HASH_INIT;
+
+	for (int i = 0; i < n; i++)
+		h = hash_u64(h, maps[i] ? maps[i]->content_hash : 0);
+	return h;
+}
+

@@ -1,0 +1,251 @@
+/*
+ * sim: the deterministic game simulation.
+ *
+ * The sim reads only one struct sim_cmd per tick (never a clock, never a
+ * device), uses only fixed point and table trigonometry, and keeps all of
+ * its state, including its RNG, in struct sim. Two sims fed the same
+ * commands from the same start (maps, settings, high-score table,
+ * bookkeeping) are bit-identical on every compiler, optimisation level and
+ * CPU; sim_hash proves it tick by tick.
+ *
+ * struct sim is a plain value (no allocation): several can live in one
+ * process (the app runs a second one for the attract demo). It borrows the
+ * stage maps, which must outlive it.
+ *
+ * Modes (the arcade flow):
+ *   ATTRACT   pages TITLE, SCORES, DEMO in a loop; coins make credits;
+ *             START with a credit (or free play) starts a game
+ *   PLAY      a game: stages of enemies; dying costs a life
+ *   GAMEOVER  no lives left: CONTINUE countdown (10 s); START with a credit
+ *             continues, fire speeds the countdown up
+ *   INITIALS  the score made the high-score table: 3 letters
+ *   SERVICE   the service menu (engine/game/menu.h); the SERVICE button enters
+ *             it from every mode, abandoning a game in progress
+ */
+#ifndef ARCADED_ENGINE_SIM_H
+#define ARCADED_ENGINE_SIM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "engine/core/fx.h"
+#include "engine/game/g_game.h"
+#include "engine/game/menu.h"
+
+struct map;
+struct r_view;
+
+#define SIM_TICRATE 60
+
+/* Buttons: levels, sampled once per tick. The sim detects edges itself. */
+#define SIM_BT_FIRE 0x01
+#define SIM_BT_USE 0x02
+#define SIM_BT_START 0x04
+#define SIM_BT_SERVICE 0x08
+
+/* One tick of player input: exactly what a recording stores (6 bytes,
+ * see input/rec.h). forward/side: -127..127 of full speed (positive is
+ * forward / right). turn: change of view angle this tick in 1/65536 of a
+ * turn, positive counter-clockwise (left). coins: coin pulses this tick. */
+struct sim_cmd {
+	int8_t forward;
+	int8_t side;
+	int16_t turn;
+	uint8_t buttons;
+	uint8_t coins;
+};
+
+enum sim_mode {
+	SIM_ATTRACT,   /* waiting for credits: title, scores, demo */
+	SIM_PLAY,      /* a game in progress */
+	SIM_GAMEOVER,  /* continue countdown */
+	SIM_INITIALS,  /* entering initials for the high-score table */
+	SIM_SERVICE,   /* the service menu */
+	SIM_MODE_COUNT
+};
+
+/* Attract pages, in the order they cycle. */
+enum sim_page { SIM_PAGE_TITLE, SIM_PAGE_SCORES, SIM_PAGE_DEMO, SIM_PAGE_COUNT };
+#define SIM_TITLE_TICKS 480            /* 8 s */
+#define SIM_SCORES_TICKS 480           /* 8 s */
+#define SIM_DEMO_TICKS 1800            /* 30 s: the app replays its demo meanwhile */
+
+/* Operator settings that change the game's rules; stored in recordings. */
+struct sim_settings {
+	uint8_t coins_per_credit;      /* 1..9; 0 counts as 1 */
+	uint8_t freeplay;              /* 0/1: start needs no credit */
+	uint8_t start_in_play;         /* 0/1: skip attract (development, make run) */
+	uint8_t difficulty;            /* 0 easy, 1 normal, 2 hard, 3 brutal; above 3 counts as 3 */
+	uint8_t lives;                 /* 1..9; 0 counts as G_LIVES_DEFAULT */
+};
+
+struct sim_player {
+	fx_t x, y;                     /* position on the map */
+	fx_t z;                        /* feet height (follows the floor, steps up) */
+	fx_t viewz;                    /* eye height */
+	fx_t momx, momy;               /* momentum per tick */
+	ang_t angle;                   /* view direction */
+	uint32_t sector;               /* sector under (x, y) */
+	fx_t health;                   /* 16.16; dead at 0 or below */
+	uint16_t ammo;
+	uint16_t refire;               /* ticks until the next shot may fire */
+	uint16_t hurt;                 /* ticks left of the damage flash */
+	uint16_t bonus;                /* ticks left of the pickup flash */
+};
+
+struct sim {
+	const struct map *map;         /* the current stage's map (borrowed) */
+	const struct map *stages[G_MAX_STAGES];  /* borrowed */
+	uint8_t num_stages;
+	struct sim_settings set;
+	uint32_t tick;                 /* ticks simulated since sim_init */
+	enum sim_mode mode;
+	uint8_t page;                  /* ATTRACT: enum sim_page */
+	uint32_t mode_t;               /* ticks since the mode (or attract page) began */
+	uint32_t credits;              /* whole credits available */
+	uint32_t coin_rem;             /* coins towards the next credit */
+	uint32_t coins_total;          /* coins inserted since sim_init */
+	uint32_t plays;                /* games started since sim_init */
+	uint8_t prev_buttons;          /* for edge detection */
+	uint8_t prev_nav;              /* directions held last tick (MENU_NAV_*) */
+	uint16_t nav_t;                /* ticks the current directions have been held */
+	struct sim_cmd cmd;            /* this tick's command (input test) */
+	uint32_t rng;                  /* the sim's own RNG state */
+	struct sim_player pl;
+	struct g_game g;
+	uint16_t countdown;            /* GAMEOVER: ticks left to continue */
+	uint8_t ini_pos;               /* INITIALS: letter being chosen, 0..2 */
+	uint8_t ini[G_NAME_LEN];       /* INITIALS: indices into G_ALPHABET */
+	int8_t ini_rank;               /* INITIALS: rank the score takes */
+	int8_t new_rank;               /* the last entry made (highlighted in attract), -1 none */
+	struct g_scores scores;
+	struct g_books books;
+	uint32_t set_gen;              /* bumped when the menu changes set (app: persist) */
+	uint32_t scores_gen;           /* bumped when scores change */
+	uint32_t books_gen;            /* bumped on coins, plays and resets */
+	struct menu menu;
+};
+
+/* Player dimensions and movement limits, map units (16.16). */
+#define SIM_PLAYER_RADIUS (16 * FX_ONE)
+#define SIM_PLAYER_HEIGHT (56 * FX_ONE)
+#define SIM_VIEW_HEIGHT (41 * FX_ONE)
+#define SIM_MAX_STEP (24 * FX_ONE)
+
+/* Starts a sim on n stage maps (1..G_MAX_STAGES, borrowed, played in
+ * order and then again from the first, one loop harder), with the
+ * high-score table `scores` (NULL: g_scores_default) and bookkeeping
+ * totals `books` (NULL: zero), both copied. Mode ATTRACT on page TITLE,
+ * unless set->start_in_play, which starts a game at once without counting
+ * it in plays. The player stands at stage 0's player 1 start (thing type
+ * 1) or, without one, 32 units in front of the middle of the first line
+ * whose front side faces sector 0, facing along it. */
+void sim_init_stages(struct sim *s, const struct map *const *maps, int n,
+		     const struct sim_settings *set, const struct g_scores *scores,
+		     const struct g_books *books);
+
+/* sim_init_stages with the one map m, the default table and zero books. */
+void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set);
+
+/* Advances one tick with cmd.
+ *
+ * Every mode: cmd->coins add to coins_total, books.coins and coin_rem,
+ * each coins_per_credit of them making a credit; a SERVICE press (edge)
+ * enters the service menu. ATTRACT: the pages cycle (TITLE, SCORES, DEMO);
+ * a START press with a credit or freeplay consumes a credit (not in
+ * freeplay), counts a play, and starts a game at stage 0; otherwise the
+ * camera turns in place (a turn in 32 s) and movement is ignored.
+ *
+ * PLAY: turn adds cmd->turn/65536 of a turn; forward/side thrust along the
+ * view (Doom's momentum and friction; full forward settles at about 8 units
+ * per tick); the player, a circle of SIM_PLAYER_RADIUS, moves in sub-steps
+ * of half a radius, pushed out of walls so it slides along them, with
+ * Doom's x-only / y-only fallback, and does not walk into living enemies.
+ * Walls are one-sided and ML_BLOCKING lines, and portals whose higher
+ * floor is more than SIM_MAX_STEP above the feet or whose opening is lower
+ * than SIM_PLAYER_HEIGHT. z is the floor of the sector under the centre:
+ * steps up and drops down are immediate. FIRE shoots (g_combat.c), enemies
+ * act (g_enemy.c), pickups are taken; health at 0 starts the death phase
+ * (G_DEAD_TICKS), then a life is lost: the player respawns at the stage
+ * start (enemies back at their spawn points, unalerted) or, with no life
+ * left, GAMEOVER. When every enemy of the stage is dead: G_STAGE_BONUS
+ * times the stage number, G_CLEAR_TICKS, then the next stage (health
+ * carried over, ammo topped up to at least G_AMMO_START).
+ *
+ * GAMEOVER: G_CONTINUE_TICKS countdown (a FIRE press takes a second off);
+ * START with a credit (or freeplay) continues: full lives, health and at
+ * least G_AMMO_START ammo, at the current stage's start, score kept. At 0:
+ * INITIALS if the score makes the table, else ATTRACT (TITLE).
+ *
+ * INITIALS: forward/turn right/strafe right step the current letter
+ * forwards through G_ALPHABET, back/turn left/strafe left backwards (held:
+ * repeating), FIRE confirms it; after the third letter (or when
+ * G_INITIALS_TICKS run out, taking the letters shown) the entry goes into
+ * the table and the sim shows it on the attract SCORES page.
+ *
+ * SERVICE: menu_tick (engine/game/menu.h); leaving returns to ATTRACT (TITLE).
+ *
+ * The RNG (xorshift32) steps once per tick, and wherever the rules draw. */
+void sim_tick(struct sim *s, const struct sim_cmd *cmd);
+
+/* Hash of the whole sim state (every field, explicit encoding): FNV-1a of
+ * every stage map's content_hash, the settings, and every field of struct
+ * sim in order, integers as little-endian bytes. */
+uint64_t sim_hash(const struct sim *s);
+
+/* Snapshots: the whole state as bytes, so a recording can start in the
+ * middle of a cabinet's run (the flight recorder records each game from
+ * its first tick, with credits, attract timers, RNG, high-score table and
+ * bookkeeping as they were). The same walk over the fields as sim_hash
+ * (sim_hash.c) writes and reads them, so whatever is hashed is saved and
+ * restored: every field of struct sim and its nested structs, little-endian,
+ * including the enemy and pickup slots past the counts. The borrowed maps
+ * are not saved: the snapshot holds sim_stages_hash of the stages and the
+ * index of the current map among them.
+ *
+ * sim_snapshot_size: the snapshot's size in bytes (fixed for a build; it
+ * changes only when struct sim does, which also changes REC_ENGINE_VERSION).
+ * sim_snapshot: writes sim_snapshot_size() bytes of s to out.
+ * sim_restore: the caller first runs sim_init_stages on the same stage
+ * maps, in the same order (settings, tables and books are restored from
+ * the snapshot, so the ones given there do not matter), then restores buf.
+ * Returns 0 and s becomes the state snapshotted: fed the same commands it
+ * gives the same hashes as the original did; or -EINVAL with s unchanged
+ * when len is not sim_snapshot_size(), the stages differ (hash or count),
+ * or a value is out of its range: the current map index, mode, page,
+ * stage, phase, shot, enemy kinds and states, pickup kinds, counts beyond
+ * G_MAX_ENEMIES / G_MAX_PICKUPS or alive beyond the enemies, a sector
+ * index beyond the current map's, a position beyond MAP_COORD_MAX, health
+ * outside 0..G_HEALTH_MAX, initials letters and ranks, menu page, cursor
+ * and choices. */
+size_t sim_snapshot_size(void);
+void sim_snapshot(const struct sim *s, uint8_t *out);
+int sim_restore(struct sim *s, const uint8_t *buf, size_t len);
+
+/* Hash of the stage maps' content hashes, in order: what a recording's map
+ * hash should be when a game has several stages (one stage: FNV-1a of its
+ * content hash). */
+uint64_t sim_stages_hash(const struct map *const *maps, int n);
+
+/* "attract", "play", "gameover", "initials", "service"; NULL for an
+ * unknown mode. */
+const char *sim_mode_name(enum sim_mode m);
+/* Mode by name, or -1. */
+int sim_mode_from_name(const char *name);
+
+/* Named values of the state, for test scripts and tools: the built-in
+ * fields of input/scr.h plus the game's (see sim_field.c and docs/game.md).
+ * The kind says how a script writes the value. */
+enum sim_fkind { SIM_FK_INT, SIM_FK_FX, SIM_FK_ANGLE, SIM_FK_MODE, SIM_FK_PAGE };
+int sim_field_count(void);
+const char *sim_field_name(int i);          /* NULL out of range */
+enum sim_fkind sim_field_kind(int i);
+int sim_field_find(const char *name);        /* index or -1 */
+/* Value of field i: 16.16 for FX, whole degrees 0..359 for ANGLE, the
+ * enum for MODE and PAGE, else the integer. */
+int64_t sim_field_value(const struct sim *s, int i);
+/* "title", "scores", "demo"; NULL for an unknown page. */
+const char *sim_page_name(int page);
+int sim_page_from_name(const char *name);
+
+#endif

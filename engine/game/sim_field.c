@@ -1,0 +1,105 @@
+/*
+ * sim_field: the sim's named values, for test scripts (input/scr.c parses
+ * the names, the app reads the values) and tools. One table, so a new
+ * field is one line here.
+ */
+#include <string.h>
+
+#include "engine/game/sim.h"
+
+struct sim_field_def {
+	char name[12];
+	enum sim_fkind kind;
+};
+
+enum {
+	F_X, F_Y, F_Z, F_ANGLE, F_SECTOR, F_CREDITS, F_COINS, F_TICK, F_MODE,
+	F_SCORE, F_LIVES, F_HEALTH, F_AMMO, F_STAGE, F_ENEMIES, F_KILLS, F_CONTINUES,
+	F_COUNTDOWN, F_PAGE, F_PHASE, F_PLAYS, F_RANK, F_HISCORE, F_MENU, F_DIFFICULTY,
+	F_COUNT
+};
+
+static const struct sim_field_def sim_fields[F_COUNT] = {
+	[F_X] = { "x", SIM_FK_FX },
+	[F_Y] = { "y", SIM_FK_FX },
+	[F_Z] = { "z", SIM_FK_FX },
+	[F_ANGLE] = { "angle", SIM_FK_ANGLE },
+	[F_SECTOR] = { "sector", SIM_FK_INT },
+	[F_CREDITS] = { "credits", SIM_FK_INT },
+	[F_COINS] = { "coins", SIM_FK_INT },
+	[F_TICK] = { "tick", SIM_FK_INT },
+	[F_MODE] = { "mode", SIM_FK_MODE },
+	[F_SCORE] = { "score", SIM_FK_INT },
+	[F_LIVES] = { "lives", SIM_FK_INT },
+	[F_HEALTH] = { "health", SIM_FK_INT },
+	[F_AMMO] = { "ammo", SIM_FK_INT },
+	[F_STAGE] = { "stage", SIM_FK_INT },
+	[F_ENEMIES] = { "enemies", SIM_FK_INT },
+	[F_KILLS] = { "kills", SIM_FK_INT },
+	[F_CONTINUES] = { "continues", SIM_FK_INT },
+	[F_COUNTDOWN] = { "countdown", SIM_FK_INT },
+	[F_PAGE] = { "page", SIM_FK_PAGE },
+	[F_PHASE] = { "phase", SIM_FK_INT },
+	[F_PLAYS] = { "plays", SIM_FK_INT },
+	[F_RANK] = { "rank", SIM_FK_INT },
+	[F_HISCORE] = { "hiscore", SIM_FK_INT },
+	[F_MENU] = { "menu", SIM_FK_INT },
+	[F_DIFFICULTY] = { "difficulty", SIM_FK_INT },
+};
+
+int sim_field_count(void)
+{
+	return F_COUNT;
+}
+
+const char *sim_field_name(int i)
+{
+	return i >= 0 && i < F_COUNT ? sim_fields[i].name : NULL;
+}
+
+enum sim_fkind sim_field_kind(int i)
+{
+	return i >= 0 && i < F_COUNT ? sim_fields[i].kind : SIM_FK_INT;
+}
+
+int sim_field_find(const char *name)
+{
+	for (int i = 0; i < F_COUNT; i++)
+		if (strcmp(name, sim_fields[i].name) == 0)
+			return i;
+	return -1;
+}
+
+int64_t sim_field_value(const struct sim *s, int i)
+{
+	switch (i) {
+	case F_X: return s->pl.x;
+	case F_Y: return s->pl.y;
+	case F_Z: return s->pl.z;
+	case F_ANGLE: return (int64_t)(((uint64_t)s->pl.angle * 360u) >> 32);
+	case F_SECTOR: return s->pl.sector;
+	case F_CREDITS: return s->credits;
+	case F_COINS: return s->coins_total;
+	case F_TICK: return s->tick;
+	case F_MODE: return s->mode;
+	case F_SCORE: return s->g.score;
+	case F_LIVES: return s->g.lives;
+	/* whole points, rounded up: 0 only when dead */
+	case F_HEALTH: return ((int64_t)s->pl.health + FX_ONE - 1) >> FX_SHIFT;
+	case F_AMMO: return s->pl.ammo;
+	case F_STAGE: return s->g.stage + 1;
+	case F_ENEMIES: return s->g.alive;
+	case F_KILLS: return s->g.kills;
+	case F_CONTINUES: return s->g.continues;
+	/* whole seconds left, rounded up: the number on the screen */
+	case F_COUNTDOWN: return (s->countdown + SIM_TICRATE - 1) / SIM_TICRATE;
+	case F_PAGE: return s->page;
+	case F_PHASE: return s->g.phase;
+	case F_PLAYS: return s->plays;
+	case F_RANK: return s->new_rank + 1;
+	case F_HISCORE: return s->scores.e[0].score;
+	case F_MENU: return s->menu.page;
+	case F_DIFFICULTY: return s->set.difficulty;
+	default: return 0;
+	}
+}

@@ -1,0 +1,443 @@
+/*
+ * tex: the texture set's common parts: pictures (allocation, Doom picture
+ * drawing, fallback checkers), lookup by name, sprite frames from lump
+ * names, Doom's animation table and tex_animate. The WAD loader is
+ * tex_wad.c, the project's own set tex_builtin.c.
+ */
+#include "engine/map/tex.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine/map/tex_local.h"
+#include "engine/map/wad.h"
+
+void tex_name(char out[9], const char *src)
+{
+	memset(out, 0, 9);
+	for (int i = 0; i < 8 && src[i]; i++) {
+		char c = src[i];
+
+		out[i] = (c >= 'a' && c <= 'z') ? (char)(c - 'a' + 'A') : c;
+	}
+}
+
+int tex_set_alloc(struct tex_set **out, int num_textures, int num_flats, int num_sprpics)
+{
+	struct tex_set *t = calloc(1, sizeof *t);
+
+	*out = NULL;
+	if (!t)
+		return -ENOMEM;
+	t->textures = calloc((size_t)num_textures, sizeof *t->textures);
+	t->flats = calloc((size_t)(num_flats ? num_flats : 1), sizeof *t->flats);
+	t->sprpics = calloc((size_t)num_sprpics, sizeof *t->sprpics);
+	t->tex_xlat = calloc((size_t)num_textures, sizeof *t->tex_xlat);
+	t->flat_xlat = calloc((size_t)(num_flats ? num_flats : 1), sizeof *t->flat_xlat);
+	if (!t->textures || !t->flats || !t->sprpics || !t->tex_xlat || !t->flat_xlat) {
+		tex_free(t);
+		return -ENOMEM;
+	}
+	t->num_textures = num_textures;
+	t->num_flats = num_flats;
+	t->num_sprpics = num_sprpics;
+	t->sky_flat = -1;
+	*out = t;
+	return 0;
+}
+
+int tex_pic_new(struct tex_pic *p, const char *name, int w, int h, uint64_t *budget)
+{
+	uint64_t bytes = (uint64_t)w * (uint64_t)h * 2;
+
+	memset(p, 0, sizeof *p);
+	tex_name(p->name, name);
+	if (w <= 0 || h <= 0 || w > TEX_MAX_SIDE || h > TEX_MAX_SIDE || bytes > *budget)
+		return -E2BIG;
+	p->px = calloc((size_t)w * (size_t)h, 1);
+	p->opaque = calloc((size_t)w * (size_t)h, 1);
+	if (!p->px || !p->opaque) {
+		tex_pic_clear(p);
+		return -ENOMEM;
+	}
+	p->w = (int16_t)w;
+	p->h = (int16_t)h;
+	*budget -= bytes;
+	return 0;
+}
+
+int tex_pic_header(const uint8_t *d, size_t len, int *w, int *h, int *left, int *top)
+{
+	if (len < 8)
+		return -EINVAL;
+	*w = wad_i16(d);
+	*h = wad_i16(d + 2);
+	*left = wad_i16(d + 4);
+	*top = wad_i16(d + 6);
+	if (*w <= 0 || *h <= 0 || *w > TEX_MAX_SIDE || *h > TEX_MAX_SIDE ||
+	    8 + 4 * (size_t)*w > len)
+		return -EINVAL;
+	return 0;
+}
+
+/* Draws one column's posts, starting at byte ofs of the lump, into column
+ * px of p (already clipped to 0..w-1); y is the picture's top in p. */
+static void tex_pic_column(struct tex_pic *p, const uint8_t *d, size_t len, size_t ofs, int px,
+			   int y)
+{
+	int top = -1;
+	uint8_t *col = p->px + (size_t)px * (size_t)p->h;
+	uint8_t *opq = p->opaque + (size_t)px * (size_t)p->h;
+
+	/* each post takes at least 4 bytes, so this ends within len/4 posts */
+	while (ofs + 1 < len && d[ofs] != 0xFF) {
+		int delta = d[ofs], n = d[ofs + 1];
+		const uint8_t *src = d + ofs + 3;
+
+		top = delta <= top ? top + delta : delta;
+		if (ofs + 3 + (size_t)n > len)
+			n = ofs + 3 > len ? 0 : (int)(len - ofs - 3);
+		for (int k = 0; k < n; k++) {
+			int ty = y + top + k;
+
+			if (ty < 0)
+				continue;
+			if (ty >= p->h)
+				break;
+			col[ty] = src[k];
+			opq[ty] = 1;
+		}
+		ofs += 4 + (size_t)d[ofs + 1];
+	}
+}
+
+int tex_pic_draw(struct tex_pic *p, const uint8_t *d, size_t len, int x, int y)
+{
+	int w, h, left, top;
+
+	if (tex_pic_header(d, len, &w, &h, &left, &top))
+		return -EINVAL;
+	for (int c = 0; c < w; c++) {
+		int px = x + c;
+		size_t ofs = (size_t)(uint32_t)wad_i32(d + 8 + 4 * (size_t)c);
+
+		if (px < 0 || px >= p->w || ofs >= len)
+			continue;
+		tex_pic_column(p, d, len, ofs, px, y);
+	}
+	return 0;
+}
+
+void tex_pic_seal(struct tex_pic *p)
+{
+	size_t n = (size_t)p->w * (size_t)p->h;
+
+	if (!p->opaque)
+		return;
+	for (size_t i = 0; i < n; i++)
+		if (!p->opaque[i])
+			return;
+	free(p->opaque);
+	p->opaque = NULL;
+}
+
+void tex_pic_clear(struct tex_pic *p)
+{
+	free(p->px);
+	free(p->opaque);
+	p->px = NULL;
+	p->opaque = NULL;
+	p->w = p->h = 0;
+}
+
+int tex_pic_checker(struct tex_pic *p, const char *name, int w, int h, uint8_t a, uint8_t b)
+{
+	memset(p, 0, sizeof *p);
+	tex_name(p->name, name);
+	p->px = malloc((size_t)w * (size_t)h);
+	if (!p->px)
+		return -ENOMEM;
+	p->w = (int16_t)w;
+	p->h = (int16_t)h;
+	for (int x = 0; x < w; x++)
+		for (int y = 0; y < h; y++)
+			p->px[(size_t)x * (size_t)h + (size_t)y] = ((x >> 3) ^ (y >> 3)) & 1 ? b : a;
+	return 0;
+}
+
+void tex_flat_checker(struct tex_flat *f, const char *name, uint8_t a, uint8_t b)
+{
+	tex_name(f->name, name);
+	for (int y = 0; y < TEX_FLAT_SIZE; y++)
+		for (int x = 0; x < TEX_FLAT_SIZE; x++)
+			f->px[y * TEX_FLAT_SIZE + x] = ((x >> 3) ^ (y >> 3)) & 1 ? b : a;
+}
+
+void tex_free(struct tex_set *t)
+{
+	if (!t)
+		return;
+	for (int i = 0; t->textures && i < t->num_textures; i++)
+		tex_pic_clear(&t->textures[i]);
+	for (int i = 0; t->sprpics && i < t->num_sprpics; i++)
+		tex_pic_clear(&t->sprpics[i]);
+	for (int i = 0; t->sprites && i < t->num_sprites; i++)
+		free(t->sprites[i].frames);
+	free(t->textures);
+	free(t->flats);
+	free(t->sprpics);
+	free(t->sprites);
+	free(t->tex_xlat);
+	free(t->flat_xlat);
+	free(t->anims);
+	free(t);
+}
+
+int tex_wall_index(const struct tex_set *t, uint16_t num)
+{
+	const struct tex_pic *p;
+	int n = num;
+
+	if (n == 0)
+		return 0;
+	if (t->tex_xlat && n < t->num_textures)
+		n = t->tex_xlat[n];
+	if (n <= 0 || n >= t->num_textures || !t->textures)
+		return -1;
+	p = &t->textures[n];
+	if (p->w <= 0 || p->h <= 0 || !p->px)
+		return -1;
+	return n;
+}
+
+int tex_find(const struct tex_set *t, const char *name)
+{
+	char key[9];
+
+	if (!name[0] || strlen(name) > 8)
+		return -1;
+	if (strcmp(name, "-") == 0)
+		return 0;
+	tex_name(key, name);
+	for (int i = 1; i < t->num_textures; i++)
+		if (memcmp(t->textures[i].name, key, 9) == 0)
+			return i;
+	return -1;
+}
+
+int tex_find_flat(const struct tex_set *t, const char *name)
+{
+	char key[9];
+
+	if (!name[0] || strlen(name) > 8)
+		return -1;
+	tex_name(key, name);
+	for (int i = 0; i < t->num_flats; i++)
+		if (memcmp(t->flats[i].name, key, 9) == 0)
+			return i;
+	return -1;
+}
+
+int tex_find_sprite(const struct tex_set *t, const char *name)
+{
+	char key[9];
+
+	if (!name[0] || strlen(name) > 4)
+		return -1;
+	tex_name(key, name);
+	for (int i = 0; i < t->num_sprites; i++)
+		if (memcmp(t->sprites[i].name, key, 5) == 0)
+			return i;
+	return -1;
+}
+
+/* Doom's animated textures and flats (p_spec.c's animdefs: first and last
+ * member by name, in lump / TEXTURE order), then arcaded's own. A range
+ * whose ends are missing or out of order is skipped. */
+static const struct {
+	uint8_t flat;
+	char first[9], last[9];
+} tex_animdefs[] = {
+	{ 1, "NUKAGE1", "NUKAGE3" }, { 1, "FWATER1", "FWATER4" }, { 1, "SWATER1", "SWATER4" },
+	{ 1, "LAVA1", "LAVA4" }, { 1, "BLOOD1", "BLOOD3" }, { 1, "RROCK05", "RROCK08" },
+	{ 1, "SLIME01", "SLIME04" }, { 1, "SLIME05", "SLIME08" }, { 1, "SLIME09", "SLIME12" },
+	{ 0, "BLODGR1", "BLODGR4" }, { 0, "SLADRIP1", "SLADRIP3" }, { 0, "BLODRIP1", "BLODRIP4" },
+	{ 0, "FIREWALA", "FIREWALL" }, { 0, "GSTFONT1", "GSTFONT3" }, { 0, "FIRELAV3", "FIRELAVA" },
+	{ 0, "FIREMAG1", "FIREMAG3" }, { 0, "FIREBLU1", "FIREBLU2" }, { 0, "ROCKRED1", "ROCKRED3" },
+	{ 0, "BFALL1", "BFALL4" }, { 0, "SFALL1", "SFALL4" }, { 0, "WFALL1", "WFALL4" },
+	{ 0, "DBRAIN1", "DBRAIN4" },
+	{ 1, "AR_WAT1", "AR_WAT4" },
+};
+
+#define TEX_NANIMDEFS ((int)(sizeof tex_animdefs / sizeof tex_animdefs[0]))
+
+static int tex_anims(struct tex_set *t)
+{
+	t->anims = calloc(TEX_NANIMDEFS, sizeof *t->anims);
+	if (!t->anims)
+		return -ENOMEM;
+	for (int i = 0; i < TEX_NANIMDEFS; i++) {
+		int a, b;
+
+		if (tex_animdefs[i].flat) {
+			a = tex_find_flat(t, tex_animdefs[i].first);
+			b = tex_find_flat(t, tex_animdefs[i].last);
+		} else {
+			a = tex_find(t, tex_animdefs[i].first);
+			b = tex_find(t, tex_animdefs[i].last);
+		}
+		if (a <= 0 && !tex_animdefs[i].flat)
+			continue;
+		if (a < 0 || b <= a)
+			continue;
+		t->anims[t->num_anims].flat = tex_animdefs[i].flat;
+		t->anims[t->num_anims].first = (uint16_t)a;
+		t->anims[t->num_anims].count = (uint16_t)(b - a + 1);
+		t->num_anims++;
+	}
+	return 0;
+}
+
+void tex_animate(struct tex_set *t, uint32_t tick)
+{
+	uint32_t step = tick / TEX_ANIM_TICKS;
+
+	for (int i = 0; i < t->num_anims; i++) {
+		const struct tex_anim *a = &t->anims[i];
+		uint16_t *xlat = a->flat ? t->flat_xlat : t->tex_xlat;
+
+		for (uint32_t k = 0; k < a->count; k++)
+			xlat[a->first + k] = (uint16_t)(a->first + (step + k) % a->count);
+	}
+}
+
+/* Sprite name checks: 4 name chars, then frame letter and rotation digit. */
+static int tex_spr_frame(char c)
+{
+	return c >= 'A' && c < 'A' + 29 ? c - 'A' : -1;
+}
+
+static int tex_spr_rot(char c)
+{
+	return c >= '0' && c <= '8' ? c - '0' : -1;
+}
+
+static int tex_spr_valid(const char *n)
+{
+	if (strlen(n) != 6 && strlen(n) != 8)
+		return 0;
+	if (tex_spr_frame(n[4]) < 0 || tex_spr_rot(n[5]) < 0)
+		return 0;
+	return strlen(n) == 6 || (tex_spr_frame(n[6]) >= 0 && tex_spr_rot(n[7]) >= 0);
+}
+
+static void tex_spr_set(struct tex_sprframe *f, int rot, uint16_t pic, uint8_t flip)
+{
+	for (int r = 0; r < 8; r++) {
+		if (rot == 0 || r == rot - 1) {
+			f->pic[r] = pic;
+			f->flip[r] = flip;
+		}
+	}
+}
+
+/* One sprite: every picture whose name starts with its 4 chars. */
+static int tex_sprite_build(struct tex_set *t, struct tex_sprite *s)
+{
+	int frames = 0;
+
+	for (int i = 1; i < t->num_sprpics; i++) {
+		const char *n = t->sprpics[i].name;
+
+		if (!tex_spr_valid(n) || memcmp(n, s->name, 4) != 0)
+			continue;
+		if (tex_spr_frame(n[4]) + 1 > frames)
+			frames = tex_spr_frame(n[4]) + 1;
+		if (n[6] && tex_spr_frame(n[6]) + 1 > frames)
+			frames = tex_spr_frame(n[6]) + 1;
+	}
+	s->frames = calloc((size_t)frames, sizeof *s->frames);
+	if (!s->frames)
+		return -ENOMEM;
+	s->num_frames = frames;
+	for (int i = 1; i < t->num_sprpics; i++) {
+		const char *n = t->sprpics[i].name;
+
+		if (!tex_spr_valid(n) || memcmp(n, s->name, 4) != 0)
+			continue;
+		tex_spr_set(&s->frames[tex_spr_frame(n[4])], tex_spr_rot(n[5]), (uint16_t)i, 0);
+		if (n[6])
+			tex_spr_set(&s->frames[tex_spr_frame(n[6])], tex_spr_rot(n[7]), (uint16_t)i,
+				    1);
+	}
+	for (int f = 0; f < frames; f++)
+		for (int r = 0; r < 8; r++)
+			t->missing += s->frames[f].pic[r] == 0;
+	return 0;
+}
+
+static int tex_sprites(struct tex_set *t)
+{
+	t->sprites = calloc((size_t)t->num_sprpics, sizeof *t->sprites);
+	if (!t->sprites)
+		return -ENOMEM;
+	for (int i = 1; i < t->num_sprpics; i++) {
+		const char *n = t->sprpics[i].name;
+		int seen = 0;
+
+		if (!tex_spr_valid(n))
+			continue;
+		for (int k = 0; k < t->num_sprites && !seen; k++)
+			seen = memcmp(t->sprites[k].name, n, 4) == 0;
+		if (seen)
+			continue;
+		memcpy(t->sprites[t->num_sprites].name, n, 4);
+		t->sprites[t->num_sprites].name[4] = '\0';
+		t->num_sprites++;
+		if (tex_sprite_build(t, &t->sprites[t->num_sprites - 1]))
+			return -ENOMEM;
+	}
+	return 0;
+}
+
+int tex_set_finish(struct tex_set *t)
+{
+	int r = tex_sprites(t);
+
+	if (!r)
+		r = tex_anims(t);
+	if (r)
+		return r;
+	for (int i = 0; i < t->num_textures; i++)
+		t->tex_xlat[i] = (uint16_t)i;
+	for (int i = 0; i < t->num_flats; i++)
+		t->flat_xlat[i] = (uint16_t)i;
+	t->sky_flat = tex_find_flat(t, "F_SKY1");
+	t->sky_tex = tex_find(t, "SKY1");
+	if (t->sky_tex < 0)
+		t->sky_tex = t->fallback_tex;
+	return 0;
+}
+
+void tex_pick_sky(struct tex_set *t, const char *map)
+{
+	char name[5] = "SKY1";
+	char m[9];
+	int i;
+
+	tex_name(m, map);
+	if (m[0] == 'E' && m[1] >= '1' && m[1] <= '9' && m[2] == 'M') {
+		name[3] = m[1];
+	} else if (memcmp(m, "MAP", 3) == 0 && m[3] >= '0' && m[3] <= '9' && m[4] >= '0' &&
+		   m[4] <= '9') {
+		int n = (m[3] - '0') * 10 + (m[4] - '0');
+
+		name[3] = n < 12 ? '1' : n < 21 ? '2' : '3';
+	} else {
+		return;
+	}
+	i = tex_find(t, name);
+	if (i > 0)
+		t->sky_tex = i;
+}

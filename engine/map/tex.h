@@ -1,0 +1,140 @@
+/*
+ * tex: the graphics a map is drawn with: palette and light tables, wall
+ * textures, flats, sprites and the sky, either loaded from WADs (PLAYPAL,
+ * COLORMAP, PNAMES, TEXTURE1/TEXTURE2 composed from patches, flats between
+ * F_START/F_END, sprites between S_START/S_END) or the project's own
+ * procedural set (tex_builtin), so the game needs no WAD at all.
+ *
+ * Numbering, as map sides and sectors store it (map.h):
+ *   - wall texture 0 is "no texture" (Doom's "-"); 1..num_textures-1 real;
+ *     texture 0 is a 1x1 fully transparent picture, never meant to be drawn;
+ *   - flat 0 is a valid flat; sky ceilings use the flat sky_flat.
+ * From a WAD, textures 1.. are TEXTURE1's entries then TEXTURE2's, in lump
+ * order, then the fallback checker (fallback_tex); flats are in lump order
+ * over every F_START/F_END (FF_START/FF_END) range, a later flat of the same
+ * name replacing the earlier one's pixels in place, then the fallback flat.
+ * Sprite picture 0 is the fallback picture: a frame or rotation with no
+ * lump points at it, so every tex_sprframe entry is drawable.
+ * Pictures are decoded once at load into plain arrays (no format parsing
+ * while drawing): wall textures and sprites column-major, flats row-major.
+ * Animations (Doom's fixed table of animated textures and flats) are
+ * resolved per tick by tex_animate, which the renderer reads as
+ * tex_set.tex_xlat / flat_xlat (identity when nothing animates).
+ */
+#ifndef ARCADED_ENGINE_TEX_H
+#define ARCADED_ENGINE_TEX_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "engine/core/pal.h"
+
+struct wad;
+
+/* A decoded picture. px is column-major: column x is px[x * h .. x * h +
+ * h - 1]. opaque is NULL when every pixel is opaque, else w*h bytes laid
+ * out like px, 1 where the pixel is drawn (masked textures, sprites). */
+struct tex_pic {
+	char name[9];
+	int16_t w, h;
+	int16_t left, top;             /* sprite offsets (Doom picture format) */
+	uint8_t *px;
+	uint8_t *opaque;
+};
+
+#define TEX_FLAT_SIZE 64
+
+struct tex_flat {
+	char name[9];
+	uint8_t px[TEX_FLAT_SIZE * TEX_FLAT_SIZE];   /* row-major */
+};
+
+/* One sprite frame: for each of 8 rotations (0 = facing the viewer, then
+ * counter-clockwise in 45 degree steps as Doom's A1..A8), the picture and
+ * whether it is drawn mirrored. A frame with a single rotation-0 picture
+ * has all eight entries equal. */
+struct tex_sprframe {
+	uint16_t pic[8];               /* index into tex_set.sprpics */
+	uint8_t flip[8];
+};
+
+struct tex_sprite {
+	char name[5];                  /* e.g. "TROO" */
+	int num_frames;                /* frames A, B, ... */
+	struct tex_sprframe *frames;
+};
+
+/* An animation: count textures (or flats) with consecutive indices from
+ * first, cycling every TEX_ANIM_TICKS (Doom's animated table, existing
+ * ranges only). */
+struct tex_anim {
+	uint8_t flat;                  /* 1: flats, 0: wall textures */
+	uint16_t first, count;
+};
+
+#define TEX_ANIM_TICKS 14              /* Doom's 8 tics at 35 Hz, at 60 Hz */
+
+struct tex_set {
+	struct pal pal;                /* palette and PAL_LIGHTS colormaps */
+	struct tex_pic *textures;      /* [0] is the empty "-" texture */
+	int num_textures;
+	struct tex_flat *flats;
+	int num_flats;
+	int sky_flat;                  /* index of F_SKY1, -1 if none */
+	int sky_tex;                   /* wall texture drawn as the sky: SKY1, else
+					* fallback_tex; always valid. The app may set
+					* it to tex_find(t, "SKY2") etc. per episode. */
+	struct tex_pic *sprpics;
+	int num_sprpics;
+	struct tex_sprite *sprites;
+	int num_sprites;
+	uint16_t *tex_xlat;            /* current texture per texture (animation) */
+	uint16_t *flat_xlat;           /* current flat per flat */
+	uint32_t missing;              /* names that fell back (counted, drawn as a checker) */
+	/* Added for the map loader and animation (after the fields above, so
+	 * their layout is unchanged): */
+	int fallback_tex;              /* the checker texture an unknown name becomes */
+	int fallback_flat;             /* the checker flat an unknown flat name becomes */
+	struct tex_anim *anims;
+	int num_anims;
+};
+
+/* Loads everything from the layered WAD set. The set owns copies of all it
+ * uses (decoded pictures, flats, names): the WADs and their file images may
+ * be freed once it is loaded. Problems that leave a
+ * texture unusable (a missing patch, a bad TEXTURE1 entry) make that
+ * texture a fallback checker and are counted, not fatal; a WAD without
+ * PLAYPAL or with a truncated one is -EINVAL (err names the lump). */
+int tex_load_wad(const struct wad *w, struct tex_set **out, char *err, size_t errlen);
+
+/* The project's own procedural set: palette, colormaps, textures, flats,
+ * sky and sprites, made by code. 0 or -ENOMEM. */
+int tex_builtin(struct tex_set **out);
+
+void tex_free(struct tex_set *t);
+
+/* Index of a texture / flat / sprite by name (case-insensitive); "-" is
+ * texture 0; -1 if unknown. */
+int tex_find(const struct tex_set *t, const char *name);
+int tex_find_flat(const struct tex_set *t, const char *name);
+int tex_find_sprite(const struct tex_set *t, const char *name);
+
+/* The picture a wall shows for texture number num (a sidedef's), after
+ * the animation's translation: its index (> 0), 0 for "no texture" (num 0),
+ * or -1 when it cannot be drawn (out of range, empty or without pixels):
+ * the renderers then draw their fallback checker and count it missing.
+ * One rule for the software and the OSMesa renderer. */
+int tex_wall_index(const struct tex_set *t, uint16_t num);
+
+/* Sets sky_tex for map `map` by Doom's rule, when that texture exists:
+ * ExMy -> SKYx; MAP01-11 -> SKY1, MAP12-20 -> SKY2, MAP21 on -> SKY3;
+ * otherwise (and for other names) sky_tex stays as it is. */
+void tex_pick_sky(struct tex_set *t, const char *map);
+
+/* Advances animations to game tick `tick` (Doom: every 8 tics at 35 Hz;
+ * here every TEX_ANIM_TICKS at 60 Hz), updating tex_xlat and flat_xlat:
+ * member k (0-based) of an animation of n shows member (tick /
+ * TEX_ANIM_TICKS + k) % n. A pure function of tick. */
+void tex_animate(struct tex_set *t, uint32_t tick);
+
+#endif

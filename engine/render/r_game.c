@@ -1,0 +1,171 @@
+/*
+ * r_game: what the renderer takes from the game and the map: the camera
+ * of the current tick and the sprites to draw (enemies, pickups, the map's
+ * lights and decorations, the last shot's puff), and the map's things as
+ * sprites for still views. Pure functions of the sim state, the map and
+ * the texture set (for sprite numbers); the game itself never calls the
+ * renderer (engine/README.md).
+ */
+#include "engine/render/r_game.h"
+
+#include <stddef.h>
+
+#include "engine/game/g_game.h"
+#include "engine/game/sim.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
+#include "engine/map/th.h"
+#include "engine/render/r_main.h"
+
+#define G_ANIM 8                       /* ticks per frame of standing and walking cycles */
+#define G_DEATH_TICKS 6                /* ticks per frame of a death */
+#define G_PUFF_TICKS 8
+
+struct g_out {
+	const struct tex_set *t;
+	struct r_sprite *out;
+	int n, max;
+};
+
+/* Sprite number for name, else for the class's stand-in (the project's
+ * own set has few sprites), else one past the end (the renderer draws its
+ * fallback checker there and counts it). */
+static int g_sprite_index(const struct tex_set *t, const char *name, const char *standin)
+{
+	int i = name[0] ? tex_find_sprite(t, name) : -1;
+
+	if (i < 0 && standin)
+		i = tex_find_sprite(t, standin);
+	return i < 0 ? t->num_sprites : i;
+}
+
+/* Adds a sprite; a frame the sprite lacks is drawn as frame A unless
+ * need_frame (then nothing is drawn: a corpse must not stand up). */
+static void g_put(struct g_out *o, fx_t x, fx_t y, fx_t z, ang_t a, int spr, int frame,
+		  int bright, int need_frame)
+{
+	struct r_sprite *r;
+
+	if (o->n >= o->max)
+		return;
+	if (spr < o->t->num_sprites && frame >= o->t->sprites[spr].num_frames) {
+		if (need_frame)
+			return;
+		frame = 0;
+	}
+	r = &o->out[o->n++];
+	r->x = x;
+	r->y = y;
+	r->z = z;
+	r->angle = a;
+	r->sprite = (uint16_t)spr;
+	r->frame = (uint16_t)frame;
+	r->flags = bright ? R_SPR_FULLBRIGHT : 0;
+}
+
+static void g_put_enemy(struct g_out *o, const struct g_enemy *e)
+{
+	struct g_thing_info ti;
+	int spr, frame = 0, bright = 0, need = 0;
+
+	g_thing_info(e->type, &ti);
+	spr = g_sprite_index(o->t, ti.sprite, "POSS");
+	switch (e->state) {
+	case G_E_CHASE:
+		frame = ti.frames ? e->anim / G_ANIM % ti.frames : 0;
+		break;
+	case G_E_ATTACK:
+		frame = ti.attack + (e->flash ? 1 : 0);
+		bright = e->flash != 0;
+		break;
+	case G_E_PAIN:
+		frame = ti.pain;
+		break;
+	case G_E_DEAD:
+		frame = ti.death0 + e->anim / G_DEATH_TICKS;
+		if (frame > ti.death1)
+			frame = ti.death1;
+		need = 1;
+		break;
+	default:
+		break;
+	}
+	g_put(o, e->x, e->y, e->z, e->angle, spr, frame, bright, need);
+}
+
+int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite *out, int max)
+{
+	const struct map *m = s->map;
+	struct g_out o = { t, out, 0, max };
+
+	if (!t || !m)
+		return 0;
+	for (int i = 0; i < s->g.num_enemies; i++)
+		g_put_enemy(&o, &s->g.en[i]);
+	for (int i = 0; i < s->g.num_pickups; i++) {
+		const struct g_pickup *p = &s->g.pk[i];
+		struct g_thing_info ti;
+		if (p->taken)
+			continue;
+		g_thing_info(p->type, &ti);
+		g_put(&o, p->x, p->y, p->z, 0,
+		      g_sprite_index(t, ti.sprite, p->kind == G_P_HEALTH ? "MEDI" : "CLIP"),
+		      ti.stand + (ti.frames > 1 ? (int)(s->tick / G_ANIM % ti.frames) : 0),
+		      ti.bright, 0);
+	}
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		const struct map_thing *th = &m->things[i];
+		struct g_thing_info ti;
+		g_thing_info(th->type, &ti);
+		if ((ti.cls != G_C_LIGHT && ti.cls != G_C_DECOR) || !ti.sprite[0])
+			continue;
+		g_put(&o, th->x, th->y, m->sectors[map_point_sector(m, th->x, th->y)].floor_h,
+		      th->angle, g_sprite_index(t, ti.sprite, ti.cls == G_C_LIGHT ? "COLU" : "BAR1"),
+		      ti.stand + (ti.frames > 1 ? (int)(s->tick / G_ANIM % ti.frames) : 0),
+		      ti.bright, 0);
+	}
+	if ((s->g.shot == G_SHOT_WALL || s->g.shot == G_SHOT_ENEMY) && s->g.shot_t < G_PUFF_TICKS) {
+		int spr = tex_find_sprite(t, s->g.shot == G_SHOT_WALL ? "PUFF" : "BLUD");
+		if (spr >= 0)
+			g_put(&o, s->g.shot_x, s->g.shot_y, s->g.shot_z - 8 * FX_ONE, 0, spr,
+			      s->g.shot_t / 2, s->g.shot == G_SHOT_WALL, 1);
+	}
+	return o.n;
+}
+
+int r_map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out)
+{
+	int n = 0;
+
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		const struct map_thing *th = &m->things[i];
+		const struct th_info *in = th_find(th->type);
+		const struct map_sector *sec;
+		int s;
+
+		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
+			continue;
+		s = tex_find_sprite(t, in->sprite);
+		if (s < 0)
+			continue;
+		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
+		out[n].x = th->x;
+		out[n].y = th->y;
+		out[n].z = (in->flags & TH_HANGING) ? sec->ceil_h - in->height * FX_ONE : sec->floor_h;
+		out[n].angle = th->angle;
+		out[n].sprite = (uint16_t)s;
+		out[n].frame = (uint16_t)(in->frame - 'A');
+		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
+		n++;
+	}
+	return n;
+}
+
+void r_game_view(const struct sim *s, struct r_view *v)
+{
+	v->x = s->pl.x;
+	v->y = s->pl.y;
+	v->z = s->pl.viewz;
+	v->angle = s->pl.angle;
+	v->shear = 0;
+}

@@ -1,0 +1,282 @@
+/*
+ * r_strip: what the walk records, and the strip phase that draws it.
+ *
+ * The frame's columns are cut into strips (R_STRIP_MIN columns or a
+ * power-of-two multiple: one strip without a pool, about
+ * R_STRIPS_PER_THREAD per thread with one). The walk records each
+ * column run (wall part, sky, fill) into the strip of its column, and each
+ * span once, with its index in every strip it crosses. Then each strip is
+ * one job: its column runs in bands of rows (every run that reaches a band
+ * is drawn there before the next band starts, so the few KiB of frame a
+ * band covers stay in the cache while the strip's columns are drawn one
+ * after the other), the parts of its spans, the black fill of what is left,
+ * then sprites and masked middles clipped to its columns. A span cut by a
+ * strip edge starts at the position the whole span's loop reaches there,
+ * and a run cut by a band edge resumes at the position it stopped at, so a
+ * strip draws the bytes a single pass over the frame would.
+ *
+ * The jobs run through the caller's pool (struct r_par) or one after the
+ * other. A list that cannot grow makes the walk draw that run at once: the
+ * frame stays whole and the same (counted in stats.degraded).
+ */
+#include <assert.h>
+#include <errno.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "engine/render/r_local.h"
+
+static void r_strips_free(struct r_strip *st, int n)
+{
+	for (int i = 0; st && i < n; i++) {
+		struct r_strip *s = &st[i];
+
+		free(s->cols);
+		free(s->order);
+		free(s->act);
+		free(s->next);
+		free(s->band);
+		free(s->spans);
+	}
+	free(st);
+}
+
+int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
+{
+	int n = (r->w + (1 << strip_shift) - 1) >> strip_shift;
+	int nbands = (r->h + (1 << band_shift) - 1) >> band_shift;
+	/* sizeof is a multiple of the 64-byte alignment */
+	struct r_strip *st = aligned_alloc(64, (size_t)n * sizeof(*st));
+
+	if (!st)
+		return -ENOMEM;
+	memset(st, 0, (size_t)n * sizeof(*st));
+	for (int i = 0; i < n; i++) {
+		struct r_strip *s = &st[i];
+		int x1;
+
+		s->x0 = i << strip_shift;
+		x1 = s->x0 + (1 << strip_shift) - 1;
+		s->x1 = x1 < r->w - 1 ? x1 : r->w - 1;
+		s->band = malloc((size_t)(nbands + 1) * sizeof(*s->band));
+		if (!s->band) {
+			r_strips_free(st, n);
+			return -ENOMEM;
+		}
+	}
+	r_strip_free(r);
+	r->strips = st;
+	r->nstrips = n;
+	r->strip_shift = strip_shift;
+	r->band_shift = band_shift;
+	r->nbands = nbands;
+	return 0;
+}
+
+void r_strip_free(struct r_ctx *r)
+{
+	r_strips_free(r->strips, r->nstrips);
+	r->strips = NULL;
+	r->nstrips = 0;
+}
+
+void r_strip_reset(struct r_ctx *r)
+{
+	r->nspans = 0;
+	for (int i = 0; i < r->nstrips; i++) {
+		struct r_strip *s = &r->strips[i];
+
+		s->ncols = s->nspans = 0;
+		s->written = s->empty = s->masked = 0;
+	}
+}
+
+/* Grows s's full list of runs by at least one: the runs and their three
+ * scratch arrays grow together. 0 or -1. */
+static int r_strip_room(struct r_strip *s)
+{
+	int cap = s->maxcols, c = cap;
+
+	if (r_grow((void **)&s->cols, &c, sizeof(*s->cols), cap + 1) < 0)
+		return -1;
+	c = cap;
+	if (r_grow((void **)&s->order, &c, sizeof(*s->order), cap + 1) < 0)
+		return -1;
+	c = cap;
+	if (r_grow((void **)&s->act, &c, sizeof(*s->act), cap + 1) < 0)
+		return -1;
+	c = cap;
+	if (r_grow((void **)&s->next, &c, sizeof(*s->next), cap + 1) < 0)
+		return -1;
+	s->maxcols = c;
+	return 0;
+}
+
+/* The slot for a new run in column x's strip, or NULL when the list cannot
+ * grow (the caller then draws the run at once). */
+static inline struct r_col *r_rec_slot(struct r_ctx *r, int x)
+{
+	struct r_strip *s = &r->strips[x >> r->strip_shift];
+
+	if (s->ncols == s->maxcols && r_strip_room(s) < 0)
+		return NULL;
+	return &s->cols[s->ncols++];
+}
+
+/* Draws run c at once (out of memory for the lists). */
+static void r_rec_now(struct r_ctx *r, struct r_col *c)
+{
+	r->st.degraded++;
+	r_draw_run(r, &r->strips[c->x >> r->strip_shift], c, c->y2);
+}
+
+void r_rec_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col, int h,
+	       const uint8_t *cm, uint32_t frac, uint32_t step)
+{
+	struct r_col now, *c;
+
+	if (y2 < y1)
+		return;
+	assert(h >= 1 && frac < ((uint32_t)h << 16) && step < ((uint32_t)h << 16));
+	c = r_rec_slot(r, x);
+	if (!c)
+		c = &now;
+	c->src = col;
+	c->cm = cm;
+	c->frac = frac;
+	c->step = step;
+	c->h = h;
+	c->x = (int16_t)x;
+	c->y1 = (int16_t)y1;
+	c->y2 = (int16_t)y2;
+	c->colour = 0;
+	c->id = r->id;
+	if (c == &now)
+		r_rec_now(r, c);
+}
+
+void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour)
+{
+	struct r_col now, *c;
+
+	if (y2 < y1)
+		return;
+	c = r_rec_slot(r, x);
+	if (!c)
+		c = &now;
+	c->src = NULL;
+	c->cm = NULL;
+	c->frac = c->step = 0;
+	c->h = 1;
+	c->x = (int16_t)x;
+	c->y1 = (int16_t)y1;
+	c->y2 = (int16_t)y2;
+	c->colour = colour;
+	c->id = r->id;
+	if (c == &now)
+		r_rec_now(r, c);
+}
+
+void r_rec_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat, const uint8_t *cm,
+		uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys)
+{
+	struct r_span sp = { flat, cm, xf, yf, xs, ys, (int16_t)y, (int16_t)x1, (int16_t)x2, r->id };
+	int32_t at = r->nspans;
+
+	if (x2 < x1)
+		return;
+	if (r->nspans == r->maxspans &&
+	    r_grow((void **)&r->spans, &r->maxspans, sizeof(*r->spans), r->nspans + 1) < 0) {
+		r->st.degraded++;
+		for (int i = x1 >> r->strip_shift; i <= x2 >> r->strip_shift; i++)
+			r_draw_span(r, &r->strips[i], &sp);
+		return;
+	}
+	r->spans[r->nspans++] = sp;
+	for (int i = x1 >> r->strip_shift; i <= x2 >> r->strip_shift; i++) {
+		struct r_strip *s = &r->strips[i];
+
+		if (s->nspans == s->maxspans &&
+		    r_grow((void **)&s->spans, &s->maxspans, sizeof(*s->spans), s->nspans + 1) < 0) {
+			r->st.degraded++;
+			r_draw_span(r, s, &sp);
+			continue;
+		}
+		s->spans[s->nspans++] = at;
+	}
+}
+
+/* The strip's column runs, band by band: runs are bucketed by the band
+ * they start in (counting sort into order), and a run that goes on past a
+ * band's last row is carried into the next band's active list. */
+static void r_strip_cols(const struct r_ctx *r, struct r_strip *s)
+{
+	int32_t *cnt = s->band, *act = s->act, *next = s->next;
+	int na = 0, start = 0;
+
+	memset(cnt, 0, (size_t)(r->nbands + 1) * sizeof(*cnt));
+	for (int i = 0; i < s->ncols; i++)
+		cnt[(s->cols[i].y1 >> r->band_shift) + 1]++;
+	for (int b = 0; b < r->nbands; b++)
+		cnt[b + 1] += cnt[b];
+	/* after this, cnt[b] is the end of band b's runs in order */
+	for (int i = 0; i < s->ncols; i++)
+		s->order[cnt[s->cols[i].y1 >> r->band_shift]++] = i;
+	for (int b = 0; b < r->nbands; b++) {
+		int yend = ((b + 1) << r->band_shift) - 1;
+		int nn = 0;
+		int32_t *t;
+
+		if (yend > r->h - 1)
+			yend = r->h - 1;
+		for (int k = 0; k < na; k++) {
+			struct r_col *c = &s->cols[act[k]];
+
+			r_draw_run(r, s, c, c->y2 < yend ? c->y2 : yend);
+			if (c->y2 > yend)
+				next[nn++] = act[k];
+		}
+		for (int k = start; k < cnt[b]; k++) {
+			struct r_col *c = &s->cols[s->order[k]];
+
+			r_draw_run(r, s, c, c->y2 < yend ? c->y2 : yend);
+			if (c->y2 > yend)
+				next[nn++] = s->order[k];
+		}
+		start = cnt[b];
+		t = act;
+		act = next;
+		next = t;
+		na = nn;
+	}
+}
+
+/* One job: everything strip i shows. */
+static void r_strip_job(void *arg, int i)
+{
+	struct r_ctx *r = arg;
+	struct r_strip *s = &r->strips[i];
+
+	r_strip_cols(r, s);
+	for (int k = 0; k < s->nspans; k++)
+		r_draw_span(r, s, &r->spans[s->spans[k]]);
+	r_draw_finish(r, s);
+	r_things_draw(r, s);
+}
+
+void r_strip_draw_all(struct r_ctx *r)
+{
+	if (r->par.run && r->nstrips > 1)
+		r->par.run(r->par.pool, r->nstrips, r_strip_job, r);
+	else
+		for (int i = 0; i < r->nstrips; i++)
+			r_strip_job(r, i);
+	for (int i = 0; i < r->nstrips; i++) {
+		const struct r_strip *s = &r->strips[i];
+
+		r->st.pixels_written += s->written;
+		r->st.pixels_empty += s->empty;
+		r->st.pixels_masked += s->masked;
+	}
+}

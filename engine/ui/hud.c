@@ -1,0 +1,322 @@
+/*
+ * hud: the play HUD (status line, score, crosshair, weapon, minimap,
+ * banners) and the dispatcher to the flow's pages (hud_page.c) and the
+ * service menu (menu_draw.c). All pixels go through v_video.
+ */
+#include "engine/ui/hud.h"
+
+#include <string.h>
+
+#include "engine/core/msg.h"
+#include "engine/core/pal.h"
+#include "engine/core/tab.h"
+#include "engine/game/menu.h"
+#include "engine/game/sim.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
+#include "engine/render/r_main.h"
+#include "engine/ui/hud_local.h"
+#include "engine/ui/v_video.h"
+
+#define HUD_MAP_SPAN 1024              /* map units across the minimap */
+
+void hud_minimap_rect(const struct r_frame *f, int *x, int *y, int *size)
+{
+	int s = hud_scale(f), m = f->h / 3;
+
+	if (m < 40)
+		m = 40;
+	*size = m;
+	*x = f->w - m - 2 * s;
+	*y = 2 * s;
+}
+
+int hud_world(const struct sim *s)
+{
+	return s->mode == SIM_PLAY || s->mode == SIM_GAMEOVER || s->mode == SIM_ATTRACT;
+}
+
+/* ---- the minimap ------------------------------------------------------ */
+
+struct hud_mm {
+	struct v_rect r;
+	int cx, cy;                    /* the player's pixel */
+	int64_t num, den;              /* pixels per 16.16 unit: num / den */
+	fx_t px, py;
+};
+
+static void hud_mm_point(const struct hud_mm *m, fx_t x, fx_t y, int *sx, int *sy)
+{
+	*sx = m->cx + (int)(((int64_t)x - m->px) * m->num / m->den);
+	*sy = m->cy - (int)(((int64_t)y - m->py) * m->num / m->den);
+}
+
+static void hud_mm_dot(struct r_frame *f, const struct hud_mm *m, fx_t x, fx_t y, int size,
+		       uint8_t c)
+{
+	int sx, sy;
+
+	hud_mm_point(m, x, y, &sx, &sy);
+	if (sx < m->r.x || sy < m->r.y || sx >= m->r.x + m->r.w || sy >= m->r.y + m->r.h)
+		return;
+	v_fill(f, sx - size / 2, sy - size / 2, size, size, c);
+}
+
+/* North up, centred on the player: walls, steps, pickups, lights, living
+ * enemies, and the player as an arrow along its view. */
+static void hud_minimap(const struct sim *s, const struct hud_colours *c, struct r_frame *f)
+{
+	const struct map *map = s->map;
+	int sc = hud_scale(f), size, dot;
+	struct hud_mm m;
+
+	hud_minimap_rect(f, &m.r.x, &m.r.y, &size);
+	m.r.w = m.r.h = size;
+	m.cx = m.r.x + size / 2;
+	m.cy = m.r.y + size / 2;
+	m.num = size;
+	m.den = (int64_t)HUD_MAP_SPAN * FX_ONE;
+	m.px = s->pl.x;
+	m.py = s->pl.y;
+	v_remap(f, m.r.x, m.r.y, size, size, c->dim);
+	v_remap(f, m.r.x, m.r.y, size, size, c->dim);
+	for (uint32_t i = 0; i < map->num_lines; i++) {
+		const struct map_line *l = &map->lines[i];
+		const struct map_vertex *a = &map->vertices[l->v1], *b = &map->vertices[l->v2];
+		uint8_t col = c->grey;
+		int x0, y0, x1, y1;
+		if (l->side[1] != MAP_NONE && !(l->flags & ML_BLOCKING)) {
+			const struct map_sector *fs = &map->sectors[map->sides[l->side[0]].sector];
+			const struct map_sector *bs = &map->sectors[map->sides[l->side[1]].sector];
+			if (fs->floor_h == bs->floor_h && fs->ceil_h == bs->ceil_h)
+				continue;
+			col = c->dark;
+		}
+		hud_mm_point(&m, a->x, a->y, &x0, &y0);
+		hud_mm_point(&m, b->x, b->y, &x1, &y1);
+		v_line(f, x0, y0, x1, y1, col, &m.r);
+	}
+	dot = sc + 1;
+	for (uint32_t i = 0; i < map->num_things; i++) {
+		struct g_thing_info ti;
+		g_thing_info(map->things[i].type, &ti);
+		if (ti.cls == G_C_LIGHT)
+			hud_mm_dot(f, &m, map->things[i].x, map->things[i].y, dot, c->yellow);
+	}
+	for (int i = 0; i < s->g.num_pickups; i++) {
+		const struct g_pickup *p = &s->g.pk[i];
+		if (!p->taken)
+			hud_mm_dot(f, &m, p->x, p->y, dot, p->kind == G_P_HEALTH ? c->green : c->cyan);
+	}
+	for (int i = 0; i < s->g.num_enemies; i++) {
+		const struct g_enemy *e = &s->g.en[i];
+		if (e->state != G_E_DEAD)
+			hud_mm_dot(f, &m, e->x, e->y, dot + sc, c->red);
+	}
+	{
+		/* the arrow: tip along the view, the tail corners 140 degrees
+		 * either side; screen y grows downwards */
+		int64_t len = size / 12 < 4 ? 4 : size / 12;
+		ang_t a = s->pl.angle, l = a + ANG90 + ANG45 + ANG45 / 9 * 2, r = a - (l - a);
+		int tx = m.cx + (int)((tab_cos(a) * len) >> FX_SHIFT);
+		int ty = m.cy - (int)((tab_sin(a) * len) >> FX_SHIFT);
+		int lx = m.cx + (int)((tab_cos(l) * len * 3 / 4) >> FX_SHIFT);
+		int ly = m.cy - (int)((tab_sin(l) * len * 3 / 4) >> FX_SHIFT);
+		int rx = m.cx + (int)((tab_cos(r) * len * 3 / 4) >> FX_SHIFT);
+		int ry = m.cy - (int)((tab_sin(r) * len * 3 / 4) >> FX_SHIFT);
+		v_tri(f, tx, ty, lx, ly, m.cx, m.cy, c->white, &m.r);
+		v_tri(f, tx, ty, m.cx, m.cy, rx, ry, c->white, &m.r);
+	}
+	v_box(f, m.r.x - 1, m.r.y - 1, size + 2, size + 2, c->grey);
+}
+
+/* ---- the weapon --------------------------------------------------------- */
+
+/* Frame of the weapon animation: 0 ready, 1..4 the shot's recoil, by
+ * ticks since the last shot. */
+static int hud_weapon_frame(const struct sim *s)
+{
+	uint16_t t = s->g.shot_t;
+
+	return t < 3 ? 1 : t < 6 ? 2 : t < 9 ? 3 : t < G_REFIRE ? 4 : 0;
+}
+
+/* The texture set's pistol (Doom's PISG frames A..E and flash PISF),
+ * placed as Doom places weapon sprites on its 320x200 screen. Returns 0
+ * when the set has none. */
+static int hud_weapon_pics(const struct sim *s, const struct tex_set *t, struct r_frame *f,
+			   int bottom)
+{
+	int g = t ? tex_find_sprite(t, "PISG") : -1, fl = t ? tex_find_sprite(t, "PISF") : -1;
+	int frame = hud_weapon_frame(s), ws = f->h / 200 < 1 ? 1 : f->h / 200;
+	int ox = (f->w - 320 * ws) / 2, oy = bottom - 168 * ws;
+	const struct tex_sprite *sp;
+
+	if (g < 0)
+		return 0;
+	sp = &t->sprites[g];
+	if (frame >= sp->num_frames)
+		frame = 0;
+	if (sp->num_frames < 1)
+		return 0;
+	{
+		const struct tex_pic *p = &t->sprpics[sp->frames[frame].pic[0]];
+		v_pic(f, p, ox + (1 - p->left) * ws, oy + (32 - p->top) * ws, ws);
+	}
+	if (fl >= 0 && frame == 1 && t->sprites[fl].num_frames > 0) {
+		const struct tex_pic *p = &t->sprpics[t->sprites[fl].frames[0].pic[0]];
+		v_pic(f, p, ox + (1 - p->left) * ws, oy + (32 - p->top) * ws, ws);
+	}
+	return 1;
+}
+
+/* The project's own pistol, seen from behind, drawn with rectangles and
+ * triangles in units of the 320x240 screen: the hand round the grip, the
+ * slide narrowing to the muzzle, the sights. It kicks up on a shot and
+ * shows a muzzle flash for the first ticks. */
+static void hud_weapon_drawn(const struct sim *s, const struct hud_colours *c, struct r_frame *f,
+			     int bottom)
+{
+	static const int8_t kick[5] = { 0, 7, 4, 2, 1 };
+	int sc = hud_scale(f), frame = hud_weapon_frame(s);
+	int cx = f->w / 2 + 20 * sc, top = bottom - 52 * sc - kick[frame] * sc;
+
+	/* the hand and wrist */
+	v_fill(f, cx - 16 * sc, top + 36 * sc, 32 * sc, bottom - top - 36 * sc, c->skin);
+	v_tri(f, cx - 16 * sc, top + 36 * sc, cx - 22 * sc, bottom, cx - 16 * sc, bottom, c->skin,
+	      NULL);
+	v_fill(f, cx - 16 * sc, top + 40 * sc, 32 * sc, 2 * sc, c->orange);   /* knuckles */
+	/* the grip and the slide */
+	v_fill(f, cx - 9 * sc, top + 24 * sc, 18 * sc, 14 * sc, c->dark);
+	v_tri(f, cx - 11 * sc, top + 26 * sc, cx + 11 * sc, top + 26 * sc, cx - 7 * sc, top,
+	      c->steel, NULL);
+	v_tri(f, cx + 11 * sc, top + 26 * sc, cx + 7 * sc, top, cx - 7 * sc, top, c->steel, NULL);
+	v_fill(f, cx - 1 * sc, top + 2 * sc, 2 * sc, 22 * sc, c->grey);       /* top rib */
+	v_fill(f, cx - 4 * sc, top + 1 * sc, 8 * sc, 3 * sc, c->black);       /* muzzle */
+	v_fill(f, cx - 1 * sc, top - 2 * sc, 2 * sc, 3 * sc, c->white);       /* front sight */
+	v_fill(f, cx - 6 * sc, top + 22 * sc, 4 * sc, 3 * sc, c->white);      /* rear sight */
+	v_fill(f, cx + 2 * sc, top + 22 * sc, 4 * sc, 3 * sc, c->white);
+	if (frame == 1) {
+		int fy = top - 2 * sc;
+		v_tri(f, cx, fy - 18 * sc, cx - 10 * sc, fy, cx + 10 * sc, fy, c->orange, NULL);
+		v_tri(f, cx - 14 * sc, fy - 8 * sc, cx + 14 * sc, fy - 8 * sc, cx, fy + 2 * sc,
+		      c->orange, NULL);
+		v_tri(f, cx, fy - 11 * sc, cx - 5 * sc, fy, cx + 5 * sc, fy, c->yellow, NULL);
+	}
+}
+
+/* ---- the play HUD ------------------------------------------------------ */
+
+static void hud_crosshair(const struct sim *s, const struct hud_colours *c, struct r_frame *f)
+{
+	int sc = hud_scale(f), cx = f->w / 2, cy = f->h / 2;
+	uint8_t col = s->g.shot == G_SHOT_ENEMY && s->g.shot_t < 8 ? c->red : c->white;
+
+	v_fill(f, cx - 5 * sc, cy, 3 * sc, sc, col);
+	v_fill(f, cx + 2 * sc + sc, cy, 3 * sc, sc, col);
+	v_fill(f, cx, cy - 5 * sc, sc, 3 * sc, col);
+	v_fill(f, cx, cy + 3 * sc, sc, 3 * sc, col);
+}
+
+static void hud_banners(const struct sim *s, const struct hud_colours *c, struct r_frame *f)
+{
+	int sc = hud_scale(f), y = f->h / 3;
+	char buf[48] = "";
+
+	if (s->g.phase == G_PH_DEAD) {
+		hud_text_centre(f, c, y, 2 * sc, c->red, "YOU DIED");
+		if (s->g.lives > 1) {
+			hud_cat_num(buf, sizeof(buf), (uint64_t)s->g.lives - 1, 1, '0');
+			msg_cat(buf, sizeof(buf), s->g.lives == 2 ? " LIFE LEFT" : " LIVES LEFT");
+			hud_text_centre(f, c, y + 20 * sc, sc, c->white, buf);
+		}
+	} else if (s->g.phase == G_PH_CLEAR) {
+		hud_text_centre(f, c, y, 2 * sc, c->yellow, "STAGE CLEAR");
+		msg_cat(buf, sizeof(buf), "BONUS ");
+		hud_cat_num(buf, sizeof(buf), (uint64_t)G_STAGE_BONUS * (s->g.stage + 1u), 1, '0');
+		hud_text_centre(f, c, y + 20 * sc, sc, c->white, buf);
+	} else if (s->g.stage_t < G_BANNER_TICKS) {
+		msg_cat(buf, sizeof(buf), "STAGE ");
+		hud_cat_num(buf, sizeof(buf), s->g.stage + 1u, 1, '0');
+		hud_text_centre(f, c, y, 2 * sc, c->white, buf);
+		if (s->map && s->map->name[0])
+			hud_text_centre(f, c, y + 20 * sc, sc, c->grey, s->map->name);
+	}
+}
+
+static void hud_play(const struct sim *s, const struct hud_env *env, const struct hud_colours *c,
+		     struct r_frame *f)
+{
+	int sc = hud_scale(f), bar = 12 * sc, y0 = f->h - bar, ty = y0 + 2 * sc;
+	int health = (int)(((int64_t)s->pl.health + FX_ONE - 1) >> FX_SHIFT);
+	char buf[48];
+
+	if (s->pl.hurt || s->pl.bonus) {
+		uint8_t col = s->pl.hurt ? c->red : c->yellow;
+		int t = 3 * sc;
+		v_fill(f, 0, 0, f->w, t, col);
+		v_fill(f, 0, f->h - t, f->w, t, col);
+		v_fill(f, 0, 0, t, f->h, col);
+		v_fill(f, f->w - t, 0, t, f->h, col);
+	}
+	if (s->g.phase != G_PH_DEAD) {
+		if (!hud_weapon_pics(s, env->tex, f, y0))
+			hud_weapon_drawn(s, c, f, y0);
+		hud_crosshair(s, c, f);
+	}
+	v_remap(f, 0, y0, f->w, bar, c->dim);
+	buf[0] = '\0';
+	msg_cat(buf, sizeof(buf), "HEALTH ");
+	hud_cat_num(buf, sizeof(buf), (uint64_t)(health < 0 ? 0 : health), 3, ' ');
+	hud_text(f, c, 2 * sc, ty, sc, health <= 25 ? c->red : c->white, buf);
+	buf[0] = '\0';
+	msg_cat(buf, sizeof(buf), "AMMO ");
+	hud_cat_num(buf, sizeof(buf), s->pl.ammo, 3, ' ');
+	hud_text(f, c, 2 * sc + v_text_width("HEALTH 100  ", sc), ty, sc,
+		 s->pl.ammo == 0 ? c->red : c->white, buf);
+	buf[0] = '\0';
+	msg_cat(buf, sizeof(buf), "STAGE ");
+	hud_cat_num(buf, sizeof(buf), s->g.stage + 1u, 1, '0');
+	hud_text_right(f, c, f->w - 2 * sc, ty, sc, c->white, buf);
+	buf[0] = '\0';
+	msg_cat(buf, sizeof(buf), "SCORE ");
+	hud_cat_num(buf, sizeof(buf), s->g.score, 6, '0');
+	hud_text(f, c, 2 * sc, 2 * sc, sc, c->white, buf);
+	buf[0] = '\0';
+	msg_cat(buf, sizeof(buf), "LIVES ");
+	hud_cat_num(buf, sizeof(buf), s->g.lives, 1, '0');
+	hud_text(f, c, 2 * sc, 12 * sc, sc, c->white, buf);
+	if (s->credits || s->set.freeplay) {
+		hud_credits_text(s, buf, sizeof(buf));
+		hud_text(f, c, 2 * sc, 22 * sc, sc, c->grey, buf);
+	}
+	hud_minimap(s, c, f);
+	hud_banners(s, c, f);
+}
+
+void hud_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f)
+{
+	struct hud_colours c;
+
+	hud_colours(env->pal, &c);
+	if (!hud_world(s))
+		v_fill(f, 0, 0, f->w, f->h, c.black);
+	switch (s->mode) {
+	case SIM_PLAY:
+		hud_play(s, env, &c, f);
+		break;
+	case SIM_GAMEOVER:
+		hud_page_gameover(s, &c, f);
+		break;
+	case SIM_INITIALS:
+		hud_page_initials(s, &c, f);
+		break;
+	case SIM_SERVICE:
+		menu_draw(s, env, f);
+		break;
+	case SIM_ATTRACT:
+	default:
+		hud_page_attract(s, &c, f);
+		break;
+	}
+}

@@ -1,0 +1,265 @@
+/*
+ * menu_draw: the service menu's pages, drawn from the sim state (the menu
+ * state machine is menu.c). Pixels through v_video, colours and text
+ * helpers from the HUD.
+ */
+#include <string.h>
+
+#include "engine/core/msg.h"
+#include "engine/core/pal.h"
+#include "engine/game/menu.h"
+#include "engine/game/sim.h"
+#include "engine/render/r_main.h"
+#include "engine/ui/hud_local.h"
+#include "engine/ui/v_video.h"
+
+struct menu_ctx {
+	const struct sim *s;
+	const struct hud_colours *c;
+	struct r_frame *f;
+	int sc, x, y;                  /* scale, left margin, next line */
+};
+
+static void menu_line(struct menu_ctx *m, uint8_t colour, const char *text)
+{
+	hud_text(m->f, m->c, m->x, m->y, m->sc, colour, text);
+	m->y += 12 * m->sc;
+}
+
+/* An item: "> LABEL      VALUE" with the cursor and highlight when sel. */
+static void menu_item(struct menu_ctx *m, int sel, const char *label, const char *value)
+{
+	uint8_t col = sel ? m->c->yellow : m->c->white;
+
+	if (sel)
+		hud_text(m->f, m->c, m->x - 2 * V_CHAR * m->sc, m->y, m->sc, col, ">");
+	hud_text(m->f, m->c, m->x, m->y, m->sc, col, label);
+	if (value)
+		hud_text(m->f, m->c, m->x + 20 * V_CHAR * m->sc, m->y, m->sc, col, value);
+	m->y += 12 * m->sc;
+}
+
+static void menu_title(struct menu_ctx *m, const char *title, const char *help)
+{
+	hud_text_centre(m->f, m->c, 6 * m->sc, 2 * m->sc, m->c->cyan, title);
+	hud_text_centre(m->f, m->c, m->f->h - 12 * m->sc, m->sc, m->c->grey, help);
+	m->y = 34 * m->sc;
+}
+
+static void menu_main_page(struct menu_ctx *m)
+{
+	static const char items[MENU_ITEMS][20] = {
+		[MENU_I_INPUT] = "INPUT TEST", [MENU_I_DISPLAY] = "DISPLAY TEST",
+		[MENU_I_SETTINGS] = "GAME SETTINGS", [MENU_I_BOOKS] = "BOOKKEEPING",
+		[MENU_I_RESET_SCORES] = "RESET HIGH SCORES", [MENU_I_RESET_BOOKS] = "RESET BOOKKEEPING",
+		[MENU_I_WIZARD] = "CONFIGURE INPUTS", [MENU_I_EXIT] = "EXIT",
+	};
+	const struct menu *mn = &m->s->menu;
+
+	menu_title(m, "SERVICE MENU", "UP/DOWN MOVE  FIRE SELECT  SERVICE EXIT");
+	for (int i = 0; i < MENU_ITEMS; i++)
+		menu_item(m, i == mn->cursor, items[i], NULL);
+	if (mn->done) {
+		m->y += 12 * m->sc;
+		menu_line(m, m->c->green, mn->done == MENU_I_RESET_SCORES ? "HIGH SCORES RESET" :
+									   "BOOKKEEPING RESET");
+	}
+}
+
+static void menu_input_page(struct menu_ctx *m)
+{
+	const struct sim_cmd *c = &m->s->cmd;
+	const int on[] = {
+		c->forward > 0, c->forward < 0, c->turn > 0, c->turn < 0, c->side < 0, c->side > 0,
+		!!(c->buttons & SIM_BT_FIRE), !!(c->buttons & SIM_BT_USE),
+		!!(c->buttons & SIM_BT_START), !!(c->buttons & SIM_BT_SERVICE),
+	};
+	static const char names[][14] = {
+		"FORWARD", "BACK", "TURN LEFT", "TURN RIGHT", "STRAFE LEFT", "STRAFE RIGHT",
+		"FIRE", "USE", "START", "SERVICE",
+	};
+	char buf[32] = "";
+
+	menu_title(m, "INPUT TEST", "SERVICE: BACK");
+	for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
+		hud_text(m->f, m->c, m->x, m->y, m->sc, on[i] ? m->c->green : m->c->white, names[i]);
+		hud_text(m->f, m->c, m->x + 20 * V_CHAR * m->sc, m->y, m->sc,
+			 on[i] ? m->c->green : m->c->dark, on[i] ? "ON" : "--");
+		m->y += 10 * m->sc;
+	}
+	msg_cat(buf, sizeof(buf), "COINS ");
+	hud_cat_num(buf, sizeof(buf), m->s->menu.coins_seen, 1, '0');
+	m->y += 4 * m->sc;
+	menu_line(m, m->c->yellow, buf);
+}
+
+static void menu_bars(struct menu_ctx *m, const struct pal *pal)
+{
+	const struct hud_colours *c = m->c;
+	const uint8_t bars[8] = { c->white, c->yellow, c->cyan, c->green,
+				  c->purple, c->red, c->blue, c->black };
+	struct r_frame *f = m->f;
+	int top = f->h * 2 / 3;
+
+	for (int i = 0; i < 8; i++)
+		v_fill(f, f->w * i / 8, 0, f->w * (i + 1) / 8 - f->w * i / 8, top, bars[i]);
+	for (int i = 0; i < 16; i++) {
+		int v = 255 - i * 17;
+		v_fill(f, f->w * i / 16, top, f->w * (i + 1) / 16 - f->w * i / 16, f->h - top,
+		       pal_nearest(pal, v, v, v));
+	}
+}
+
+static void menu_grid(struct menu_ctx *m)
+{
+	struct r_frame *f = m->f;
+	uint8_t w = m->c->white;
+
+	for (int i = 0; i <= 16; i++) {
+		int x = i == 16 ? f->w - 1 : f->w * i / 16;
+		v_line(f, x, 0, x, f->h - 1, w, NULL);
+	}
+	for (int i = 0; i <= 12; i++) {
+		int y = i == 12 ? f->h - 1 : f->h * i / 12;
+		v_line(f, 0, y, f->w - 1, y, w, NULL);
+	}
+	v_line(f, 0, 0, f->w - 1, f->h - 1, m->c->red, NULL);
+	v_line(f, f->w - 1, 0, 0, f->h - 1, m->c->red, NULL);
+}
+
+static void menu_orient(struct menu_ctx *m, int rotate)
+{
+	struct r_frame *f = m->f;
+	int sc = m->sc, cx = f->w / 2, cy = f->h / 2, a = f->h / 4;
+	char buf[32] = "";
+
+	v_tri(f, cx, cy - a, cx - a / 2, cy, cx + a / 2, cy, m->c->green, NULL);
+	v_fill(f, cx - a / 6, cy, a / 3, a, m->c->green);
+	hud_text_centre(f, m->c, 2 * sc, 2 * sc, m->c->white, "TOP");
+	hud_text_centre(f, m->c, f->h - 18 * sc, 2 * sc, m->c->white, "BOTTOM");
+	hud_text(f, m->c, 2 * sc, cy, 2 * sc, m->c->white, "LEFT");
+	hud_text_right(f, m->c, f->w - 2 * sc, cy, 2 * sc, m->c->white, "RIGHT");
+	msg_cat(buf, sizeof(buf), "ROTATE ");
+	if (rotate >= 0)
+		hud_cat_num(buf, sizeof(buf), (uint64_t)rotate, 1, '0');
+	else
+		msg_cat(buf, sizeof(buf), "?");
+	hud_text(f, m->c, 2 * sc, f->h - 30 * sc, sc, m->c->yellow, buf);
+}
+
+static void menu_display_page(struct menu_ctx *m, const struct hud_env *env)
+{
+	switch (m->s->menu.display) {
+	case MENU_D_GRID:
+		menu_grid(m);
+		break;
+	case MENU_D_ORIENT:
+		menu_orient(m, env->rotate);
+		break;
+	case MENU_D_BARS:
+	default:
+		menu_bars(m, env->pal);
+		break;
+	}
+	hud_text_centre(m->f, m->c, m->f->h / 2 + 20 * m->sc, m->sc, m->c->white,
+			"FIRE: NEXT  SERVICE: BACK");
+}
+
+static void menu_settings_page(struct menu_ctx *m)
+{
+	const struct sim *s = m->s;
+	const struct menu *mn = &s->menu;
+	const char *diff = menu_difficulty_name(s->set.difficulty > 3 ? 3 : s->set.difficulty);
+	char lives[4] = "", coins[4] = "", res[24] = "";
+	int w = m->f->w, h = m->f->h;
+
+	hud_cat_num(lives, sizeof(lives), s->set.lives ? s->set.lives : G_LIVES_DEFAULT, 1, '0');
+	hud_cat_num(coins, sizeof(coins), s->set.coins_per_credit ? s->set.coins_per_credit : 1, 1,
+		    '0');
+	if (mn->res)
+		menu_res_size(mn->res, &w, &h);
+	hud_cat_num(res, sizeof(res), (uint64_t)w, 1, '0');
+	msg_cat(res, sizeof(res), "X");
+	hud_cat_num(res, sizeof(res), (uint64_t)h, 1, '0');
+	if (!mn->res)
+		msg_cat(res, sizeof(res), " NOW");
+	menu_title(m, "GAME SETTINGS", "LEFT/RIGHT CHANGE  SERVICE BACK");
+	menu_item(m, mn->cursor == MENU_S_DIFFICULTY, "DIFFICULTY", diff);
+	menu_item(m, mn->cursor == MENU_S_LIVES, "LIVES", lives);
+	menu_item(m, mn->cursor == MENU_S_COINS, "COINS PER CREDIT", coins);
+	menu_item(m, mn->cursor == MENU_S_FREEPLAY, "FREE PLAY", s->set.freeplay ? "YES" : "NO");
+	menu_item(m, mn->cursor == MENU_S_RES, "RENDER SIZE", res);
+	menu_item(m, mn->cursor == MENU_S_DEFAULTS, "FACTORY DEFAULTS", NULL);
+	menu_item(m, mn->cursor == MENU_S_BACK, "BACK", NULL);
+}
+
+static void menu_books_page(struct menu_ctx *m)
+{
+	const struct g_books *b = &m->s->books;
+	char buf[5][24];
+
+	for (int i = 0; i < 5; i++)
+		buf[i][0] = '\0';
+	hud_cat_num(buf[0], sizeof(buf[0]), b->coins, 1, '0');
+	hud_cat_num(buf[1], sizeof(buf[1]), b->plays, 1, '0');
+	hud_cat_time(buf[2], sizeof(buf[2]), b->play_ticks);
+	hud_cat_time(buf[3], sizeof(buf[3]), b->plays ? b->play_ticks / b->plays : 0);
+	hud_cat_time(buf[4], sizeof(buf[4]), b->on_ticks);
+	menu_title(m, "BOOKKEEPING", "FIRE OR SERVICE: BACK");
+	menu_item(m, 0, "COINS", buf[0]);
+	menu_item(m, 0, "PLAYS", buf[1]);
+	menu_item(m, 0, "PLAY TIME", buf[2]);
+	menu_item(m, 0, "AVERAGE PLAY", buf[3]);
+	menu_item(m, 0, "POWER-ON TIME", buf[4]);
+	buf[0][0] = '\0';
+	hud_cat_time(buf[0], sizeof(buf[0]), m->s->tick);
+	menu_item(m, 0, "UPTIME", buf[0]);
+}
+
+static void menu_confirm_page(struct menu_ctx *m)
+{
+	const struct menu *mn = &m->s->menu;
+
+	menu_title(m, mn->confirm == MENU_I_RESET_SCORES ? "RESET HIGH SCORES?" :
+							    "RESET BOOKKEEPING?",
+		   "LEFT/RIGHT CHOOSE  FIRE CONFIRM");
+	menu_item(m, !mn->yes, "NO", NULL);
+	menu_item(m, mn->yes, "YES", NULL);
+}
+
+void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f)
+{
+	struct hud_colours c;
+	struct menu_ctx m;
+
+	hud_colours(env->pal, &c);
+	m.s = s;
+	m.c = &c;
+	m.f = f;
+	m.sc = hud_scale(f);
+	m.x = 4 * V_CHAR * m.sc;
+	m.y = 0;
+	v_fill(f, 0, 0, f->w, f->h, c.black);
+	switch (s->menu.page) {
+	case MENU_INPUT:
+		menu_input_page(&m);
+		break;
+	case MENU_DISPLAY:
+		menu_display_page(&m, env);
+		break;
+	case MENU_SETTINGS:
+		menu_settings_page(&m);
+		break;
+	case MENU_BOOKS:
+		menu_books_page(&m);
+		break;
+	case MENU_CONFIRM:
+		menu_confirm_page(&m);
+		break;
+	case MENU_MAIN:
+	case MENU_WIZARD:              /* its one tick: the app draws the wizard */
+	default:
+		menu_main_page(&m);
+		break;
+	}
+}

@@ -1,0 +1,149 @@
+/* Tests for engine/render/r_game.c: the sprites handed to the renderer, with the
+ * project's own texture set (its own pictures, stand-ins for the monsters
+ * and pickups it has none of, and the fallback). */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "engine/game/g_game.h"
+#include "engine/game/sim.h"
+#include "engine/map/map.h"
+#include "engine/map/tex.h"
+#include "engine/map/th.h"
+#include "engine/render/r_game.h"
+#include "engine/render/r_main.h"
+#include "g_fixture.h"
+
+static const struct sim_settings play = { 1, 0, 1, 1, 3 };
+
+static void sprites_follow_the_state(void **state)
+{
+	static const struct gf_thing t[] = {
+		{ 100, 100, 0, 1, 0 },
+		{ 300, 100, ANG180, 3004, 0 },               /* zombieman: POSS */
+		{ 400, 100, ANG180, 3001, 0 },               /* imp: TROO */
+		{ 460, 100, ANG180, 3003, 0 },               /* baron: BOSS, not in the set */
+		{ 500, 100, 0, 2012, 0 },                    /* medikit */
+		{ 600, 100, 0, 2048, 0 },                    /* bullets: AMMO */
+		{ 650, 100, 0, 2008, 0 },                    /* shells: SHEL, not in the set */
+		{ 700, 100, 0, 2028, 0 },                    /* floor lamp COLU */
+		{ 800, 100, 0, TH_LIGHT_FIRST + 7, 0 },      /* arcaded light: invisible */
+		{ 900, 100, 0, 5, 0 },                       /* a key: not in this game */
+	};
+	struct map *m = gf_room(1024, 256, t, 10, NULL, 0);
+	struct tex_set *ts;
+	struct r_sprite out[16];
+	struct sim s;
+	int n, poss, troo, medi, ammo, clip, colu, keep;
+	(void)state;
+	assert_non_null(m);
+	assert_int_equal(tex_builtin(&ts), 0);
+	poss = tex_find_sprite(ts, "POSS");
+	troo = tex_find_sprite(ts, "TROO");
+	medi = tex_find_sprite(ts, "MEDI");
+	ammo = tex_find_sprite(ts, "AMMO");
+	clip = tex_find_sprite(ts, "CLIP");
+	colu = tex_find_sprite(ts, "COLU");
+	assert_true(poss >= 0 && troo >= 0 && medi >= 0 && ammo >= 0 && clip >= 0 && colu >= 0);
+	/* else the stand-ins are not tested */
+	assert_true(tex_find_sprite(ts, "BOSS") < 0 && tex_find_sprite(ts, "SHEL") < 0);
+	sim_init(&s, m, &play);
+	assert_int_equal(r_game_sprites(&s, NULL, out, 16), 0);
+	n = r_game_sprites(&s, ts, out, 16);
+	assert_int_equal(n, 7);                         /* 3 enemies, 3 pickups, the lamp */
+	assert_int_equal(out[0].sprite, poss);
+	assert_int_equal(out[0].x, fx_from_int(300));
+	assert_int_equal(out[0].angle, ANG180);
+	assert_int_equal(out[0].frame, 0);
+	assert_int_equal(out[1].sprite, troo);
+	assert_int_equal(out[2].sprite, poss);          /* the baron's stand-in */
+	assert_int_equal(out[3].sprite, medi);
+	assert_int_equal(out[4].sprite, ammo);
+	assert_int_equal(out[5].sprite, clip);          /* the shells' stand-in */
+	assert_int_equal(out[6].sprite, colu);
+	assert_int_equal(out[6].flags, R_SPR_FULLBRIGHT);
+	/* max is respected */
+	assert_int_equal(r_game_sprites(&s, ts, out, 2), 2);
+	/* a taken pickup is not drawn; a corpse is drawn at its last death
+	 * frame (Doom's dead zombieman, thing 18, is POSS frame L), unless the
+	 * sprite has no such frame (the baron's corpse, frame O, on POSS) */
+	s.g.pk[0].taken = 1;
+	s.g.en[0].state = G_E_DEAD;
+	s.g.en[0].anim = 1000;
+	s.g.en[2].state = G_E_DEAD;
+	s.g.en[2].anim = 1000;
+	n = r_game_sprites(&s, ts, out, 16);
+	assert_int_equal(n, 5);
+	assert_int_equal(out[0].x, fx_from_int(300));
+	assert_int_equal(out[0].frame, th_find(18)->frame - 'A');
+	assert_int_equal(out[1].x, fx_from_int(400));
+	assert_int_equal(out[2].x, fx_from_int(600));
+	/* attacking with the muzzle flash: the frame after the attack's,
+	 * full bright (the imp's attack is Doom's F, its flash G) */
+	s.g.en[1].state = G_E_ATTACK;
+	s.g.en[1].flash = 3;
+	n = r_game_sprites(&s, ts, out, 16);
+	assert_int_equal(out[1].frame, 'G' - 'A');
+	assert_int_equal(out[1].flags, R_SPR_FULLBRIGHT);
+	/* a frame the stand-in lacks is drawn as frame A (an arch-vile's pain,
+	 * frame Q, on POSS, which ends at L) */
+	s.g.en[2].state = G_E_PAIN;
+	s.g.en[2].type = 64;
+	n = r_game_sprites(&s, ts, out, 16);
+	assert_int_equal(n, 6);
+	assert_int_equal(out[2].sprite, poss);
+	assert_int_equal(out[2].frame, 0);
+	/* a set without the sprite or its stand-in: one past the end, which
+	 * the renderer draws as its fallback checker */
+	keep = ts->num_sprites;
+	ts->num_sprites = 0;
+	n = r_game_sprites(&s, ts, out, 16);
+	assert_int_equal(n, 6);
+	for (int i = 0; i < n; i++)
+		assert_int_equal(out[i].sprite, 0);
+	ts->num_sprites = keep;
+	tex_free(ts);
+	map_free(m);
+}
+
+/* The built-in set draws every frame the game asks of the monsters the
+ * built-in levels hold (g_thing_info: walking, attack and flash, pain,
+ * every death frame to the corpse): each of its own, none the fallback,
+ * and the walking frames seen from the front and the back differ. */
+static void builtin_monsters_have_every_frame_the_game_shows(void **state)
+{
+	static const uint16_t types[] = { 3004, 9, 3001, 3002, 3005 };
+	struct tex_set *ts;
+	(void)state;
+	assert_int_equal(tex_builtin(&ts), 0);
+	for (size_t i = 0; i < sizeof types / sizeof types[0]; i++) {
+		struct g_thing_info ti;
+		const struct tex_sprite *sp;
+		int k;
+		g_thing_info(types[i], &ti);
+		k = tex_find_sprite(ts, ti.sprite);
+		assert_true(k >= 0);
+		sp = &ts->sprites[k];
+		assert_int_equal(sp->num_frames, ti.death1 + 1);
+		assert_true(ti.attack + 1 < ti.death1 && ti.pain < ti.death1);
+		for (int f = 0; f < sp->num_frames; f++)
+			for (int r = 0; r < 8; r++)
+				assert_int_not_equal(sp->frames[f].pic[r], 0);
+		for (int f = 0; f < ti.frames; f++)
+			assert_int_not_equal(sp->frames[f].pic[0], sp->frames[f].pic[4]);
+	}
+	assert_int_equal(ts->missing, 0);
+	tex_free(ts);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(sprites_follow_the_state),
+		cmocka_unit_test(builtin_monsters_have_every_frame_the_game_shows),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
