@@ -41,8 +41,6 @@
 #include "input/gpo.h"
 #include "input/hp.h"
 #include "input/in.h"
-#include "input/in_gpio.h"
-#include "input/in_hid.h"
 #include "input/rec.h"
 #include "input/scr.h"
 #include "systemd/svc.h"
@@ -56,9 +54,28 @@
  * make a slot retry at once, this is the fallback. */
 #define APP_REOPEN_NS 1000000000ull
 
-/* Latency is kept per kind of input source as well as overall. */
-enum app_src { APP_SRC_EVDEV, APP_SRC_TTY, APP_SRC_HID, APP_SRC_GPIO, APP_SRC_SCRIPT, APP_SRCS };
-static const char *const app_src_name[APP_SRCS] = { "evdev", "tty", "hid", "gpio", "script" };
+/* The input backends that exist, in the order their slots open; each has
+ * the setting that names its devices (none: opened only with a display
+ * that reads keys, dp_backend.input). The only place that names one. */
+static const struct app_kind {
+	const struct in_backend *be;
+	size_t setting;          /* offsetof(struct cfg, ...) + 1; 0: none */
+	int autos;               /* slots "auto" opens; more than one: quietly */
+	int whole;               /* the setting is one device, not a list */
+} app_kinds[] = {
+	{ &in_evdev, offsetof(struct cfg, input.evdev) + 1, 1, 1 },
+	{ &in_tty, 0, 1, 1 },
+	{ &in_hid, offsetof(struct cfg, input.hid) + 1, APP_HID_AUTO, 0 },
+	{ &in_gpio, offsetof(struct cfg, input.gpio) + 1, 0, 0 },
+};
+#define APP_KINDS ((int)(sizeof(app_kinds) / sizeof(app_kinds[0])))
+
+const struct in_backend *const app_backends[] = { &in_evdev, &in_tty, &in_hid, &in_gpio, NULL };
+
+/* Latency is kept per kind of input source (the backends, then scripts)
+ * as well as overall. */
+#define APP_SRC_SCRIPT APP_KINDS
+#define APP_SRCS (APP_KINDS + 1)
 
 /* Set by signal handlers only; read by the loop. File-scope because a
  * handler has no other way to reach the loop. */
@@ -68,6 +85,7 @@ static volatile sig_atomic_t app_fault_req;
 
 struct app_in {
 	const struct in_backend *be;
+	int kind;                  /* its app_kinds entry: latency by source */
 	struct in_dev *dev;
 	const char *path;          /* what to (re)open; NULL: auto-detect */
 	char spec[CFG_PATH_MAX];   /* the path's storage when split from a list */
@@ -356,12 +374,12 @@ static void identify(struct app *a, struct app_in *in)
 			snprintf(a->prof_secs[a->nprof_secs].id, BIND_ID_MAX, "%s", d->id);
 			a->prof_secs[a->nprof_secs++].p = p;
 		}
-		if (in->be == &in_hid && p->hid[0] &&
-		    in_hid_configure(in->dev, p->hid, why, sizeof(why)) < 0)
-			logf_("input hid: profile %s: %s", p->name, why);
+		if (in->be->configure && p->hid[0] &&
+		    in->be->configure(in->dev, p->hid, why, sizeof(why)) < 0)
+			logf_("input %s: profile %s: %s", in->be->name, p->name, why);
 		logf_("input %s: %s: profile %s", in->be->name, in->be->describe(in->dev), p->name);
 	}
-	if (!named && a->wiz_auto && in->be == &in_hid) {
+	if (!named && a->wiz_auto && (in->be->flags & IN_NEEDS_BINDINGS)) {
 		/* First boot (the wizard never saved): a pad nothing names (no
 		 * section of its own, no profile but the generic guess): ask
 		 * the operator, starting from that guess. */
@@ -371,8 +389,9 @@ static void identify(struct app *a, struct app_in *in)
 	}
 }
 
-static void add_input(struct app *a, const struct in_backend *be, const char *path, int quiet)
+static void add_input(struct app *a, int kind, const char *path, int quiet)
 {
+	const struct in_backend *be = app_kinds[kind].be;
 	char why[512] = "";
 	struct app_in *in;
 	int rc;
@@ -382,6 +401,7 @@ static void add_input(struct app *a, const struct in_backend *be, const char *pa
 	in = &a->in[a->nin++];
 	memset(in, 0, sizeof(*in));
 	in->be = be;
+	in->kind = kind;
 	if (path) {
 		/* the slot keeps its own copy: it is reopened by it */
 		snprintf(in->spec, sizeof(in->spec), "%s", path);
@@ -404,8 +424,9 @@ static void add_input(struct app *a, const struct in_backend *be, const char *pa
 }
 
 /* Opens every device of a blank-separated list of specs. */
-static void add_inputs(struct app *a, const struct in_backend *be, const char *list)
+static void add_inputs(struct app *a, int kind, const char *list)
 {
+	const struct in_backend *be = app_kinds[kind].be;
 	char buf[CFG_PATH_MAX], *save = NULL;
 
 	snprintf(buf, sizeof(buf), "%s", list);
@@ -414,42 +435,58 @@ static void add_inputs(struct app *a, const struct in_backend *be, const char *l
 			logf_("input %s: more than %d devices; %s ignored", be->name, APP_MAX_IN, tok);
 			return;
 		}
-		add_input(a, be, tok, 0);
+		add_input(a, kind, tok, 0);
 	}
 }
 
 static void open_inputs(struct app *a)
 {
-	const char *ev = a->cfg->input.evdev;
+	const char *nodes[HP_MAX_NODES];
+	int nnodes = 0;
 
 	if (headless(a))
 		return;
-	/* In the terminal preview the keys come from the terminal. Grabbing
-	 * an auto-detected evdev keyboard there would take the developer's
-	 * own keyboard away from every other window: only a device named in
-	 * the configuration is opened. */
-	if (a->dpb == &dp_term && strcmp(ev, "auto") == 0)
-		logf_("input evdev: not auto-detected in the terminal preview (set input.evdev)");
-	else if (strcmp(ev, "none") != 0)
-		add_input(a, &in_evdev, strcmp(ev, "auto") == 0 ? NULL : ev, 0);
-	if (a->dpb == &dp_term)
-		add_input(a, &in_tty, NULL, 0);
-	/* USB encoders and pads: auto opens every joystick or gamepad, up to
-	 * APP_HID_AUTO of them (each slot takes one no other slot has;
-	 * retried quietly: they may be plugged in later). */
-	if (strcmp(a->cfg->input.hid, "auto") == 0)
-		for (int k = 0; k < APP_HID_AUTO; k++)
-			add_input(a, &in_hid, NULL, 1);
-	else if (strcmp(a->cfg->input.hid, "none") != 0)
-		add_inputs(a, &in_hid, a->cfg->input.hid);
-	if (strcmp(a->cfg->input.gpio, "none") != 0)
-		add_inputs(a, &in_gpio, a->cfg->input.gpio);
+	for (int k = 0; k < APP_KINDS; k++) {
+		const struct app_kind *kd = &app_kinds[k];
+		const char *v = kd->setting ? (const char *)a->cfg + kd->setting - 1 : NULL;
+		if (!v) {
+			/* a display that reads the keys typed at it */
+			if (a->dpb->input && strcmp(a->dpb->input, kd->be->name) == 0)
+				add_input(a, k, NULL, 0);
+		} else if (strcmp(v, "none") == 0) {
+			continue;
+		} else if (kd->autos && strcmp(v, "auto") == 0) {
+			/* Taking the keyboard where the display reads it would
+			 * take the developer's own keyboard away from every other
+			 * window: only a device the configuration names is
+			 * opened. Pads: each auto slot takes one no other slot
+			 * has; retried quietly: they may be plugged in later. */
+			if (a->dpb->input && (kd->be->flags & IN_AUTO_TAKES_KEYBOARD))
+				logf_("input %s: not auto-detected while the display (%s) reads the "
+				      "keyboard (set input.%s)", kd->be->name, a->dpb->name,
+				      kd->be->name);
+			else
+				for (int i = 0; i < kd->autos; i++)
+					add_input(a, k, NULL, kd->autos > 1);
+		} else if (kd->whole) {
+			add_input(a, k, v, 0);
+		} else {
+			add_inputs(a, k, v);
+		}
+	}
 	if (a->nin == 0) {
 		logf_("no input device configured: the game runs, but nothing controls it");
 		return;
 	}
+	/* hotplug notices for the nodes of the backends that have slots */
+	for (int k = 0; k < APP_KINDS; k++)
+		for (int i = 0; i < a->nin; i++)
+			if (a->in[i].kind == k && app_kinds[k].be->node) {
+				nodes[nnodes++] = app_kinds[k].be->node;
+				break;
+			}
 	char why[256];
-	if (hp_open(NULL, 0, HP_INOTIFY | HP_LIBUSB, &a->hp, why, sizeof(why)) < 0)
+	if (hp_open(nodes, nnodes, HP_INOTIFY | HP_LIBUSB, &a->hp, why, sizeof(why)) < 0)
 		logf_("input hotplug: %s; devices are looked for every second", why);
 	else
 		logf_("input hotplug: %s", hp_sources(a->hp));
@@ -505,20 +542,9 @@ static void drop_input(struct app *a, struct app_in *in)
 	in->retry_ns = in_now_ns() + APP_REOPEN_NS;
 }
 
-static enum app_src src_of(const struct in_backend *be)
-{
-	if (be == &in_hid)
-		return APP_SRC_HID;
-	if (be == &in_gpio)
-		return APP_SRC_GPIO;
-	if (be == &in_tty)
-		return APP_SRC_TTY;
-	return APP_SRC_EVDEV;
-}
-
 /* An input event of source k at time t (kernel stamp) changed an action:
  * its effect is due on the next presented frame. */
-static void input_pending(struct app *a, enum app_src k, uint64_t t)
+static void input_pending(struct app *a, int k, uint64_t t)
 {
 	if (a->pending_ns == 0 || t < a->pending_ns)
 		a->pending_ns = t;
@@ -553,7 +579,7 @@ static void key_event(struct app *a, struct app_in *in, const struct in_event *e
 	for (int i = 0; i < n; i++)
 		cmd_action(&a->cs, acts[i], down);
 	if (n > 0)
-		input_pending(a, src_of(in->be), e->time_ns);
+		input_pending(a, in->kind, e->time_ns);
 }
 
 static void read_inputs(struct app *a)
@@ -600,7 +626,7 @@ static void read_inputs(struct app *a)
 	}
 }
 
-/* GPIO outputs follow the game each tick: a meter pulse per coin, the
+/* Outputs (in_backend.outputs) follow the game each tick: a meter pulse per coin, the
  * start lamp blinking while credits wait. */
 static void update_outputs(struct app *a)
 {
@@ -613,11 +639,11 @@ static void update_outputs(struct app *a)
 
 	for (int i = 0; i < a->nin; i++) {
 		struct app_in *in = &a->in[i];
-		if (in->be != &in_gpio || !in->dev)
+		if (!in->be->outputs || !in->dev)
 			continue;
 		if (!now)
 			now = in_now_ns();
-		if (in_gpio_update(in->dev, &gs, now) == -ENODEV)
+		if (in->be->outputs(in->dev, &gs, now) == -ENODEV)
 			drop_input(a, in);
 	}
 }
@@ -1252,7 +1278,8 @@ static void print_summary(struct app *a)
 		char name[64];
 		if (!a->src_latency[k].count)
 			continue;   /* only the kinds that gave input */
-		snprintf(name, sizeof(name), "input-to-present latency (%s)", app_src_name[k]);
+		snprintf(name, sizeof(name), "input-to-present latency (%s)",
+			 k < APP_KINDS ? app_kinds[k].be->name : "script");
 		lat_format(&a->src_latency[k], name, line, sizeof(line));
 		fprintf(stderr, "arcaded: summary: %s\n", line);
 	}

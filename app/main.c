@@ -11,8 +11,6 @@
 #include "config/cfg.h"
 #include "config/prof.h"
 #include "config/st.h"
-#include "input/in_gpio.h"
-#include "input/in_hid.h"
 
 #define ARCADED_VERSION "0.1.0"
 #define MAX_SETS 64
@@ -56,16 +54,26 @@ static void usage(FILE *f)
 	      f);
 }
 
-/* `arcaded devices`: every HID device with its decoded report fields and
- * the profile that would configure it, every evdev device, and every GPIO
- * chip and line. */
+/* `arcaded devices`: every device of every input backend that can list
+ * them (HID devices with their decoded report fields, evdev devices, GPIO
+ * chips and lines), with the profile that would configure it. */
+struct list_ctx {
+	const struct prof_set *profs;
+	const char *backend;
+};
+
+static const char *list_profile(void *u, const struct in_ident *id)
+{
+	const struct list_ctx *l = u;
+	const struct prof *p = prof_match(l->profs, l->backend, id);
+
+	return p ? p->name : NULL;
+}
+
 static int list_devices(const char *config_dir)
 {
-	struct in_hid_info *hid = NULL;
 	struct prof_set *profs = calloc(1, sizeof(*profs));
-	char path[CFG_PATH_MAX + 32], *gpio = NULL;
-	size_t n = 0;
-	int rc;
+	char path[CFG_PATH_MAX + 32];
 
 	if (!profs)
 		return 2;
@@ -73,51 +81,11 @@ static int list_devices(const char *config_dir)
 	snprintf(path, sizeof(path), "%s/profiles", config_dir);
 	prof_load_dir(profs, path, NULL, NULL);
 	prof_load_dir(profs, ARCADED_DATADIR "/profiles", NULL, NULL);
-	rc = in_hid_list(&hid, &n);
-	printf("HID devices (hidraw): %zu%s\n", n, rc < 0 ? " (listing failed)" : "");
-	for (size_t i = 0; i < n; i++) {
-		struct in_ident id = { .vid = hid[i].vid, .pid = hid[i].pid };
-		const struct prof *p;
-
-		snprintf(id.port, sizeof(id.port), "%s", hid[i].port);
-		snprintf(id.name, sizeof(id.name), "%s", hid[i].name);
-		p = prof_match(profs, "hid", &id);
-		printf("  %s  %04x:%04x  \"%s\"  port %s  serial %s\n    bindings section: "
-		       "[device \"usb-%s\"] or [device \"%04x:%04x\"]; profile: %s\n",
-		       hid[i].node, hid[i].vid, hid[i].pid, hid[i].name,
-		       hid[i].port[0] ? hid[i].port : "-", hid[i].serial[0] ? hid[i].serial : "-",
-		       hid[i].port[0] ? hid[i].port : "?", hid[i].vid, hid[i].pid,
-		       p ? p->name : "none");
-		if (hid[i].fields)
-			printf("%s", hid[i].fields);
-		else
-			printf("    fields: %s\n", hid[i].why);
+	for (int k = 0; app_backends[k]; k++) {
+		struct list_ctx l = { profs, app_backends[k]->name };
+		if (app_backends[k]->list)
+			app_backends[k]->list(stdout, list_profile, &l);
 	}
-	in_hid_list_free(hid, n);
-	struct in_evdev_info *ev = NULL;
-	rc = in_evdev_list(NULL, &ev, &n);
-	printf("evdev devices (/dev/input): %zu%s\n", n, rc < 0 ? " (listing failed)" : "");
-	for (size_t i = 0; i < n; i++) {
-		const struct in_ident *id = &ev[i].id;
-		const struct prof *p;
-
-		if (!ev[i].opened) {
-			printf("  %s  not readable: %s\n", ev[i].node, ev[i].why);
-			continue;
-		}
-		p = prof_match(profs, "evdev", id);
-		printf("  %s  %04x:%04x  \"%s\"  port %s  %s\n    bindings section: ", ev[i].node,
-		       id->vid, id->pid, id->name, id->port[0] ? id->port : "-",
-		       ev[i].keyboard ? "keyboard (input.evdev = auto takes the first)" : "not a keyboard");
-		if (id->port[0])
-			printf("[device \"usb-%s\"] or ", id->port);
-		printf("[device \"%04x:%04x\"], else [keyboard]; profile: %s\n", id->vid, id->pid,
-		       p ? p->name : "none");
-	}
-	free(ev);
-	rc = in_gpio_list(&gpio);
-	printf("GPIO chips:%s\n%s", rc < 0 ? " (listing failed)" : "", gpio ? gpio : "");
-	free(gpio);
 	free(profs);
 	return 0;
 }

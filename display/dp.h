@@ -47,6 +47,10 @@ struct dp_backend {
 	void (*close)(struct dp *d);
 	/* One line describing the output ("fbdev /dev/fb0 1280x800 xrgb8888 ..."). */
 	const char *(*describe)(struct dp *d);
+	/* Optional (NULL: none): the name of the input backend (input/in.h)
+	 * that reads the keys typed at this display, which the app opens with
+	 * it: dp_term's terminal is also the keyboard ("tty"). */
+	const char *input;
 };
 
 extern const struct dp_backend dp_fbdev, dp_file, dp_term, dp_null;

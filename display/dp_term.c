@@ -499,4 +499,5 @@ const struct dp_backend dp_term = {
 	.present = term_present,
 	.close = term_close,
 	.describe = term_describe,
+	.input = "tty",
 };

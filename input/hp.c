@@ -13,24 +13,28 @@
 #include <sys/inotify.h>
 #include <unistd.h>
 
-#define HP_MAX_DIRS 4
+#define HP_PREFIX_MAX 32
 
 struct hp {
 	int fd;                          /* inotify, -1 when not in use */
+	struct {
+		int wd;                  /* its directory's watch, -1 none */
+		char prefix[HP_PREFIX_MAX];
+	} node[HP_MAX_NODES];
+	int nnodes;
 	libusb_context *usb;             /* NULL when libusb is not in use */
 	libusb_hotplug_callback_handle cb;
 	int seen;                        /* enum hp_what bits gathered by callbacks */
 	char sources[256];
 };
 
-/* Only the nodes input backends open; /dev sees ttys, ptys and others come
- * and go, which must not cost a rescan. */
-static int hp_wanted(const char *name)
+/* Only the nodes input backends open, each in its own directory; /dev
+ * sees ttys, ptys and others come and go, which must not cost a rescan. */
+static int hp_wanted(const struct hp *h, int wd, const char *name)
 {
-	static const char *const prefix[] = { "hidraw", "gpiochip", "event" };
-
-	for (size_t i = 0; i < sizeof(prefix) / sizeof(prefix[0]); i++)
-		if (strncmp(name, prefix[i], strlen(prefix[i])) == 0)
+	for (int i = 0; i < h->nnodes; i++)
+		if (h->node[i].wd == wd &&
+		    strncmp(name, h->node[i].prefix, strlen(h->node[i].prefix)) == 0)
 			return 1;
 	return 0;
 }
@@ -72,20 +76,49 @@ static void hp_open_usb(struct hp *h)
 	in_say(h->sources, sizeof(h->sources), "%slibusb hotplug", h->sources[0] ? "; " : "");
 }
 
-int hp_open(const char *const *dirs, int ndirs, unsigned flags, struct hp **out, char *why,
+/* Watches the directory of nodes[i] (once per directory) and keeps its
+ * prefix. 0, or -EINVAL for a pattern that is not DIR/PREFIX. */
+static int hp_watch(struct hp *h, const char *const *nodes, int i, char *why, size_t whylen)
+{
+	const char *slash = strrchr(nodes[i], '/');
+	char dir[256];
+	int k = h->nnodes;
+
+	if (!slash || slash == nodes[i] || !slash[1] || strlen(slash + 1) >= HP_PREFIX_MAX ||
+	    (size_t)(slash - nodes[i]) >= sizeof(dir)) {
+		snprintf(why, whylen, "%s: not a directory and a node name prefix", nodes[i]);
+		return -EINVAL;
+	}
+	snprintf(dir, sizeof(dir), "%.*s", (int)(slash - nodes[i]), nodes[i]);
+	snprintf(h->node[k].prefix, sizeof(h->node[k].prefix), "%s", slash + 1);
+	h->node[k].wd = -1;
+	h->nnodes++;
+	for (int j = 0; j < k; j++)
+		if (strncmp(nodes[j], nodes[i], (size_t)(slash - nodes[i]) + 1) == 0 &&
+		    strchr(nodes[j] + (slash - nodes[i]) + 1, '/') == NULL) {
+			h->node[k].wd = h->node[j].wd;   /* the same directory */
+			return 0;
+		}
+	if (h->fd < 0)
+		return 0;
+	h->node[k].wd = inotify_add_watch(h->fd, dir, IN_CREATE | IN_ATTRIB | IN_DELETE |
+					  IN_MOVED_TO | IN_MOVED_FROM | IN_ONLYDIR);
+	if (h->node[k].wd < 0)
+		in_say(h->sources, sizeof(h->sources), " (%s: %s)", dir, strerror(errno));
+	else
+		in_say(h->sources, sizeof(h->sources), " %s", dir);
+	return 0;
+}
+
+int hp_open(const char *const *nodes, int n, unsigned flags, struct hp **out, char *why,
 	    size_t whylen)
 {
-	static const char *const def[] = { "/dev", "/dev/input" };
 	struct hp *h;
 	int watched = 0;
 
 	*out = NULL;
-	if (!dirs) {
-		dirs = def;
-		ndirs = 2;
-	}
-	if (ndirs < 0 || ndirs > HP_MAX_DIRS) {
-		snprintf(why, whylen, "%d directories (at most %d)", ndirs, HP_MAX_DIRS);
+	if (n < 0 || n > HP_MAX_NODES) {
+		snprintf(why, whylen, "%d node patterns (at most %d)", n, HP_MAX_NODES);
 		return -EINVAL;
 	}
 	h = calloc(1, sizeof(*h));
@@ -94,24 +127,24 @@ int hp_open(const char *const *dirs, int ndirs, unsigned flags, struct hp **out,
 	h->fd = -1;
 	if (flags & HP_INOTIFY) {
 		h->fd = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
-		if (h->fd < 0) {
+		if (h->fd < 0)
 			in_say(h->sources, sizeof(h->sources), "inotify: %s", strerror(errno));
-		} else {
+		else
 			in_say(h->sources, sizeof(h->sources), "inotify");
-			for (int i = 0; i < ndirs; i++) {
-				if (inotify_add_watch(h->fd, dirs[i], IN_CREATE | IN_ATTRIB | IN_DELETE |
-						      IN_MOVED_TO | IN_MOVED_FROM | IN_ONLYDIR) < 0) {
-					in_say(h->sources, sizeof(h->sources), " (%s: %s)", dirs[i], strerror(errno));
-					continue;
-				}
-				in_say(h->sources, sizeof(h->sources), " %s", dirs[i]);
-				watched++;
-			}
-			if (!watched) {
+	}
+	for (int i = 0; i < n; i++) {
+		int rc = hp_watch(h, nodes, i, why, whylen);
+		if (rc < 0) {
+			if (h->fd >= 0)
 				close(h->fd);
-				h->fd = -1;
-			}
+			free(h);
+			return rc;
 		}
+		watched += h->node[i].wd >= 0;
+	}
+	if (h->fd >= 0 && !watched) {
+		close(h->fd);
+		h->fd = -1;
 	}
 	if (flags & HP_LIBUSB)
 		hp_open_usb(h);
@@ -138,7 +171,7 @@ static int hp_drain(struct hp *h)
 			const struct inotify_event *e = (const void *)(buf + off);
 			if (e->mask & IN_Q_OVERFLOW)
 				what |= HP_NODE;   /* lost some: rescan anyway */
-			else if (e->len && hp_wanted(e->name))
+			else if (e->len && hp_wanted(h, e->wd, e->name))
 				what |= HP_NODE;
 			off += (ssize_t)sizeof(*e) + e->len;
 		}

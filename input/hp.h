@@ -4,8 +4,9 @@
  * open at once instead of at its next periodic rescan.
  *
  * Two sources:
- *   - inotify on device directories (/dev for hidrawN and gpiochipN,
- *     /dev/input for eventN): devtmpfs creates and removes the nodes as
+ *   - inotify on the directories where input backends' device nodes
+ *     appear (in_backend.node: /dev/hidraw, /dev/gpiochip,
+ *     /dev/input/event): devtmpfs creates and removes the nodes as
  *     the kernel adds and removes devices, and udev changes their owner
  *     and mode right after (IN_ATTRIB), which is when the service's user
  *     can open them. Works inside the hardened unit (no network, AF_UNIX
@@ -35,14 +36,17 @@ enum hp_what {
 #define HP_INOTIFY 1u
 #define HP_LIBUSB 2u
 
+#define HP_MAX_NODES 8
+
 struct hp;
 
-/* Watches the given directories (NULL: "/dev" and "/dev/input") for nodes
- * whose names start with one of the prefixes hidraw, gpiochip, event, and,
- * with HP_LIBUSB, USB arrivals and departures. A source that cannot be set
- * up is left out and named in hp_sources with its reason; -ENODEV (why
- * says why) only when no source works at all. */
-int hp_open(const char *const *dirs, int ndirs, unsigned flags, struct hp **out, char *why,
+/* Watches the nodes named by the n patterns nodes[i], each a directory
+ * and a name prefix ("/dev/hidraw": nodes hidraw* of /dev; at most
+ * HP_MAX_NODES, directories watched once each in the order they first
+ * appear), and, with HP_LIBUSB, USB arrivals and departures. A source
+ * that cannot be set up is left out and named in hp_sources with its
+ * reason; -ENODEV (why says why) only when no source works at all. */
+int hp_open(const char *const *nodes, int n, unsigned flags, struct hp **out, char *why,
 	    size_t whylen);
 
 /* Non-blocking: drains pending notices; their enum hp_what bits, 0 none. */

@@ -12,6 +12,9 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
+
+#include "input/gpo.h"
 
 enum in_type {
 	IN_KEY = 1,              /* code: KEY_* / BTN_*; value 1 press, 0 release */
@@ -52,6 +55,45 @@ struct in_backend {
 	const char *(*describe)(struct in_dev *d);
 	/* Optional (NULL: the backend cannot tell): fills id. */
 	void (*ident)(struct in_dev *d, struct in_ident *id);
+
+	/* The entries below are optional: a backend without the feature
+	 * leaves them NULL (0). The app uses no backend in any other way. */
+
+	/* Applies a profile's decoder options (config/prof.h, "hid =": terms
+	 * as input/in_hid.h lists them) to d, right after open. 0 or -errno
+	 * with the reason in why (d keeps what it had). */
+	int (*configure)(struct in_dev *d, const char *terms, char *why, size_t whylen);
+	/* Drives d's output lines (coin meter, lamps) for the game's state s
+	 * at time now_ns (not decreasing); called once per tick. 0, or
+	 * -ENODEV when the device went away (the caller drops it as after a
+	 * read's -ENODEV). */
+	int (*outputs)(struct in_dev *d, const struct gpo_state *s, uint64_t now_ns);
+	/* Where this backend's device nodes appear: a directory and a name
+	 * prefix ("/dev/hidraw"). A node created, changed (udev granting
+	 * access) or removed there is a hotplug notice (hp.h): closed slots
+	 * retry at once instead of at their next periodic rescan. */
+	const char *node;
+	/* `arcaded devices`: prints to out a heading line, then every device
+	 * of this kind with what a bindings section names it by; profile(u,
+	 * id) names the autoconfig profile that would configure a device
+	 * (NULL: none). 0, or -errno when the listing failed (the heading
+	 * says so). */
+	int (*list)(FILE *out, const char *(*profile)(void *u, const struct in_ident *id),
+		    void *u);
+	unsigned flags;          /* IN_* below */
+};
+
+/* in_backend.flags. */
+enum {
+	/* "auto" takes the first keyboard for itself (evdev grabs it): not
+	 * done while the display reads the keyboard (dp_backend.input), where
+	 * it would take the developer's own keyboard from every window. */
+	IN_AUTO_TAKES_KEYBOARD = 1,
+	/* Its controls are not keys the default bindings cover (a HID pad's
+	 * BTN_TRIGGER_HAPPYn, BTN_DPAD_*): a device no bindings section and no
+	 * profile but the generic guess names is of no use until bound, so on
+	 * a first boot it starts the input wizard. */
+	IN_NEEDS_BINDINGS = 2,
 };
 
 /* in_hid: HID devices through hidapi (input/in_hid.h); in_gpio: switches

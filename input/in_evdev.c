@@ -365,6 +365,38 @@ static const char *evdev_describe(struct in_dev *d)
 	return d->desc;
 }
 
+/* in_evdev.list: every event node, whether auto-detection would take it,
+ * the bindings sections that name it and its profile. */
+static int evdev_list_out(FILE *out, const char *(*profile)(void *u, const struct in_ident *id),
+			  void *u)
+{
+	struct in_evdev_info *ev = NULL;
+	size_t n = 0;
+	int rc = in_evdev_list(NULL, &ev, &n);
+
+	fprintf(out, "evdev devices (/dev/input): %zu%s\n", n, rc < 0 ? " (listing failed)" : "");
+	for (size_t i = 0; i < n; i++) {
+		const struct in_ident *id = &ev[i].id;
+		const char *p;
+
+		if (!ev[i].opened) {
+			fprintf(out, "  %s  not readable: %s\n", ev[i].node, ev[i].why);
+			continue;
+		}
+		p = profile(u, id);
+		fprintf(out, "  %s  %04x:%04x  \"%s\"  port %s  %s\n    bindings section: ",
+			ev[i].node, id->vid, id->pid, id->name, id->port[0] ? id->port : "-",
+			ev[i].keyboard ? "keyboard (input.evdev = auto takes the first)"
+				       : "not a keyboard");
+		if (id->port[0])
+			fprintf(out, "[device \"usb-%s\"] or ", id->port);
+		fprintf(out, "[device \"%04x:%04x\"], else [keyboard]; profile: %s\n", id->vid,
+			id->pid, p ? p : "none");
+	}
+	free(ev);
+	return rc;
+}
+
 const struct in_backend in_evdev = {
 	.name = "evdev",
 	.open = evdev_open,
@@ -373,4 +405,7 @@ const struct in_backend in_evdev = {
 	.close = evdev_close,
 	.describe = evdev_describe,
 	.ident = evdev_ident,
+	.node = "/dev/input/event",
+	.list = evdev_list_out,
+	.flags = IN_AUTO_TAKES_KEYBOARD,
 };

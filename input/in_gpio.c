@@ -712,6 +712,9 @@ int in_gpio_update(struct in_dev *d, const struct gpo_state *s, uint64_t now_ns)
 	return 0;
 }
 
+static int gpio_list_out(FILE *out, const char *(*profile)(void *u, const struct in_ident *id),
+			 void *u);
+
 const struct in_backend in_gpio = {
 	.name = "gpio",
 	.open = gpio_open,
@@ -720,6 +723,9 @@ const struct in_backend in_gpio = {
 	.close = gpio_close,
 	.describe = gpio_describe,
 	.ident = gpio_ident,
+	.outputs = in_gpio_update,
+	.node = "/dev/gpiochip",
+	.list = gpio_list_out,
 };
 
 struct gpio_text {
@@ -800,4 +806,18 @@ int in_gpio_list(char **text)
 	}
 	*text = t.buf;
 	return 0;
+}
+
+/* in_gpio.list: every chip and line (no profiles: lines have no ids). */
+static int gpio_list_out(FILE *out, const char *(*profile)(void *u, const struct in_ident *id),
+			 void *u)
+{
+	char *text = NULL;
+	int rc = in_gpio_list(&text);
+
+	(void)profile;
+	(void)u;
+	fprintf(out, "GPIO chips:%s\n%s", rc < 0 ? " (listing failed)" : "", text ? text : "");
+	free(text);
+	return rc;
 }

@@ -766,6 +766,9 @@ static void hid_ident(struct in_dev *d, struct in_ident *id)
 	*id = d->id;
 }
 
+static int hid_list_out(FILE *out, const char *(*profile)(void *u, const struct in_ident *id),
+			void *u);
+
 const struct in_backend in_hid = {
 	.name = "hid",
 	.open = hid_open_dev,
@@ -774,6 +777,10 @@ const struct in_backend in_hid = {
 	.close = hid_close_dev,
 	.describe = hid_describe,
 	.ident = hid_ident,
+	.configure = in_hid_configure,
+	.node = "/dev/hidraw",
+	.list = hid_list_out,
+	.flags = IN_NEEDS_BINDINGS,
 };
 
 int in_hid_list(struct in_hid_info **out, size_t *count)
@@ -830,4 +837,35 @@ void in_hid_list_free(struct in_hid_info *l, size_t n)
 	for (size_t i = 0; i < n; i++)
 		free(l[i].fields);
 	free(l);
+}
+
+/* in_hid.list: every device with its ids, port, serial, the bindings
+ * sections that name it, its profile and its decoded report fields. */
+static int hid_list_out(FILE *out, const char *(*profile)(void *u, const struct in_ident *id),
+			void *u)
+{
+	struct in_hid_info *hid = NULL;
+	size_t n = 0;
+	int rc = in_hid_list(&hid, &n);
+
+	fprintf(out, "HID devices (hidraw): %zu%s\n", n, rc < 0 ? " (listing failed)" : "");
+	for (size_t i = 0; i < n; i++) {
+		struct in_ident id = { .vid = hid[i].vid, .pid = hid[i].pid };
+		const char *p;
+
+		snprintf(id.port, sizeof(id.port), "%s", hid[i].port);
+		snprintf(id.name, sizeof(id.name), "%s", hid[i].name);
+		p = profile(u, &id);
+		fprintf(out, "  %s  %04x:%04x  \"%s\"  port %s  serial %s\n    bindings section: "
+			"[device \"usb-%s\"] or [device \"%04x:%04x\"]; profile: %s\n",
+			hid[i].node, hid[i].vid, hid[i].pid, hid[i].name,
+			hid[i].port[0] ? hid[i].port : "-", hid[i].serial[0] ? hid[i].serial : "-",
+			hid[i].port[0] ? hid[i].port : "?", hid[i].vid, hid[i].pid, p ? p : "none");
+		if (hid[i].fields)
+			fprintf(out, "%s", hid[i].fields);
+		else
+			fprintf(out, "    fields: %s\n", hid[i].why);
+	}
+	in_hid_list_free(hid, n);
+	return rc < 0 ? rc : 0;
 }

@@ -2,7 +2,8 @@
  * hp: hotplug notices. The inotify source is driven with plain files in a
  * temporary directory (inotify reports them as it reports devtmpfs nodes):
  * the names input backends open raise HP_NODE on creation, mode change and
- * removal; other names raise nothing; nothing pending reads 0 at once.
+ * removal, each only in its own directory; other names raise nothing;
+ * nothing pending reads 0 at once.
  * libusb is real USB, tested in the VM (tests/vm/guest.sh): here only that
  * its absence or failure is named and never fatal.
  */
@@ -60,13 +61,28 @@ static void path(char *p, size_t n, const char *d, const char *name)
 	snprintf(p, n, "%s/%s", d, name);
 }
 
+/* The patterns of the three backends with nodes, in the temporary tree:
+ * DIR/hidraw, DIR/gpiochip, DIR/input/event. */
+static char pat[3][96];
+
+static const char *const *patterns(void)
+{
+	static const char *p[3];
+
+	snprintf(pat[0], sizeof(pat[0]), "%s/hidraw", dir);
+	snprintf(pat[1], sizeof(pat[1]), "%s/gpiochip", dir);
+	snprintf(pat[2], sizeof(pat[2]), "%s/event", sub);
+	for (int i = 0; i < 3; i++)
+		p[i] = pat[i];
+	return p;
+}
+
 static struct hp *open_dirs(void)
 {
-	const char *dirs[] = { dir, sub };
 	struct hp *h = NULL;
 	char why[128] = "";
 
-	assert_int_equal(hp_open(dirs, 2, HP_INOTIFY, &h, why, sizeof(why)), 0);
+	assert_int_equal(hp_open(patterns(), 3, HP_INOTIFY, &h, why, sizeof(why)), 0);
 	assert_non_null(h);
 	assert_true(hp_fd(h) >= 0);
 	return h;
@@ -122,6 +138,38 @@ static void other_names_raise_nothing(void **state)
 	hp_close(h);
 }
 
+static void a_prefix_counts_only_in_its_own_directory(void **state)
+{
+	struct hp *h = open_dirs();
+	char want[200];
+
+	(void)state;
+	/* each directory is watched once, in the order the patterns name it */
+	snprintf(want, sizeof(want), "inotify %s %s", dir, sub);
+	assert_string_equal(hp_sources(h), want);
+	touch(dir, "event3");        /* an evdev name, but not in input/ */
+	touch(sub, "hidraw3");       /* a hidraw name, but not in DIR */
+	assert_int_equal(hp_poll(h), 0);
+	touch(sub, "event3");
+	assert_int_equal(hp_poll(h), HP_NODE);
+	hp_close(h);
+}
+
+static void a_pattern_without_a_directory_is_refused(void **state)
+{
+	const char *bad[][1] = { { "hidraw" }, { "/dev/" }, { "/hidraw" } };
+	struct hp *h = NULL;
+	char why[256];
+
+	(void)state;
+	for (size_t i = 0; i < sizeof(bad) / sizeof(bad[0]); i++) {
+		why[0] = '\0';
+		assert_int_equal(hp_open(bad[i], 1, HP_INOTIFY, &h, why, sizeof(why)), -EINVAL);
+		assert_null(h);
+		assert_non_null(strstr(why, bad[i][0]));
+	}
+}
+
 static void the_fd_wakes_a_poll(void **state)
 {
 	struct hp *h = open_dirs();
@@ -154,8 +202,8 @@ static void many_notices_at_once_are_one_answer(void **state)
 
 static void missing_directories_are_named(void **state)
 {
-	const char *dirs[] = { "/nonexistent/hp-a", "/nonexistent/hp-b" };
-	const char *one[] = { "/nonexistent/hp-a", dir };
+	const char *dirs[] = { "/nonexistent/hp-a/hidraw", "/nonexistent/hp-b/event" };
+	const char *one[] = { "/nonexistent/hp-a/hidraw", patterns()[0] };
 	struct hp *h = NULL;
 	char why[256] = "";
 
@@ -175,7 +223,7 @@ static void missing_directories_are_named(void **state)
 
 static void libusb_is_optional(void **state)
 {
-	const char *dirs[] = { dir };
+	const char *const *dirs = patterns();
 	struct hp *h = NULL;
 	char why[256] = "";
 
@@ -197,6 +245,9 @@ int main(void)
 		cmocka_unit_test_setup_teardown(nothing_pending_reads_zero, setup, teardown),
 		cmocka_unit_test_setup_teardown(device_names_raise_node_notices, setup, teardown),
 		cmocka_unit_test_setup_teardown(other_names_raise_nothing, setup, teardown),
+		cmocka_unit_test_setup_teardown(a_prefix_counts_only_in_its_own_directory, setup,
+						teardown),
+		cmocka_unit_test(a_pattern_without_a_directory_is_refused),
 		cmocka_unit_test_setup_teardown(the_fd_wakes_a_poll, setup, teardown),
 		cmocka_unit_test_setup_teardown(many_notices_at_once_are_one_answer, setup, teardown),
 		cmocka_unit_test_setup_teardown(missing_directories_are_named, setup, teardown),
