@@ -32,12 +32,6 @@ struct app_opts {
 	struct ct_spec content;  /* what to play on (level set from the config) */
 };
 
-struct in_backend;
-
-/* The input backends that exist, in the order their slots open; NULL
- * ends the list. */
-extern const struct in_backend *const app_backends[];
-
 /* Exit codes of app_run. */
 enum { APP_OK = 0, APP_EXPECT_FAILED = 1, APP_SETUP_FAILED = 2 };
 

@@ -8,6 +8,8 @@
 #include <string.h>
 
 #include "app/app.h"
+#include "app/say.h"
+#include "app/slot.h"
 #include "config/cfg.h"
 #include "config/prof.h"
 #include "config/st.h"
@@ -73,7 +75,9 @@ static const char *list_profile(void *u, const struct in_ident *id)
 static int list_devices(const char *config_dir)
 {
 	struct prof_set *profs = calloc(1, sizeof(*profs));
+	struct slot_kind kinds[SLOT_KINDS];
 	char path[CFG_PATH_MAX + 32];
+	int n;
 
 	if (!profs)
 		return 2;
@@ -81,22 +85,14 @@ static int list_devices(const char *config_dir)
 	snprintf(path, sizeof(path), "%s/profiles", config_dir);
 	prof_load_dir(profs, path, NULL, NULL);
 	prof_load_dir(profs, ARCADED_DATADIR "/profiles", NULL, NULL);
-	for (int k = 0; app_backends[k]; k++) {
-		struct list_ctx l = { profs, app_backends[k]->name };
-		if (app_backends[k]->list)
-			app_backends[k]->list(stdout, list_profile, &l);
+	n = slot_kinds(NULL, kinds);
+	for (int k = 0; k < n; k++) {
+		struct list_ctx l = { profs, kinds[k].be->name };
+		if (kinds[k].be->list)
+			kinds[k].be->list(stdout, list_profile, &l);
 	}
 	free(profs);
 	return 0;
-}
-
-static void report(void *user, const char *file, int line, const char *msg)
-{
-	(void)user;
-	if (line > 0)
-		fprintf(stderr, "arcaded: %s:%d: %s\n", file, line, msg);
-	else
-		fprintf(stderr, "arcaded: %s: %s\n", file, msg);
 }
 
 int main(int argc, char **argv)
@@ -254,7 +250,7 @@ int main(int argc, char **argv)
 	if (state_dir)
 		snprintf(c.paths.state_dir, sizeof(c.paths.state_dir), "%s", state_dir);
 	if (o.config_dir)
-		cfg_load_dir(&c, o.config_dir, report, NULL);
+		cfg_load_dir(&c, o.config_dir, say_cfg, NULL);
 	if (c.paths.state_dir[0]) {
 		/* Settings changed in the service menu: a power-cut-safe state
 		 * file (config/st.h) whose payload is INI text. */
@@ -267,14 +263,14 @@ int main(int argc, char **argv)
 		if (msg[0] && rc != -ENOENT)
 			fprintf(stderr, "arcaded: %s: %s\n", name, msg);
 		if (rc == 0)
-			cfg_load_text(&c, buf, len, name, report, NULL);
+			cfg_load_text(&c, buf, len, name, say_cfg, NULL);
 		else if (rc != -ENOENT)
 			fprintf(stderr, "arcaded: %s: %s; using the other layers\n", name,
 				strerror(-rc));
 		free(buf);
 	}
 	for (int i = 0; i < nsets; i++)
-		cfg_set(&c, sets[i], report, NULL);
+		cfg_set(&c, sets[i], say_cfg, NULL);
 
 	if (print_config) {
 		size_t n = cfg_format(&c, NULL, 0);

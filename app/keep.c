@@ -1,0 +1,227 @@
+/*
+ * keep: settings, scores, books and the flight recorder (contract in
+ * keep.h).
+ */
+#include "app/keep.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "app/say.h"
+#include "app/tape.h"
+#include "config/cfg.h"
+#include "config/fr.h"
+#include "config/st.h"
+#include "engine/game/g_game.h"
+#include "input/rec.h"
+
+/* Loads a state file's payload; NULL when missing or unusable (reported). */
+static void *keep_load(struct keep *k, const char *name, size_t *len)
+{
+	char msg[256] = "";
+	void *buf = NULL;
+	int rc = st_load(k->dir, name, &buf, len, NULL, msg, sizeof(msg));
+
+	if (msg[0] && rc != -ENOENT)
+		say("%s/%s: %s", k->dir, name, msg);
+	if (rc < 0) {
+		if (rc != -ENOENT)
+			say("%s/%s: %s; using defaults", k->dir, name, strerror(-rc));
+		return NULL;
+	}
+	return buf;
+}
+
+static void keep_save(struct keep *k, const char *name, const void *data, size_t len)
+{
+	int rc = st_save(k->dir, name, data, len);
+	if (rc < 0)
+		say("%s/%s: not saved: %s (the previous copy is intact)", k->dir, name,
+		    strerror(-rc));
+}
+
+void keep_start(struct keep *k, const char *dir, int on, struct sim *s, const struct ct *ct,
+		const struct sim_settings *set)
+{
+	struct g_scores scores, *sp = NULL;
+	struct g_books books, *bp = NULL;
+	size_t len = 0;
+	void *buf;
+
+	k->dir = dir;
+	k->on = on;
+	if (on) {
+		buf = keep_load(k, "scores", &len);
+		if (buf && g_scores_decode(buf, len, &scores) == 0)
+			sp = &scores;
+		else if (buf)
+			say("%s/scores: not a high-score table; using the defaults", dir);
+		free(buf);
+		buf = keep_load(k, "books", &len);
+		if (buf && g_books_decode(buf, len, &books) == 0)
+			bp = &books;
+		else if (buf)
+			say("%s/books: not bookkeeping; starting from zero", dir);
+		free(buf);
+	}
+	sim_init_stages(s, (const struct map *const *)ct->maps, ct->nmaps, set, sp, bp);
+	k->set_gen = s->set_gen;
+	k->scores_gen = s->scores_gen;
+	k->books_gen = s->books_gen;
+}
+
+/* Settings changed in the service menu go to the state directory's
+ * settings.ini (a state file whose payload is INI text), the layer main.c
+ * reads after /etc/arcaded. */
+static void keep_settings(struct keep *k, const struct sim *s, int w, int h)
+{
+	const struct sim_settings *st = &s->set;
+	char ini[256];
+	int n = snprintf(ini, sizeof(ini),
+			 "[game]\ncoins_per_credit = %u\nfreeplay = %s\ndifficulty = %u\nlives = %u\n"
+			 "render_width = %d\nrender_height = %d\n",
+			 st->coins_per_credit, st->freeplay ? "yes" : "no", st->difficulty,
+			 st->lives, w, h);
+	keep_save(k, "settings.ini", ini, (size_t)n);
+}
+
+void keep_tick(struct keep *k, const struct sim *s, int w, int h)
+{
+	uint8_t buf[G_SCORES_BYTES > G_BOOKS_BYTES ? G_SCORES_BYTES : G_BOOKS_BYTES];
+
+	if (s->menu.res != k->res) {
+		/* the frame is already w x h (app/scene.c follows the menu) */
+		k->res = s->menu.res;
+		if (k->on)
+			keep_settings(k, s, w, h);
+	}
+	if (!k->on)
+		return;
+	if (s->set_gen != k->set_gen) {
+		k->set_gen = s->set_gen;
+		keep_settings(k, s, w, h);
+	}
+	if (s->scores_gen != k->scores_gen) {
+		k->scores_gen = s->scores_gen;
+		g_scores_encode(&s->scores, buf);
+		keep_save(k, "scores", buf, G_SCORES_BYTES);
+	}
+	if (s->books_gen != k->books_gen) {
+		k->books_gen = s->books_gen;
+		g_books_encode(&s->books, buf);
+		keep_save(k, "books", buf, G_BOOKS_BYTES);
+	}
+}
+
+/* ---- flight recorder ---------------------------------------------------- */
+
+void keep_flight_open(struct keep *k, int keep, int max_mb, uint64_t map_hash,
+		      const struct ct_spec *content)
+{
+	char dir[CFG_PATH_MAX + 16], msg[512] = "";
+	int rc;
+
+	k->map_hash = map_hash;
+	k->content = content;
+	if (!k->on || keep <= 0)
+		return;
+	snprintf(dir, sizeof(dir), "%s/recordings", k->dir);
+	rc = fr_open(dir, keep, (uint64_t)max_mb << 20, &k->fr, msg, sizeof(msg));
+	if (msg[0])
+		say("%s: %s", dir, msg);
+	if (rc < 0) {
+		say("%s: %s; games are not recorded", dir, strerror(-rc));
+		k->fr = NULL;
+		return;
+	}
+	k->snap = malloc(sim_snapshot_size());
+	if (!k->snap) {
+		fr_close(k->fr);
+		k->fr = NULL;
+	}
+}
+
+void keep_flight_before(struct keep *k, const struct sim *s, const struct sim_cmd *cmd)
+{
+	k->snap_taken = 0;
+	if (k->fr && !k->game && s->mode == SIM_ATTRACT && (cmd->buttons & SIM_BT_START)) {
+		sim_snapshot(s, k->snap);
+		k->snap_taken = 1;
+		k->snap_plays = s->plays;
+	}
+}
+
+static void keep_flight_finish(struct keep *k)
+{
+	int rc = rec_writer_close(k->game);
+	k->game = NULL;
+	if (rc < 0)
+		say("flight recorder: %s", strerror(-rc));
+	rc = fr_end_game(k->fr, rc == 0);
+	if (rc < 0)
+		say("flight recorder: %s", strerror(-rc));
+}
+
+void keep_flight_after(struct keep *k, const struct sim *s, const struct sim_cmd *cmd, int w,
+		       int h)
+{
+	if (!k->fr)
+		return;
+	/* a game began: plays grew (a START that opened the service menu on
+	 * the same tick is no game) */
+	if (!k->game && k->snap_taken && s->plays != k->snap_plays) {
+		char path[CFG_PATH_MAX + 96];
+		struct rec_header hd;
+		int rc;
+
+		/* the settings as the service menu left them; state hashes
+		 * are cheap, frame hashes are not */
+		tape_header(&hd, k->map_hash, &s->set, w, h, k->content);
+		hd.hash_flags = REC_HAS_STATE;
+		hd.snapshot = k->snap;
+		hd.snapshot_len = (uint32_t)sim_snapshot_size();
+		rc = fr_begin_game(k->fr, time(NULL), path, sizeof(path));
+		if (rc < 0) {
+			say("flight recorder: %s", strerror(-rc));
+			return;
+		}
+		rc = rec_writer_open(path, &hd, &k->game);
+		if (rc < 0) {
+			/* give the slot back, or every later game would be refused */
+			say("flight recorder: %s: %s", path, strerror(-rc));
+			k->game = NULL;
+			fr_end_game(k->fr, 0);
+			return;
+		}
+	}
+	if (!k->game)
+		return;
+	struct rec_tick t = { *cmd, sim_hash(s), 0 };
+	if (rec_writer_put_tick(k->game, &t) < 0) {
+		say("flight recorder: write failed; this game is not kept whole");
+		keep_flight_finish(k);
+		return;
+	}
+	/* back in attract, or left for the service menu: the game is over */
+	if (s->mode == SIM_ATTRACT || s->mode == SIM_SERVICE)
+		keep_flight_finish(k);
+}
+
+void keep_close(struct keep *k, const struct sim *s, uint64_t ticks)
+{
+	if (k->game)
+		keep_flight_finish(k);   /* a game cut by a stop is kept too */
+	fr_close(k->fr);
+	k->fr = NULL;
+	free(k->snap);
+	k->snap = NULL;
+	if (k->on && ticks) {
+		/* play and power-on time count up without a generation bump */
+		uint8_t buf[G_BOOKS_BYTES];
+		g_books_encode(&s->books, buf);
+		keep_save(k, "books", buf, G_BOOKS_BYTES);
+	}
+}

@@ -1,0 +1,74 @@
+/*
+ * scene: what the cabinet shows. Owns the frame (8-bit palette indices at
+ * the render size), the software renderer and its worker threads, the
+ * OSMesa renderer plugin when --renderer gl asks for it (app/glr.h), the
+ * view that draws the game into the frame (app/view.h), and the display
+ * (display/dp.h, reached only through its table) that shows it. The render
+ * size follows the service menu's choice.
+ */
+#ifndef ARCADED_APP_SCENE_H
+#define ARCADED_APP_SCENE_H
+
+#include <stdint.h>
+
+#include "app/glr.h"
+#include "app/view.h"
+#include "config/cfg.h"
+#include "engine/render/r_main.h"
+
+struct ct;
+struct dp;
+struct dp_backend;
+struct pool;
+struct sim;
+struct wiz;
+
+struct scene {
+	const struct cfg *cfg;
+	const struct ct *ct;       /* borrowed: stages, textures, palette */
+	struct view view;
+	struct r_ctx *r;
+	struct pool *pool;         /* render worker threads, NULL: one thread */
+	struct r_par par;
+	int use_gl;                /* --renderer gl */
+	struct glr glr;
+	struct rgl_ctx *gl;
+	struct r_frame frame;
+	uint8_t res;               /* the service menu's render size in effect */
+	const struct dp_backend *dpb;
+	struct dp *dp;
+	int present_errors;
+};
+
+/* Prepares s for the content ct with configuration c (rotation, render
+ * threads, the service menu's sizes) at render size w x h; gl: draw the
+ * world with the OSMesa plugin. 0 or -errno (logged). */
+int scene_init(struct scene *s, const struct cfg *c, const struct ct *ct, int gl, int w, int h);
+
+/* (Re)makes the frame and the renderer at w x h. 0 or -errno (logged);
+ * the old ones stay on failure. */
+int scene_resize(struct scene *s, int w, int h);
+
+/* Opens the configured display (headless: unless one is named, the file
+ * framebuffer when configured, else none) for the frame's size, with the
+ * content's palette. 0 or -errno (logged). */
+int scene_open_display(struct scene *s, int headless);
+
+/* Once per tick: the service menu changed the render size, the frame
+ * follows. */
+void scene_follow_menu(struct scene *s, const struct sim *sim);
+
+/* Draws the frame (the wizard's screen when wiz is not NULL, else sim,
+ * over the attract demo's under when not NULL) and presents it. 0 or the
+ * present's -errno (the first failure is logged). */
+int scene_show(struct scene *s, const struct sim *sim, const struct sim *under,
+	       const struct wiz *wiz);
+
+/* Closes the display (the console back in text mode, the terminal
+ * restored); NULL-safe state. */
+void scene_close_display(struct scene *s);
+
+/* Frees everything else. */
+void scene_free(struct scene *s);
+
+#endif

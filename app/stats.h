@@ -1,0 +1,46 @@
+/*
+ * stats: what the daemon measures of itself, and the summary it prints on
+ * SIGUSR1 and at exit: ticks, frames, ticks dropped by the clock, peak
+ * RSS, open file descriptors (the soak test compares them), frame time
+ * (render + present), and input-to-present latency, overall and per kind
+ * of input source (each input backend, scripts): from the kernel's stamp
+ * of the first event that changed an action to the end of the present
+ * that first showed it.
+ */
+#ifndef ARCADED_APP_STATS_H
+#define ARCADED_APP_STATS_H
+
+#include <stdint.h>
+
+#include "app/lat.h"
+
+#define STATS_SRCS 8
+
+struct stats {
+	struct lat_series frame_time, latency;
+	struct lat_series src[STATS_SRCS];
+	const char *src_name[STATS_SRCS];  /* borrowed */
+	int nsrc;
+	uint64_t pending_ns;               /* earliest unpresented input event, 0 none */
+	uint64_t src_pending_ns[STATS_SRCS];
+	uint64_t start_ns, ticks, frames, dropped;
+};
+
+/* Empty statistics of sources names[0..n) (at most STATS_SRCS; the
+ * summary lists them in this order). The caller sets start_ns when the
+ * loop starts. */
+void stats_init(struct stats *s, const char *const *names, int n);
+
+/* An input event of source src stamped t changed an action: its effect is
+ * due on the next presented frame. */
+void stats_input(struct stats *s, int src, uint64_t t);
+
+/* A frame was drawn from t0 and presented at t1: frame time, and the
+ * latency of every input waiting for it. */
+void stats_presented(struct stats *s, uint64_t t0, uint64_t t1);
+
+/* Prints the summary lines ("arcaded: summary: ...") on stderr; only the
+ * sources that gave input get a latency line. */
+void stats_print(const struct stats *s);
+
+#endif
