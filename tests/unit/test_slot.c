@@ -1,0 +1,435 @@
+/*
+ * slot: input slots with fake backends (a fake stands in for a device only
+ * here, in a unit test). A device that goes away has every control it held
+ * released before it is closed, and is opened again after SLOT_REOPEN_NS,
+ * or at once on a hotplug notice from where its backend's nodes appear; a
+ * device missing at the start keeps its slot and is retried; repeats do
+ * not count twice; the settings open the slots they name; a display that
+ * reads keys (a fake terminal) opens its input backend and keeps
+ * auto-detection off the keyboard. The clock is the test's.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "app/slot.h"
+#include "display/dp.h"
+
+#define MS 1000000ull
+
+/* ---- the fake backend: a device per open, events queued by the test ---- */
+
+struct in_dev {
+	int n;                   /* which open made it */
+	char path[64];
+};
+
+static struct fake {
+	int opens, open_calls, closes;
+	int fail;                /* opens that fail before one succeeds */
+	char last_path[64];      /* "(auto)" for NULL */
+	struct in_event q[32];   /* what the next read returns */
+	int nq;
+	int gone;                /* once q is read: -ENODEV */
+} fk;
+
+static uint64_t clock_ns;
+
+static uint64_t fake_now(void)
+{
+	return clock_ns;
+}
+
+static int fake_open(const char *path, struct in_dev **out, char *why, size_t whylen)
+{
+	fk.open_calls++;
+	snprintf(fk.last_path, sizeof(fk.last_path), "%s", path ? path : "(auto)");
+	if (fk.fail > 0) {
+		fk.fail--;
+		snprintf(why, whylen, "no such device");
+		return -ENODEV;
+	}
+	*out = calloc(1, sizeof(**out));
+	assert_non_null(*out);
+	(*out)->n = ++fk.opens;
+	snprintf((*out)->path, sizeof((*out)->path), "%s", fk.last_path);
+	fk.gone = 0;
+	return 0;
+}
+
+static int fake_read(struct in_dev *d, struct in_event *ev, int max)
+{
+	int n = fk.nq < max ? fk.nq : max;
+
+	(void)d;
+	if (n == 0)
+		return fk.gone ? -ENODEV : 0;
+	memcpy(ev, fk.q, (size_t)n * sizeof(ev[0]));
+	memmove(fk.q, fk.q + n, (size_t)(fk.nq - n) * sizeof(fk.q[0]));
+	fk.nq -= n;
+	return n;
+}
+
+static void fake_close(struct in_dev *d)
+{
+	if (!d)
+		return;
+	fk.closes++;
+	free(d);
+}
+
+static const char *fake_describe(struct in_dev *d)
+{
+	return d->path;
+}
+
+static void fake_ident(struct in_dev *d, struct in_ident *id)
+{
+	id->vid = 0x1209;
+	id->pid = (uint16_t)d->n;
+}
+
+static const struct in_backend fake_be = {
+	.name = "fake",
+	.open = fake_open,
+	.read = fake_read,
+	.close = fake_close,
+	.describe = fake_describe,
+	.ident = fake_ident,
+};
+
+static void key(int code, int value)
+{
+	assert_true(fk.nq < 32);
+	fk.q[fk.nq++] = (struct in_event){ .time_ns = clock_ns, .type = IN_KEY, .code = (uint16_t)code,
+					   .value = value };
+}
+
+/* ---- the hooks write down what they are told --------------------------- */
+
+static char seen[2048];
+
+static void say_(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static void say_(const char *fmt, ...)
+{
+	size_t n = strlen(seen);
+	va_list ap;
+
+	va_start(ap, fmt);
+	vsnprintf(seen + n, sizeof(seen) - n, fmt, ap);
+	va_end(ap);
+}
+
+static void h_opened(void *ctx, struct slot *s)
+{
+	(void)ctx;
+	/* the slot asked the backend who the device is before telling */
+	say_("opened %04x:%u ", s->id.vid, s->id.pid);
+}
+
+static void h_key(void *ctx, struct slot *s, int code, int down, uint64_t t)
+{
+	(void)ctx;
+	(void)s;
+	assert_int_equal(t, clock_ns);
+	say_("key %d %d ", code, down);
+}
+
+static void h_released(void *ctx, struct slot *s, int code)
+{
+	(void)ctx;
+	assert_non_null(s->dev);     /* released before the close */
+	say_("released %d ", code);
+}
+
+static void h_gone(void *ctx, struct slot *s)
+{
+	(void)ctx;
+	assert_non_null(s->dev);
+	say_("gone ");
+}
+
+static const struct slot_hooks hooks = { h_opened, h_key, h_released, h_gone };
+
+static struct slot_set set;
+
+static int setup(void **state)
+{
+	(void)state;
+	memset(&fk, 0, sizeof(fk));
+	seen[0] = '\0';
+	clock_ns = 1000 * MS;
+	slot_init(&set, &hooks, NULL);
+	set.now = fake_now;
+	return 0;
+}
+
+static int teardown(void **state)
+{
+	(void)state;
+	slot_close(&set);
+	return 0;
+}
+
+static const struct slot_kind one_fake[] = { { &fake_be, "fake0", 0, 1 } };
+
+/* ---- tests ------------------------------------------------------------- */
+
+static void a_device_that_goes_away_has_what_it_held_released(void **state)
+{
+	(void)state;
+	assert_int_equal(slot_add(&set, one_fake, 0, "fake0", 0), 0);
+	assert_string_equal(seen, "opened 1209:1 ");
+	key(30, 1);
+	key(31, 1);
+	key(40, 1);
+	key(30, 0);
+	slot_read(&set);
+	assert_string_equal(seen, "opened 1209:1 key 30 1 key 31 1 key 40 1 key 30 0 ");
+	seen[0] = '\0';
+	fk.gone = 1;
+	slot_read(&set);
+	/* 31 and 40 were down, 30 was not: only they are released, then the
+	 * device is gone and closed */
+	assert_string_equal(seen, "released 31 released 40 gone ");
+	assert_int_equal(fk.closes, 1);
+	assert_null(set.s[0].dev);
+	/* back again, nothing is down: a release reads as new */
+	clock_ns += SLOT_REOPEN_NS;
+	seen[0] = '\0';
+	key(31, 0);
+	slot_read(&set);
+	assert_string_equal(seen, "opened 1209:2 ");
+}
+
+static void a_dropped_device_is_reopened_after_the_retry_time(void **state)
+{
+	(void)state;
+	slot_add(&set, one_fake, 0, "fake0", 0);
+	fk.gone = 1;
+	slot_read(&set);
+	assert_int_equal(fk.closes, 1);
+	clock_ns += SLOT_REOPEN_NS - 1;
+	slot_read(&set);
+	assert_int_equal(fk.open_calls, 1);    /* not yet */
+	assert_null(set.s[0].dev);
+	clock_ns += 1;
+	seen[0] = '\0';
+	slot_read(&set);
+	assert_int_equal(fk.open_calls, 2);
+	assert_non_null(set.s[0].dev);
+	assert_string_equal(fk.last_path, "fake0");   /* the same spec */
+	assert_string_equal(seen, "opened 1209:2 ");
+	/* and it is read again */
+	key(44, 1);
+	slot_read(&set);
+	assert_string_equal(seen, "opened 1209:2 key 44 1 ");
+}
+
+static void a_device_missing_at_the_start_keeps_its_slot(void **state)
+{
+	(void)state;
+	fk.fail = 2;
+	assert_int_equal(slot_add(&set, one_fake, 0, NULL, 1), 0);
+	assert_int_equal(set.n, 1);
+	assert_null(set.s[0].dev);
+	assert_string_equal(fk.last_path, "(auto)");
+	slot_read(&set);
+	assert_int_equal(fk.open_calls, 1);
+	clock_ns += SLOT_REOPEN_NS;
+	slot_read(&set);                       /* fails again */
+	assert_int_equal(fk.open_calls, 2);
+	assert_null(set.s[0].dev);
+	clock_ns += SLOT_REOPEN_NS;
+	slot_read(&set);
+	assert_int_equal(fk.open_calls, 3);
+	assert_non_null(set.s[0].dev);
+	assert_string_equal(seen, "opened 1209:1 ");
+}
+
+static void repeats_and_releases_of_keys_up_are_not_passed_on(void **state)
+{
+	(void)state;
+	slot_add(&set, one_fake, 0, "fake0", 0);
+	seen[0] = '\0';
+	key(5, 1);
+	key(5, 2);                 /* autorepeat */
+	key(5, 1);
+	key(6, 0);                 /* never pressed */
+	key(5, 0);
+	key(5, 0);
+	key(SLOT_KEYS, 1);         /* beyond what is tracked */
+	slot_read(&set);
+	assert_string_equal(seen, "key 5 1 key 5 0 ");
+}
+
+static void a_hotplug_notice_retries_at_once(void **state)
+{
+	char dir[64] = "/tmp/test_slot.XXXXXX", node[96], p[128];
+	/* static: the set outlives the test when an assertion fails */
+	static struct in_backend be;
+	struct slot_kind k[] = { { &be, "fake0", 0, 1 } };
+	int fd;
+
+	(void)state;
+	be = fake_be;
+	assert_non_null(mkdtemp(dir));
+	snprintf(node, sizeof(node), "%s/fakedev", dir);
+	be.node = node;
+	slot_open(&set, k, 1, NULL);
+	assert_int_equal(set.n, 1);
+	assert_non_null(set.hp);
+	fk.gone = 1;
+	slot_read(&set);
+	assert_null(set.s[0].dev);
+	/* long before the retry time, the device's node appears */
+	clock_ns += 10 * MS;
+	snprintf(p, sizeof(p), "%s/fakedev3", dir);
+	fd = open(p, O_WRONLY | O_CREAT | O_CLOEXEC, 0600);
+	assert_true(fd >= 0);
+	close(fd);
+	slot_read(&set);
+	assert_int_equal(fk.open_calls, 2);
+	assert_non_null(set.s[0].dev);
+	slot_close(&set);          /* before be goes out of scope */
+	unlink(p);
+	rmdir(dir);
+}
+
+static void settings_open_the_slots_they_name(void **state)
+{
+	static struct in_backend a, b, c, d;
+	struct slot_kind k[] = {
+		{ &a, "none", 1, 1 },
+		{ &b, "auto", 3, 0 },
+		{ &c, "x\ty  z", 0, 0 },
+		{ &d, "p q", 0, 1 },
+	};
+
+	(void)state;
+	a = b = c = d = fake_be;
+	a.name = "a";
+	b.name = "b";
+	c.name = "c";
+	d.name = "d";
+	fk.fail = 1;               /* the first auto slot finds nothing yet */
+	slot_open(&set, k, 4, NULL);
+	assert_int_equal(set.n, 7);
+	for (int i = 0; i < 3; i++) {
+		assert_ptr_equal(set.s[i].be, &b);
+		assert_int_equal(set.s[i].kind, 1);
+		assert_null(set.s[i].path);
+	}
+	assert_null(set.s[0].dev);               /* kept, retried */
+	assert_non_null(set.s[1].dev);
+	assert_string_equal(set.s[3].path, "x");
+	assert_string_equal(set.s[4].path, "y");
+	assert_string_equal(set.s[5].path, "z");
+	assert_int_equal(set.s[5].kind, 2);
+	/* one device, blanks and all */
+	assert_string_equal(set.s[6].path, "p q");
+	assert_int_equal(set.s[6].kind, 3);
+	slot_close(&set);
+	/* more devices than slots are left out */
+	slot_init(&set, &hooks, NULL);
+	k[2].devices = "1 2 3 4 5 6 7 8 9 10";
+	slot_open(&set, &k[2], 1, NULL);
+	assert_int_equal(set.n, SLOT_MAX);
+	assert_string_equal(set.s[SLOT_MAX - 1].path, "8");
+	/* "auto" is a device name to a backend without auto slots */
+	slot_close(&set);
+	slot_init(&set, &hooks, NULL);
+	k[2].devices = "auto";
+	slot_open(&set, &k[2], 1, NULL);
+	assert_int_equal(set.n, 1);
+	assert_string_equal(set.s[0].path, "auto");
+	slot_close(&set);
+}
+
+static void a_display_that_reads_keys_opens_them_and_spares_the_keyboard(void **state)
+{
+	static struct in_backend kbd, keys;
+	const struct dp_backend term = { .name = "faketerm", .input = "fakekeys" };
+	const struct dp_backend plain = { .name = "fakepanel" };
+	struct slot_kind k[] = {
+		{ &kbd, "auto", 1, 1 },
+		{ &keys, NULL, 0, 1 },
+	};
+
+	(void)state;
+	kbd = keys = fake_be;
+	kbd.name = "fakekbd";
+	kbd.flags = IN_AUTO_TAKES_KEYBOARD;
+	keys.name = "fakekeys";
+	slot_open(&set, k, 2, &term);
+	assert_int_equal(set.n, 1);
+	assert_ptr_equal(set.s[0].be, &keys);
+	assert_null(set.s[0].path);
+	slot_close(&set);
+	/* a display without keys: the keyboard, and no terminal input */
+	slot_init(&set, &hooks, NULL);
+	slot_open(&set, k, 2, &plain);
+	assert_int_equal(set.n, 1);
+	assert_ptr_equal(set.s[0].be, &kbd);
+	slot_close(&set);
+	/* a keyboard named in the settings is opened with the terminal */
+	slot_init(&set, &hooks, NULL);
+	k[0].devices = "/dev/input/event7";
+	slot_open(&set, k, 2, &term);
+	assert_int_equal(set.n, 2);
+	assert_ptr_equal(set.s[0].be, &kbd);
+	assert_ptr_equal(set.s[1].be, &keys);
+	slot_close(&set);
+}
+
+static void the_registry_has_every_backend_once(void **state)
+{
+	struct slot_kind k[SLOT_KINDS];
+	struct cfg c;
+	int n;
+
+	(void)state;
+	cfg_defaults(&c);
+	n = slot_kinds(&c, k);
+	assert_true(n >= 4 && n <= SLOT_KINDS);
+	for (int i = 0; i < n; i++) {
+		assert_non_null(k[i].be->open);
+		for (int j = 0; j < i; j++)
+			assert_string_not_equal(k[i].be->name, k[j].be->name);
+	}
+	/* the terminal preview's keys are a registered backend */
+	int found = 0;
+	for (int i = 0; i < n; i++)
+		found += dp_term.input && strcmp(k[i].be->name, dp_term.input) == 0 && !k[i].devices;
+	assert_int_equal(found, 1);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test_setup_teardown(a_device_that_goes_away_has_what_it_held_released,
+						setup, teardown),
+		cmocka_unit_test_setup_teardown(a_dropped_device_is_reopened_after_the_retry_time,
+						setup, teardown),
+		cmocka_unit_test_setup_teardown(a_device_missing_at_the_start_keeps_its_slot, setup,
+						teardown),
+		cmocka_unit_test_setup_teardown(repeats_and_releases_of_keys_up_are_not_passed_on,
+						setup, teardown),
+		cmocka_unit_test_setup_teardown(a_hotplug_notice_retries_at_once, setup, teardown),
+		cmocka_unit_test_setup_teardown(settings_open_the_slots_they_name, setup, teardown),
+		cmocka_unit_test_setup_teardown(
+			a_display_that_reads_keys_opens_them_and_spares_the_keyboard, setup, teardown),
+		cmocka_unit_test(the_registry_has_every_backend_once),
+	};
+
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
