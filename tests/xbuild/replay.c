@@ -43,10 +43,12 @@
  * unreadable or refused recording).
  *
  * It loads content and draws frames with the daemon's own code
- * (app/ct.c ct_load, app/view.c view_draw), and mirrors app/app.c's
- * replay set-up (level, render size and settings from the recording,
- * sim_init_stages with the default tables) and loop (rec_reader_next_tick,
- * sim_tick, view_draw, hash_frame). run.sh fails when their hashes differ.
+ * (app/ct.c ct_load, app/view.c view_draw), and mirrors the daemon's
+ * replay set-up (app/app.c, app/tape.c, app/keep.c: level, render size and
+ * settings from the recording, sim_init_stages with the default tables)
+ * and loop (app/loop.c's input, sim, present and hashes steps:
+ * rec_reader_next_tick, sim_tick, view_draw, hash_frame). run.sh fails when
+ * their hashes differ.
  */
 #include <errno.h>
 #include <inttypes.h>
