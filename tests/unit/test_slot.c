@@ -14,171 +14,13 @@
 #include <stdint.h>
 #include <cmocka.h>
 
-#include <errno.h>
 #include <fcntl.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 #include <unistd.h>
 
-#include "app/slot.h"
 #include "display/dp.h"
+#include "slot_fixture.h"
 
 #define MS 1000000ull
-
-/* ---- the fake backend: a device per open, events queued by the test ---- */
-
-struct in_dev {
-	int n;                   /* which open made it */
-	char path[64];
-};
-
-static struct fake {
-	int opens, open_calls, closes;
-	int fail;                /* opens that fail before one succeeds */
-	char last_path[64];      /* "(auto)" for NULL */
-	struct in_event q[32];   /* what the next read returns */
-	int nq;
-	int gone;                /* once q is read: -ENODEV */
-} fk;
-
-static uint64_t clock_ns;
-
-static uint64_t fake_now(void)
-{
-	return clock_ns;
-}
-
-static int fake_open(const char *path, struct in_dev **out, char *why, size_t whylen)
-{
-	fk.open_calls++;
-	snprintf(fk.last_path, sizeof(fk.last_path), "%s", path ? path : "(auto)");
-	if (fk.fail > 0) {
-		fk.fail--;
-		snprintf(why, whylen, "no such device");
-		return -ENODEV;
-	}
-	*out = calloc(1, sizeof(**out));
-	assert_non_null(*out);
-	(*out)->n = ++fk.opens;
-	snprintf((*out)->path, sizeof((*out)->path), "%s", fk.last_path);
-	fk.gone = 0;
-	return 0;
-}
-
-static int fake_read(struct in_dev *d, struct in_event *ev, int max)
-{
-	int n = fk.nq < max ? fk.nq : max;
-
-	(void)d;
-	if (n == 0)
-		return fk.gone ? -ENODEV : 0;
-	memcpy(ev, fk.q, (size_t)n * sizeof(ev[0]));
-	memmove(fk.q, fk.q + n, (size_t)(fk.nq - n) * sizeof(fk.q[0]));
-	fk.nq -= n;
-	return n;
-}
-
-static void fake_close(struct in_dev *d)
-{
-	if (!d)
-		return;
-	fk.closes++;
-	free(d);
-}
-
-static const char *fake_describe(struct in_dev *d)
-{
-	return d->path;
-}
-
-static void fake_ident(struct in_dev *d, struct in_ident *id)
-{
-	id->vid = 0x1209;
-	id->pid = (uint16_t)d->n;
-}
-
-static const struct in_backend fake_be = {
-	.name = "fake",
-	.open = fake_open,
-	.read = fake_read,
-	.close = fake_close,
-	.describe = fake_describe,
-	.ident = fake_ident,
-};
-
-static void key(int code, int value)
-{
-	assert_true(fk.nq < 32);
-	fk.q[fk.nq++] = (struct in_event){ .time_ns = clock_ns, .type = IN_KEY, .code = (uint16_t)code,
-					   .value = value };
-}
-
-/* ---- the hooks write down what they are told --------------------------- */
-
-static char seen[2048];
-
-static void say_(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-static void say_(const char *fmt, ...)
-{
-	size_t n = strlen(seen);
-	va_list ap;
-
-	va_start(ap, fmt);
-	vsnprintf(seen + n, sizeof(seen) - n, fmt, ap);
-	va_end(ap);
-}
-
-static void h_opened(void *ctx, struct slot *s)
-{
-	(void)ctx;
-	/* the slot asked the backend who the device is before telling */
-	say_("opened %04x:%u ", s->id.vid, s->id.pid);
-}
-
-static void h_key(void *ctx, struct slot *s, int code, int down, uint64_t t)
-{
-	(void)ctx;
-	(void)s;
-	assert_int_equal(t, clock_ns);
-	say_("key %d %d ", code, down);
-}
-
-static void h_released(void *ctx, struct slot *s, int code)
-{
-	(void)ctx;
-	assert_non_null(s->dev);     /* released before the close */
-	say_("released %d ", code);
-}
-
-static void h_gone(void *ctx, struct slot *s)
-{
-	(void)ctx;
-	assert_non_null(s->dev);
-	say_("gone ");
-}
-
-static const struct slot_hooks hooks = { h_opened, h_key, h_released, h_gone };
-
-static struct slot_set set;
-
-static int setup(void **state)
-{
-	(void)state;
-	memset(&fk, 0, sizeof(fk));
-	seen[0] = '\0';
-	clock_ns = 1000 * MS;
-	slot_init(&set, &hooks, NULL);
-	set.now = fake_now;
-	return 0;
-}
-
-static int teardown(void **state)
-{
-	(void)state;
-	slot_close(&set);
-	return 0;
-}
 
 static const struct slot_kind one_fake[] = { { &fake_be, "fake0", 0, 1 } };
 
@@ -189,10 +31,10 @@ static void a_device_that_goes_away_has_what_it_held_released(void **state)
 	(void)state;
 	assert_int_equal(slot_add(&set, one_fake, 0, "fake0", 0), 0);
 	assert_string_equal(seen, "opened 1209:1 ");
-	key(30, 1);
-	key(31, 1);
-	key(40, 1);
-	key(30, 0);
+	fake_key(30, 1);
+	fake_key(31, 1);
+	fake_key(40, 1);
+	fake_key(30, 0);
 	slot_read(&set);
 	assert_string_equal(seen, "opened 1209:1 key 30 1 key 31 1 key 40 1 key 30 0 ");
 	seen[0] = '\0';
@@ -206,7 +48,7 @@ static void a_device_that_goes_away_has_what_it_held_released(void **state)
 	/* back again, nothing is down: a release reads as new */
 	clock_ns += SLOT_REOPEN_NS;
 	seen[0] = '\0';
-	key(31, 0);
+	fake_key(31, 0);
 	slot_read(&set);
 	assert_string_equal(seen, "opened 1209:2 ");
 }
@@ -230,7 +72,7 @@ static void a_dropped_device_is_reopened_after_the_retry_time(void **state)
 	assert_string_equal(fk.last_path, "fake0");   /* the same spec */
 	assert_string_equal(seen, "opened 1209:2 ");
 	/* and it is read again */
-	key(44, 1);
+	fake_key(44, 1);
 	slot_read(&set);
 	assert_string_equal(seen, "opened 1209:2 key 44 1 ");
 }
@@ -261,13 +103,13 @@ static void repeats_and_releases_of_keys_up_are_not_passed_on(void **state)
 	(void)state;
 	slot_add(&set, one_fake, 0, "fake0", 0);
 	seen[0] = '\0';
-	key(5, 1);
-	key(5, 2);                 /* autorepeat */
-	key(5, 1);
-	key(6, 0);                 /* never pressed */
-	key(5, 0);
-	key(5, 0);
-	key(SLOT_KEYS, 1);         /* beyond what is tracked */
+	fake_key(5, 1);
+	fake_key(5, 2);                 /* autorepeat */
+	fake_key(5, 1);
+	fake_key(6, 0);                 /* never pressed */
+	fake_key(5, 0);
+	fake_key(5, 0);
+	fake_key(SLOT_KEYS, 1);         /* beyond what is tracked */
 	slot_read(&set);
 	assert_string_equal(seen, "key 5 1 key 5 0 ");
 }
@@ -340,14 +182,14 @@ static void settings_open_the_slots_they_name(void **state)
 	assert_int_equal(set.s[6].kind, 3);
 	slot_close(&set);
 	/* more devices than slots are left out */
-	slot_init(&set, &hooks, NULL);
+	slot_init(&set, &fake_hooks, NULL);
 	k[2].devices = "1 2 3 4 5 6 7 8 9 10";
 	slot_open(&set, &k[2], 1, NULL);
 	assert_int_equal(set.n, SLOT_MAX);
 	assert_string_equal(set.s[SLOT_MAX - 1].path, "8");
 	/* "auto" is a device name to a backend without auto slots */
 	slot_close(&set);
-	slot_init(&set, &hooks, NULL);
+	slot_init(&set, &fake_hooks, NULL);
 	k[2].devices = "auto";
 	slot_open(&set, &k[2], 1, NULL);
 	assert_int_equal(set.n, 1);
@@ -376,13 +218,13 @@ static void a_display_that_reads_keys_opens_them_and_spares_the_keyboard(void **
 	assert_null(set.s[0].path);
 	slot_close(&set);
 	/* a display without keys: the keyboard, and no terminal input */
-	slot_init(&set, &hooks, NULL);
+	slot_init(&set, &fake_hooks, NULL);
 	slot_open(&set, k, 2, &plain);
 	assert_int_equal(set.n, 1);
 	assert_ptr_equal(set.s[0].be, &kbd);
 	slot_close(&set);
 	/* a keyboard named in the settings is opened with the terminal */
-	slot_init(&set, &hooks, NULL);
+	slot_init(&set, &fake_hooks, NULL);
 	k[0].devices = "/dev/input/event7";
 	slot_open(&set, k, 2, &term);
 	assert_int_equal(set.n, 2);
@@ -415,21 +257,18 @@ static void the_registry_has_every_backend_once(void **state)
 
 int main(void)
 {
+#define T(name) cmocka_unit_test_setup_teardown(name, fake_setup, fake_teardown)
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test_setup_teardown(a_device_that_goes_away_has_what_it_held_released,
-						setup, teardown),
-		cmocka_unit_test_setup_teardown(a_dropped_device_is_reopened_after_the_retry_time,
-						setup, teardown),
-		cmocka_unit_test_setup_teardown(a_device_missing_at_the_start_keeps_its_slot, setup,
-						teardown),
-		cmocka_unit_test_setup_teardown(repeats_and_releases_of_keys_up_are_not_passed_on,
-						setup, teardown),
-		cmocka_unit_test_setup_teardown(a_hotplug_notice_retries_at_once, setup, teardown),
-		cmocka_unit_test_setup_teardown(settings_open_the_slots_they_name, setup, teardown),
-		cmocka_unit_test_setup_teardown(
-			a_display_that_reads_keys_opens_them_and_spares_the_keyboard, setup, teardown),
+		T(a_device_that_goes_away_has_what_it_held_released),
+		T(a_dropped_device_is_reopened_after_the_retry_time),
+		T(a_device_missing_at_the_start_keeps_its_slot),
+		T(repeats_and_releases_of_keys_up_are_not_passed_on),
+		T(a_hotplug_notice_retries_at_once),
+		T(settings_open_the_slots_they_name),
+		T(a_display_that_reads_keys_opens_them_and_spares_the_keyboard),
 		cmocka_unit_test(the_registry_has_every_backend_once),
 	};
 
+#undef T
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
