@@ -1,9 +1,11 @@
 /*
- * app: the daemon's main loop. One process, one loop at a fixed 60 Hz tick:
- * read input as late as possible before the tick, build the tick's command,
- * run the sim, render, present; measure frame time and input-to-present
- * latency; notify systemd. The same loop runs headless and as fast as it can
- * for scripts and replays.
+ * app: one run of the daemon. One process, one loop at a fixed 60 Hz tick
+ * (app/loop.h has its steps and their order): read input as late as
+ * possible before the tick, build the tick's command, run the sim, render,
+ * present; measure frame time and input-to-present latency; notify
+ * systemd. The same loop runs headless and as fast as it can for scripts
+ * and replays. app_run sets up the modules of app/ (docs/architecture.md),
+ * runs the loop and tears down.
  */
 #ifndef ARCADED_APP_APP_H
 #define ARCADED_APP_APP_H

@@ -56,10 +56,11 @@
  * pulse ends are found by time, not by edges. Unplugging the chip (a
  * gpio-sim bank going away) reads as -ENODEV.
  *
- * Outputs are driven only from in_gpio_update, which the app calls every
- * tick with the game's state (input/gpo.h): the meter pulses once per new
- * coin, the start lamp blinks while credits are available outside play.
- * close() switches them off.
+ * Outputs are driven only from in_gpio_update (the backend's outputs
+ * entry), which the app calls every tick with the game's state
+ * (input/gpo.h): the meter pulses once per new coin, the start lamp
+ * blinks while credits are available outside play. close() switches them
+ * off.
  */
 #ifndef ARCADED_INPUT_IN_GPIO_H
 #define ARCADED_INPUT_IN_GPIO_H

@@ -72,7 +72,7 @@ int in_hid_spec_names_device(const struct in_hid_spec *s);
  * terms (split, deadzone, press, release, p2_button, p2_x, p2_y, as in a
  * spec; device terms are refused) on top of those it was opened with: how
  * a profile's "hid =" options (config/prof.h) are applied once the device
- * is known. The decoder starts over with every control released and
+ * is known (it is in_hid.configure). The decoder starts over with every control released and
  * undelivered events are dropped: call it right after open. 0, -EINVAL
  * with the reason in why, or -ENOMEM (d keeps its old decoder). */
 int in_hid_configure(struct in_dev *d, const char *terms, char *why, size_t whylen);
