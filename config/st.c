@@ -23,6 +23,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "engine/core/le.h"
+
 static const uint8_t st_magic[8] = { 'A', 'R', 'C', 'D', 'S', 'T', 'A', '\0' };
 
 /* CRC-32 a nibble at a time: a 16-entry constant table, no set-up. */
@@ -45,28 +47,6 @@ uint32_t st_crc32(uint32_t crc, const void *p, size_t n)
 	return ~crc;
 }
 
-static void st_put16(uint8_t *p, uint16_t v)
-{
-	p[0] = (uint8_t)v;
-	p[1] = (uint8_t)(v >> 8);
-}
-
-static void st_put32(uint8_t *p, uint32_t v)
-{
-	for (int i = 0; i < 4; i++)
-		p[i] = (uint8_t)(v >> (8 * i));
-}
-
-static uint16_t st_get16(const uint8_t *p)
-{
-	return (uint16_t)(p[0] | (unsigned)p[1] << 8);
-}
-
-static uint32_t st_get32(const uint8_t *p)
-{
-	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
-
 __attribute__((format(printf, 3, 4)))
 static void st_msg(char *msg, size_t msglen, const char *fmt, ...)
 {
@@ -82,11 +62,11 @@ static void st_msg(char *msg, size_t msglen, const char *fmt, ...)
 void st_header(uint8_t out[ST_HEADER_SIZE], const void *payload, size_t len)
 {
 	memcpy(out, st_magic, sizeof(st_magic));
-	st_put16(out + 8, ST_VERSION);
-	st_put16(out + 10, ST_HEADER_SIZE);
-	st_put32(out + 12, (uint32_t)len);
-	st_put32(out + 16, st_crc32(0, payload, len));
-	st_put32(out + 20, st_crc32(0, out, 20));
+	le_put16(out + 8, ST_VERSION);
+	le_put16(out + 10, ST_HEADER_SIZE);
+	le_put32(out + 12, (uint32_t)len);
+	le_put32(out + 16, st_crc32(0, payload, len));
+	le_put32(out + 20, st_crc32(0, out, 20));
 }
 
 int st_check(const uint8_t *img, size_t n, size_t *payload_len, char *why, size_t whylen)
@@ -101,22 +81,22 @@ int st_check(const uint8_t *img, size_t n, size_t *payload_len, char *why, size_
 		st_msg(why, whylen, "bad magic");
 		return -EBADMSG;
 	}
-	if (st_get32(img + 20) != st_crc32(0, img, 20)) {
+	if (le_get32(img + 20) != st_crc32(0, img, 20)) {
 		st_msg(why, whylen, "header checksum mismatch");
 		return -EBADMSG;
 	}
-	if (st_get16(img + 8) != ST_VERSION || st_get16(img + 10) != ST_HEADER_SIZE) {
-		st_msg(why, whylen, "version %u (header size %u) not supported", st_get16(img + 8),
-		       st_get16(img + 10));
+	if (le_get16(img + 8) != ST_VERSION || le_get16(img + 10) != ST_HEADER_SIZE) {
+		st_msg(why, whylen, "version %u (header size %u) not supported", le_get16(img + 8),
+		       le_get16(img + 10));
 		return -EBADMSG;
 	}
-	len = st_get32(img + 12);
+	len = le_get32(img + 12);
 	if (len > ST_MAX_LEN || len != n - ST_HEADER_SIZE) {
 		st_msg(why, whylen, "length %" PRIu32 " does not match the file (%zu bytes of payload)",
 		       len, n - ST_HEADER_SIZE);
 		return -EBADMSG;
 	}
-	if (st_get32(img + 16) != st_crc32(0, img + ST_HEADER_SIZE, len)) {
+	if (le_get32(img + 16) != st_crc32(0, img + ST_HEADER_SIZE, len)) {
 		st_msg(why, whylen, "payload checksum mismatch");
 		return -EBADMSG;
 	}

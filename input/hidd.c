@@ -11,6 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/le.h"
+
 /* Element steps the variable-item splitter may take over one descriptor:
  * keeps a descriptor of thousands of maximal items from costing seconds. */
 #define HIDD_MAX_WORK (1u << 20)
@@ -444,7 +446,7 @@ static int parse(struct hidd_parser *p)
 		uint8_t b = p->buf[pos];
 		uint8_t len = (uint8_t)((b & 3) == 3 ? 4 : (b & 3));
 		uint8_t type = (b >> 2) & 3, tag = b >> 4;
-		uint32_t v = 0;
+		uint32_t v;
 		int rc = 0;
 
 		p->at = pos;
@@ -461,8 +463,7 @@ static int parse(struct hidd_parser *p)
 		if (p->len - pos - 1 < len)
 			return fail(p, -EINVAL, "item 0x%02x needs %u data bytes, %zu left", b, len,
 				    p->len - pos - 1);
-		for (uint8_t i = 0; i < len; i++)
-			v |= (uint32_t)p->buf[pos + 1 + i] << (8 * i);
+		v = (uint32_t)le_getn(p->buf + pos + 1, len);
 		switch (type) {
 		case 0: rc = main_item(p, tag, v); break;
 		case 1: rc = global_item(p, tag, v, len); break;

@@ -22,6 +22,8 @@
 
 #include <linux/input-event-codes.h>
 
+#include "engine/core/le.h"
+
 #define HIDR_CODES 0x300                 /* key codes below KEY_MAX */
 #define HIDR_WORDS (HIDR_CODES / 64)
 #define HIDR_AXES 11                     /* ABS_X .. ABS_BRAKE */
@@ -475,12 +477,9 @@ int hidr_max_events(const struct hidr *r)
 /* size bits at bit offset bit of p (bit + size within the buffer). */
 static uint32_t get_bits(const uint8_t *p, uint32_t bit, uint32_t size)
 {
-	uint64_t v = 0;
 	uint32_t first = bit / 8, n = (bit % 8 + size + 7) / 8;
+	uint64_t v = le_getn(p + first, (int)n) >> bit % 8;
 
-	for (uint32_t i = 0; i < n; i++)
-		v |= (uint64_t)p[first + i] << (8 * i);
-	v >>= bit % 8;
 	return (uint32_t)(size == 32 ? v : v & ((1ull << size) - 1));
 }
 

@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "engine/core/hash.h"
+#include "engine/core/le.h"
 
 static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 
@@ -27,39 +28,6 @@ static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 #define REC_BUF 4096
 /* Largest render size a header may name (r_new's limit). */
 #define REC_RENDER_MAX 4096
-
-static void rec_put16(uint8_t *p, uint16_t v)
-{
-	p[0] = (uint8_t)v;
-	p[1] = (uint8_t)(v >> 8);
-}
-
-static void rec_put32(uint8_t *p, uint32_t v)
-{
-	for (int i = 0; i < 4; i++)
-		p[i] = (uint8_t)(v >> (8 * i));
-}
-
-static void rec_put64(uint8_t *p, uint64_t v)
-{
-	for (int i = 0; i < 8; i++)
-		p[i] = (uint8_t)(v >> (8 * i));
-}
-
-static uint16_t rec_get16(const uint8_t *p)
-{
-	return (uint16_t)(p[0] | (unsigned)p[1] << 8);
-}
-
-static uint32_t rec_get32(const uint8_t *p)
-{
-	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
-
-static uint64_t rec_get64(const uint8_t *p)
-{
-	return (uint64_t)rec_get32(p) | (uint64_t)rec_get32(p + 4) << 32;
-}
 
 __attribute__((format(printf, 3, 4)))
 static void rec_msg(char *err, size_t errlen, const char *fmt, ...)
@@ -86,30 +54,30 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 
 	memset(out, 0, size);
 	memcpy(out, rec_magic, sizeof(rec_magic));
-	rec_put16(out + 8, h->version);
-	rec_put16(out + 10, h->tick_rate);
-	rec_put32(out + 12, (uint32_t)size + snap);
-	rec_put64(out + 16, h->map_hash);
-	rec_put32(out + 24, h->engine_version);
+	le_put16(out + 8, h->version);
+	le_put16(out + 10, h->tick_rate);
+	le_put32(out + 12, (uint32_t)size + snap);
+	le_put64(out + 16, h->map_hash);
+	le_put32(out + 24, h->engine_version);
 	out[28] = h->set.coins_per_credit;
 	out[29] = h->set.freeplay;
 	out[30] = h->set.start_in_play;
 	out[31] = h->set.difficulty;
-	rec_put32(out + 32, h->count);
+	le_put32(out + 32, h->count);
 	out[36] = h->set.lives;
 	if (size == REC_HEADER_SIZE)
 		return size;
-	rec_put16(out + 40, h->render_w);
-	rec_put16(out + 42, h->render_h);
+	le_put16(out + 40, h->render_w);
+	le_put16(out + 42, h->render_h);
 	out[44] = h->hash_flags;
 	out[45] = h->level;
-	rec_put32(out + 48, h->render_version);
+	le_put32(out + 48, h->render_version);
 	memcpy(out + 56, h->map_name, strnlen(h->map_name, 8));
-	rec_put64(out + 64, (uint64_t)h->start_time);
+	le_put64(out + 64, (uint64_t)h->start_time);
 	if (snap) {
 		out[44] |= REC_HAS_SNAPSHOT;
-		rec_put32(out + 52, snap);
-		rec_put64(out + 72, h->snapshot ? hash_bytes(HASH_INIT, h->snapshot, snap)
+		le_put32(out + 52, snap);
+		le_put64(out + 72, h->snapshot ? hash_bytes(HASH_INIT, h->snapshot, snap)
 						: h->snapshot_sum);
 	}
 	return size;
@@ -130,16 +98,16 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		return -EINVAL;
 	}
 	memset(&d, 0, sizeof(d));
-	d.version = rec_get16(buf + 8);
-	d.tick_rate = rec_get16(buf + 10);
-	d.header_size = rec_get32(buf + 12);
-	d.map_hash = rec_get64(buf + 16);
-	d.engine_version = rec_get32(buf + 24);
+	d.version = le_get16(buf + 8);
+	d.tick_rate = le_get16(buf + 10);
+	d.header_size = le_get32(buf + 12);
+	d.map_hash = le_get64(buf + 16);
+	d.engine_version = le_get32(buf + 24);
 	d.set.coins_per_credit = buf[28];
 	d.set.freeplay = buf[29];
 	d.set.start_in_play = buf[30];
 	d.set.difficulty = buf[31];
-	d.count = rec_get32(buf + 32);
+	d.count = le_get32(buf + 32);
 	d.set.lives = buf[36];
 	if (d.version == 0) {
 		rec_msg(err, errlen, "version 0 is not a valid version");
@@ -188,21 +156,21 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		return -EINVAL;
 	}
 	if (d.version >= REC_VERSION_2) {
-		d.render_w = rec_get16(buf + 40);
-		d.render_h = rec_get16(buf + 42);
+		d.render_w = le_get16(buf + 40);
+		d.render_h = le_get16(buf + 42);
 		d.hash_flags = buf[44];
 		d.level = buf[45];
-		d.render_version = rec_get32(buf + 48);
+		d.render_version = le_get32(buf + 48);
 		memcpy(d.map_name, buf + 56, 8);
 		d.map_name[8] = '\0';
-		d.start_time = (int64_t)rec_get64(buf + 64);
+		d.start_time = (int64_t)le_get64(buf + 64);
 		if (d.hash_flags & ~(REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_SNAPSHOT)) {
 			rec_msg(err, errlen, "hash flags 0x%02x unknown", d.hash_flags);
 			return -EINVAL;
 		}
 		if (d.hash_flags & REC_HAS_SNAPSHOT) {
-			d.snapshot_len = rec_get32(buf + 52);
-			d.snapshot_sum = rec_get64(buf + 72);
+			d.snapshot_len = le_get32(buf + 52);
+			d.snapshot_sum = le_get64(buf + 72);
 			if (d.snapshot_len == 0) {
 				rec_msg(err, errlen, "snapshot of 0 bytes");
 				return -EINVAL;
@@ -237,7 +205,7 @@ void rec_cmd_encode(uint8_t out[REC_CMD_SIZE], const struct sim_cmd *c)
 	/* Two's complement by conversion to the unsigned type: defined in C. */
 	out[0] = (uint8_t)c->forward;
 	out[1] = (uint8_t)c->side;
-	rec_put16(out + 2, (uint16_t)c->turn);
+	le_put16(out + 2, (uint16_t)c->turn);
 	out[4] = c->buttons;
 	out[5] = c->coins;
 }
@@ -249,16 +217,11 @@ static int8_t rec_s8(uint8_t v)
 	return (int8_t)(v < 128 ? (int)v : (int)v - 256);
 }
 
-static int16_t rec_s16(uint16_t v)
-{
-	return (int16_t)(v < 32768 ? (int32_t)v : (int32_t)v - 65536);
-}
-
 void rec_cmd_decode(const uint8_t in[REC_CMD_SIZE], struct sim_cmd *c)
 {
 	c->forward = rec_s8(in[0]);
 	c->side = rec_s8(in[1]);
-	c->turn = rec_s16(rec_get16(in + 2));
+	c->turn = le_s16(in + 2);
 	c->buttons = in[4];
 	c->coins = in[5];
 }
@@ -374,11 +337,11 @@ int rec_writer_put_tick(struct rec_writer *w, const struct rec_tick *t)
 	rec_cmd_encode(p, &t->cmd);
 	p += REC_CMD_SIZE;
 	if (w->flags & REC_HAS_STATE) {
-		rec_put64(p, t->state_hash);
+		le_put64(p, t->state_hash);
 		p += 8;
 	}
 	if (w->flags & REC_HAS_FRAME)
-		rec_put64(p, t->frame_hash);
+		le_put64(p, t->frame_hash);
 	w->n += w->recsize;
 	w->count++;
 	return 0;
@@ -404,7 +367,7 @@ int rec_writer_close(struct rec_writer *w)
 	if (ret == 0) {
 		ssize_t pw;
 
-		rec_put32(cnt, w->count);
+		le_put32(cnt, w->count);
 		pw = pwrite(w->fd, cnt, sizeof(cnt), 32);
 		if (pw < 0)
 			ret = -errno;
@@ -589,11 +552,11 @@ int rec_reader_next_tick(struct rec_reader *r, struct rec_tick *t)
 	t->state_hash = 0;
 	t->frame_hash = 0;
 	if (r->h.hash_flags & REC_HAS_STATE) {
-		t->state_hash = rec_get64(p);
+		t->state_hash = le_get64(p);
 		p += 8;
 	}
 	if (r->h.hash_flags & REC_HAS_FRAME)
-		t->frame_hash = rec_get64(p);
+		t->frame_hash = le_get64(p);
 	r->bi += r->recsize;
 	r->pos++;
 	return 1;
@@ -856,7 +819,7 @@ int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen)
 		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
 		goto out;
 	}
-	rec_put32(cnt, (uint32_t)whole);
+	le_put32(cnt, (uint32_t)whole);
 	errno = 0;
 	if (pwrite(fd, cnt, sizeof(cnt), 32) != (ssize_t)sizeof(cnt) || fsync(fd) < 0) {
 		ret = errno ? -errno : -EIO;

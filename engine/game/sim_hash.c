@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include "engine/core/hash.h"
+#include "engine/core/le.h"
 #include "engine/map/map.h"
 
 enum sim_op { SIM_OP_HASH, SIM_OP_SIZE, SIM_OP_WRITE, SIM_OP_READ, SIM_OP_VISIT };
@@ -61,22 +62,18 @@ static uint64_t sw_num(struct sim_walk *w, uint64_t v, int bytes)
 	case SIM_OP_HASH:
 		if (w->spare)
 			return v;
-		for (int i = 0; i < bytes; i++)
-			b[i] = (uint8_t)(v >> (8 * i));
+		le_putn(b, v, bytes);
 		w->h = hash_bytes(w->h, b, (size_t)bytes);
 		return v;
 	case SIM_OP_SIZE:
 	case SIM_OP_VISIT:
 		break;
 	case SIM_OP_WRITE:
-		for (int i = 0; i < bytes; i++)
-			w->out[w->n + (size_t)i] = (uint8_t)(v >> (8 * i));
+		le_putn(w->out + w->n, v, bytes);
 		break;
 	case SIM_OP_READ:
 	default:
-		v = 0;
-		for (int i = 0; i < bytes; i++)
-			v |= (uint64_t)w->in[w->n + (size_t)i] << (8 * i);
+		v = le_getn(w->in + w->n, bytes);
 		break;
 	}
 	w->n += (size_t)bytes;

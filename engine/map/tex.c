@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/le.h"
 #include "engine/map/tex_local.h"
 #include "engine/map/wad.h"
 
@@ -71,10 +72,10 @@ int tex_pic_header(const uint8_t *d, size_t len, int *w, int *h, int *left, int 
 {
 	if (len < 8)
 		return -EINVAL;
-	*w = wad_i16(d);
-	*h = wad_i16(d + 2);
-	*left = wad_i16(d + 4);
-	*top = wad_i16(d + 6);
+	*w = le_s16(d);
+	*h = le_s16(d + 2);
+	*left = le_s16(d + 4);
+	*top = le_s16(d + 6);
 	if (*w <= 0 || *h <= 0 || *w > TEX_MAX_SIDE || *h > TEX_MAX_SIDE ||
 	    8 + 4 * (size_t)*w > len)
 		return -EINVAL;
@@ -120,7 +121,7 @@ int tex_pic_draw(struct tex_pic *p, const uint8_t *d, size_t len, int x, int y)
 		return -EINVAL;
 	for (int c = 0; c < w; c++) {
 		int px = x + c;
-		size_t ofs = (size_t)(uint32_t)wad_i32(d + 8 + 4 * (size_t)c);
+		size_t ofs = (size_t)(uint32_t)le_s32(d + 8 + 4 * (size_t)c);
 
 		if (px < 0 || px >= p->w || ofs >= len)
 			continue;
