@@ -17,6 +17,7 @@
 #include <strings.h>
 
 #include "config/cini.h"
+#include "engine/core/num.h"
 
 enum cfg_type {
 	CFG_T_INT,      /* int in min..max */
@@ -172,32 +173,6 @@ static const struct cfg_key *cfg_find(const char *section, const char *key)
 	return NULL;
 }
 
-/* Strict decimal int: optional sign, digits, nothing else. *big is set when
- * the digits do not fit an int (the caller reports "out of range"). */
-static bool cfg_parse_int(const char *v, int *out, bool *big)
-{
-	const char *p = v + (*v == '-' || *v == '+');
-	long long n = 0;
-
-	*big = false;
-	if (*p < '0' || *p > '9')
-		return false;
-	for (; *p >= '0' && *p <= '9'; p++) {
-		if (n < 10000000000LL)
-			n = n * 10 + (*p - '0');
-		else
-			*big = true;
-	}
-	if (*p)
-		return false;
-	if (*v == '-')
-		n = -n;
-	if (n < INT_MIN || n > INT_MAX)
-		*big = true;
-	*out = *big ? 0 : (int)n;
-	return true;
-}
-
 static int cfg_parse_bool(const char *v)
 {
 	static const char *const yes[] = { "1", "yes", "true", "on" };
@@ -240,16 +215,18 @@ static void cfg_apply(struct cfg_ctx *x, int line, const struct cfg_key *k, cons
 {
 	char *field = (char *)x->c + k->off;
 	char list[128];
-	bool big;
-	int n, i;
+	int64_t l;
+	int n, i, rc;
 
 	switch (k->type) {
 	case CFG_T_INT:
-		if (!cfg_parse_int(v, &n, &big)) {
+		rc = num_parse(v, k->min, k->max, &l);
+		if (rc == -EINVAL) {
 			cfg_report(x, line, "%s: '%s' is not an integer", k->key, v);
-		} else if (big || n < k->min || n > k->max) {
+		} else if (rc < 0) {
 			cfg_report(x, line, "%s: %s out of range %d..%d", k->key, v, k->min, k->max);
 		} else {
+			n = (int)l;
 			memcpy(field, &n, sizeof(n));
 		}
 		return;
@@ -262,7 +239,8 @@ static void cfg_apply(struct cfg_ctx *x, int line, const struct cfg_key *k, cons
 			memcpy(field, &n, sizeof(n));
 		return;
 	case CFG_T_ONEOF:
-		if (cfg_parse_int(v, &n, &big) && !big) {
+		if (num_parse(v, INT_MIN, INT_MAX, &l) == 0) {
+			n = (int)l;
 			for (i = 0; i < k->nints; i++) {
 				if (k->ints[i] == n) {
 					memcpy(field, &n, sizeof(n));

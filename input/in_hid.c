@@ -21,6 +21,7 @@
 
 #include <hidapi.h>
 
+#include "engine/core/num.h"
 #include "input/hidd.h"
 #include "input/in.h"
 
@@ -86,19 +87,6 @@ static int axis_usage(const char *v)
 	return -1;
 }
 
-static int number(const char *v, long lo, long hi, long *out)
-{
-	char *end;
-	long n;
-
-	errno = 0;
-	n = strtol(v, &end, 10);
-	if (errno || end == v || *end || n < lo || n > hi)
-		return -1;
-	*out = n;
-	return 0;
-}
-
 static int hex16(const char *v, size_t len)
 {
 	int n = 0;
@@ -127,7 +115,7 @@ static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
 	char *eq = strchr(t, '=');
 	const char *v = eq ? eq + 1 : "";
 	const char *colon = strchr(t, ':');
-	long n;
+	int64_t n;
 	int a;
 
 	if (eq)
@@ -156,7 +144,7 @@ static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
 		if (copy_term(s->node, sizeof(s->node), v) < 0)
 			goto bad;
 	} else if (strcmp(t, "if") == 0) {
-		if (number(v, 0, 255, &n) < 0)
+		if (num_parse(v, 0, 255, &n) < 0)
 			goto bad;
 		s->iface = (int)n;
 	} else if (strcmp(t, "split") == 0) {
@@ -170,7 +158,7 @@ static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
 			goto bad;
 	} else if (strcmp(t, "deadzone") == 0 || strcmp(t, "press") == 0 ||
 		   strcmp(t, "release") == 0) {
-		if (number(v, 0, 1000, &n) < 0)
+		if (num_parse(v, 0, 1000, &n) < 0)
 			goto bad;
 		if (t[0] == 'd')
 			s->opts.deadzone = (uint16_t)n;
@@ -179,7 +167,7 @@ static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
 		else
 			s->opts.release = (uint16_t)n;
 	} else if (strcmp(t, "p2_button") == 0) {
-		if (number(v, 1, 65535, &n) < 0)
+		if (num_parse(v, 1, 65535, &n) < 0)
 			goto bad;
 		s->opts.p2_first_button = (uint16_t)n;
 	} else if (strcmp(t, "p2_x") == 0 || strcmp(t, "p2_y") == 0) {
