@@ -56,27 +56,9 @@ void bind_defaults(struct bind_table *b)
 struct bind_ctx {
 	struct bind_table *b;
 	int (*cur)[BIND_MAX];            /* the section being read: [keyboard] or a device's */
-	const char *file;
-	cfg_err_fn fn;
-	void *user;
-	int rejected;
+	struct cini_errs err;
 	bool section_ok;
 };
-
-__attribute__((format(printf, 3, 4)))
-static void bind_report(struct bind_ctx *x, int line, const char *fmt, ...)
-{
-	char msg[CINI_VALUE_MAX + 128];
-	va_list ap;
-
-	x->rejected++;
-	if (!x->fn)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(msg, sizeof(msg), fmt, ap);
-	va_end(ap);
-	x->fn(x->user, x->file, line, msg);
-}
 
 /* "0x" or "0X" and 1 to 4 hex digits, BIND_CODE_MIN..BIND_CODE_MAX: a
  * code by number (for codes libevdev has no name for). The code, or -1. */
@@ -164,11 +146,11 @@ static void bind_entry(struct bind_ctx *x, int line, const char *action, const c
 	char why[128];
 
 	if (a < 0) {
-		bind_report(x, line, "unknown action '%s'", action);
+		cini_report(&x->err, line, "unknown action '%s'", action);
 		return;
 	}
 	if (bind_parse_keys(value, keys, why, sizeof(why)) < 0) {
-		bind_report(x, line, "%s: %s", action, why);
+		cini_report(&x->err, line, "%s: %s", action, why);
 		return;
 	}
 	memcpy(x->cur[a], keys, sizeof(keys));
@@ -281,12 +263,12 @@ static void device_header(struct bind_ctx *x, int line, const char *section)
 	memcpy(id, p, n);
 	id[n] = '\0';
 	if (bind_device_id(id, norm) < 0) {
-		bind_report(x, line, "bad device id '%s' (usb-PORT or VVVV:PPPP)", id);
+		cini_report(&x->err, line, "bad device id '%s' (usb-PORT or VVVV:PPPP)", id);
 		return;
 	}
 	d = device_section(x->b, norm);
 	if (!d) {
-		bind_report(x, line, "too many device sections (at most %d)", BIND_DEVICES);
+		cini_report(&x->err, line, "too many device sections (at most %d)", BIND_DEVICES);
 		return;
 	}
 	x->cur = d->key;
@@ -299,7 +281,7 @@ static void bind_ev(void *user, const struct cini_ev *ev)
 
 	switch (ev->kind) {
 	case CINI_ERROR:
-		bind_report(x, ev->line, "%s", ev->msg);
+		cini_report(&x->err, ev->line, "%s", ev->msg);
 		break;
 	case CINI_SECTION:
 		x->section_ok = strcmp(ev->section, "keyboard") == 0;
@@ -308,13 +290,13 @@ static void bind_ev(void *user, const struct cini_ev *ev)
 		    (ev->section[6] == ' ' || ev->section[6] == '\t'))
 			device_header(x, ev->line, ev->section);
 		else if (!x->section_ok)
-			bind_report(x, ev->line,
+			cini_report(&x->err, ev->line,
 				    "unknown section [%s] (only [keyboard] and [device \"ID\"])",
 				    ev->section);
 		break;
 	case CINI_ENTRY:
 		if (ev->section[0] == '\0')
-			bind_report(x, ev->line, "key '%s' is outside [keyboard]", ev->key);
+			cini_report(&x->err, ev->line, "key '%s' is outside [keyboard]", ev->key);
 		else if (x->section_ok)
 			bind_entry(x, ev->line, ev->key, ev->value);
 		break;
@@ -324,10 +306,11 @@ static void bind_ev(void *user, const struct cini_ev *ev)
 int bind_load_text(struct bind_table *b, const char *text, size_t len, const char *name,
 		   cfg_err_fn fn, void *user)
 {
-	struct bind_ctx x = { .b = b, .cur = b->key, .file = name, .fn = fn, .user = user };
+	struct bind_ctx x = { .b = b, .cur = b->key,
+			      .err = { .file = name, .fn = fn, .user = user } };
 
 	cini_parse(text, len, bind_ev, &x);
-	return x.rejected;
+	return x.err.count;
 }
 
 static int bind_load_any(void *b, const char *text, size_t len, const char *name, cfg_err_fn fn,

@@ -6,6 +6,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -166,6 +167,20 @@ int cini_parse(const char *text, size_t len, cini_fn fn, void *user)
 		p = nl ? nl + 1 : end;
 	}
 	return st.errors;
+}
+
+void cini_report(struct cini_errs *e, int line, const char *fmt, ...)
+{
+	char msg[CINI_VALUE_MAX + 128];
+	va_list ap;
+
+	e->count++;
+	if (!e->fn)
+		return;
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof(msg), fmt, ap);
+	va_end(ap);
+	e->fn(e->user, e->file, line, msg);
 }
 
 int cini_read_file(const char *path, char **text, size_t *len)
