@@ -51,8 +51,9 @@ typedef void (*cini_fn)(void *user, const struct cini_ev *ev);
  * Returns the number of CINI_ERROR events. Never fails otherwise. */
 int cini_parse(const char *text, size_t len, cini_fn fn, void *user);
 
-/* Reads a whole file (opened O_CLOEXEC) into a malloc'd buffer that the
- * caller frees. 0, or -errno: -EFBIG above CINI_FILE_MAX bytes. */
+/* Reads a whole file (input/io.h's io_read_file) into a malloc'd,
+ * NUL-terminated buffer that the caller frees. 0, or -errno with *text
+ * NULL: -EFBIG above CINI_FILE_MAX bytes, -EISDIR for a directory. */
 int cini_read_file(const char *path, char **text, size_t *len);
 
 /* Reports a problem: file, line (0: none), message (cfg_err_fn's shape). */

@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include "engine/core/le.h"
+#include "input/io.h"
 
 static const uint8_t st_magic[8] = { 'A', 'R', 'C', 'D', 'S', 'T', 'A', '\0' };
 
@@ -130,60 +131,23 @@ static int st_write_all(int fd, const uint8_t *p, size_t n)
 	return 0;
 }
 
-/* Reads the whole file NAME in dfd: 0 with *img (malloc'd) and *n, or
- * -errno (-EFBIG when it is larger than any valid state file). */
+/* Reads the whole file NAME in dfd (a regular file, not a link): 0 with
+ * *img (malloc'd) and *n, or -errno (-EFBIG when it is larger than any
+ * valid state file). */
 static int st_read_file(int dfd, const char *name, uint8_t **img, size_t *n)
 {
 	struct stat sb;
-	uint8_t *b = NULL;
-	size_t got = 0, size;
 	int fd, ret;
 
 	fd = openat(dfd, name, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
 	if (fd < 0)
 		return -errno;
-	if (fstat(fd, &sb) < 0) {
+	if (fstat(fd, &sb) < 0)
 		ret = -errno;
-		goto out;
-	}
-	if (!S_ISREG(sb.st_mode)) {
+	else if (!S_ISREG(sb.st_mode))
 		ret = -EINVAL;
-		goto out;
-	}
-	if ((uint64_t)sb.st_size > (uint64_t)ST_HEADER_SIZE + ST_MAX_LEN) {
-		ret = -EFBIG;
-		goto out;
-	}
-	size = (size_t)sb.st_size;
-	/* One spare byte tells a file that grew since fstat. */
-	b = malloc(size + 1);
-	if (!b) {
-		ret = -ENOMEM;
-		goto out;
-	}
-	for (;;) {
-		ssize_t r = read(fd, b + got, size + 1 - got);
-
-		if (r < 0) {
-			if (errno == EINTR)
-				continue;
-			ret = -errno;
-			goto out;
-		}
-		if (r == 0)
-			break;
-		got += (size_t)r;
-		if (got > size) {
-			ret = -EAGAIN;
-			goto out;
-		}
-	}
-	*img = b;
-	*n = got;
-	b = NULL;
-	ret = 0;
-out:
-	free(b);
+	else
+		ret = io_read_fd(fd, (size_t)ST_HEADER_SIZE + ST_MAX_LEN, img, n);
 	close(fd);
 	return ret;
 }

@@ -24,6 +24,7 @@
 #include "engine/core/num.h"
 #include "input/hidd.h"
 #include "input/in.h"
+#include "input/io.h"
 
 #define HID_SYSFS "/sys"
 #define HID_MAX_READS 256        /* reports per read call: bounds the work of a tick */
@@ -263,49 +264,13 @@ int in_hid_port(const char *sysroot, const char *node, char *port, size_t len)
 int in_hid_read_desc(const char *sysroot, const char *node, uint8_t **buf, size_t *len)
 {
 	char path[PATH_MAX];
-	uint8_t *b;
-	size_t n = 0;
-	int fd, rc = 0;
 
 	*buf = NULL;
 	*len = 0;
 	if (snprintf(path, sizeof(path), "%s/class/hidraw/%s/device/report_descriptor", sysroot,
 		     node_base(node)) >= (int)sizeof(path))
 		return -ENAMETOOLONG;
-	b = malloc(HIDD_MAX_DESC + 1);
-	if (!b)
-		return -ENOMEM;
-	fd = open(path, O_RDONLY | O_CLOEXEC);
-	if (fd < 0) {
-		rc = -errno;
-		goto fail;
-	}
-	for (;;) {
-		ssize_t r = read(fd, b + n, HIDD_MAX_DESC + 1 - n);
-
-		if (r < 0 && errno == EINTR)
-			continue;
-		if (r < 0) {
-			rc = -errno;
-			break;
-		}
-		if (r == 0)
-			break;
-		n += (size_t)r;
-		if (n > HIDD_MAX_DESC) {
-			rc = -E2BIG;
-			break;
-		}
-	}
-	close(fd);
-	if (rc < 0)
-		goto fail;
-	*buf = b;
-	*len = n;
-	return 0;
-fail:
-	free(b);
-	return rc;
+	return io_read_file(path, HIDD_MAX_DESC, 0, buf, len);
 }
 
 /* UTF-8 of a hidapi wide string (UTF-32 on Linux) into buf, appended. */
