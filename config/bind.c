@@ -16,6 +16,7 @@
 
 #include "config/cini.h"
 #include "input/in.h"
+#include "input/txt.h"
 
 /* Defaults: arrows and WASD (A/D strafe, arrows turn), the 1/5/9 start,
  * coin and service keys of MAME's defaults, F2 as a second service key. */
@@ -382,32 +383,12 @@ int bind_lookup_dev(const struct bind_table *b, const struct in_ident *id, int c
 	return n;
 }
 
-/* Appends to out what snprintf would, counting what does not fit. */
-struct bind_out {
-	char *buf;
-	size_t len, n;
-};
-
-__attribute__((format(printf, 2, 3)))
-static void bind_put(struct bind_out *o, const char *fmt, ...)
-{
-	va_list ap;
-	int w;
-
-	va_start(ap, fmt);
-	w = vsnprintf(o->n < o->len ? o->buf + o->n : NULL, o->n < o->len ? o->len - o->n : 0,
-		      fmt, ap);
-	va_end(ap);
-	if (w > 0)
-		o->n += (size_t)w;
-}
-
-static void bind_put_section(struct bind_out *o, const int key[ACT_COUNT][BIND_MAX])
+static void bind_put_section(struct txt *o, const int key[ACT_COUNT][BIND_MAX])
 {
 	for (int a = 0; a < ACT_COUNT; a++) {
 		int first = 1;
 
-		bind_put(o, "%s =", act_name(a));
+		txt_put(o, "%s =", act_name(a));
 		for (int i = 0; i < BIND_MAX; i++) {
 			int code = key[a][i];
 			const char *name = in_key_name(code);
@@ -415,26 +396,26 @@ static void bind_put_section(struct bind_out *o, const int key[ACT_COUNT][BIND_M
 			if (code < BIND_CODE_MIN || code > BIND_CODE_MAX)
 				continue;
 			if (name)
-				bind_put(o, "%s %s", first ? "" : ",", name);
+				txt_put(o, "%s %s", first ? "" : ",", name);
 			else
-				bind_put(o, "%s 0x%04x", first ? "" : ",", (unsigned)code);
+				txt_put(o, "%s 0x%04x", first ? "" : ",", (unsigned)code);
 			first = 0;
 		}
-		bind_put(o, "\n");
+		txt_put(o, "\n");
 	}
 }
 
 size_t bind_format(const struct bind_table *b, char *buf, size_t len)
 {
-	struct bind_out o = { .buf = buf, .len = len };
+	struct txt o = { .buf = buf, .len = len };
 
 	if (buf && len)
 		buf[0] = '\0';
-	bind_put(&o, "# arcaded key bindings: every action of [keyboard] and of each device\n");
-	bind_put(&o, "[keyboard]\n");
+	txt_put(&o, "# arcaded key bindings: every action of [keyboard] and of each device\n");
+	txt_put(&o, "[keyboard]\n");
 	bind_put_section(&o, b->key);
 	for (int d = 0; d < b->ndev; d++) {
-		bind_put(&o, "\n[device \"%s\"]\n", b->dev[d].id);
+		txt_put(&o, "\n[device \"%s\"]\n", b->dev[d].id);
 		bind_put_section(&o, b->dev[d].key);
 	}
 	return o.n;

@@ -18,6 +18,7 @@
 
 #include "config/cini.h"
 #include "engine/core/num.h"
+#include "input/txt.h"
 
 enum cfg_type {
 	CFG_T_INT,      /* int in min..max */
@@ -449,24 +450,10 @@ static const char *cfg_index_name(const struct cfg_key *k, int v)
 	return "?";
 }
 
-/* snprintf that keeps counting past the end of buf, for the needed length. */
-__attribute__((format(printf, 4, 5)))
-static void cfg_put(char *buf, size_t len, size_t *n, const char *fmt, ...)
-{
-	va_list ap;
-	int r;
-
-	va_start(ap, fmt);
-	r = vsnprintf(*n < len ? buf + *n : NULL, *n < len ? len - *n : 0, fmt, ap);
-	va_end(ap);
-	if (r > 0)
-		*n += (size_t)r;
-}
-
 size_t cfg_format(const struct cfg *c, char *buf, size_t len)
 {
 	const char *section = NULL;
-	size_t n = 0;
+	struct txt t = { .buf = buf, .len = len };
 
 	if (len)
 		buf[0] = '\0';
@@ -476,7 +463,7 @@ size_t cfg_format(const struct cfg *c, char *buf, size_t len)
 		int v;
 
 		if (!section || strcmp(section, k->section) != 0) {
-			cfg_put(buf, len, &n, "%s[%s]\n", section ? "\n" : "", k->section);
+			txt_put(&t, "%s[%s]\n", section ? "\n" : "", k->section);
 			section = k->section;
 		}
 		switch (k->type) {
@@ -484,22 +471,22 @@ size_t cfg_format(const struct cfg *c, char *buf, size_t len)
 		case CFG_T_NAME:
 		case CFG_T_DEVICE:
 			/* No blank after '=' for an empty value. */
-			cfg_put(buf, len, &n, "%s =%s%s\n", k->key, field[0] ? " " : "", field);
+			txt_put(&t, "%s =%s%s\n", k->key, field[0] ? " " : "", field);
 			break;
 		case CFG_T_BOOL:
 			memcpy(&v, field, sizeof(v));
-			cfg_put(buf, len, &n, "%s = %s\n", k->key, v ? "yes" : "no");
+			txt_put(&t, "%s = %s\n", k->key, v ? "yes" : "no");
 			break;
 		case CFG_T_INDEX:
 			memcpy(&v, field, sizeof(v));
-			cfg_put(buf, len, &n, "%s = %s\n", k->key, cfg_index_name(k, v));
+			txt_put(&t, "%s = %s\n", k->key, cfg_index_name(k, v));
 			break;
 		case CFG_T_INT:
 		case CFG_T_ONEOF:
 			memcpy(&v, field, sizeof(v));
-			cfg_put(buf, len, &n, "%s = %d\n", k->key, v);
+			txt_put(&t, "%s = %d\n", k->key, v);
 			break;
 		}
 	}
-	return n;
+	return t.n;
 }

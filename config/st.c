@@ -25,6 +25,7 @@
 
 #include "engine/core/le.h"
 #include "input/io.h"
+#include "input/txt.h"
 
 static const uint8_t st_magic[8] = { 'A', 'R', 'C', 'D', 'S', 'T', 'A', '\0' };
 
@@ -48,18 +49,6 @@ uint32_t st_crc32(uint32_t crc, const void *p, size_t n)
 	return ~crc;
 }
 
-__attribute__((format(printf, 3, 4)))
-static void st_msg(char *msg, size_t msglen, const char *fmt, ...)
-{
-	va_list ap;
-
-	if (!msg || !msglen)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(msg, msglen, fmt, ap);
-	va_end(ap);
-}
-
 void st_header(uint8_t out[ST_HEADER_SIZE], const void *payload, size_t len)
 {
 	memcpy(out, st_magic, sizeof(st_magic));
@@ -75,30 +64,31 @@ int st_check(const uint8_t *img, size_t n, size_t *payload_len, char *why, size_
 	uint32_t len;
 
 	if (n < ST_HEADER_SIZE) {
-		st_msg(why, whylen, "too short (%zu bytes)", n);
+		txt_set(why, whylen, "too short (%zu bytes)", n);
 		return -EBADMSG;
 	}
 	if (memcmp(img, st_magic, sizeof(st_magic)) != 0) {
-		st_msg(why, whylen, "bad magic");
+		txt_set(why, whylen, "bad magic");
 		return -EBADMSG;
 	}
 	if (le_get32(img + 20) != st_crc32(0, img, 20)) {
-		st_msg(why, whylen, "header checksum mismatch");
+		txt_set(why, whylen, "header checksum mismatch");
 		return -EBADMSG;
 	}
 	if (le_get16(img + 8) != ST_VERSION || le_get16(img + 10) != ST_HEADER_SIZE) {
-		st_msg(why, whylen, "version %u (header size %u) not supported", le_get16(img + 8),
-		       le_get16(img + 10));
+		txt_set(why, whylen, "version %u (header size %u) not supported", le_get16(img + 8),
+			le_get16(img + 10));
 		return -EBADMSG;
 	}
 	len = le_get32(img + 12);
 	if (len > ST_MAX_LEN || len != n - ST_HEADER_SIZE) {
-		st_msg(why, whylen, "length %" PRIu32 " does not match the file (%zu bytes of payload)",
-		       len, n - ST_HEADER_SIZE);
+		txt_set(why, whylen,
+			"length %" PRIu32 " does not match the file (%zu bytes of payload)", len,
+			n - ST_HEADER_SIZE);
 		return -EBADMSG;
 	}
 	if (le_get32(img + 16) != st_crc32(0, img + ST_HEADER_SIZE, len)) {
-		st_msg(why, whylen, "payload checksum mismatch");
+		txt_set(why, whylen, "payload checksum mismatch");
 		return -EBADMSG;
 	}
 	*payload_len = len;
@@ -286,12 +276,12 @@ static int st_load_one(int dfd, const char *name, void **buf, size_t *len, char 
 
 	ret = st_read_file(dfd, name, &img, &n);
 	if (ret == -EFBIG || ret == -EINVAL) {
-		st_msg(why, whylen, "%s", ret == -EFBIG ? "larger than any state file"
+		txt_set(why, whylen, "%s", ret == -EFBIG ? "larger than any state file"
 							: "not a regular file");
 		return -EBADMSG;
 	}
 	if (ret < 0) {
-		st_msg(why, whylen, "%s", strerror(-ret));
+		txt_set(why, whylen, "%s", strerror(-ret));
 		return ret;
 	}
 	ret = st_check(img, n, &plen, why, whylen);
@@ -311,16 +301,16 @@ int st_load(const char *dir, const char *name, void **buf, size_t *len, enum st_
 	char prev[ST_NAME_MAX + 16], why1[128], why2[128];
 	int dfd, r1, r2;
 
-	st_msg(msg, msglen, "%s", "");
+	txt_set(msg, msglen, "%s", "");
 	if (!st_name_ok(name)) {
-		st_msg(msg, msglen, "bad state file name");
+		txt_set(msg, msglen, "bad state file name");
 		return -EINVAL;
 	}
 	snprintf(prev, sizeof(prev), "%s.prev", name);
 	dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
 	if (dfd < 0) {
 		r1 = -errno;
-		st_msg(msg, msglen, "%s: %s", dir, strerror(-r1));
+		txt_set(msg, msglen, "%s: %s", dir, strerror(-r1));
 		return r1;
 	}
 	r1 = st_load_one(dfd, name, buf, len, why1, sizeof(why1));
@@ -335,10 +325,10 @@ int st_load(const char *dir, const char *name, void **buf, size_t *len, enum st_
 	if (r2 == 0) {
 		if (which)
 			*which = ST_PREV;
-		st_msg(msg, msglen, "%s: %s; loaded %s", name, why1, prev);
+		txt_set(msg, msglen, "%s: %s; loaded %s", name, why1, prev);
 		return 0;
 	}
-	st_msg(msg, msglen, "%s: %s; %s: %s", name, why1, prev, why2);
+	txt_set(msg, msglen, "%s: %s; %s: %s", name, why1, prev, why2);
 	if (r1 == -ENOENT && r2 == -ENOENT)
 		return -ENOENT;
 	/* Corruption outranks a missing copy; a read error outranks both. */

@@ -18,6 +18,7 @@
 
 #include "engine/core/hash.h"
 #include "engine/core/le.h"
+#include "input/txt.h"
 
 static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 
@@ -28,18 +29,6 @@ static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 #define REC_BUF 4096
 /* Largest render size a header may name (r_new's limit). */
 #define REC_RENDER_MAX 4096
-
-__attribute__((format(printf, 3, 4)))
-static void rec_msg(char *err, size_t errlen, const char *fmt, ...)
-{
-	va_list ap;
-
-	if (!err || !errlen)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(err, errlen, fmt, ap);
-	va_end(ap);
-}
 
 size_t rec_record_size(uint8_t hash_flags)
 {
@@ -89,12 +78,12 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 	struct rec_header d;
 
 	if (len < REC_HEADER_SIZE) {
-		rec_msg(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
+		txt_set(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
 			REC_HEADER_SIZE);
 		return -EINVAL;
 	}
 	if (memcmp(buf, rec_magic, sizeof(rec_magic)) != 0) {
-		rec_msg(err, errlen, "bad magic (not an arcaded recording)");
+		txt_set(err, errlen, "bad magic (not an arcaded recording)");
 		return -EINVAL;
 	}
 	memset(&d, 0, sizeof(d));
@@ -110,49 +99,49 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 	d.count = le_get32(buf + 32);
 	d.set.lives = buf[36];
 	if (d.version == 0) {
-		rec_msg(err, errlen, "version 0 is not a valid version");
+		txt_set(err, errlen, "version 0 is not a valid version");
 		return -EINVAL;
 	}
 	if (d.version > REC_VERSION_MAX) {
-		rec_msg(err, errlen, "version %u is newer than this build (%d)", d.version,
+		txt_set(err, errlen, "version %u is newer than this build (%d)", d.version,
 			REC_VERSION_MAX);
 		return -EINVAL;
 	}
 	if (d.version >= REC_VERSION_2 && len < REC_HEADER_SIZE_V2) {
-		rec_msg(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
+		txt_set(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
 			REC_HEADER_SIZE_V2);
 		return -EINVAL;
 	}
 	if (d.header_size < (d.version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE)) {
-		rec_msg(err, errlen, "header size %" PRIu32 " is smaller than %d", d.header_size,
+		txt_set(err, errlen, "header size %" PRIu32 " is smaller than %d", d.header_size,
 			d.version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE);
 		return -EINVAL;
 	}
 	if (d.header_size > REC_HEADER_SIZE_MAX) {
-		rec_msg(err, errlen, "header size %" PRIu32 " is larger than %u", d.header_size,
+		txt_set(err, errlen, "header size %" PRIu32 " is larger than %u", d.header_size,
 			REC_HEADER_SIZE_MAX);
 		return -EINVAL;
 	}
 	if (d.tick_rate != SIM_TICRATE) {
-		rec_msg(err, errlen, "tick rate %u is not %d", d.tick_rate, SIM_TICRATE);
+		txt_set(err, errlen, "tick rate %u is not %d", d.tick_rate, SIM_TICRATE);
 		return -EINVAL;
 	}
 	if (d.set.coins_per_credit < 1 || d.set.coins_per_credit > 9) {
-		rec_msg(err, errlen, "coins_per_credit %u out of range 1..9",
+		txt_set(err, errlen, "coins_per_credit %u out of range 1..9",
 			d.set.coins_per_credit);
 		return -EINVAL;
 	}
 	if (d.set.freeplay > 1 || d.set.start_in_play > 1) {
-		rec_msg(err, errlen, "freeplay %u / start_in_play %u is not 0 or 1",
+		txt_set(err, errlen, "freeplay %u / start_in_play %u is not 0 or 1",
 			d.set.freeplay, d.set.start_in_play);
 		return -EINVAL;
 	}
 	if (d.set.difficulty > 3) {
-		rec_msg(err, errlen, "difficulty %u out of range 0..3", d.set.difficulty);
+		txt_set(err, errlen, "difficulty %u out of range 0..3", d.set.difficulty);
 		return -EINVAL;
 	}
 	if (d.set.lives > 9) {
-		rec_msg(err, errlen, "lives %u out of range 0..9", d.set.lives);
+		txt_set(err, errlen, "lives %u out of range 0..9", d.set.lives);
 		return -EINVAL;
 	}
 	if (d.version >= REC_VERSION_2) {
@@ -165,18 +154,18 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		d.map_name[8] = '\0';
 		d.start_time = (int64_t)le_get64(buf + 64);
 		if (d.hash_flags & ~(REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_SNAPSHOT)) {
-			rec_msg(err, errlen, "hash flags 0x%02x unknown", d.hash_flags);
+			txt_set(err, errlen, "hash flags 0x%02x unknown", d.hash_flags);
 			return -EINVAL;
 		}
 		if (d.hash_flags & REC_HAS_SNAPSHOT) {
 			d.snapshot_len = le_get32(buf + 52);
 			d.snapshot_sum = le_get64(buf + 72);
 			if (d.snapshot_len == 0) {
-				rec_msg(err, errlen, "snapshot of 0 bytes");
+				txt_set(err, errlen, "snapshot of 0 bytes");
 				return -EINVAL;
 			}
 			if (d.snapshot_len > d.header_size - REC_HEADER_SIZE_V2) {
-				rec_msg(err, errlen,
+				txt_set(err, errlen,
 					"snapshot of %" PRIu32 " bytes does not fit in header size %" PRIu32,
 					d.snapshot_len, d.header_size);
 				return -EINVAL;
@@ -184,14 +173,14 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		}
 		if (d.render_w > REC_RENDER_MAX || d.render_h > REC_RENDER_MAX ||
 		    (d.render_w == 0) != (d.render_h == 0)) {
-			rec_msg(err, errlen, "render size %ux%u out of range", d.render_w,
+			txt_set(err, errlen, "render size %ux%u out of range", d.render_w,
 				d.render_h);
 			return -EINVAL;
 		}
 		for (int i = 0; i < 8; i++) {
 			unsigned char ch = (unsigned char)d.map_name[i];
 			if (ch != 0 && (ch < 0x21 || ch > 0x7e)) {
-				rec_msg(err, errlen, "map name is not printable ASCII");
+				txt_set(err, errlen, "map name is not printable ASCII");
 				return -EINVAL;
 			}
 		}
@@ -404,34 +393,34 @@ static int rec_read_snapshot(struct rec_reader *r, const char *path, uint64_t si
 	ssize_t got;
 
 	if (size < REC_HEADER_SIZE_V2 + (uint64_t)len) {
-		rec_msg(err, errlen, "%s: snapshot cut short (%" PRIu64 " of %" PRIu32 " bytes)",
+		txt_set(err, errlen, "%s: snapshot cut short (%" PRIu64 " of %" PRIu32 " bytes)",
 			path, size > REC_HEADER_SIZE_V2 ? size - REC_HEADER_SIZE_V2 : 0, len);
 		return -EINVAL;
 	}
 	r->snap = malloc(len);
 	if (!r->snap) {
-		rec_msg(err, errlen, "%s: out of memory", path);
+		txt_set(err, errlen, "%s: out of memory", path);
 		return -ENOMEM;
 	}
 	if (lseek(r->fd, REC_HEADER_SIZE_V2, SEEK_SET) < 0) {
 		int e = errno;
 
-		rec_msg(err, errlen, "%s: %s", path, strerror(e));
+		txt_set(err, errlen, "%s: %s", path, strerror(e));
 		return -e;
 	}
 	got = rec_read_all(r->fd, r->snap, len);
 	if (got < 0) {
-		rec_msg(err, errlen, "%s: %s", path, strerror((int)-got));
+		txt_set(err, errlen, "%s: %s", path, strerror((int)-got));
 		return (int)got;
 	}
 	if ((size_t)got < len) {
-		rec_msg(err, errlen, "%s: snapshot cut short (%zd of %" PRIu32 " bytes)", path, got,
+		txt_set(err, errlen, "%s: snapshot cut short (%zd of %" PRIu32 " bytes)", path, got,
 			len);
 		return -EINVAL;
 	}
 	sum = hash_bytes(HASH_INIT, r->snap, len);
 	if (sum != r->h.snapshot_sum) {
-		rec_msg(err, errlen,
+		txt_set(err, errlen,
 			"%s: snapshot damaged (checksum 0x%016" PRIx64 ", the header says 0x%016" PRIx64
 			")", path, sum, r->h.snapshot_sum);
 		return -EINVAL;
@@ -452,29 +441,29 @@ int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t
 
 	r = calloc(1, sizeof(*r));
 	if (!r) {
-		rec_msg(err, errlen, "%s: out of memory", path);
+		txt_set(err, errlen, "%s: out of memory", path);
 		return -ENOMEM;
 	}
 	r->fd = open(path, O_RDONLY | O_CLOEXEC);
 	if (r->fd < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto fail_free;
 	}
 	if (fstat(r->fd, &sb) < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto fail_close;
 	}
 	got = rec_read_all(r->fd, hdr, sizeof(hdr));
 	if (got < 0) {
 		ret = (int)got;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto fail_close;
 	}
 	ret = rec_header_decode(hdr, (size_t)got, &r->h, why, sizeof(why));
 	if (ret < 0) {
-		rec_msg(err, errlen, "%s: %s", path, why);
+		txt_set(err, errlen, "%s: %s", path, why);
 		goto fail_close;
 	}
 	if (r->h.snapshot_len) {
@@ -484,13 +473,13 @@ int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t
 	}
 	if ((uint64_t)sb.st_size < r->h.header_size) {
 		ret = -EINVAL;
-		rec_msg(err, errlen, "%s: file too short (%jd bytes, the header says %" PRIu32 ")",
+		txt_set(err, errlen, "%s: file too short (%jd bytes, the header says %" PRIu32 ")",
 			path, (intmax_t)sb.st_size, r->h.header_size);
 		goto fail_close;
 	}
 	if (lseek(r->fd, r->h.header_size, SEEK_SET) < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto fail_close;
 	}
 	r->recsize = rec_record_size(r->h.hash_flags);
@@ -598,7 +587,7 @@ int rec_check(const struct rec_header *h, uint64_t map_hash, char *err, size_t e
 			 n ? "; " : "", h->engine_version, REC_ENGINE_VERSION);
 	if (buf[0] == '\0')
 		return 0;
-	rec_msg(err, errlen, "%s", buf);
+	txt_set(err, errlen, "%s", buf);
 	return -EINVAL;
 }
 
@@ -680,7 +669,7 @@ int rec_check_run(const struct rec_header *h, const struct rec_run *run, char *e
 	}
 	if (n == 0)
 		return 0;
-	rec_msg(err, errlen, "%s", buf);
+	txt_set(err, errlen, "%s", buf);
 	return -EINVAL;
 }
 
@@ -702,13 +691,13 @@ void rec_verify_init(struct rec_verify *v, const struct rec_header *h, const str
 	if (!(h->hash_flags & REC_HAS_FRAME))
 		return;
 	if (run->render_w == 0)
-		rec_msg(v->note, sizeof(v->note), "frame hashes not compared: not rendering");
+		txt_set(v->note, sizeof(v->note), "frame hashes not compared: not rendering");
 	else if (h->render_w != run->render_w || h->render_h != run->render_h)
-		rec_msg(v->note, sizeof(v->note),
+		txt_set(v->note, sizeof(v->note),
 			"frame hashes not compared: recorded at %ux%u, rendering %ux%u",
 			h->render_w, h->render_h, run->render_w, run->render_h);
 	else if (h->render_version != REC_RENDER_VERSION)
-		rec_msg(v->note, sizeof(v->note),
+		txt_set(v->note, sizeof(v->note),
 			"frame hashes not compared: drawn by renderer version %" PRIu32
 			", this build draws version %d",
 			h->render_version, REC_RENDER_VERSION);
@@ -737,11 +726,11 @@ int rec_verify_tick(struct rec_verify *v, uint32_t tick, const struct rec_tick *
 	if (v->first_bad < 0) {
 		v->first_bad = tick;
 		if (sbad)
-			rec_msg(v->first, sizeof(v->first),
+			txt_set(v->first, sizeof(v->first),
 				"state hash recording 0x%016" PRIx64 ", replay 0x%016" PRIx64,
 				rec->state_hash, state);
 		else
-			rec_msg(v->first, sizeof(v->first),
+			txt_set(v->first, sizeof(v->first),
 				"frame hash recording 0x%016" PRIx64 ", replay 0x%016" PRIx64
 				" (state hashes equal)",
 				rec->frame_hash, frame);
@@ -757,7 +746,7 @@ int rec_verify_summary(const struct rec_verify *v, char *buf, size_t len)
 	if (v->note[0])
 		snprintf(note, sizeof(note), " (%s)", v->note);
 	if (v->first_bad >= 0) {
-		rec_msg(buf, len,
+		txt_set(buf, len,
 			"verify: FAILED: first difference at tick %" PRId64 ": %s; %" PRIu32
 			" state and %" PRIu32 " frame hashes differ of %" PRIu32 " ticks%s",
 			v->first_bad, v->first, v->state_bad, v->frame_bad, v->ticks, note);
@@ -765,10 +754,10 @@ int rec_verify_summary(const struct rec_verify *v, char *buf, size_t len)
 	}
 	ret = v->state_checked + v->frame_checked ? 0 : 1;
 	if (ret)
-		rec_msg(buf, len, "verify: %" PRIu32 " ticks, nothing compared: the recording "
+		txt_set(buf, len, "verify: %" PRIu32 " ticks, nothing compared: the recording "
 			"holds no hashes%s", v->ticks, note);
 	else
-		rec_msg(buf, len, "verify: %" PRIu32 " ticks, %" PRIu32 " state and %" PRIu32
+		txt_set(buf, len, "verify: %" PRIu32 " ticks, %" PRIu32 " state and %" PRIu32
 			" frame hashes equal%s", v->ticks, v->state_checked, v->frame_checked, note);
 	return ret;
 }
@@ -785,18 +774,18 @@ int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen)
 	fd = open(path, O_RDWR | O_CLOEXEC | O_NOFOLLOW);
 	if (fd < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		return ret;
 	}
 	if (fstat(fd, &sb) < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto out;
 	}
 	got = rec_read_all(fd, hdr, sizeof(hdr));
 	if (got < 0) {
 		ret = (int)got;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto out;
 	}
 	ret = rec_header_decode(hdr, (size_t)got, &h, err, errlen);
@@ -804,7 +793,7 @@ int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen)
 		goto out;
 	if ((uint64_t)sb.st_size < h.header_size) {
 		ret = -EINVAL;
-		rec_msg(err, errlen, "file too short for its header");
+		txt_set(err, errlen, "file too short for its header");
 		goto out;
 	}
 	if (h.count != REC_COUNT_UNKNOWN) {
@@ -816,14 +805,14 @@ int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen)
 		whole = REC_COUNT_UNKNOWN - 1;
 	if (ftruncate(fd, (off_t)(h.header_size + whole * rec_record_size(h.hash_flags))) < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto out;
 	}
 	le_put32(cnt, (uint32_t)whole);
 	errno = 0;
 	if (pwrite(fd, cnt, sizeof(cnt), 32) != (ssize_t)sizeof(cnt) || fsync(fd) < 0) {
 		ret = errno ? -errno : -EIO;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto out;
 	}
 	*count = (uint32_t)whole;
