@@ -139,22 +139,22 @@ int bind_parse_keys(const char *value, int keys[BIND_MAX], char *why, size_t why
 	return 0;
 }
 
-/* "action = name, name, ...": an empty value unbinds the action. */
-static void bind_entry(struct bind_ctx *x, int line, const char *action, const char *value)
+void bind_set_entry(int key[ACT_COUNT][BIND_MAX], struct cini_errs *err, int line,
+		    const char *action, const char *value)
 {
 	int keys[BIND_MAX];
 	int a = act_from_name(action);
 	char why[128];
 
 	if (a < 0) {
-		cini_report(&x->err, line, "unknown action '%s'", action);
+		cini_report(err, line, "unknown action '%s'", action);
 		return;
 	}
 	if (bind_parse_keys(value, keys, why, sizeof(why)) < 0) {
-		cini_report(&x->err, line, "%s: %s", action, why);
+		cini_report(err, line, "%s: %s", action, why);
 		return;
 	}
-	memcpy(x->cur[a], keys, sizeof(keys));
+	memcpy(key[a], keys, sizeof(keys));
 }
 
 static bool port_path(const char *p)
@@ -299,7 +299,7 @@ static void bind_ev(void *user, const struct cini_ev *ev)
 		if (ev->section[0] == '\0')
 			cini_report(&x->err, ev->line, "key '%s' is outside [keyboard]", ev->key);
 		else if (x->section_ok)
-			bind_entry(x, ev->line, ev->key, ev->value);
+			bind_set_entry(x->cur, &x->err, ev->line, ev->key, ev->value);
 		break;
 	}
 }
@@ -325,7 +325,8 @@ int bind_load(struct bind_table *b, const char *path, cfg_err_fn fn, void *user)
 	return cini_load_file(path, bind_load_any, b, fn, user);
 }
 
-int bind_lookup(const struct bind_table *b, int code, int *acts, int max)
+/* Up to max actions bound to code in one section's table. */
+static int bind_lookup_in(const int key[ACT_COUNT][BIND_MAX], int code, int *acts, int max)
 {
 	int n = 0;
 
@@ -333,13 +334,18 @@ int bind_lookup(const struct bind_table *b, int code, int *acts, int max)
 		return 0;
 	for (int a = 0; a < ACT_COUNT && n < max; a++) {
 		for (int i = 0; i < BIND_MAX; i++) {
-			if (b->key[a][i] == code) {
+			if (key[a][i] == code) {
 				acts[n++] = a;
 				break;
 			}
 		}
 	}
 	return n;
+}
+
+int bind_lookup(const struct bind_table *b, int code, int *acts, int max)
+{
+	return bind_lookup_in(b->key, code, acts, max);
 }
 
 const struct bind_dev *bind_find_device(const struct bind_table *b, const struct in_ident *id)
@@ -366,21 +372,8 @@ int bind_lookup_dev(const struct bind_table *b, const struct in_ident *id, int c
 		    int max)
 {
 	const struct bind_dev *d = bind_find_device(b, id);
-	int n = 0;
 
-	if (!d)
-		return bind_lookup(b, code, acts, max);
-	if (code < 0)
-		return 0;
-	for (int a = 0; a < ACT_COUNT && n < max; a++) {
-		for (int i = 0; i < BIND_MAX; i++) {
-			if (d->key[a][i] == code) {
-				acts[n++] = a;
-				break;
-			}
-		}
-	}
-	return n;
+	return bind_lookup_in(d ? d->key : b->key, code, acts, max);
 }
 
 static void bind_put_section(struct txt *o, const int key[ACT_COUNT][BIND_MAX])

@@ -125,22 +125,6 @@ static void profile_entry(struct prof_ctx *x, int line, const char *k, const cha
 	}
 }
 
-static void binding_entry(struct prof_ctx *x, int line, const char *k, const char *v)
-{
-	int a = act_from_name(k), keys[BIND_MAX];
-	char why[128];
-
-	if (a < 0) {
-		cini_report(&x->err, line, "unknown action '%s'", k);
-		return;
-	}
-	if (bind_parse_keys(v, keys, why, sizeof(why)) < 0) {
-		cini_report(&x->err, line, "%s: %s", k, why);
-		return;
-	}
-	memcpy(x->p->key[a], keys, sizeof(keys));
-}
-
 static void prof_ev(void *user, const struct cini_ev *ev)
 {
 	struct prof_ctx *x = user;
@@ -165,7 +149,7 @@ static void prof_ev(void *user, const struct cini_ev *ev)
 		if (x->sec == SEC_PROFILE)
 			profile_entry(x, ev->line, ev->key, ev->value);
 		else if (x->sec == SEC_BINDINGS)
-			binding_entry(x, ev->line, ev->key, ev->value);
+			bind_set_entry(x->p->key, &x->err, ev->line, ev->key, ev->value);
 		else if (x->sec == SEC_NONE)
 			cini_report(&x->err, ev->line,
 				    "key '%s' is outside [profile] and [bindings]", ev->key);
