@@ -546,6 +546,23 @@ static void hash_covers_the_current_map(void **state)
 	map_free(m2);
 }
 
+/* A line's opening: the higher floor and the lower ceiling of its two
+ * sectors (the fixture's 0/128 room and 8/56 opening: 8 and 56); none for
+ * a one-sided or ML_BLOCKING line. */
+static void a_line_opening_is_the_higher_floor_and_lower_ceiling(void **state)
+{
+	struct map *m = low_opening();
+	fx_t floor = 7, ceil = 7;
+	(void)state;
+	assert_int_equal(g_opening(m, &m->lines[2], &floor, &ceil), 0);
+	assert_int_equal(floor, 8 * FX_ONE);
+	assert_int_equal(ceil, 56 * FX_ONE);
+	assert_int_equal(g_opening(m, &m->lines[0], &floor, &ceil), -1);
+	m->lines[2].flags |= ML_BLOCKING;
+	assert_int_equal(g_opening(m, &m->lines[2], &floor, &ceil), -1);
+	map_free(m);
+}
+
 static void view_follows_the_player(void **state)
 {
 	struct map *m = steps();
@@ -959,6 +976,7 @@ int main(void)
 		cmocka_unit_test(same_commands_give_same_hashes_every_tick),
 		cmocka_unit_test(a_different_command_changes_the_hash),
 		cmocka_unit_test(hash_covers_the_current_map),
+		cmocka_unit_test(a_line_opening_is_the_higher_floor_and_lower_ceiling),
 		cmocka_unit_test(view_follows_the_player),
 		cmocka_unit_test(mode_names_round_trip),
 		cmocka_unit_test(clearing_a_stage_scores_a_bonus_and_loads_the_next),
