@@ -633,24 +633,14 @@ int rec_check_run(const struct rec_header *h, const struct rec_run *run, char *e
 		rec_join(buf, sizeof(buf), &n,
 			 "engine version differs: recording %" PRIu32 ", this build %d",
 			 h->engine_version, REC_ENGINE_VERSION);
-	if (h->set.coins_per_credit != run->set.coins_per_credit)
-		rec_join(buf, sizeof(buf), &n,
-			 "settings differ: coins_per_credit recording %u, this run %u",
-			 h->set.coins_per_credit, run->set.coins_per_credit);
-	if (h->set.freeplay != run->set.freeplay)
-		rec_join(buf, sizeof(buf), &n, "settings differ: freeplay recording %u, this run %u",
-			 h->set.freeplay, run->set.freeplay);
-	if (h->set.start_in_play != run->set.start_in_play)
-		rec_join(buf, sizeof(buf), &n,
-			 "settings differ: start_in_play recording %u, this run %u",
-			 h->set.start_in_play, run->set.start_in_play);
-	if (h->set.difficulty != run->set.difficulty)
-		rec_join(buf, sizeof(buf), &n,
-			 "settings differ: difficulty recording %u, this run %u",
-			 h->set.difficulty, run->set.difficulty);
-	if (h->set.lives != run->set.lives)
-		rec_join(buf, sizeof(buf), &n, "settings differ: lives recording %u, this run %u",
-			 h->set.lives, run->set.lives);
+	/* every setting, from the settings' field list (engine/game/sim.h) */
+#define REC_SETTING_DIFFERS(kind, type, name, limit)                                     \
+	if (h->set.name != run->set.name)                                                \
+		rec_join(buf, sizeof(buf), &n,                                           \
+			 "settings differ: " #name " recording %u, this run %u",          \
+			 h->set.name, run->set.name);
+	SIM_SETTINGS_FIELDS(REC_SETTING_DIFFERS)
+#undef REC_SETTING_DIFFERS
 	if (h->level && h->level != run->level)
 		rec_join(buf, sizeof(buf), &n, "level differs: recording %u, loaded %u", h->level,
 			 run->level);
