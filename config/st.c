@@ -103,24 +103,6 @@ static int st_name_ok(const char *name)
 	       strcmp(name, "..") != 0;
 }
 
-static int st_write_all(int fd, const uint8_t *p, size_t n)
-{
-	while (n) {
-		ssize_t w = write(fd, p, n);
-
-		if (w < 0) {
-			if (errno == EINTR)
-				continue;
-			return -errno;
-		}
-		if (w == 0)
-			return -EIO;
-		p += w;
-		n -= (size_t)w;
-	}
-	return 0;
-}
-
 /* Reads the whole file NAME in dfd (a regular file, not a link): 0 with
  * *img (malloc'd) and *n, or -errno (-EFBIG when it is larger than any
  * valid state file). */
@@ -190,7 +172,7 @@ static int st_write_tmp(int dfd, const char *tmp, const void *const *part, const
 	if (fd < 0)
 		return -errno;
 	for (int i = 0; i < nparts && ret == 0; i++)
-		ret = st_write_all(fd, part[i], plen[i]);
+		ret = io_write_all(fd, part[i], plen[i]);
 	if (ret == 0 && fsync(fd) < 0)
 		ret = -errno;
 	if (close(fd) < 0 && ret == 0 && errno != EINTR)

@@ -78,6 +78,26 @@ fail:
 	return ret;
 }
 
+int io_write_all(int fd, const void *p, size_t n)
+{
+	const uint8_t *b = p;
+
+	while (n) {
+		ssize_t w = write(fd, b, n);
+
+		if (w < 0) {
+			if (errno == EINTR)
+				continue;
+			return -errno;
+		}
+		if (w == 0)
+			return -EIO;
+		b += w;
+		n -= (size_t)w;
+	}
+	return 0;
+}
+
 int io_read_file(const char *path, size_t max, int flags, uint8_t **buf, size_t *len)
 {
 	struct stat sb;

@@ -1,6 +1,7 @@
 /*
- * io: reading a whole file into memory, the one copy of that loop (INI
- * files, test scripts, state files, HID report descriptors, WADs).
+ * io: reading a whole file into memory, and writing a whole buffer, the
+ * one copy of each loop (reads: INI files, test scripts, state files, HID
+ * report descriptors, WADs; writes: state files, recordings).
  *
  * Why in input/: the readers are in input/ (scripts, HID descriptors),
  * config/ (INI files, state files) and app/ (content); config is above
@@ -31,5 +32,9 @@ int io_read_fd(int fd, size_t max, uint8_t **buf, size_t *len);
 /* io_read_fd on path, opened O_RDONLY | O_CLOEXEC and closed again; flags:
  * IO_REGULAR or 0. A missing file is -ENOENT. */
 int io_read_file(const char *path, size_t max, int flags, uint8_t **buf, size_t *len);
+
+/* Writes the n bytes at p to fd, however many write() calls it takes
+ * (EINTR retried). 0, or -errno (-EIO when write makes no progress). */
+int io_write_all(int fd, const void *p, size_t n);
 
 #endif

@@ -18,6 +18,7 @@
 
 #include "engine/core/hash.h"
 #include "engine/core/le.h"
+#include "input/io.h"
 #include "input/txt.h"
 
 static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
@@ -215,22 +216,6 @@ void rec_cmd_decode(const uint8_t in[REC_CMD_SIZE], struct sim_cmd *c)
 	c->coins = in[5];
 }
 
-static int rec_write_all(int fd, const uint8_t *p, size_t n)
-{
-	while (n) {
-		ssize_t w = write(fd, p, n);
-
-		if (w < 0) {
-			if (errno == EINTR)
-				continue;
-			return -errno;
-		}
-		p += w;
-		n -= (size_t)w;
-	}
-	return 0;
-}
-
 /* Reads up to n bytes, fewer only at end of file. Returns the count or -errno. */
 static ssize_t rec_read_all(int fd, uint8_t *p, size_t n)
 {
@@ -288,9 +273,9 @@ int rec_writer_open(const char *path, const struct rec_header *h, struct rec_wri
 		ret = -errno;
 		goto fail_free;
 	}
-	ret = rec_write_all(w->fd, hdr, size);
+	ret = io_write_all(w->fd, hdr, size);
 	if (ret == 0 && hh.snapshot_len)
-		ret = rec_write_all(w->fd, hh.snapshot, hh.snapshot_len);
+		ret = io_write_all(w->fd, hh.snapshot, hh.snapshot_len);
 	if (ret < 0)
 		goto fail_close;
 	*out = w;
@@ -306,7 +291,7 @@ int rec_writer_flush(struct rec_writer *w)
 {
 	if (w->err)
 		return w->err;
-	w->err = rec_write_all(w->fd, w->buf, w->n);
+	w->err = io_write_all(w->fd, w->buf, w->n);
 	w->n = 0;
 	return w->err;
 }

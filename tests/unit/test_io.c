@@ -169,6 +169,38 @@ static void sizeless_files_and_the_fd_position(void **state)
 	rmdir(d.path);
 }
 
+/* Every byte is written (read back whole); the device's or the fd's
+ * error comes back as -errno. */
+static void write_all_writes_everything_or_says_why(void **state)
+{
+	static uint8_t data[300000];
+	struct dir d;
+	char p[128];
+	uint8_t *b;
+	size_t len;
+	int fd;
+	(void)state;
+	for (size_t i = 0; i < sizeof(data); i++)
+		data[i] = (uint8_t)((i * 7) & 255);
+	dir_make(&d);
+	snprintf(p, sizeof(p), "%s/w", d.path);
+	fd = open(p, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+	assert_true(fd >= 0);
+	assert_int_equal(io_write_all(fd, data, sizeof(data)), 0);
+	assert_int_equal(io_write_all(fd, data, 0), 0);
+	close(fd);
+	assert_int_equal(io_read_file(p, sizeof(data), 0, &b, &len), 0);
+	expect_content(b, len, sizeof(data));
+	free(b);
+	fd = open("/dev/full", O_WRONLY | O_CLOEXEC);
+	assert_true(fd >= 0);
+	assert_int_equal(io_write_all(fd, data, 10), -ENOSPC);
+	close(fd);
+	assert_int_equal(io_write_all(-1, data, 10), -EBADF);
+	unlink(p);
+	rmdir(d.path);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -177,6 +209,7 @@ int main(void)
 		cmocka_unit_test(missing_files_directories_and_devices),
 		cmocka_unit_test(a_pipe_is_read_to_its_end_within_max),
 		cmocka_unit_test(sizeless_files_and_the_fd_position),
+		cmocka_unit_test(write_all_writes_everything_or_says_why),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
