@@ -4,7 +4,8 @@
 # names, no platform library) is built with gcc -O0, gcc -O3, clang -O2,
 # gcc -O2 with UBSan (undefined behaviour such as signed overflow or bad
 # shifts is an error: it is what lets optimisers make builds differ) and
-# an aarch64 cross gcc (static, run under qemu-user). Every build replays every recording:
+# an aarch64 cross gcc (static, run under qemu-user). Every build replays
+# every recording:
 #   - the committed goldens tests/replay/*.rec,
 #   - recordings made now by the daemon from tests/replay/*.scr and
 #     tests/script/*.scr (one also with other coin settings and free play),
