@@ -55,7 +55,7 @@ SYSUSERSDIR ?= /usr/lib/sysusers.d
 TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
 .PHONY: all setup run test test-unit test-asan test-script test-replay test-clang \
-	check-layers check-tables check-systemd check-install check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
+	check-layers check-state check-tables check-systemd check-install check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
 
 all: $(BIN) $(GL_SO) tools
 
@@ -128,6 +128,10 @@ check-tables: $(BUILD)/tools/gentab
 
 check-layers:
 	@tests/check_layers.sh
+
+# A member of the sim's state outside its struct's field list stops the build.
+check-state:
+	@tests/check_state.sh
 
 # Appliance tests in a QEMU VM: systemd, the installed unit, real devices (docs/vm.md).
 test-vm: setup

@@ -59,6 +59,7 @@ fi
 passed=$((passed + 1))
 
 step check-layers make --no-print-directory check-layers
+step check-state make --no-print-directory check-state
 step check-tables make --no-print-directory check-tables
 step check-levels make --no-print-directory check-levels
 step check-systemd make --no-print-directory check-systemd
