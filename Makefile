@@ -54,7 +54,7 @@ UDEV_RULESDIR ?= /lib/udev/rules.d
 SYSUSERSDIR ?= /usr/lib/sysusers.d
 TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
-.PHONY: all setup run test test-unit test-asan test-script test-replay test-clang \
+.PHONY: all setup setup-test run test deb test-unit test-asan test-script test-replay test-clang \
 	check-layers check-tables check-systemd check-install check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
 
 all: $(BIN) $(GL_SO) tools
@@ -62,14 +62,24 @@ all: $(BIN) $(GL_SO) tools
 setup:
 	@scripts/setup.sh
 
+# What the tests, the package and the image need as well.
+setup-test:
+	@scripts/setup.sh test
+
 # `make run` goes straight into play; RUN_ARGS= (empty) boots into attract.
 RUN_ARGS ?= --play
 run: setup
 	@$(MAKE) --no-print-directory all
 	./$(BIN) $(RUN_ARGS)
 
-test: setup
+test: setup-test
 	@tests/run_all.sh
+
+# The Debian package (debian/, debhelper) of the work tree, version from git:
+# build/deb/arcaded_VERSION_ARCH.deb, linked as build/deb/arcaded.deb;
+# lintian's findings in build/deb/lintian.txt (docs/packaging.md).
+deb: setup-test
+	@scripts/deb.sh
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -130,7 +140,7 @@ check-layers:
 	@tests/check_layers.sh
 
 # Appliance tests in a QEMU VM: systemd, the installed unit, real devices (docs/vm.md).
-test-vm: setup
+test-vm: setup-test
 	@BUILD=$(BUILD) tests/vm/run.sh
 
 check-systemd:
