@@ -54,7 +54,7 @@ UDEV_RULESDIR ?= /lib/udev/rules.d
 SYSUSERSDIR ?= /usr/lib/sysusers.d
 TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
-.PHONY: all setup setup-test run test deb test-unit test-asan test-script test-replay test-clang \
+.PHONY: all setup setup-test run test deb image test-image test-pkg test-unit test-asan test-script test-replay test-clang \
 	check-layers check-tables check-systemd check-install check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
 
 all: $(BIN) $(GL_SO) tools
@@ -80,6 +80,22 @@ test: setup-test
 # lintian's findings in build/deb/lintian.txt (docs/packaging.md).
 deb: setup-test
 	@scripts/deb.sh
+
+# The cabinet's disk image (mmdebstrap, no loop device, no mount) with that
+# package installed: build/image/arcaded.img (docs/packaging.md). Cached in
+# ~/.cache/arcaded-image by its inputs.
+image: deb
+	@scripts/image.sh build/deb/arcaded.deb build/image
+
+# The image boots in QEMU (UEFI) to the attract screen and survives
+# POWERCUTS hard power cuts (default 20).
+POWERCUTS ?= 20
+test-image: image
+	@POWERCUTS=$(POWERCUTS) tests/image/run.sh build/image/arcaded.img
+
+# Install, start, stop, remove and purge of the package in a clean chroot.
+test-pkg: deb
+	@tests/pkg/run.sh build/deb/arcaded.deb
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(dir $@)
