@@ -39,12 +39,13 @@ RuntimeMaxUse=16M
 JOURNAL
 
 # No login on the screen: getty on tty1 masked; logind (which would start
-# gettys on other consoles, and needs D-Bus, not installed) masked too.
+# gettys on other consoles, and needs D-Bus, not installed) masked too, and
+# Debian's getty-static (gettys on tty2-6 when logind is missing).
 # The random seed cannot be saved on a read-only root: its service masked
 # (the kernel seeds its generator itself).
 # Timers that would write to the read-only root or reach for the network
 # (apt's daily runs, dpkg's database backup, LVM scrubbing) are masked.
-for u in getty@tty1.service systemd-logind.service systemd-random-seed.service \
+for u in getty@tty1.service getty-static.service systemd-logind.service systemd-random-seed.service \
 	apt-daily.timer apt-daily-upgrade.timer dpkg-db-backup.timer e2scrub_all.timer \
 	e2scrub_reap.service; do
 	ln -sf /dev/null "$R/etc/systemd/system/$u"
@@ -63,6 +64,18 @@ if ls "$H"/network/*.network > /dev/null 2>&1; then
 	cp "$H"/network/*.network "$R/etc/systemd/network/"
 	chroot "$R" systemctl enable systemd-networkd.service
 fi
+
+# Generators of what a cabinet does not have (SysV scripts, rc.local,
+# encrypted or verity volumes, hibernation, offline updates, partitions
+# found by type, gettys on serial and hypervisor consoles): seconds of
+# every boot on a small CPU. fstab's stays.
+mkdir -p "$R/etc/systemd/system-generators"
+for g in systemd-sysv-generator systemd-rc-local-generator systemd-cryptsetup-generator \
+	systemd-integritysetup-generator systemd-veritysetup-generator \
+	systemd-hibernate-resume-generator systemd-system-update-generator \
+	systemd-gpt-auto-generator systemd-getty-generator; do
+	ln -sf /dev/null "$R/etc/systemd/system-generators/$g"
+done
 
 # An empty machine-id: systemd makes a new one in memory at every boot
 # (the root is read-only), and no boot counts as a first boot.

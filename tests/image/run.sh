@@ -189,7 +189,7 @@ offline() {
 	if out=$(e2fsck -fn "$W/state.img" 2>&1); then
 		# ls -p: /inode/mode/uid/gid/name/size/ per entry
 		lf=$(debugfs -R 'ls -p /lost+found' "$W/state.img" 2>/dev/null |
-			awk -F/ '$2 != 0 && $6 != "." && $6 != ".." { printf "%s ", $6 }')
+			awk -F/ 'NF > 5 && $2 != 0 && $6 != "." && $6 != ".." { printf "%s ", $6 }')
 		if [ -z "$lf" ]; then
 			state_ok=$((state_ok + 1))
 		else

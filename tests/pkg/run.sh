@@ -12,7 +12,8 @@
 #            bookkeeping in /var/lib/arcaded (a chroot has no systemd
 #            running: starting and stopping through systemd is what the
 #            image test's boots show);
-#   remove   program, unit, rules and the enablement are gone; the
+#   remove   program, unit and rules are gone (the enablement link is
+#            left dangling until purge, as debhelper does); the
 #            configuration (conffiles) and the state stay (Debian policy);
 #   purge    the configuration and the state go too; then with the
 #            dependencies removed again (apt-get autoremove --purge) the
@@ -44,20 +45,22 @@ die() { echo "pkg-test: FAIL: $*"; exit 1; }
 [ "$(id -u)" = 0 ] || die "needs root (chroot)"
 mkdir -p "$cache/debs"
 
-key=$( (echo bookworm; cat "$sources" tests/pkg/run.sh) | sha256sum | cut -c1-16)
+# Keyed by what makes it: the suite, the packages and the sources.
+inc=systemd,systemd-sysv,udev
+key=$( (echo "bookworm minbase $inc"; cat "$sources") | sha256sum | cut -c1-16)
 base=$cache/chroot-$key.tar
 if [ ! -s "$base" ]; then
 	echo "pkg-test: making the clean chroot (mmdebstrap)"
 	find "$cache" -maxdepth 1 -name 'chroot-*.tar' -delete
-	mmdebstrap --variant=minbase --mode=root --include=systemd,systemd-sysv,udev \
+	mmdebstrap --variant=minbase --mode=root --include="$inc" \
 		--skip=download/empty \
 		--setup-hook='mkdir -p "$1/var/cache/apt/archives"' \
 		--setup-hook="cp -a '$cache/debs/.' \"\$1/var/cache/apt/archives/\"" \
 		--customize-hook="cp -a \"\$1/var/cache/apt/archives/.\" '$cache/debs/'" \
 		--customize-hook='rm -f "$1"/var/cache/apt/archives/*.deb' \
-		bookworm "$base.tmp" "$sources" < /dev/null > "$cache/chroot.log" 2>&1 ||
+		bookworm "$base.tmp.tar" "$sources" < /dev/null > "$cache/chroot.log" 2>&1 ||
 		{ tail -n 20 "$cache/chroot.log"; die "mmdebstrap"; }
-	mv "$base.tmp" "$base"
+	mv "$base.tmp.tar" "$base"
 fi
 T=$(mktemp -d "${TMPDIR:-/tmp}/arcaded-pkg.XXXXXX")
 trap 'rm -rf "$T"' EXIT
@@ -67,8 +70,12 @@ mkdir "$R" "$L"
 tar -xf "$base" -C "$R" || die "unpacking the chroot"
 # The packages apt would download again (dependencies of arcaded).
 cp -a "$cache/debs/." "$R/var/cache/apt/archives/"
-in() { chroot "$R" "$@"; }
-apt() { in env DEBIAN_FRONTEND=noninteractive apt-get -q -y -o Dpkg::Use-Pty=0 "$@"; }
+# Each command in the chroot runs in a mount namespace of its own with /proc
+# mounted (systemd-tmpfiles needs it), which goes away with the command.
+inr() {
+	unshare -m --propagation private sh -c 'mount -t proc proc "$0/proc" && exec chroot "$0" "$@"' "$R" "$@"
+}
+apt() { inr env DEBIAN_FRONTEND=noninteractive apt-get -q -y -o Dpkg::Use-Pty=0 "$@"; }
 # The tree as type, mode, owner and path; what apt and dpkg keep about
 # themselves, caches and logs left out.
 tree() {
@@ -78,19 +85,19 @@ tree() {
 }
 apt update > /dev/null 2>&1 || die "apt-get update in the chroot"
 tree > "$L/before"
-in getent passwd arcaded > /dev/null && die "the clean chroot already has a user arcaded"
+inr getent passwd arcaded > /dev/null && die "the clean chroot already has a user arcaded"
 
 cp "$deb" "$R/tmp/arcaded.deb"
 apt install --no-install-recommends /tmp/arcaded.deb > "$L/install.log" 2>&1
 check install "apt-get install ./$(basename "$deb"): $(grep -c '^Setting up' "$L/install.log") packages set up" \
-	in dpkg-query -W -f='${Status}' arcaded | grep -q 'install ok installed'
+	inr dpkg-query -W -f='${Status}' arcaded | grep -q 'install ok installed'
 [ -s "$L/install.log" ] && grep -E '^(E:|dpkg: error)' "$L/install.log"
-check enabled "systemctl is-enabled: $(in systemctl is-enabled arcaded.service 2>&1)" \
-	sh -c '[ "$(chroot "$1" systemctl is-enabled arcaded.service)" = enabled ] &&
+check enabled "systemctl is-enabled: $(inr systemctl is-enabled arcaded.service 2>&1)" \
+	sh -c '[ "$(chroot "$1" systemctl is-enabled arcaded.service 2>&1)" = enabled ] &&
 		[ "$(readlink "$1/etc/systemd/system/multi-user.target.wants/arcaded.service")" = /lib/systemd/system/arcaded.service ]' sh "$R"
-check user "$(in getent passwd arcaded)" sh -c 'chroot "$1" getent passwd arcaded | grep -q ":/var/lib/arcaded:" && chroot "$1" getent group arcaded > /dev/null' sh "$R"
-check state-dir "$(stat -c '%U:%G %a' "$R/var/lib/arcaded" 2>&1)" \
-	test "$(stat -c '%U:%G %a' "$R/var/lib/arcaded" 2>&1)" = "arcaded:arcaded 750"
+check user "$(inr getent passwd arcaded)" sh -c 'chroot "$1" getent passwd arcaded | grep -q ":/var/lib/arcaded:" && chroot "$1" getent group arcaded > /dev/null' sh "$R"
+sd=$(inr stat -c '%U:%G %a' /var/lib/arcaded 2>&1)
+check state-dir "/var/lib/arcaded $sd" test "$sd" = "arcaded:arcaded 750"
 missing=""
 for f in usr/bin/arcaded usr/lib/arcaded/arcaded-gl.so lib/systemd/system/arcaded.service \
 	lib/udev/rules.d/70-arcaded.rules usr/lib/sysusers.d/arcaded.conf usr/lib/tmpfiles.d/arcaded.conf \
@@ -105,20 +112,22 @@ check unit-execstart "$(grep '^ExecStart' "$R/lib/systemd/system/arcaded.service
 
 # Start and stop: the installed daemon as the service's user, with the
 # installed configuration and state directory (what the unit passes).
-out=$(in env STATE_DIRECTORY=/var/lib/arcaded setpriv --reuid=arcaded --regid=arcaded --init-groups \
+out=$(inr env STATE_DIRECTORY=/var/lib/arcaded setpriv --reuid=arcaded --regid=arcaded --init-groups \
 	/usr/bin/arcaded --display null --set input.evdev=none --set input.hid=none --ticks 120 2>&1)
 rc=$?
 check start-stop "exit $rc; $(echo "$out" | grep -c .) log lines; state: $(ls "$R/var/lib/arcaded" | tr '\n' ' ')" \
-	sh -c '[ "$1" = 0 ] && [ "$(stat -c %U "$2/var/lib/arcaded/books")" = arcaded ]' sh "$rc" "$R"
+	sh -c '[ "$1" = 0 ] && [ "$2" = arcaded ]' sh "$rc" "$(inr stat -c %U /var/lib/arcaded/books 2>&1)"
 
 apt remove arcaded > "$L/remove.log" 2>&1
 gone=""
 for f in usr/bin/arcaded usr/lib/arcaded lib/systemd/system/arcaded.service lib/udev/rules.d/70-arcaded.rules \
-	usr/lib/sysusers.d/arcaded.conf usr/lib/tmpfiles.d/arcaded.conf \
-	etc/systemd/system/multi-user.target.wants/arcaded.service; do
-	[ -e "$R/$f" ] || [ -L "$R/$f" ] && gone="$gone $f"
+	usr/lib/sysusers.d/arcaded.conf usr/lib/tmpfiles.d/arcaded.conf; do
+	[ -e "$R/$f" ] && gone="$gone $f"
 done
-check remove "program, unit, rules, enablement gone${gone:+; left:$gone}" test -z "$gone"
+# The wants link stays, dangling, until purge: debhelper keeps the
+# administrator's enablement for a reinstall (systemd ignores the link).
+check remove "program, unit, rules gone${gone:+; left:$gone}; service $(inr systemctl is-enabled arcaded.service 2>&1)" \
+	sh -c '[ -z "$1" ] && [ ! -e "$2/etc/systemd/system/multi-user.target.wants/arcaded.service" ]' sh "$gone" "$R"
 check remove-keeps "kept: $(ls "$R/etc/arcaded" | tr '\n' ' ')and /var/lib/arcaded: $(ls "$R/var/lib/arcaded" | tr '\n' ' ')" \
 	sh -c '[ -s "$1/etc/arcaded/arcaded.ini" ] && [ -s "$1/var/lib/arcaded/books" ]' sh "$R"
 
@@ -129,7 +138,7 @@ tree > "$L/after"
 left=$(diff "$L/before" "$L/after" | grep '^[<>]' |
 	grep -v -E ' \./etc/(passwd|group|shadow|gshadow)-?$')
 check purge-leaves-nothing "tree after purge and autoremove = tree before, but for the user and group kept${left:+; differs: $(echo "$left" | head -n 10 | tr '\n' ';')}" test -z "$left"
-check user-kept "$(in getent passwd arcaded)" sh -c 'chroot "$1" getent passwd arcaded > /dev/null' sh "$R"
+check user-kept "$(inr getent passwd arcaded)" sh -c 'chroot "$1" getent passwd arcaded > /dev/null' sh "$R"
 rm -f "$R".before "$R".after "$R".*.log
 echo "pkg-test: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
