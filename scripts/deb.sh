@@ -27,6 +27,8 @@ else
 fi
 
 mkdir -p "$out"
+# Only this build's package in $out (older versions would pile up).
+rm -f "$out"/arcaded_* "$out"/arcaded-dbgsym_* "$out/arcaded.deb"
 src=$out/arcaded-$version
 rm -rf "$src"
 mkdir -p "$src"

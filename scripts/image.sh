@@ -13,7 +13,8 @@
 # Cached in $ARCADED_IMAGE_CACHE (default ~/.cache/arcaded-image), keyed by
 # the package, debian/image/, this script and the apt sources: a rerun with
 # the same inputs copies the cached image. The downloaded .debs are kept
-# there too, so a rebuild after a change downloads nothing new.
+# there too (essential ones included), so a rebuild after a change
+# downloads nothing new.
 # Environment: ARCADED_IMAGE_SOURCES (apt sources for mmdebstrap, default
 # this machine's Debian ones), ARCADED_IMAGE_SUITE (default bookworm).
 set -eu
@@ -64,7 +65,7 @@ mmdebstrap --variant=minbase --mode=root \
 	--dpkgopt='path-exclude=/usr/share/doc/*' --dpkgopt='path-include=/usr/share/doc/*/copyright' \
 	--dpkgopt='path-exclude=/usr/share/man/*' --dpkgopt='path-exclude=/usr/share/info/*' \
 	--dpkgopt='path-exclude=/usr/share/locale/*' --dpkgopt='path-include=/usr/share/locale/locale.alias' \
-	--skip=download/empty \
+	--skip=download/empty --skip=essential/unlink \
 	--setup-hook='mkdir -p "$1/var/cache/apt/archives"' \
 	--setup-hook="cp -a '$cache/debs/.' \"\$1/var/cache/apt/archives/\"" \
 	--setup-hook="mkdir -p \"\$1/etc/initramfs-tools/conf.d\" \"\$1/etc/initramfs-tools/hooks\"" \

@@ -65,6 +65,18 @@ if ls "$H"/network/*.network > /dev/null 2>&1; then
 	chroot "$R" systemctl enable systemd-networkd.service
 fi
 
+# Services of what a cabinet does not do: logins (utmp records, the
+# nologin file), a persistent journal to flush to, crash records in EFI
+# variables (pstore). Every started program costs on a small CPU.
+for u in systemd-update-utmp.service systemd-update-utmp-runlevel.service \
+	systemd-user-sessions.service systemd-journal-flush.service systemd-pstore.service; do
+	ln -sf /dev/null "$R/etc/systemd/system/$u"
+done
+# Kernel modules udev would load for what a cabinet does not use: running
+# virtual machines, the PC speaker, floppy drives.
+mkdir -p "$R/etc/modprobe.d"
+printf 'blacklist %s\n' kvm kvm_intel kvm_amd pcspkr floppy > "$R/etc/modprobe.d/arcaded-image.conf"
+
 # Generators of what a cabinet does not have (SysV scripts, rc.local,
 # encrypted or verity volumes, hibernation, offline updates, partitions
 # found by type, gettys on serial and hypervisor consoles): seconds of

@@ -86,6 +86,28 @@ state_start0=$1
 state_size0=$2
 root_written0=$(dumpe2fs -h "$img?offset=$root_off" 2>/dev/null | sed -n 's/^Last write time: *//p')
 
+# What the image says about its boot, read from the image itself: the
+# entry's kernel options silence kernel, initramfs and systemd and hide the
+# cursor; the root is mounted read-only; no getty on tty1; no network
+# service enabled.
+set -- $(part 1)
+opts=$(mtype -i "$img@@$(($1 * 512))" ::/loader/entries/arcaded.conf 2>/dev/null | sed -n 's/^options //p')
+miss=""
+for o in ro quiet loglevel=0 systemd.show_status=0 vt.global_cursor_default=0; do
+	case " $opts " in *" $o "*) ;; *) miss="$miss $o" ;; esac
+done
+if [ -z "$miss" ]; then result PASS boot-entry-quiet "options: $opts"; else
+	result FAIL boot-entry-quiet "missing:$miss in: $opts"; fi
+rdbg() { debugfs -R "$1" "$img?offset=$root_off" 2>/dev/null; }
+g=$(rdbg 'stat /etc/systemd/system/getty@tty1.service' | sed -n 's/^Fast link dest: "\(.*\)"/\1/p')
+net=$(rdbg 'ls /etc/systemd/system/multi-user.target.wants' | tr -s ' ' '\n' | grep -E -c 'network|ssh|dhc|ifup' )
+fstab_root=$(rdbg 'cat /etc/fstab' | awk '$2 == "/" { print $4 }')
+if [ "$g" = /dev/null ] && [ "$net" = 0 ] && echo ",$fstab_root," | grep -q ',ro,'; then
+	result PASS image-config "getty@tty1 masked, no network service enabled, fstab mounts / with $fstab_root"
+else
+	result FAIL image-config "getty@tty1 -> '$g', $net network services enabled, / mounted with '$fstab_root'"
+fi
+
 if [ "${ARCADED_IMAGE_DEBUG:-}" = 1 ]; then
 	set -- $(part 1)
 	esp="$disk@@$(($1 * 512))"
@@ -112,16 +134,25 @@ game() { # screen.ppm
 	[ "${1:-0}" -ge $((${2:-1} / 3)) ]
 }
 
+# Is the firmware's logo on the screen? OVMF centres it: something lit on
+# the screen's middle row within 96 pixels of the centre.
+logo() { # screen.ppm (P6, 8-bit)
+	set -- "$1" $(head -c 20 "$1" | tr -s ' \n' '  ' | cut -d' ' -f2,3)
+	hdr=$(head -c 20 "$1" | awk 'NR <= 3 { n += length($0) + 1 } END { print n }')
+	tail -c +$((hdr + ($3 / 2 * $2 + $2 / 2 - 96) * 3 + 1)) "$1" | head -c 576 | od -An -tu1 |
+		tr -s ' \n' '\n\n' | grep -q '[1-9]'
+}
+
 # Starts QEMU on the disk; returns when the attract screen shows (0) or not
 # within TIMEOUT (1). Sets t_frame (QEMU start to the first frame) and
-# boot_text: screens lit between the firmware's (its logo and messages,
-# not the image's to silence) and the game, after the screen went black.
+# boot_text: screens lit before the game but after the firmware's logo went
+# (the kernel's), kept as boot-text-N.ppm.
 boot() { # name
 	res=$B/boot-$1
 	rm -rf "$res"
 	mkdir -p "$res"
 	t0=$(now)
-	qemu-system-x86_64 -nodefaults -machine pc -accel tcg,thread=multi -cpu max -smp 2 -m 512 \
+	qemu-system-x86_64 -nodefaults -machine q35 -accel tcg,thread=multi -cpu qemu64 -smp 2 -m 512 \
 		-vga std -display none \
 		-drive if=pflash,format=raw,readonly=on,file="$CODE" \
 		-drive if=pflash,format=raw,file="$W/vars.fd" \
@@ -130,7 +161,7 @@ boot() { # name
 		> "$res/qemu.log" 2>&1 &
 	qpid=$!
 	n=0
-	phase=0
+	fw=0
 	boot_text=0
 	t_frame=""
 	while kill -0 "$qpid" 2>/dev/null; do
@@ -142,16 +173,18 @@ boot() { # name
 				cp "$s" "$res/first-frame.ppm"
 				break
 			fi
-			# phase 0: nothing lit yet; 1: the firmware's logo and
-			# text; 2: black again, the kernel has the screen: from
-			# here anything lit before the game is boot text.
+			# The firmware's own screens (its logo in the middle, its
+			# messages) are not the image's to silence and are not
+			# judged; once the logo has been and gone the kernel has
+			# the screen, and anything lit before the game is boot text.
+			# Before the logo, QEMU's own "Guest has not initialized
+			# the display" shows: not judged either.
 			l=$(lit "$s")
 			if [ "${l:-0}" = 0 ]; then
-				[ "$phase" = 1 ] && phase=2
 				rm -f "$s"
-			elif [ "$phase" = 0 ]; then
-				phase=1
-			elif [ "$phase" = 2 ]; then
+			elif logo "$s"; then
+				fw=1
+			elif [ "$fw" = 1 ]; then
 				boot_text=$((boot_text + 1))
 				cp "$s" "$res/boot-text-$boot_text.ppm"
 			fi
@@ -312,6 +345,10 @@ done
 [ "$quiet_bad" -eq 0 ] || result FAIL quiet-boot "$quiet_bad boots showed something between black and the game"
 [ "$root_ok" -eq "$CUTS" ] && result PASS root-never-repaired "$root_ok of $CUTS cuts: e2fsck -fn clean, never written"
 [ "$state_ok" -eq "$CUTS" ] && result PASS state-fsck-nothing-lost "$state_ok of $CUTS cuts: journal replayed, e2fsck -fn clean, lost+found empty"
+# Some coins must have been kept at all: a state directory that never
+# reaches the disk would pass every check above with nothing saved.
+if [ "$coins_known" -gt 0 ]; then result PASS state-persists "$coins_known coins kept over $CUTS cuts"; else
+	result FAIL state-persists "no coin was ever found saved ($coins_sent inserted)"; fi
 [ "$loads_ok" -eq "$CUTS" ] && result PASS state-loads "$loads_ok of $CUTS cuts: bookkeeping checks out ($from_prev from books.prev), $coins_known of $coins_sent coins kept"
 first=$(echo "$frames" | awk '{ print $1 }')
 rest=$(echo "$frames" | tr ' ' '\n' | sed 1,2d | sort -n | awk '{ a[NR] = $1 } END { if (NR) printf "median %s s, max %s s", a[int((NR + 1) / 2)], a[NR] }')

@@ -53,7 +53,7 @@ if [ ! -s "$base" ]; then
 	echo "pkg-test: making the clean chroot (mmdebstrap)"
 	find "$cache" -maxdepth 1 -name 'chroot-*.tar' -delete
 	mmdebstrap --variant=minbase --mode=root --include="$inc" \
-		--skip=download/empty \
+		--skip=download/empty --skip=essential/unlink \
 		--setup-hook='mkdir -p "$1/var/cache/apt/archives"' \
 		--setup-hook="cp -a '$cache/debs/.' \"\$1/var/cache/apt/archives/\"" \
 		--customize-hook="cp -a \"\$1/var/cache/apt/archives/.\" '$cache/debs/'" \
@@ -81,7 +81,7 @@ apt() { inr env DEBIAN_FRONTEND=noninteractive apt-get -q -y -o Dpkg::Use-Pty=0 
 tree() {
 	(cd "$R" && find . -xdev \( -path ./var/cache -o -path ./var/lib/apt -o -path ./var/lib/dpkg \
 		-o -path ./var/log -o -path ./tmp -o -path ./proc -o -path ./dev -o -path ./sys \
-		-o -path ./etc/ld.so.cache \) -prune -o -printf '%y %m %u:%g %p\n' | sort)
+		-o -path ./etc/ld.so.cache \) -prune -o -printf '%y %m %U:%G %p\n' | sort)
 }
 apt update > /dev/null 2>&1 || die "apt-get update in the chroot"
 tree > "$L/before"
