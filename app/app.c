@@ -1052,11 +1052,14 @@ static int setup(struct app *a)
 		rw = a->o->size_w;
 		rh_h = a->o->size_h;
 	}
+	spec.stop = &app_stop_sig;      /* a stop signal ends a long load */
 	rc = ct_load(&a->ct, &spec, err, sizeof(err));
 	if (rc < 0) {
 		logf_("%s", err);
 		return rc;
 	}
+	if (a->ct.note[0])
+		logf_("%s", a->ct.note);
 	a->map = a->ct.map;
 	a->tex = a->ct.tex;
 	logf_("content: %s, %u sectors, %u lines, %d light(s)%s", a->ct.what, a->map->num_sectors,
@@ -1464,7 +1467,8 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 	install_signals();
 	rc = setup(a);
 	if (rc < 0) {
-		code = APP_SETUP_FAILED;
+		/* stopped by a signal while loading: an ordinary end */
+		code = rc == -ECANCELED && app_stop_sig ? APP_OK : APP_SETUP_FAILED;
 		goto out;
 	}
 	loop(a);
