@@ -54,8 +54,9 @@ int main(int argc, char **argv)
 	bad |= put(argv[1], "lights30000.wad", img, len);
 	img = hf_lit_lines(4096, 1000, &len);
 	bad |= put(argv[1], "litlines.wad", img, len);
-	img = hf_markers(40000, &len);
-	bad |= put(argv[1], "markers40000.wad", img, len);
+	/* 100,000 markers: the quadratic listing took 8.7 s for 40,000 */
+	img = hf_markers(100000, &len);
+	bad |= put(argv[1], "markers100000.wad", img, len);
 	img = hf_heights(32730, 32760, &len);
 	bad |= put(argv[1], "high.wad", img, len);
 	return bad;

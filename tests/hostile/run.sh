@@ -69,7 +69,8 @@ case_() {
 	start "$wad"
 	wait_for "$GUARD"
 	ms=$(($(now_ms) - t0))
-	echo "FIGURE hostile $wad: $ms ms, peak RSS $hwm KiB, exit $rc"
+	[ "$hwm" -gt 0 ] && rss="peak RSS $hwm KiB" || rss="ended before an RSS sample"
+	echo "FIGURE hostile $wad: $ms ms, $rss, exit $rc"
 	if [ "$rc" -eq 124 ]; then
 		bad "$wad: still running after ${GUARD} s (killed)"
 	elif [ "$rc" -ne "$want" ] || ! grep -qF -- "$text" "$tmp/err"; then
@@ -86,7 +87,7 @@ case_ cross2004.wad 2 "cross2004.wad: MAP01: NODES (built here): node builder: 2
 case_ cross30004.wad 2 "cross30004.wad: MAP01: NODES (built here): node builder: 30008 lines need more than 268435456 steps (limit NB_MAX_STEPS)"
 case_ lights30000.wad 0 "lights30000.wad: MAP01: THINGS: 30000 lights, more than the limit of 4096 (LMAP_MAX_LIGHTS): drawn without light maps"
 case_ litlines.wad 0 "litlines.wad: MAP01: THINGS: light maps need more than 209715200 steps (limit LMAP_MAX_STEPS): drawn without light maps"
-case_ markers40000.wad 0 "content: $tmp/w/markers40000.wad MAP01"
+case_ markers100000.wad 0 "content: $tmp/w/markers100000.wad MAP01"
 
 # signal SIG WAD: SIG sent 0.3 s into the load of WAD ends it
 signal_() {
