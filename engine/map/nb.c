@@ -332,8 +332,9 @@ static int nb_classify(struct nb *b, const struct nb_part *p, const struct nb_se
 	return c2 < 0 ? NB_FRONT : NB_BACK;
 }
 
-/* Picks the best partition for set[0..n), or returns 0 if the set is convex. */
-/* Steps taken: n per candidate tried, and the links walked meanwhile. */
+/* Picks the best partition for set[0..n): 1, 0 if the set is convex, or a
+ * negative errno. Steps taken: n per candidate tried, and the links walked
+ * meanwhile. */
 static int nb_choose(struct nb *b, const struct nb_seg *set, uint32_t n, struct nb_part *best)
 {
 	uint32_t *cand;

@@ -278,9 +278,9 @@ int tex_find_flat(const struct tex_set *t, const char *name)
 	return -1;
 }
 
-/* Sorts by[0..n) (indices of textures, or flats) by name, then index: an
- * insertion-free merge sort on a scratch array, so equal names keep index
- * order and the work is n log n whatever the names. */
+/* Sorts by[0..n) (indices of textures, or flats) by name, then index: a
+ * bottom-up merge sort through a scratch array, stable (equal names keep
+ * index order) and n log n whatever the names. */
 static void tex_sort_names(const struct tex_set *t, int flat, uint16_t *by, uint16_t *tmp, int n)
 {
 	for (int width = 1; width < n; width *= 2) {
