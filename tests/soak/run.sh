@@ -58,9 +58,8 @@ check "peak RSS does not grow ($rss10 vs $rss1m KiB)" \
 # (built as tests/xbuild/run.sh builds it; that test proves it prints the
 # daemon's hashes).
 CC=${CC:-cc}
-if $CC -std=c11 -O2 -I. -D_GNU_SOURCE -o "$tmp/replay" tests/xbuild/replay.c \
-	engine/core/*.c engine/map/*.c engine/game/*.c engine/render/*.c engine/ui/*.c \
-	input/rec.c input/scr.c input/act.c app/ct.c app/view.c app/demo.c app/cmd.c 2>"$tmp/cc.err"; then
+# shellcheck disable=SC2046
+if $CC -std=c11 -O2 -I. -D_GNU_SOURCE -o "$tmp/replay" $(sh tests/xbuild/src.sh) 2>"$tmp/cc.err"; then
 	"$tmp/replay" --no-render --quiet --modes "$tmp/soak.rec" 2>"$tmp/modes.err"
 	modes=$(grep '^modes:' "$tmp/modes.err")
 	echo "soak: $modes"

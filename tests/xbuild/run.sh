@@ -54,7 +54,7 @@ fi
 # ---- builds --------------------------------------------------------------
 WARN="-std=c11 -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes"
 FLAGS="$WARN -fno-strict-aliasing -I. -D_GNU_SOURCE"
-SRC="tests/xbuild/replay.c $(ls engine/core/*.c engine/map/*.c engine/game/*.c engine/render/*.c engine/ui/*.c | tr '\n' ' ') input/rec.c input/scr.c input/act.c input/io.c input/txt.c app/ct.c app/view.c app/demo.c app/cmd.c"
+SRC=$(sh tests/xbuild/src.sh)
 build() { # $1 name; rest: compiler and flags
 	name=$1; shift
 	# shellcheck disable=SC2086
