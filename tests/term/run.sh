@@ -1,7 +1,8 @@
 #!/bin/sh
 # Terminal preview, as `make run` shows it: the daemon runs in a tmux pane,
 # draws the level with half-block characters, and keys typed into the pane
-# move the view (the picture changes); Ctrl-C ends it cleanly.
+# move the view (the picture changes), one tap moves the service menu's
+# cursor one item; Ctrl-C ends it cleanly.
 # Usage: tests/term/run.sh path/to/arcaded
 set -u
 BIN=$(realpath "$1")
@@ -38,6 +39,27 @@ done
 sleep 0.4
 tmux -S "$sock" capture-pane -p -e > "$tmp/c"
 check "W moves the view (picture changed)" $(! cmp -s "$tmp/b" "$tmp/c"; echo $?)
+# One tap moves the service menu's cursor once (the terminal sends one byte
+# for a tap, and the key decoder must not hold it past the menu's repeat
+# delay). Service (9), then fire (space) on the first item opens INPUT;
+# service goes back to the list with the cursor kept; one Down tap and fire
+# must open the next item, DISPLAY, whose first screen is eight colour bars
+# across the top of the picture. The INPUT page before it shows that the
+# count can fail.
+tap() { tmux -S "$sock" send-keys "$1"; sleep 0.8; }
+# distinct 24-bit colours on the picture's first line
+top_colours() {
+	tmux -S "$sock" capture-pane -p -e | head -n 1 |
+		grep -o '[34]8;2;[0-9]*;[0-9]*;[0-9]*' | sed 's/^[34]8;2;//' | sort -u | wc -l
+}
+tap 9; tap Space
+n_input=$(top_colours)
+tap 9; tap Down; tap Space
+n_display=$(top_colours)
+check "the INPUT page has fewer than 8 colours on its top line ($n_input)" \
+	$([ "$n_input" -lt 8 ]; echo $?)
+check "one Down tap moves the menu cursor one item: DISPLAY's 8 colour bars ($n_display colours on the top line)" \
+	$([ "$n_display" -eq 8 ]; echo $?)
 tmux -S "$sock" send-keys C-c
 i=0
 while [ $i -lt 50 ] && [ ! -s "$tmp/status" ]; do sleep 0.1; i=$((i + 1)); done
