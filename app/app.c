@@ -264,7 +264,7 @@ static int setup_game(struct app *a, int *rw, int *rh)
 	}
 	rc = ct_load(&a->ct, &spec, err, sizeof(err));
 	if (rc < 0) {
-		say("%s", err);
+		say_err("%s", err);
 		return rc;
 	}
 	say("content: %s, %u sectors, %u lines, %d light(s)%s", a->ct.what, a->ct.map->num_sectors,
@@ -324,7 +324,7 @@ static int setup(struct app *a)
 	keep_flight_open(&a->keep, c->recorder.keep, c->recorder.max_mb, a->map_hash, &o->content);
 	rc = demo_init(&a->demo, &a->ct, err, sizeof(err));
 	if (rc < 0) {
-		say("%s", err);
+		say_err("%s", err);
 		return rc;
 	}
 	rc = scene_init(&a->scene, c, &a->ct, o->gl, rw, rh);
@@ -382,7 +382,7 @@ static int finish(struct app *a)
 	if (o->screenshot) {
 		int rc = shot_png(o->screenshot, f->px, f->w, f->h, f->pitch, a->ct.tex->pal.rgb);
 		if (rc < 0) {
-			say("%s: %s", o->screenshot, strerror(-rc));
+			say_err("%s: %s", o->screenshot, strerror(-rc));
 			code = APP_SETUP_FAILED;
 		}
 	}
@@ -390,7 +390,7 @@ static int finish(struct app *a)
 		code = APP_EXPECT_FAILED;
 	if (a->script.scr) {
 		if (a->script.failures)
-			say("%s: %d check(s) failed", o->script, a->script.failures);
+			say_err("%s: %d check(s) failed", o->script, a->script.failures);
 		code = a->script.failures ? APP_EXPECT_FAILED : APP_OK;
 	}
 	/* The summary while everything is still open: its fd count is the
@@ -406,7 +406,7 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 	int code = APP_SETUP_FAILED;
 
 	if (!a) {
-		say("out of memory");
+		say_err("out of memory");
 		return APP_SETUP_FAILED;
 	}
 	a->cfg = c;

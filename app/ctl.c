@@ -43,12 +43,12 @@ void ctl_load(struct ctl *c, const struct cfg *cfg, const char *config_dir, cons
 	if (cfg->input.bindings[0]) {
 		rc = bind_load(&c->binds, cfg->input.bindings, say_cfg, NULL);
 		if (rc == -ENOENT)
-			say("%s: %s", cfg->input.bindings, strerror(-rc));
+			say_warn("%s: %s", cfg->input.bindings, strerror(-rc));
 	}
 	if (extra) {
 		rc = bind_load(&c->binds, extra, say_cfg, NULL);
 		if (rc < 0)
-			say("%s: %s", extra, strerror(-rc));
+			say_warn("%s: %s", extra, strerror(-rc));
 	}
 	c->wiz_auto = persist && !saved;
 	prof_init(&c->profs);
@@ -71,7 +71,7 @@ void ctl_wizard_start(struct ctl *c, const char *why)
 		return;
 	if (rec) {
 		/* its screens are not the sim's: they would not replay */
-		say("input wizard: not while recording (%s)", rec);
+		say_warn("input wizard: not while recording (%s)", rec);
 		return;
 	}
 	c->wiz_auto = 0;
@@ -92,7 +92,7 @@ static void ctl_wizard_save(struct ctl *c)
 	int rc;
 
 	if (!t) {
-		say("input wizard: bindings not saved: out of memory");
+		say_err("input wizard: bindings not saved: out of memory");
 		return;
 	}
 	/* What the operator set: [keyboard] and every device section except
@@ -111,7 +111,7 @@ static void ctl_wizard_save(struct ctl *c)
 	text = malloc(n + 1);
 
 	if (!text) {
-		say("input wizard: bindings not saved: out of memory");
+		say_err("input wizard: bindings not saved: out of memory");
 		free(t);
 		return;
 	}
@@ -119,7 +119,7 @@ static void ctl_wizard_save(struct ctl *c)
 	free(t);
 	rc = dir[0] ? st_write_plain(dir, "bindings.ini", text, n) : -ENOENT;
 	if (rc < 0)
-		say("input wizard: %s/bindings.ini not saved: %s (the bindings apply until the "
+		say_err("input wizard: %s/bindings.ini not saved: %s (the bindings apply until the "
 		    "daemon stops)", dir, strerror(-rc));
 	else
 		say("input wizard: bindings saved in %s/bindings.ini", dir);
@@ -169,7 +169,7 @@ static void ctl_opened(void *ctx, struct slot *s)
 		}
 		if (s->be->configure && p->hid[0] &&
 		    s->be->configure(s->dev, p->hid, why, sizeof(why)) < 0)
-			say("input %s: profile %s: %s", s->be->name, p->name, why);
+			say_warn("input %s: profile %s: %s", s->be->name, p->name, why);
 		say("input %s: %s: profile %s", s->be->name, s->be->describe(s->dev), p->name);
 	}
 	if (!named && c->wiz_auto && (s->be->flags & IN_NEEDS_BINDINGS)) {

@@ -138,6 +138,8 @@ int main(int argc, char **argv)
 	int nsets = 0, print_config = 0, no_lights = 0, opt;
 	struct cfg c;
 
+	/* under systemd, lines carry their priority for the journal */
+	say_open();
 	while ((opt = getopt_long(argc, argv, "", opts, NULL)) != -1) {
 		const char *prefix = NULL;
 		switch (opt) {
@@ -160,7 +162,7 @@ int main(int argc, char **argv)
 			errno = 0;
 			v = strtoul(optarg, &end, 10);
 			if (errno || *end || end == optarg || v >= 0xffffffffu) {
-				fprintf(stderr, "arcaded: --%s: '%s' is not a tick number\n",
+				say_err("--%s: '%s' is not a tick number",
 					opt == O_TICKS ? "ticks" : "until", optarg);
 				return 2;
 			}
@@ -173,7 +175,7 @@ int main(int argc, char **argv)
 			if (strcmp(optarg, "gl") == 0) {
 				o.gl = 1;
 			} else if (strcmp(optarg, "software") != 0) {
-				fprintf(stderr, "arcaded: --renderer: '%s' is not software or gl\n",
+				say_err("--renderer: '%s' is not software or gl",
 					optarg);
 				return 2;
 			}
@@ -182,7 +184,7 @@ int main(int argc, char **argv)
 			char x;
 			if (sscanf(optarg, "%d%c%d", &o.size_w, &x, &o.size_h) != 3 || x != 'x' ||
 			    o.size_w < 64 || o.size_w > 4096 || o.size_h < 48 || o.size_h > 4096) {
-				fprintf(stderr, "arcaded: --size: '%s' is not WxH within 64x48..4096x4096\n",
+				say_err("--size: '%s' is not WxH within 64x48..4096x4096",
 					optarg);
 				return 2;
 			}
@@ -193,7 +195,7 @@ int main(int argc, char **argv)
 		case O_PRINT_CONFIG: print_config = 1; break;
 		case O_WAD:
 			if (o.content.nwads == CT_MAX_WADS) {
-				fprintf(stderr, "arcaded: more than %d --wad files\n", CT_MAX_WADS);
+				say_err("more than %d --wad files", CT_MAX_WADS);
 				return 2;
 			}
 			o.content.wads[o.content.nwads++] = optarg;
@@ -207,7 +209,7 @@ int main(int argc, char **argv)
 		}
 		if (prefix) {
 			if (nsets == MAX_SETS) {
-				fprintf(stderr, "arcaded: more than %d --set options\n", MAX_SETS);
+				say_err("more than %d --set options", MAX_SETS);
 				return 2;
 			}
 			snprintf(sets[nsets++], sizeof(sets[0]), "%s%s", prefix, optarg);
@@ -221,27 +223,27 @@ int main(int argc, char **argv)
 		optind += 2;
 	}
 	if (optind < argc) {
-		fprintf(stderr, "arcaded: unexpected argument '%s'\n", argv[optind]);
+		say_err("unexpected argument '%s'", argv[optind]);
 		usage(stderr);
 		return 2;
 	}
 	if (o.gl && (o.replay || o.script || o.record)) {
 		/* llvmpipe's frames are not bit-exact: hashes, recordings and
 		 * scripts stay on the deterministic software renderer */
-		fprintf(stderr, "arcaded: --renderer gl is for play; scripts, recordings and "
-			"replays use the software renderer\n");
+		say_err("--renderer gl is for play; scripts, recordings and replays use the "
+			"software renderer");
 		return 2;
 	}
 	if (o.verify && !o.replay) {
-		fprintf(stderr, "arcaded: --verify goes with --replay\n");
+		say_err("--verify goes with --replay");
 		return 2;
 	}
 	if (o.script && o.replay) {
-		fprintf(stderr, "arcaded: --script and --replay cannot be combined\n");
+		say_err("--script and --replay cannot be combined");
 		return 2;
 	}
 	if (o.no_render && !o.replay) {
-		fprintf(stderr, "arcaded: --no-render goes with --replay\n");
+		say_err("--no-render goes with --replay");
 		return 2;
 	}
 
@@ -261,12 +263,11 @@ int main(int argc, char **argv)
 				 sizeof(msg));
 		snprintf(name, sizeof(name), "%s/settings.ini", c.paths.state_dir);
 		if (msg[0] && rc != -ENOENT)
-			fprintf(stderr, "arcaded: %s: %s\n", name, msg);
+			say_warn("%s: %s", name, msg);
 		if (rc == 0)
 			cfg_load_text(&c, buf, len, name, say_cfg, NULL);
 		else if (rc != -ENOENT)
-			fprintf(stderr, "arcaded: %s: %s; using the other layers\n", name,
-				strerror(-rc));
+			say_warn("%s: %s; using the other layers", name, strerror(-rc));
 		free(buf);
 	}
 	for (int i = 0; i < nsets; i++)
@@ -285,7 +286,7 @@ int main(int argc, char **argv)
 	o.content.level = c.game.level;
 	o.content.lights = !no_lights;
 	if (o.content.map && o.content.nwads == 0) {
-		fprintf(stderr, "arcaded: --map goes with --wad\n");
+		say_err("--map goes with --wad");
 		return 2;
 	}
 	return app_run(&c, &o);

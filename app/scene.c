@@ -41,7 +41,7 @@ int scene_init(struct scene *s, const struct cfg *c, const struct ct *ct, int gl
 	if (n > 1) {
 		int prc = pool_new(n, &s->pool);
 		if (prc < 0) {
-			say("render threads: %s; drawing on one", strerror(-prc));
+			say_warn("render threads: %s; drawing on one", strerror(-prc));
 			s->pool = NULL;
 		} else {
 			pool_r_par(s->pool, &s->par);
@@ -57,7 +57,7 @@ int scene_resize(struct scene *s, int w, int h)
 	int rc = r_new(w, h, &r);
 
 	if (rc < 0) {
-		say("renderer %dx%d: %s", w, h, strerror(-rc));
+		say_err("renderer %dx%d: %s", w, h, strerror(-rc));
 		return rc;
 	}
 	px = calloc((size_t)w * (size_t)h, 1);
@@ -75,7 +75,7 @@ int scene_resize(struct scene *s, int w, int h)
 		if (rc == 0)
 			rc = s->glr.create(w, h, &g, gerr, sizeof(gerr));
 		if (rc < 0) {
-			say("renderer gl %dx%d: %s", w, h, gerr[0] ? gerr : strerror(-rc));
+			say_err("renderer gl %dx%d: %s", w, h, gerr[0] ? gerr : strerror(-rc));
 			r_free(r);
 			free(px);
 			return rc;
@@ -122,7 +122,7 @@ int scene_open_display(struct scene *s, int headless)
 	dc.render_h = s->frame.h;
 	rc = dp_open(&dc, &s->dpb, &s->dp, why, sizeof(why));
 	if (rc < 0) {
-		say("display %s: %s", dc.backend, why[0] ? why : strerror(-rc));
+		say_err("display %s: %s", dc.backend, why[0] ? why : strerror(-rc));
 		return rc;
 	}
 	say("display: %s", s->dpb->describe(s->dp));
@@ -156,7 +156,7 @@ int scene_show(struct scene *s, const struct sim *sim, const struct sim *under,
 		view_draw(&s->view, sim, under, &s->frame);
 	rc = s->dpb->present(s->dp, s->frame.px, s->frame.w, s->frame.h, s->frame.pitch);
 	if (rc < 0 && s->present_errors++ == 0)
-		say("display %s: present: %s", s->dpb->name, strerror(-rc));
+		say_err("display %s: present: %s", s->dpb->name, strerror(-rc));
 	return rc;
 }
 

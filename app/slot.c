@@ -73,7 +73,7 @@ int slot_add(struct slot_set *set, const struct slot_kind *kinds, int kind, cons
 		 * device that is unplugged): keep the slot and retry once a
 		 * second. */
 		if (!quiet)
-			say("input %s: %s; retrying as devices appear, and every second", be->name,
+			say_warn("input %s: %s; retrying as devices appear, and every second", be->name,
 			    why[0] ? why : strerror(-rc));
 		s->dev = NULL;
 		s->retry_ns = set->now() + SLOT_REOPEN_NS;
@@ -93,7 +93,7 @@ static void slot_add_list(struct slot_set *set, const struct slot_kind *kinds, i
 	snprintf(buf, sizeof(buf), "%s", list);
 	for (char *tok = strtok_r(buf, " \t", &save); tok; tok = strtok_r(NULL, " \t", &save)) {
 		if (set->n >= SLOT_MAX) {
-			say("input %s: more than %d devices; %s ignored", kinds[kind].be->name, SLOT_MAX,
+			say_warn("input %s: more than %d devices; %s ignored", kinds[kind].be->name, SLOT_MAX,
 			    tok);
 			return;
 		}
@@ -115,7 +115,7 @@ static void slot_watch(struct slot_set *set, const struct slot_kind *kinds, int 
 				break;
 			}
 	if (hp_open(nodes, nn, HP_INOTIFY | HP_LIBUSB, &set->hp, why, sizeof(why)) < 0)
-		say("input hotplug: %s; devices are looked for every second", why);
+		say_warn("input hotplug: %s; devices are looked for every second", why);
 	else
 		say("input hotplug: %s", hp_sources(set->hp));
 }
@@ -143,7 +143,7 @@ void slot_open(struct slot_set *set, const struct slot_kind *kinds, int n,
 			 * device no other slot has, retried quietly: they may
 			 * be plugged in later. */
 			if (keys && (kd->be->flags & IN_AUTO_TAKES_KEYBOARD))
-				say("input %s: not auto-detected while the display (%s) reads the "
+				say_warn("input %s: not auto-detected while the display (%s) reads the "
 				    "keyboard (set input.%s)", kd->be->name, display->name, kd->be->name);
 			else
 				for (int i = 0; i < kd->autos; i++)
@@ -155,7 +155,7 @@ void slot_open(struct slot_set *set, const struct slot_kind *kinds, int n,
 		}
 	}
 	if (set->n == 0) {
-		say("no input device configured: the game runs, but nothing controls it");
+		say_warn("no input device configured: the game runs, but nothing controls it");
 		return;
 	}
 	slot_watch(set, kinds, n);
@@ -168,7 +168,7 @@ void slot_drop(struct slot_set *set, struct slot *s)
 			set->h->released(set->ctx, s, code);
 	memset(s->down, 0, sizeof(s->down));
 	set->h->gone(set->ctx, s);
-	say("input %s: %s went away; its controls are released", s->be->name,
+	say_warn("input %s: %s went away; its controls are released", s->be->name,
 	    s->be->describe(s->dev));
 	s->be->close(s->dev);
 	s->dev = NULL;
