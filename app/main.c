@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "app/app.h"
+#include "app/ctl.h"
 #include "app/say.h"
 #include "app/slot.h"
 #include "config/cfg.h"
@@ -72,15 +73,22 @@ static const char *list_profile(void *u, const struct in_ident *id)
 	return p ? p->name : NULL;
 }
 
-static int list_devices(const char *config_dir)
+static int list_devices(const struct cfg *c, const char *config_dir, const char *bindings)
 {
 	struct prof_set *profs = calloc(1, sizeof(*profs));
+	struct bind_table *binds = calloc(1, sizeof(*binds));
 	struct slot_kind kinds[SLOT_KINDS];
 	char path[CFG_PATH_MAX + 32];
-	int n;
+	int n, saved;
 
-	if (!profs)
+	if (!profs || !binds) {
+		free(profs);
+		free(binds);
 		return 2;
+	}
+	/* auto-detection by the bindings a run would use: which devices it
+	 * takes */
+	ctl_bindings_load(binds, c, config_dir, bindings, &saved);
 	prof_init(profs);
 	snprintf(path, sizeof(path), "%s/profiles", config_dir);
 	prof_load_dir(profs, path, NULL, NULL);
@@ -88,9 +96,14 @@ static int list_devices(const char *config_dir)
 	n = slot_kinds(NULL, kinds);
 	for (int k = 0; k < n; k++) {
 		struct list_ctx l = { profs, kinds[k].be->name };
+		if (kinds[k].be->set_bound)
+			kinds[k].be->set_bound(ctl_bound, binds);
 		if (kinds[k].be->list)
 			kinds[k].be->list(stdout, list_profile, &l);
+		if (kinds[k].be->set_bound)
+			kinds[k].be->set_bound(NULL, NULL);
 	}
+	free(binds);
 	free(profs);
 	return 0;
 }
@@ -135,7 +148,7 @@ int main(int argc, char **argv)
 	static char sets[MAX_SETS][CFG_PATH_MAX + 32];
 	struct app_opts o = { .out = stdout, .config_dir = "/etc/arcaded" };
 	const char *state_dir = NULL;
-	int nsets = 0, print_config = 0, no_lights = 0, opt;
+	int nsets = 0, print_config = 0, no_lights = 0, devices = 0, opt;
 	struct cfg c;
 
 	/* under systemd, lines carry their priority for the journal */
@@ -215,8 +228,10 @@ int main(int argc, char **argv)
 			snprintf(sets[nsets++], sizeof(sets[0]), "%s%s", prefix, optarg);
 		}
 	}
-	if (optind + 1 == argc && strcmp(argv[optind], "devices") == 0)
-		return list_devices(o.config_dir);
+	if (optind + 1 == argc && strcmp(argv[optind], "devices") == 0) {
+		devices = 1;
+		optind++;
+	}
 	/* Subcommand form: `arcaded replay FILE [options]`. */
 	if (optind + 2 == argc && strcmp(argv[optind], "replay") == 0 && !o.replay) {
 		o.replay = argv[optind + 1];
@@ -272,6 +287,8 @@ int main(int argc, char **argv)
 	}
 	for (int i = 0; i < nsets; i++)
 		cfg_set(&c, sets[i], say_cfg, NULL);
+	if (devices)
+		return list_devices(&c, o.config_dir, o.bindings);
 
 	if (print_config) {
 		size_t n = cfg_format(&c, NULL, 0);

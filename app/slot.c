@@ -14,13 +14,16 @@
 
 /* input.hid = auto opens this many pads: a 4-player cabinet. */
 #define SLOT_HID_AUTO 4
+/* input.evdev = auto opens this many devices with bound keys: keyboard
+ * encoders, a PS/2 port's keyboard, a service keyboard. */
+#define SLOT_EVDEV_AUTO 4
 
 int slot_kinds(const struct cfg *c, struct slot_kind *out)
 {
 	/* Open order: the keyboard first, then the terminal's keys, pads,
 	 * GPIO lines. */
 	const struct slot_kind k[] = {
-		{ &in_evdev, c ? c->input.evdev : NULL, 1, 1 },
+		{ &in_evdev, c ? c->input.evdev : NULL, SLOT_EVDEV_AUTO, 1 },
 		{ &in_tty, NULL, 0, 1 },
 		{ &in_hid, c ? c->input.hid : NULL, SLOT_HID_AUTO, 0 },
 		{ &in_gpio, c ? c->input.gpio : NULL, 0, 0 },
@@ -120,10 +123,24 @@ static void slot_watch(struct slot_set *set, const struct slot_kind *kinds, int 
 		say("input hotplug: %s", hp_sources(set->hp));
 }
 
+/* in_backend.set_bound's function: the hook, with the set's context. */
+static int slot_bound(void *u, const struct in_ident *id, int code)
+{
+	const struct slot_set *set = u;
+
+	return set->h->bound(set->ctx, id, code);
+}
+
 void slot_open(struct slot_set *set, const struct slot_kind *kinds, int n,
 	       const struct dp_backend *display)
 {
 	const char *keys = display ? display->input : NULL;
+
+	set->kinds = kinds;
+	set->nkinds = n;
+	for (int k = 0; k < n; k++)
+		if (kinds[k].be->set_bound)
+			kinds[k].be->set_bound(set->h->bound ? slot_bound : NULL, set);
 
 	for (int k = 0; k < n; k++) {
 		const struct slot_kind *kd = &kinds[k];
@@ -139,15 +156,16 @@ void slot_open(struct slot_set *set, const struct slot_kind *kinds, int n,
 			/* Where the display reads the keyboard, taking it would
 			 * take the developer's own keyboard away from every
 			 * other window: only a device the configuration names
-			 * is opened. Several auto slots (pads) each take a
-			 * device no other slot has, retried quietly: they may
-			 * be plugged in later. */
+			 * is opened. Several auto slots (keyboards, pads) each
+			 * take a device no other slot has; only the first says
+			 * when it found none, the others are retried quietly:
+			 * their devices may be plugged in later. */
 			if (keys && (kd->be->flags & IN_AUTO_TAKES_KEYBOARD))
 				say_warn("input %s: not auto-detected while the display (%s) reads the "
 				    "keyboard (set input.%s)", kd->be->name, display->name, kd->be->name);
 			else
 				for (int i = 0; i < kd->autos; i++)
-					slot_add(set, kinds, k, NULL, kd->autos > 1);
+					slot_add(set, kinds, k, NULL, i > 0);
 		} else if (kd->whole) {
 			slot_add(set, kinds, k, v, 0);
 		} else {
@@ -246,4 +264,10 @@ void slot_close(struct slot_set *set)
 		if (set->s[i].dev)
 			set->s[i].be->close(set->s[i].dev);
 	set->n = 0;
+	/* the backends keep no pointer to the set past its life */
+	for (int k = 0; k < set->nkinds; k++)
+		if (set->kinds[k].be->set_bound)
+			set->kinds[k].be->set_bound(NULL, NULL);
+	set->kinds = NULL;
+	set->nkinds = 0;
 }
