@@ -119,6 +119,8 @@ static void slot_watch(struct slot_set *set, const struct slot_kind *kinds, int 
 			}
 	if (hp_open(nodes, nn, HP_INOTIFY | HP_LIBUSB, &set->hp, why, sizeof(why)) < 0)
 		say_warn("input hotplug: %s; devices are looked for every second", why);
+	else if (!hp_complete(set->hp))
+		say_warn("input hotplug: %s", hp_sources(set->hp));
 	else
 		say("input hotplug: %s", hp_sources(set->hp));
 }
@@ -212,16 +214,39 @@ static void slot_key(struct slot_set *set, struct slot *s, const struct in_event
 	set->h->key(set->ctx, s, e->code, down, e->time_ns);
 }
 
+/* What the last hotplug poll saw, for the log: USB arrivals and
+ * departures always (an operator's view of what was plugged), node
+ * notices with log_nodes. */
+static void slot_log_notices(const struct slot_set *set)
+{
+	const struct hp_notice *n;
+	int k = hp_notices(set->hp, &n);
+
+	for (int i = 0; i < k; i++) {
+		if (n[i].what == HP_USB_ARRIVED)
+			say("input hotplug: libusb: USB device %04x:%04x arrived on port %s", n[i].vid,
+			    n[i].pid, n[i].name);
+		else if (n[i].what == HP_USB_LEFT)
+			say("input hotplug: libusb: USB device %04x:%04x left port %s", n[i].vid,
+			    n[i].pid, n[i].name);
+		else if (set->log_nodes)
+			say("input hotplug: inotify: %s %s", n[i].name, n[i].how);
+	}
+}
+
 void slot_read(struct slot_set *set)
 {
 	struct in_event ev[64];
 	uint64_t now = 0;
 
 	/* A device node appeared or changed (udev grants access right after
-	 * the kernel creates it): every closed slot tries now. */
-	if (hp_poll(set->hp))
+	 * the kernel creates it), a USB device arrived: every closed slot
+	 * tries now. */
+	if (hp_poll(set->hp)) {
+		slot_log_notices(set);
 		for (int i = 0; i < set->n; i++)
 			set->s[i].retry_ns = 0;
+	}
 
 	for (int i = 0; i < set->n; i++) {
 		struct slot *s = &set->s[i];

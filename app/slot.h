@@ -77,6 +77,7 @@ struct slot_set {
 	struct hp *hp;             /* hotplug notices, NULL: periodic retries only */
 	const struct slot_kind *kinds;   /* slot_open's registry, NULL before */
 	int nkinds;
+	int log_nodes;             /* log every device node notice too (input.log) */
 	const struct slot_hooks *h;
 	void *ctx;
 	uint64_t (*now)(void);     /* the clock of retries: in_now_ns */
@@ -110,7 +111,9 @@ int slot_add(struct slot_set *set, const struct slot_kind *kinds, int kind, cons
 
 /* Once per tick, before the command is built: closed slots whose time
  * has come (all of them after a hotplug notice) retry their open, and
- * every open device is read, its key changes going to the hooks. */
+ * every open device is read, its key changes going to the hooks. USB
+ * devices arriving and leaving (libusb) are logged, and with log_nodes
+ * every device node notice. */
 void slot_read(struct slot_set *set);
 
 /* s's device went away: releases every control it held (hooks), closes
