@@ -157,6 +157,14 @@ static void step_persist(void *ctx, struct loop_tick *k)
 	keep_tick(&a->keep, &a->sim, a->scene.frame.w, a->scene.frame.h);
 }
 
+/* The service's status while no display shows the game. */
+static void app_status_no_display(const struct app *a)
+{
+	if (!a->headless)
+		svc_status("no display: %s; the game runs, looking for one",
+			   a->scene.missing);
+}
+
 static void step_present(void *ctx, struct loop_tick *k)
 {
 	struct app *a = ctx;
@@ -166,6 +174,9 @@ static void step_present(void *ctx, struct loop_tick *k)
 	if (a->o->no_render)
 		return;
 	t0 = in_now_ns();
+	/* a display that was missing is looked for again */
+	if (scene_poll_display(&a->scene, t0) == SCENE_STILL_MISSING)
+		app_status_no_display(a);
 	scene_show(&a->scene, &a->sim, demo_under(&a->demo, &a->sim),
 		   a->ctl.wiz_on ? &a->ctl.wiz : NULL);
 	stats_presented(&a->stats, t0, in_now_ns());
@@ -191,8 +202,10 @@ static void step_notify(void *ctx, struct loop_tick *k)
 	struct app *a = ctx;
 
 	(void)k;
-	if (!a->ready && !a->headless) {
-		/* READY=1 only once the first frame is on the screen. */
+	if (!a->ready && !a->headless && a->scene.shown) {
+		/* READY=1 only once a frame was presented on the display asked
+		 * for: not while a missing one is waited for, not after a
+		 * present that failed. */
 		svc_ready();
 		a->ready = 1;
 	}
@@ -332,6 +345,8 @@ static int setup(struct app *a)
 		rc = scene_open_display(&a->scene, a->headless);
 	if (rc < 0)
 		return rc;
+	if (a->scene.waiting)
+		app_status_no_display(a);
 
 	/* latency by source: each input backend, then scripts */
 	a->nkinds = slot_kinds(c, a->kinds);
@@ -342,6 +357,7 @@ static int setup(struct app *a)
 	ctl_load(&a->ctl, c, o->config_dir, o->bindings, !a->headless, persist, &a->stats,
 		 &a->tape);
 	slot_init(&a->slots, &ctl_hooks, &a->ctl);
+	a->slots.log_nodes = c->input.log;
 	if (!a->headless)
 		slot_open(&a->slots, a->kinds, a->nkinds, a->scene.dpb);
 
