@@ -1,13 +1,10 @@
 #include "app/ct.h"
 
 #include <errno.h>
-#include <fcntl.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "engine/map/grid.h"
 #include "engine/map/lmap.h"
@@ -16,48 +13,14 @@
 #include "engine/map/map_wad.h"
 #include "engine/map/tex.h"
 #include "engine/map/wad.h"
+#include "input/io.h"
 
 /* Freedoom 2 is 28 MiB; anything far larger is not a WAD meant for us. */
 #define CT_FILE_MAX (512u << 20)
 
 int ct_read_file(const char *path, uint8_t **buf, size_t *len)
 {
-	struct stat st;
-	size_t got = 0;
-	int fd, rc = 0;
-
-	fd = open(path, O_RDONLY | O_CLOEXEC);
-	if (fd < 0)
-		return -errno;
-	if (fstat(fd, &st) < 0) {
-		rc = -errno;
-		goto out;
-	}
-	if (!S_ISREG(st.st_mode) || (uint64_t)st.st_size > CT_FILE_MAX) {
-		rc = S_ISREG(st.st_mode) ? -EFBIG : -EINVAL;
-		goto out;
-	}
-	*buf = malloc(st.st_size ? (size_t)st.st_size : 1);
-	if (!*buf) {
-		rc = -ENOMEM;
-		goto out;
-	}
-	while (got < (size_t)st.st_size) {
-		ssize_t n = read(fd, *buf + got, (size_t)st.st_size - got);
-		if (n < 0 && errno == EINTR)
-			continue;
-		if (n <= 0) {
-			rc = n < 0 ? -errno : -EIO;
-			free(*buf);
-			*buf = NULL;
-			goto out;
-		}
-		got += (size_t)n;
-	}
-	*len = got;
-out:
-	close(fd);
-	return rc;
+	return io_read_file(path, CT_FILE_MAX, IO_REGULAR, buf, len);
 }
 
 static int load_wads(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)

@@ -14,6 +14,7 @@
 #include "config/cfg.h"
 #include "config/prof.h"
 #include "config/st.h"
+#include "engine/core/num.h"
 
 #define ARCADED_VERSION "0.1.0"
 #define MAX_SETS 64
@@ -170,11 +171,8 @@ int main(int argc, char **argv)
 		case O_QUIET: o.quiet = 1; break;
 		case O_TICKS:
 		case O_UNTIL: {
-			char *end;
-			unsigned long v;
-			errno = 0;
-			v = strtoul(optarg, &end, 10);
-			if (errno || *end || end == optarg || v >= 0xffffffffu) {
+			int64_t v;
+			if (num_parse(optarg, 0, 0xfffffffe, &v) < 0) {
 				say_err("--%s: '%s' is not a tick number",
 					opt == O_TICKS ? "ticks" : "until", optarg);
 				return 2;

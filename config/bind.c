@@ -16,6 +16,7 @@
 
 #include "config/cini.h"
 #include "input/in.h"
+#include "input/txt.h"
 
 /* Defaults: arrows and WASD (A/D strafe, arrows turn), the 1/5/9 start,
  * coin and service keys of MAME's defaults, F2 as a second service key. */
@@ -56,27 +57,9 @@ void bind_defaults(struct bind_table *b)
 struct bind_ctx {
 	struct bind_table *b;
 	int (*cur)[BIND_MAX];            /* the section being read: [keyboard] or a device's */
-	const char *file;
-	cfg_err_fn fn;
-	void *user;
-	int rejected;
+	struct cini_errs err;
 	bool section_ok;
 };
-
-__attribute__((format(printf, 3, 4)))
-static void bind_report(struct bind_ctx *x, int line, const char *fmt, ...)
-{
-	char msg[CINI_VALUE_MAX + 128];
-	va_list ap;
-
-	x->rejected++;
-	if (!x->fn)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(msg, sizeof(msg), fmt, ap);
-	va_end(ap);
-	x->fn(x->user, x->file, line, msg);
-}
 
 /* "0x" or "0X" and 1 to 4 hex digits, BIND_CODE_MIN..BIND_CODE_MAX: a
  * code by number (for codes libevdev has no name for). The code, or -1. */
@@ -156,22 +139,22 @@ int bind_parse_keys(const char *value, int keys[BIND_MAX], char *why, size_t why
 	return 0;
 }
 
-/* "action = name, name, ...": an empty value unbinds the action. */
-static void bind_entry(struct bind_ctx *x, int line, const char *action, const char *value)
+void bind_set_entry(int key[ACT_COUNT][BIND_MAX], struct cini_errs *err, int line,
+		    const char *action, const char *value)
 {
 	int keys[BIND_MAX];
 	int a = act_from_name(action);
 	char why[128];
 
 	if (a < 0) {
-		bind_report(x, line, "unknown action '%s'", action);
+		cini_report(err, line, "unknown action '%s'", action);
 		return;
 	}
 	if (bind_parse_keys(value, keys, why, sizeof(why)) < 0) {
-		bind_report(x, line, "%s: %s", action, why);
+		cini_report(err, line, "%s: %s", action, why);
 		return;
 	}
-	memcpy(x->cur[a], keys, sizeof(keys));
+	memcpy(key[a], keys, sizeof(keys));
 }
 
 static bool port_path(const char *p)
@@ -281,12 +264,12 @@ static void device_header(struct bind_ctx *x, int line, const char *section)
 	memcpy(id, p, n);
 	id[n] = '\0';
 	if (bind_device_id(id, norm) < 0) {
-		bind_report(x, line, "bad device id '%s' (usb-PORT or VVVV:PPPP)", id);
+		cini_report(&x->err, line, "bad device id '%s' (usb-PORT or VVVV:PPPP)", id);
 		return;
 	}
 	d = device_section(x->b, norm);
 	if (!d) {
-		bind_report(x, line, "too many device sections (at most %d)", BIND_DEVICES);
+		cini_report(&x->err, line, "too many device sections (at most %d)", BIND_DEVICES);
 		return;
 	}
 	x->cur = d->key;
@@ -299,7 +282,7 @@ static void bind_ev(void *user, const struct cini_ev *ev)
 
 	switch (ev->kind) {
 	case CINI_ERROR:
-		bind_report(x, ev->line, "%s", ev->msg);
+		cini_report(&x->err, ev->line, "%s", ev->msg);
 		break;
 	case CINI_SECTION:
 		x->section_ok = strcmp(ev->section, "keyboard") == 0;
@@ -308,15 +291,15 @@ static void bind_ev(void *user, const struct cini_ev *ev)
 		    (ev->section[6] == ' ' || ev->section[6] == '\t'))
 			device_header(x, ev->line, ev->section);
 		else if (!x->section_ok)
-			bind_report(x, ev->line,
+			cini_report(&x->err, ev->line,
 				    "unknown section [%s] (only [keyboard] and [device \"ID\"])",
 				    ev->section);
 		break;
 	case CINI_ENTRY:
 		if (ev->section[0] == '\0')
-			bind_report(x, ev->line, "key '%s' is outside [keyboard]", ev->key);
+			cini_report(&x->err, ev->line, "key '%s' is outside [keyboard]", ev->key);
 		else if (x->section_ok)
-			bind_entry(x, ev->line, ev->key, ev->value);
+			bind_set_entry(x->cur, &x->err, ev->line, ev->key, ev->value);
 		break;
 	}
 }
@@ -324,10 +307,11 @@ static void bind_ev(void *user, const struct cini_ev *ev)
 int bind_load_text(struct bind_table *b, const char *text, size_t len, const char *name,
 		   cfg_err_fn fn, void *user)
 {
-	struct bind_ctx x = { .b = b, .cur = b->key, .file = name, .fn = fn, .user = user };
+	struct bind_ctx x = { .b = b, .cur = b->key,
+			      .err = { .file = name, .fn = fn, .user = user } };
 
 	cini_parse(text, len, bind_ev, &x);
-	return x.rejected;
+	return x.err.count;
 }
 
 static int bind_load_any(void *b, const char *text, size_t len, const char *name, cfg_err_fn fn,
@@ -341,7 +325,8 @@ int bind_load(struct bind_table *b, const char *path, cfg_err_fn fn, void *user)
 	return cini_load_file(path, bind_load_any, b, fn, user);
 }
 
-int bind_lookup(const struct bind_table *b, int code, int *acts, int max)
+/* Up to max actions bound to code in one section's table. */
+static int bind_lookup_in(const int key[ACT_COUNT][BIND_MAX], int code, int *acts, int max)
 {
 	int n = 0;
 
@@ -349,13 +334,18 @@ int bind_lookup(const struct bind_table *b, int code, int *acts, int max)
 		return 0;
 	for (int a = 0; a < ACT_COUNT && n < max; a++) {
 		for (int i = 0; i < BIND_MAX; i++) {
-			if (b->key[a][i] == code) {
+			if (key[a][i] == code) {
 				acts[n++] = a;
 				break;
 			}
 		}
 	}
 	return n;
+}
+
+int bind_lookup(const struct bind_table *b, int code, int *acts, int max)
+{
+	return bind_lookup_in(b->key, code, acts, max);
 }
 
 const struct bind_dev *bind_find_device(const struct bind_table *b, const struct in_ident *id)
@@ -382,49 +372,16 @@ int bind_lookup_dev(const struct bind_table *b, const struct in_ident *id, int c
 		    int max)
 {
 	const struct bind_dev *d = bind_find_device(b, id);
-	int n = 0;
 
-	if (!d)
-		return bind_lookup(b, code, acts, max);
-	if (code < 0)
-		return 0;
-	for (int a = 0; a < ACT_COUNT && n < max; a++) {
-		for (int i = 0; i < BIND_MAX; i++) {
-			if (d->key[a][i] == code) {
-				acts[n++] = a;
-				break;
-			}
-		}
-	}
-	return n;
+	return bind_lookup_in(d ? d->key : b->key, code, acts, max);
 }
 
-/* Appends to out what snprintf would, counting what does not fit. */
-struct bind_out {
-	char *buf;
-	size_t len, n;
-};
-
-__attribute__((format(printf, 2, 3)))
-static void bind_put(struct bind_out *o, const char *fmt, ...)
-{
-	va_list ap;
-	int w;
-
-	va_start(ap, fmt);
-	w = vsnprintf(o->n < o->len ? o->buf + o->n : NULL, o->n < o->len ? o->len - o->n : 0,
-		      fmt, ap);
-	va_end(ap);
-	if (w > 0)
-		o->n += (size_t)w;
-}
-
-static void bind_put_section(struct bind_out *o, const int key[ACT_COUNT][BIND_MAX])
+static void bind_put_section(struct txt *o, const int key[ACT_COUNT][BIND_MAX])
 {
 	for (int a = 0; a < ACT_COUNT; a++) {
 		int first = 1;
 
-		bind_put(o, "%s =", act_name(a));
+		txt_put(o, "%s =", act_name(a));
 		for (int i = 0; i < BIND_MAX; i++) {
 			int code = key[a][i];
 			const char *name = in_key_name(code);
@@ -432,26 +389,26 @@ static void bind_put_section(struct bind_out *o, const int key[ACT_COUNT][BIND_M
 			if (code < BIND_CODE_MIN || code > BIND_CODE_MAX)
 				continue;
 			if (name)
-				bind_put(o, "%s %s", first ? "" : ",", name);
+				txt_put(o, "%s %s", first ? "" : ",", name);
 			else
-				bind_put(o, "%s 0x%04x", first ? "" : ",", (unsigned)code);
+				txt_put(o, "%s 0x%04x", first ? "" : ",", (unsigned)code);
 			first = 0;
 		}
-		bind_put(o, "\n");
+		txt_put(o, "\n");
 	}
 }
 
 size_t bind_format(const struct bind_table *b, char *buf, size_t len)
 {
-	struct bind_out o = { .buf = buf, .len = len };
+	struct txt o = { .buf = buf, .len = len };
 
 	if (buf && len)
 		buf[0] = '\0';
-	bind_put(&o, "# arcaded key bindings: every action of [keyboard] and of each device\n");
-	bind_put(&o, "[keyboard]\n");
+	txt_put(&o, "# arcaded key bindings: every action of [keyboard] and of each device\n");
+	txt_put(&o, "[keyboard]\n");
 	bind_put_section(&o, b->key);
 	for (int d = 0; d < b->ndev; d++) {
-		bind_put(&o, "\n[device \"%s\"]\n", b->dev[d].id);
+		txt_put(&o, "\n[device \"%s\"]\n", b->dev[d].id);
 		bind_put_section(&o, b->dev[d].key);
 	}
 	return o.n;

@@ -35,6 +35,8 @@
 #include "input/act.h"
 #include "input/in.h"
 
+struct cini_errs;
+
 #define BIND_MAX 4
 #define BIND_DEVICES 16
 #define BIND_ID_MAX 40
@@ -93,6 +95,13 @@ int bind_lookup_dev(const struct bind_table *b, const struct in_ident *id, int c
  * BIND_CODE_MAX). 0, or -EINVAL with the reason in why ("unknown key
  * name 'x'", "empty key name in list", "too many keys (at most 4)"). */
 int bind_parse_keys(const char *value, int keys[BIND_MAX], char *why, size_t whylen);
+
+/* One "action = name, name, ..." entry into key (an empty value unbinds
+ * the action), for bindings files and profiles alike: an unknown action or
+ * a bad list is counted and reported through err at line (config/cini.h)
+ * and leaves key as it was. */
+void bind_set_entry(int key[ACT_COUNT][BIND_MAX], struct cini_errs *err, int line,
+		    const char *action, const char *value);
 
 /* Writes b as bindings text that bind_load_text reads back to the same
  * table: a comment line, [keyboard], then [device "ID"] for every device

@@ -17,6 +17,8 @@
 #include <strings.h>
 
 #include "config/cini.h"
+#include "engine/core/num.h"
+#include "input/txt.h"
 
 enum cfg_type {
 	CFG_T_INT,      /* int in min..max */
@@ -96,27 +98,9 @@ static const struct cfg_key cfg_keys[] = {
 /* Where problems go while one file or one --set is applied. */
 struct cfg_ctx {
 	struct cfg *c;
-	const char *file;
-	cfg_err_fn fn;
-	void *user;
-	int rejected;
+	struct cini_errs err;
 	bool section_ok;         /* false inside an unknown [section] */
 };
-
-__attribute__((format(printf, 3, 4)))
-static void cfg_report(struct cfg_ctx *x, int line, const char *fmt, ...)
-{
-	char msg[CINI_VALUE_MAX + 128];
-	va_list ap;
-
-	x->rejected++;
-	if (!x->fn)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(msg, sizeof(msg), fmt, ap);
-	va_end(ap);
-	x->fn(x->user, x->file, line, msg);
-}
 
 static void cfg_setstr(char *dst, size_t size, const char *s)
 {
@@ -172,32 +156,6 @@ static const struct cfg_key *cfg_find(const char *section, const char *key)
 	return NULL;
 }
 
-/* Strict decimal int: optional sign, digits, nothing else. *big is set when
- * the digits do not fit an int (the caller reports "out of range"). */
-static bool cfg_parse_int(const char *v, int *out, bool *big)
-{
-	const char *p = v + (*v == '-' || *v == '+');
-	long long n = 0;
-
-	*big = false;
-	if (*p < '0' || *p > '9')
-		return false;
-	for (; *p >= '0' && *p <= '9'; p++) {
-		if (n < 10000000000LL)
-			n = n * 10 + (*p - '0');
-		else
-			*big = true;
-	}
-	if (*p)
-		return false;
-	if (*v == '-')
-		n = -n;
-	if (n < INT_MIN || n > INT_MAX)
-		*big = true;
-	*out = *big ? 0 : (int)n;
-	return true;
-}
-
 static int cfg_parse_bool(const char *v)
 {
 	static const char *const yes[] = { "1", "yes", "true", "on" };
@@ -240,29 +198,34 @@ static void cfg_apply(struct cfg_ctx *x, int line, const struct cfg_key *k, cons
 {
 	char *field = (char *)x->c + k->off;
 	char list[128];
-	bool big;
-	int n, i;
+	int64_t l;
+	int n, i, rc;
 
 	switch (k->type) {
 	case CFG_T_INT:
-		if (!cfg_parse_int(v, &n, &big)) {
-			cfg_report(x, line, "%s: '%s' is not an integer", k->key, v);
-		} else if (big || n < k->min || n > k->max) {
-			cfg_report(x, line, "%s: %s out of range %d..%d", k->key, v, k->min, k->max);
+		rc = num_parse(v, k->min, k->max, &l);
+		if (rc == -EINVAL) {
+			cini_report(&x->err, line, "%s: '%s' is not an integer", k->key, v);
+		} else if (rc < 0) {
+			cini_report(&x->err, line, "%s: %s out of range %d..%d", k->key, v, k->min,
+				    k->max);
 		} else {
+			n = (int)l;
 			memcpy(field, &n, sizeof(n));
 		}
 		return;
 	case CFG_T_BOOL:
 		n = cfg_parse_bool(v);
 		if (n < 0)
-			cfg_report(x, line, "%s: '%s' is not a boolean (yes/no, true/false, on/off, 1/0)",
-				   k->key, v);
+			cini_report(&x->err, line,
+				    "%s: '%s' is not a boolean (yes/no, true/false, on/off, 1/0)",
+				    k->key, v);
 		else
 			memcpy(field, &n, sizeof(n));
 		return;
 	case CFG_T_ONEOF:
-		if (cfg_parse_int(v, &n, &big) && !big) {
+		if (num_parse(v, INT_MIN, INT_MAX, &l) == 0) {
+			n = (int)l;
 			for (i = 0; i < k->nints; i++) {
 				if (k->ints[i] == n) {
 					memcpy(field, &n, sizeof(n));
@@ -271,14 +234,14 @@ static void cfg_apply(struct cfg_ctx *x, int line, const struct cfg_key *k, cons
 			}
 		}
 		cfg_list(k, list, sizeof(list));
-		cfg_report(x, line, "%s: %s is not one of %s", k->key, v, list);
+		cini_report(&x->err, line, "%s: %s is not one of %s", k->key, v, list);
 		return;
 	case CFG_T_NAME:
 	case CFG_T_INDEX:
 		i = cfg_name_index(k, v);
 		if (i < 0) {
 			cfg_list(k, list, sizeof(list));
-			cfg_report(x, line, "%s: '%s' is not one of %s", k->key, v, list);
+			cini_report(&x->err, line, "%s: '%s' is not one of %s", k->key, v, list);
 		} else if (k->type == CFG_T_INDEX) {
 			memcpy(field, &i, sizeof(i));
 		} else {
@@ -287,7 +250,8 @@ static void cfg_apply(struct cfg_ctx *x, int line, const struct cfg_key *k, cons
 		return;
 	case CFG_T_DEVICE:
 		if (strcmp(v, "auto") != 0 && strcmp(v, "none") != 0 && !strchr(v, '/')) {
-			cfg_report(x, line, "%s: '%s' is not auto, none or a device path", k->key, v);
+			cini_report(&x->err, line, "%s: '%s' is not auto, none or a device path",
+				    k->key, v);
 			return;
 		}
 		break;
@@ -295,7 +259,8 @@ static void cfg_apply(struct cfg_ctx *x, int line, const struct cfg_key *k, cons
 		break;
 	}
 	if (strlen(v) >= k->size) {
-		cfg_report(x, line, "%s: value too long (at most %zu bytes)", k->key, k->size - 1);
+		cini_report(&x->err, line, "%s: value too long (at most %zu bytes)", k->key,
+			    k->size - 1);
 		return;
 	}
 	cfg_setstr(field, k->size, v);
@@ -309,7 +274,7 @@ static void cfg_entry(struct cfg_ctx *x, int line, const char *section, const ch
 	if (k)
 		cfg_apply(x, line, k, value);
 	else
-		cfg_report(x, line, "unknown key '%s' in [%s]", key, section);
+		cini_report(&x->err, line, "unknown key '%s' in [%s]", key, section);
 }
 
 static void cfg_ev(void *user, const struct cini_ev *ev)
@@ -318,17 +283,18 @@ static void cfg_ev(void *user, const struct cini_ev *ev)
 
 	switch (ev->kind) {
 	case CINI_ERROR:
-		cfg_report(x, ev->line, "%s", ev->msg);
+		cini_report(&x->err, ev->line, "%s", ev->msg);
 		break;
 	case CINI_SECTION:
 		x->section_ok = cfg_known_section(ev->section);
 		if (!x->section_ok)
-			cfg_report(x, ev->line, "unknown section [%s]", ev->section);
+			cini_report(&x->err, ev->line, "unknown section [%s]", ev->section);
 		break;
 	case CINI_ENTRY:
 		/* Keys of an unknown section were covered by its one message. */
 		if (ev->section[0] == '\0')
-			cfg_report(x, ev->line, "key '%s' is outside any [section]", ev->key);
+			cini_report(&x->err, ev->line, "key '%s' is outside any [section]",
+				    ev->key);
 		else if (x->section_ok)
 			cfg_entry(x, ev->line, ev->section, ev->key, ev->value);
 		break;
@@ -338,10 +304,10 @@ static void cfg_ev(void *user, const struct cini_ev *ev)
 int cfg_load_text(struct cfg *c, const char *text, size_t len, const char *name,
 		  cfg_err_fn fn, void *user)
 {
-	struct cfg_ctx x = { .c = c, .file = name, .fn = fn, .user = user };
+	struct cfg_ctx x = { .c = c, .err = { .file = name, .fn = fn, .user = user } };
 
 	cini_parse(text, len, cfg_ev, &x);
-	return x.rejected;
+	return x.err.count;
 }
 
 static int cfg_load_any(void *c, const char *text, size_t len, const char *name, cfg_err_fn fn,
@@ -372,7 +338,7 @@ static int cfg_cmp_names(const void *a, const void *b)
 
 int cfg_load_dir(struct cfg *c, const char *dir, cfg_err_fn fn, void *user)
 {
-	struct cfg_ctx x = { .c = c, .file = dir, .fn = fn, .user = user };
+	struct cfg_ctx x = { .c = c, .err = { .file = dir, .fn = fn, .user = user } };
 	char **names = NULL;
 	size_t n = 0, cap = 0;
 	struct dirent *de;
@@ -381,8 +347,8 @@ int cfg_load_dir(struct cfg *c, const char *dir, cfg_err_fn fn, void *user)
 	d = opendir(dir);
 	if (!d) {
 		if (errno != ENOENT)
-			cfg_report(&x, 0, "cannot read directory: %s", strerror(errno));
-		return x.rejected;
+			cini_report(&x.err, 0, "cannot read directory: %s", strerror(errno));
+		return x.err.count;
 	}
 	while ((de = readdir(d))) {
 		char **nn;
@@ -412,27 +378,27 @@ int cfg_load_dir(struct cfg *c, const char *dir, cfg_err_fn fn, void *user)
 		int r;
 
 		if ((size_t)snprintf(path, sizeof(path), "%s/%s", dir, names[i]) >= sizeof(path)) {
-			x.file = names[i];
-			cfg_report(&x, 0, "path too long");
+			x.err.file = names[i];
+			cini_report(&x.err, 0, "path too long");
 			continue;
 		}
 		r = cfg_load_file(c, path, fn, user);
 		if (r > 0)
-			x.rejected += r;
+			x.err.count += r;
 		else if (r < 0 && r != -ENOENT)
-			x.rejected++;
+			x.err.count++;
 	}
 	goto out;
 nomem:
-	x.file = dir;
-	cfg_report(&x, 0, "out of memory");
+	x.err.file = dir;
+	cini_report(&x.err, 0, "out of memory");
 out:
 	if (d)
 		closedir(d);
 	for (size_t i = 0; i < n; i++)
 		free(names[i]);
 	free(names);
-	return x.rejected;
+	return x.err.count;
 }
 
 /* Copies [b, e) trimmed of blanks into dst; false if it does not fit. */
@@ -451,29 +417,29 @@ static bool cfg_copy_trim(char *dst, size_t size, const char *b, const char *e)
 
 int cfg_set(struct cfg *c, const char *assignment, cfg_err_fn fn, void *user)
 {
-	struct cfg_ctx x = { .c = c, .file = "--set", .fn = fn, .user = user };
+	struct cfg_ctx x = { .c = c, .err = { .file = "--set", .fn = fn, .user = user } };
 	const char *eq = strchr(assignment, '=');
 	const char *dot = eq ? memchr(assignment, '.', (size_t)(eq - assignment)) : NULL;
 	char section[CINI_NAME_MAX], key[CINI_NAME_MAX], value[CINI_VALUE_MAX];
 
 	if (!dot) {
-		cfg_report(&x, 0, "expected section.key=value, got '%.200s'", assignment);
+		cini_report(&x.err, 0, "expected section.key=value, got '%.200s'", assignment);
 		return -EINVAL;
 	}
 	if (!cfg_copy_trim(section, sizeof(section), assignment, dot) ||
 	    !cfg_copy_trim(key, sizeof(key), dot + 1, eq)) {
-		cfg_report(&x, 0, "name too long in '%.200s'", assignment);
+		cini_report(&x.err, 0, "name too long in '%.200s'", assignment);
 		return -EINVAL;
 	}
 	if (!cfg_copy_trim(value, sizeof(value), eq + 1, eq + 1 + strlen(eq + 1))) {
-		cfg_report(&x, 0, "value too long");
+		cini_report(&x.err, 0, "value too long");
 		return -EINVAL;
 	}
 	if (!cfg_known_section(section))
-		cfg_report(&x, 0, "unknown section [%s]", section);
+		cini_report(&x.err, 0, "unknown section [%s]", section);
 	else
 		cfg_entry(&x, 0, section, key, value);
-	return x.rejected ? -EINVAL : 0;
+	return x.err.count ? -EINVAL : 0;
 }
 
 static const char *cfg_index_name(const struct cfg_key *k, int v)
@@ -484,24 +450,10 @@ static const char *cfg_index_name(const struct cfg_key *k, int v)
 	return "?";
 }
 
-/* snprintf that keeps counting past the end of buf, for the needed length. */
-__attribute__((format(printf, 4, 5)))
-static void cfg_put(char *buf, size_t len, size_t *n, const char *fmt, ...)
-{
-	va_list ap;
-	int r;
-
-	va_start(ap, fmt);
-	r = vsnprintf(*n < len ? buf + *n : NULL, *n < len ? len - *n : 0, fmt, ap);
-	va_end(ap);
-	if (r > 0)
-		*n += (size_t)r;
-}
-
 size_t cfg_format(const struct cfg *c, char *buf, size_t len)
 {
 	const char *section = NULL;
-	size_t n = 0;
+	struct txt t = { .buf = buf, .len = len };
 
 	if (len)
 		buf[0] = '\0';
@@ -511,7 +463,7 @@ size_t cfg_format(const struct cfg *c, char *buf, size_t len)
 		int v;
 
 		if (!section || strcmp(section, k->section) != 0) {
-			cfg_put(buf, len, &n, "%s[%s]\n", section ? "\n" : "", k->section);
+			txt_put(&t, "%s[%s]\n", section ? "\n" : "", k->section);
 			section = k->section;
 		}
 		switch (k->type) {
@@ -519,22 +471,22 @@ size_t cfg_format(const struct cfg *c, char *buf, size_t len)
 		case CFG_T_NAME:
 		case CFG_T_DEVICE:
 			/* No blank after '=' for an empty value. */
-			cfg_put(buf, len, &n, "%s =%s%s\n", k->key, field[0] ? " " : "", field);
+			txt_put(&t, "%s =%s%s\n", k->key, field[0] ? " " : "", field);
 			break;
 		case CFG_T_BOOL:
 			memcpy(&v, field, sizeof(v));
-			cfg_put(buf, len, &n, "%s = %s\n", k->key, v ? "yes" : "no");
+			txt_put(&t, "%s = %s\n", k->key, v ? "yes" : "no");
 			break;
 		case CFG_T_INDEX:
 			memcpy(&v, field, sizeof(v));
-			cfg_put(buf, len, &n, "%s = %s\n", k->key, cfg_index_name(k, v));
+			txt_put(&t, "%s = %s\n", k->key, cfg_index_name(k, v));
 			break;
 		case CFG_T_INT:
 		case CFG_T_ONEOF:
 			memcpy(&v, field, sizeof(v));
-			cfg_put(buf, len, &n, "%s = %d\n", k->key, v);
+			txt_put(&t, "%s = %d\n", k->key, v);
 			break;
 		}
 	}
-	return n;
+	return t.n;
 }

@@ -5,13 +5,14 @@
 #include "config/cini.h"
 
 #include <errno.h>
-#include <fcntl.h>
+#include <stdarg.h>
 #include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
+
+#include "input/io.h"
 
 static bool cini_blank(char c)
 {
@@ -168,77 +169,26 @@ int cini_parse(const char *text, size_t len, cini_fn fn, void *user)
 	return st.errors;
 }
 
+void cini_report(struct cini_errs *e, int line, const char *fmt, ...)
+{
+	char msg[CINI_VALUE_MAX + 128];
+	va_list ap;
+
+	e->count++;
+	if (!e->fn)
+		return;
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof(msg), fmt, ap);
+	va_end(ap);
+	e->fn(e->user, e->file, line, msg);
+}
+
 int cini_read_file(const char *path, char **text, size_t *len)
 {
-	struct stat sb;
-	char *buf = NULL;
-	size_t cap, n = 0;
-	int fd, ret;
+	uint8_t *b;
+	int ret = io_read_file(path, CINI_FILE_MAX, 0, &b, len);
 
-	fd = open(path, O_RDONLY | O_CLOEXEC);
-	if (fd < 0)
-		return -errno;
-	if (fstat(fd, &sb) < 0) {
-		ret = -errno;
-		goto fail;
-	}
-	if (S_ISDIR(sb.st_mode)) {
-		ret = -EISDIR;
-		goto fail;
-	}
-	if (sb.st_size > CINI_FILE_MAX) {
-		ret = -EFBIG;
-		goto fail;
-	}
-	/* The size is a hint: read to end of file, one byte past the limit at
-	 * most, so a file that grows or a pipe is still bounded. */
-	cap = (size_t)sb.st_size + 1;
-	buf = malloc(cap);
-	if (!buf) {
-		ret = -ENOMEM;
-		goto fail;
-	}
-	for (;;) {
-		ssize_t r;
-
-		if (n == cap) {
-			size_t ncap = cap * 2 > CINI_FILE_MAX + 1 ? CINI_FILE_MAX + 1 : cap * 2;
-			char *nbuf;
-
-			if (ncap <= cap) {
-				ret = -EFBIG;
-				goto fail;
-			}
-			nbuf = realloc(buf, ncap);
-			if (!nbuf) {
-				ret = -ENOMEM;
-				goto fail;
-			}
-			buf = nbuf;
-			cap = ncap;
-		}
-		r = read(fd, buf + n, cap - n);
-		if (r < 0) {
-			if (errno == EINTR)
-				continue;
-			ret = -errno;
-			goto fail;
-		}
-		if (r == 0)
-			break;
-		n += (size_t)r;
-	}
-	if (n > CINI_FILE_MAX) {
-		ret = -EFBIG;
-		goto fail;
-	}
-	close(fd);
-	*text = buf;
-	*len = n;
-	return 0;
-fail:
-	free(buf);
-	close(fd);
+	*text = (char *)b;
 	return ret;
 }
 

@@ -51,12 +51,31 @@ typedef void (*cini_fn)(void *user, const struct cini_ev *ev);
  * Returns the number of CINI_ERROR events. Never fails otherwise. */
 int cini_parse(const char *text, size_t len, cini_fn fn, void *user);
 
-/* Reads a whole file (opened O_CLOEXEC) into a malloc'd buffer that the
- * caller frees. 0, or -errno: -EFBIG above CINI_FILE_MAX bytes. */
+/* Reads a whole file (input/io.h's io_read_file) into a malloc'd,
+ * NUL-terminated buffer that the caller frees. 0, or -errno with *text
+ * NULL: -EFBIG above CINI_FILE_MAX bytes, -EISDIR for a directory. */
 int cini_read_file(const char *path, char **text, size_t *len);
 
 /* Reports a problem: file, line (0: none), message (cfg_err_fn's shape). */
 typedef void (*cini_err_fn)(void *user, const char *file, int line, const char *msg);
+
+/* Where the problems of one file (or one --set) go while settings,
+ * bindings or a profile are read from it: counted, and passed to fn (when
+ * not NULL) with the file's name. The loaders (cfg, bind, prof) report
+ * through this one function; it is here because all of them read INI text
+ * with cini and report in cini_err_fn's shape. */
+struct cini_errs {
+	const char *file;
+	cini_err_fn fn;
+	void *user;
+	int count;             /* problems so far */
+};
+
+/* Counts a problem and passes it to e->fn, formatted as printf does (cut
+ * at CINI_VALUE_MAX + 127 bytes, room for a whole value). line 0: the file
+ * as a whole. */
+void cini_report(struct cini_errs *e, int line, const char *fmt, ...)
+	__attribute__((format(printf, 3, 4)));
 
 /* Reads path and hands its text to load(obj, text, len, path, fn, user),
  * returning what load returns. A missing file is -ENOENT, not reported; a

@@ -98,6 +98,25 @@ static int fr_entry_cmp(const void *a, const void *b)
 	return x->seq < y->seq ? -1 : x->seq > y->seq;
 }
 
+/* A listing of the recordings directory, on an fd of its own (readdir
+ * must not move f->dfd, which the caller keeps using): 0 with *out, or
+ * -errno. */
+static int fr_opendir(struct fr *f, DIR **out)
+{
+	int dfd = openat(f->dfd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+
+	if (dfd < 0)
+		return -errno;
+	*out = fdopendir(dfd);
+	if (!*out) {
+		int e = errno;
+
+		close(dfd);
+		return -e;
+	}
+	return 0;
+}
+
 /* Every finished recording, sorted oldest first: *out malloc'd (NULL when
  * none), returns the count or -errno. Also raises f->next_seq past every
  * sequence seen, .part files included. */
@@ -105,18 +124,13 @@ static int fr_scan(struct fr *f, struct fr_entry **out)
 {
 	struct fr_entry *list = NULL;
 	struct dirent *de;
-	int n = 0, cap = 0, dfd;
+	int n = 0, cap = 0, rc;
 	DIR *d;
 
 	*out = NULL;
-	dfd = openat(f->dfd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-	if (dfd < 0)
-		return -errno;
-	d = fdopendir(dfd);
-	if (!d) {
-		close(dfd);
-		return -errno;
-	}
+	rc = fr_opendir(f, &d);
+	if (rc < 0)
+		return rc;
 	while ((de = readdir(d)) != NULL) {
 		enum fr_kind kind;
 		struct stat sb;
@@ -192,17 +206,12 @@ static int fr_prune(struct fr *f)
 static int fr_recover(struct fr *f, char *msg, size_t msglen, size_t *mn)
 {
 	struct dirent *de;
-	int dfd, changed = 0, ret = 0;
+	int changed = 0, ret;
 	DIR *d;
 
-	dfd = openat(f->dfd, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-	if (dfd < 0)
-		return -errno;
-	d = fdopendir(dfd);
-	if (!d) {
-		close(dfd);
-		return -errno;
-	}
+	ret = fr_opendir(f, &d);
+	if (ret < 0)
+		return ret;
 	while ((de = readdir(d)) != NULL) {
 		char stem[FR_NAME_MAX], cut[FR_NAME_MAX + 8], path[4096], why[160];
 		enum fr_kind kind;

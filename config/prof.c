@@ -22,27 +22,9 @@ void prof_init(struct prof_set *s)
 
 struct prof_ctx {
 	struct prof *p;
-	const char *file;
-	cfg_err_fn fn;
-	void *user;
-	int problems;
+	struct cini_errs err;
 	enum { SEC_NONE, SEC_PROFILE, SEC_BINDINGS, SEC_BAD } sec;
 };
-
-__attribute__((format(printf, 3, 4)))
-static void report(struct prof_ctx *x, int line, const char *fmt, ...)
-{
-	char msg[CINI_VALUE_MAX + 128];
-	va_list ap;
-
-	x->problems++;
-	if (!x->fn)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(msg, sizeof(msg), fmt, ap);
-	va_end(ap);
-	x->fn(x->user, x->file, line, msg);
-}
 
 static int hex4(const char *s, size_t n)
 {
@@ -92,9 +74,10 @@ static void match_ids(struct prof_ctx *x, int line, const char *v)
 									     strlen(colon + 1))
 								   : -1;
 		if (vid < 0 || pid == -1 || e - b >= sizeof(item)) {
-			report(x, line, "match: '%s' is not VVVV:PPPP (hex), VVVV:* or any", item);
+			cini_report(&x->err, line,
+				    "match: '%s' is not VVVV:PPPP (hex), VVVV:* or any", item);
 		} else if (p->nids == PROF_IDS) {
-			report(x, line, "match: more than %d ids", PROF_IDS);
+			cini_report(&x->err, line, "match: more than %d ids", PROF_IDS);
 			return;
 		} else {
 			p->vid[p->nids] = (uint16_t)vid;
@@ -111,7 +94,7 @@ static void copy_value(struct prof_ctx *x, int line, const char *key, const char
 		       size_t len)
 {
 	if (strlen(v) >= len) {
-		report(x, line, "%s: value too long (at most %zu bytes)", key, len - 1);
+		cini_report(&x->err, line, "%s: value too long (at most %zu bytes)", key, len - 1);
 		return;
 	}
 	strcpy(dst, v);
@@ -133,28 +116,13 @@ static void profile_entry(struct prof_ctx *x, int line, const char *k, const cha
 		else if (strcmp(v, "any") == 0)
 			p->backend[0] = '\0';
 		else
-			report(x, line, "backend: '%s' is not one of hid, evdev, gpio, any", v);
+			cini_report(&x->err, line,
+				    "backend: '%s' is not one of hid, evdev, gpio, any", v);
 	} else if (strcmp(k, "hid") == 0) {
 		copy_value(x, line, k, v, p->hid, sizeof(p->hid));
 	} else {
-		report(x, line, "unknown key '%s' in [profile]", k);
+		cini_report(&x->err, line, "unknown key '%s' in [profile]", k);
 	}
-}
-
-static void binding_entry(struct prof_ctx *x, int line, const char *k, const char *v)
-{
-	int a = act_from_name(k), keys[BIND_MAX];
-	char why[128];
-
-	if (a < 0) {
-		report(x, line, "unknown action '%s'", k);
-		return;
-	}
-	if (bind_parse_keys(v, keys, why, sizeof(why)) < 0) {
-		report(x, line, "%s: %s", k, why);
-		return;
-	}
-	memcpy(x->p->key[a], keys, sizeof(keys));
 }
 
 static void prof_ev(void *user, const struct cini_ev *ev)
@@ -163,7 +131,7 @@ static void prof_ev(void *user, const struct cini_ev *ev)
 
 	switch (ev->kind) {
 	case CINI_ERROR:
-		report(x, ev->line, "%s", ev->msg);
+		cini_report(&x->err, ev->line, "%s", ev->msg);
 		break;
 	case CINI_SECTION:
 		if (strcmp(ev->section, "profile") == 0) {
@@ -172,17 +140,19 @@ static void prof_ev(void *user, const struct cini_ev *ev)
 			x->sec = SEC_BINDINGS;
 		} else {
 			x->sec = SEC_BAD;
-			report(x, ev->line, "unknown section [%s] (only [profile] and [bindings])",
-			       ev->section);
+			cini_report(&x->err, ev->line,
+				    "unknown section [%s] (only [profile] and [bindings])",
+				    ev->section);
 		}
 		break;
 	case CINI_ENTRY:
 		if (x->sec == SEC_PROFILE)
 			profile_entry(x, ev->line, ev->key, ev->value);
 		else if (x->sec == SEC_BINDINGS)
-			binding_entry(x, ev->line, ev->key, ev->value);
+			bind_set_entry(x->p->key, &x->err, ev->line, ev->key, ev->value);
 		else if (x->sec == SEC_NONE)
-			report(x, ev->line, "key '%s' is outside [profile] and [bindings]", ev->key);
+			cini_report(&x->err, ev->line,
+				    "key '%s' is outside [profile] and [bindings]", ev->key);
 		break;
 	}
 }
@@ -190,7 +160,7 @@ static void prof_ev(void *user, const struct cini_ev *ev)
 int prof_load_text(struct prof_set *s, const char *text, size_t len, const char *name,
 		   cfg_err_fn fn, void *user)
 {
-	struct prof_ctx x = { .file = name, .fn = fn, .user = user, .sec = SEC_NONE };
+	struct prof_ctx x = { .err = { .file = name, .fn = fn, .user = user }, .sec = SEC_NONE };
 	struct prof p;
 	const char *base = strrchr(name, '/');
 
@@ -202,17 +172,17 @@ int prof_load_text(struct prof_set *s, const char *text, size_t len, const char 
 	x.p = &p;
 	cini_parse(text, len, prof_ev, &x);
 	if (p.nids == 0 && !p.any && !p.name_glob[0]) {
-		report(&x, 0, "no match or match_name: profile not used");
-		return x.problems;
+		cini_report(&x.err, 0, "no match or match_name: profile not used");
+		return x.err.count;
 	}
 	if (s->n == PROF_MAX) {
-		report(&x, 0, "more than %d profiles: not used", PROF_MAX);
-		return x.problems;
+		cini_report(&x.err, 0, "more than %d profiles: not used", PROF_MAX);
+		return x.err.count;
 	}
 	if (!p.name[0])
 		snprintf(p.name, sizeof(p.name), "%s", p.file);
 	s->p[s->n++] = p;
-	return x.problems;
+	return x.err.count;
 }
 
 static int cmp_names(const void *a, const void *b)

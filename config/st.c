@@ -23,6 +23,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "engine/core/le.h"
+#include "input/io.h"
+#include "input/txt.h"
+
 static const uint8_t st_magic[8] = { 'A', 'R', 'C', 'D', 'S', 'T', 'A', '\0' };
 
 /* CRC-32 a nibble at a time: a 16-entry constant table, no set-up. */
@@ -45,48 +49,14 @@ uint32_t st_crc32(uint32_t crc, const void *p, size_t n)
 	return ~crc;
 }
 
-static void st_put16(uint8_t *p, uint16_t v)
-{
-	p[0] = (uint8_t)v;
-	p[1] = (uint8_t)(v >> 8);
-}
-
-static void st_put32(uint8_t *p, uint32_t v)
-{
-	for (int i = 0; i < 4; i++)
-		p[i] = (uint8_t)(v >> (8 * i));
-}
-
-static uint16_t st_get16(const uint8_t *p)
-{
-	return (uint16_t)(p[0] | (unsigned)p[1] << 8);
-}
-
-static uint32_t st_get32(const uint8_t *p)
-{
-	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
-
-__attribute__((format(printf, 3, 4)))
-static void st_msg(char *msg, size_t msglen, const char *fmt, ...)
-{
-	va_list ap;
-
-	if (!msg || !msglen)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(msg, msglen, fmt, ap);
-	va_end(ap);
-}
-
 void st_header(uint8_t out[ST_HEADER_SIZE], const void *payload, size_t len)
 {
 	memcpy(out, st_magic, sizeof(st_magic));
-	st_put16(out + 8, ST_VERSION);
-	st_put16(out + 10, ST_HEADER_SIZE);
-	st_put32(out + 12, (uint32_t)len);
-	st_put32(out + 16, st_crc32(0, payload, len));
-	st_put32(out + 20, st_crc32(0, out, 20));
+	le_put16(out + 8, ST_VERSION);
+	le_put16(out + 10, ST_HEADER_SIZE);
+	le_put32(out + 12, (uint32_t)len);
+	le_put32(out + 16, st_crc32(0, payload, len));
+	le_put32(out + 20, st_crc32(0, out, 20));
 }
 
 int st_check(const uint8_t *img, size_t n, size_t *payload_len, char *why, size_t whylen)
@@ -94,30 +64,31 @@ int st_check(const uint8_t *img, size_t n, size_t *payload_len, char *why, size_
 	uint32_t len;
 
 	if (n < ST_HEADER_SIZE) {
-		st_msg(why, whylen, "too short (%zu bytes)", n);
+		txt_set(why, whylen, "too short (%zu bytes)", n);
 		return -EBADMSG;
 	}
 	if (memcmp(img, st_magic, sizeof(st_magic)) != 0) {
-		st_msg(why, whylen, "bad magic");
+		txt_set(why, whylen, "bad magic");
 		return -EBADMSG;
 	}
-	if (st_get32(img + 20) != st_crc32(0, img, 20)) {
-		st_msg(why, whylen, "header checksum mismatch");
+	if (le_get32(img + 20) != st_crc32(0, img, 20)) {
+		txt_set(why, whylen, "header checksum mismatch");
 		return -EBADMSG;
 	}
-	if (st_get16(img + 8) != ST_VERSION || st_get16(img + 10) != ST_HEADER_SIZE) {
-		st_msg(why, whylen, "version %u (header size %u) not supported", st_get16(img + 8),
-		       st_get16(img + 10));
+	if (le_get16(img + 8) != ST_VERSION || le_get16(img + 10) != ST_HEADER_SIZE) {
+		txt_set(why, whylen, "version %u (header size %u) not supported", le_get16(img + 8),
+			le_get16(img + 10));
 		return -EBADMSG;
 	}
-	len = st_get32(img + 12);
+	len = le_get32(img + 12);
 	if (len > ST_MAX_LEN || len != n - ST_HEADER_SIZE) {
-		st_msg(why, whylen, "length %" PRIu32 " does not match the file (%zu bytes of payload)",
-		       len, n - ST_HEADER_SIZE);
+		txt_set(why, whylen,
+			"length %" PRIu32 " does not match the file (%zu bytes of payload)", len,
+			n - ST_HEADER_SIZE);
 		return -EBADMSG;
 	}
-	if (st_get32(img + 16) != st_crc32(0, img + ST_HEADER_SIZE, len)) {
-		st_msg(why, whylen, "payload checksum mismatch");
+	if (le_get32(img + 16) != st_crc32(0, img + ST_HEADER_SIZE, len)) {
+		txt_set(why, whylen, "payload checksum mismatch");
 		return -EBADMSG;
 	}
 	*payload_len = len;
@@ -132,78 +103,23 @@ static int st_name_ok(const char *name)
 	       strcmp(name, "..") != 0;
 }
 
-static int st_write_all(int fd, const uint8_t *p, size_t n)
-{
-	while (n) {
-		ssize_t w = write(fd, p, n);
-
-		if (w < 0) {
-			if (errno == EINTR)
-				continue;
-			return -errno;
-		}
-		if (w == 0)
-			return -EIO;
-		p += w;
-		n -= (size_t)w;
-	}
-	return 0;
-}
-
-/* Reads the whole file NAME in dfd: 0 with *img (malloc'd) and *n, or
- * -errno (-EFBIG when it is larger than any valid state file). */
+/* Reads the whole file NAME in dfd (a regular file, not a link): 0 with
+ * *img (malloc'd) and *n, or -errno (-EFBIG when it is larger than any
+ * valid state file). */
 static int st_read_file(int dfd, const char *name, uint8_t **img, size_t *n)
 {
 	struct stat sb;
-	uint8_t *b = NULL;
-	size_t got = 0, size;
 	int fd, ret;
 
 	fd = openat(dfd, name, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
 	if (fd < 0)
 		return -errno;
-	if (fstat(fd, &sb) < 0) {
+	if (fstat(fd, &sb) < 0)
 		ret = -errno;
-		goto out;
-	}
-	if (!S_ISREG(sb.st_mode)) {
+	else if (!S_ISREG(sb.st_mode))
 		ret = -EINVAL;
-		goto out;
-	}
-	if ((uint64_t)sb.st_size > (uint64_t)ST_HEADER_SIZE + ST_MAX_LEN) {
-		ret = -EFBIG;
-		goto out;
-	}
-	size = (size_t)sb.st_size;
-	/* One spare byte tells a file that grew since fstat. */
-	b = malloc(size + 1);
-	if (!b) {
-		ret = -ENOMEM;
-		goto out;
-	}
-	for (;;) {
-		ssize_t r = read(fd, b + got, size + 1 - got);
-
-		if (r < 0) {
-			if (errno == EINTR)
-				continue;
-			ret = -errno;
-			goto out;
-		}
-		if (r == 0)
-			break;
-		got += (size_t)r;
-		if (got > size) {
-			ret = -EAGAIN;
-			goto out;
-		}
-	}
-	*img = b;
-	*n = got;
-	b = NULL;
-	ret = 0;
-out:
-	free(b);
+	else
+		ret = io_read_fd(fd, (size_t)ST_HEADER_SIZE + ST_MAX_LEN, img, n);
 	close(fd);
 	return ret;
 }
@@ -256,7 +172,7 @@ static int st_write_tmp(int dfd, const char *tmp, const void *const *part, const
 	if (fd < 0)
 		return -errno;
 	for (int i = 0; i < nparts && ret == 0; i++)
-		ret = st_write_all(fd, part[i], plen[i]);
+		ret = io_write_all(fd, part[i], plen[i]);
 	if (ret == 0 && fsync(fd) < 0)
 		ret = -errno;
 	if (close(fd) < 0 && ret == 0 && errno != EINTR)
@@ -342,12 +258,12 @@ static int st_load_one(int dfd, const char *name, void **buf, size_t *len, char 
 
 	ret = st_read_file(dfd, name, &img, &n);
 	if (ret == -EFBIG || ret == -EINVAL) {
-		st_msg(why, whylen, "%s", ret == -EFBIG ? "larger than any state file"
+		txt_set(why, whylen, "%s", ret == -EFBIG ? "larger than any state file"
 							: "not a regular file");
 		return -EBADMSG;
 	}
 	if (ret < 0) {
-		st_msg(why, whylen, "%s", strerror(-ret));
+		txt_set(why, whylen, "%s", strerror(-ret));
 		return ret;
 	}
 	ret = st_check(img, n, &plen, why, whylen);
@@ -367,16 +283,16 @@ int st_load(const char *dir, const char *name, void **buf, size_t *len, enum st_
 	char prev[ST_NAME_MAX + 16], why1[128], why2[128];
 	int dfd, r1, r2;
 
-	st_msg(msg, msglen, "%s", "");
+	txt_set(msg, msglen, "%s", "");
 	if (!st_name_ok(name)) {
-		st_msg(msg, msglen, "bad state file name");
+		txt_set(msg, msglen, "bad state file name");
 		return -EINVAL;
 	}
 	snprintf(prev, sizeof(prev), "%s.prev", name);
 	dfd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
 	if (dfd < 0) {
 		r1 = -errno;
-		st_msg(msg, msglen, "%s: %s", dir, strerror(-r1));
+		txt_set(msg, msglen, "%s: %s", dir, strerror(-r1));
 		return r1;
 	}
 	r1 = st_load_one(dfd, name, buf, len, why1, sizeof(why1));
@@ -391,10 +307,10 @@ int st_load(const char *dir, const char *name, void **buf, size_t *len, enum st_
 	if (r2 == 0) {
 		if (which)
 			*which = ST_PREV;
-		st_msg(msg, msglen, "%s: %s; loaded %s", name, why1, prev);
+		txt_set(msg, msglen, "%s: %s; loaded %s", name, why1, prev);
 		return 0;
 	}
-	st_msg(msg, msglen, "%s: %s; %s: %s", name, why1, prev, why2);
+	txt_set(msg, msglen, "%s: %s; %s: %s", name, why1, prev, why2);
 	if (r1 == -ENOENT && r2 == -ENOENT)
 		return -ENOENT;
 	/* Corruption outranks a missing copy; a read error outranks both. */

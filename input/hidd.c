@@ -11,6 +11,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/le.h"
+#include "input/txt.h"
+
 /* Element steps the variable-item splitter may take over one descriptor:
  * keeps a descriptor of thousands of maximal items from costing seconds. */
 #define HIDD_MAX_WORK (1u << 20)
@@ -444,7 +447,7 @@ static int parse(struct hidd_parser *p)
 		uint8_t b = p->buf[pos];
 		uint8_t len = (uint8_t)((b & 3) == 3 ? 4 : (b & 3));
 		uint8_t type = (b >> 2) & 3, tag = b >> 4;
-		uint32_t v = 0;
+		uint32_t v;
 		int rc = 0;
 
 		p->at = pos;
@@ -461,8 +464,7 @@ static int parse(struct hidd_parser *p)
 		if (p->len - pos - 1 < len)
 			return fail(p, -EINVAL, "item 0x%02x needs %u data bytes, %zu left", b, len,
 				    p->len - pos - 1);
-		for (uint8_t i = 0; i < len; i++)
-			v |= (uint32_t)p->buf[pos + 1 + i] << (8 * i);
+		v = (uint32_t)le_getn(p->buf + pos + 1, len);
 		switch (type) {
 		case 0: rc = main_item(p, tag, v); break;
 		case 1: rc = global_item(p, tag, v, len); break;
@@ -567,66 +569,47 @@ const char *hidd_kind_name(int kind)
 	return names[kind];
 }
 
-struct hidd_out {
-	char *buf;
-	size_t len, need;
-};
-
-__attribute__((format(printf, 2, 3)))
-static void put(struct hidd_out *o, const char *fmt, ...)
-{
-	va_list ap;
-	int n;
-	size_t room = o->need < o->len ? o->len - o->need : 0;
-
-	va_start(ap, fmt);
-	n = vsnprintf(room ? o->buf + o->need : NULL, room, fmt, ap);
-	va_end(ap);
-	if (n > 0)
-		o->need += (size_t)n;
-}
-
-static void put_usage(struct hidd_out *o, uint32_t u)
+static void put_usage(struct txt *o, uint32_t u)
 {
 	static const char *const gd[] = { "X", "Y", "Z", "Rx", "Ry", "Rz", "Slider", "Dial",
 					  "Wheel", "Hat" };
 	uint16_t page = HIDD_PAGE(u), id = HIDD_ID(u);
 
 	if (page == HIDD_PAGE_DESKTOP && id >= HIDD_GD_X && id <= HIDD_GD_HAT)
-		put(o, "%s", gd[id - HIDD_GD_X]);
+		txt_put(o, "%s", gd[id - HIDD_GD_X]);
 	else if (page == HIDD_PAGE_BUTTON)
-		put(o, "Button%u", id);
+		txt_put(o, "Button%u", id);
 	else
-		put(o, "%04x:%04x", page, id);
+		txt_put(o, "%04x:%04x", page, id);
 }
 
 size_t hidd_describe(const struct hidd_desc *d, char *buf, size_t len)
 {
-	struct hidd_out o = { .buf = buf, .len = len };
+	struct txt o = { .buf = buf, .len = len };
 
 	if (len)
 		buf[0] = '\0';
 	for (size_t i = 0; i < d->nfield; i++) {
 		const struct hidd_field *f = &d->field[i];
 
-		put(&o, "report %u bit %u: %s %ux%u bit, %lld..%lld", f->report_id, f->bit,
-		    hidd_kind_name(f->kind), f->count, f->size, (long long)f->lmin,
-		    (long long)f->lmax);
+		txt_put(&o, "report %u bit %u: %s %ux%u bit, %lld..%lld", f->report_id, f->bit,
+			hidd_kind_name(f->kind), f->count, f->size, (long long)f->lmin,
+			(long long)f->lmax);
 		if (f->app != HIDD_NO_APP)
-			put(&o, ", app %u", f->app);
+			txt_put(&o, ", app %u", f->app);
 		for (uint32_t s = 0; s < f->nspan && s < 8; s++) {
 			const struct hidd_span *sp = &d->span[f->span0 + s];
 
-			put(&o, s ? " " : ": ");
+			txt_put(&o, s ? " " : ": ");
 			put_usage(&o, sp->first);
 			if (sp->last != sp->first) {
-				put(&o, "-");
+				txt_put(&o, "-");
 				put_usage(&o, sp->last);
 			}
 		}
 		if (f->nspan > 8)
-			put(&o, " ...");
-		put(&o, "\n");
+			txt_put(&o, " ...");
+		txt_put(&o, "\n");
 	}
-	return o.need;
+	return o.n;
 }

@@ -22,6 +22,9 @@
 
 #include <linux/input-event-codes.h>
 
+#include "engine/core/le.h"
+#include "input/txt.h"
+
 #define HIDR_CODES 0x300                 /* key codes below KEY_MAX */
 #define HIDR_WORDS (HIDR_CODES / 64)
 #define HIDR_AXES 11                     /* ABS_X .. ABS_BRAKE */
@@ -475,12 +478,9 @@ int hidr_max_events(const struct hidr *r)
 /* size bits at bit offset bit of p (bit + size within the buffer). */
 static uint32_t get_bits(const uint8_t *p, uint32_t bit, uint32_t size)
 {
-	uint64_t v = 0;
 	uint32_t first = bit / 8, n = (bit % 8 + size + 7) / 8;
+	uint64_t v = le_getn(p + first, (int)n) >> bit % 8;
 
-	for (uint32_t i = 0; i < n; i++)
-		v |= (uint64_t)p[first + i] << (8 * i);
-	v >>= bit % 8;
 	return (uint32_t)(size == 32 ? v : v & ((1ull << size) - 1));
 }
 
@@ -696,23 +696,9 @@ int hidr_calibrate(struct hidr *r, int abs_code, int64_t min, int64_t centre, in
 	return -ENOENT;
 }
 
-__attribute__((format(printf, 4, 5)))
-static void put(char *buf, size_t len, size_t *need, const char *fmt, ...)
-{
-	size_t room = *need < len ? len - *need : 0;
-	va_list ap;
-	int n;
-
-	va_start(ap, fmt);
-	n = vsnprintf(room ? buf + *need : NULL, room, fmt, ap);
-	va_end(ap);
-	if (n > 0)
-		*need += (size_t)n;
-}
-
 size_t hidr_describe(const struct hidr *r, char *buf, size_t len)
 {
-	size_t need = 0;
+	struct txt t = { .buf = buf, .len = len };
 
 	if (len)
 		buf[0] = '\0';
@@ -722,28 +708,29 @@ size_t hidr_describe(const struct hidr *r, char *buf, size_t len)
 		for (uint32_t k = 0; k < sl->nctl; k++) {
 			const struct hidr_ctl *c = &r->ctl[sl->ctl0 + k];
 
-			put(buf, len, &need, "report %u bit %u: ", sl->id, c->bit);
+			txt_put(&t, "report %u bit %u: ", sl->id, c->bit);
 			switch (c->what) {
 			case HIDR_C_KEY:
-				put(buf, len, &need, "%04x:%04x -> key %u", HIDD_PAGE(c->usage),
-				    HIDD_ID(c->usage), c->code);
+				txt_put(&t, "%04x:%04x -> key %u", HIDD_PAGE(c->usage),
+					HIDD_ID(c->usage), c->code);
 				break;
 			case HIDR_C_AXIS:
-				put(buf, len, &need, "axis %04x:%04x -> abs %u, %lld/%lld/%lld%s",
-				    HIDD_PAGE(c->usage), HIDD_ID(c->usage), c->code,
-				    (long long)c->cmin, (long long)c->ccen, (long long)c->cmax,
-				    c->axis == 0 ? ", left/right" : c->axis == 1 ? ", up/down" : "");
+				txt_put(&t, "axis %04x:%04x -> abs %u, %lld/%lld/%lld%s",
+					HIDD_PAGE(c->usage), HIDD_ID(c->usage), c->code,
+					(long long)c->cmin, (long long)c->ccen, (long long)c->cmax,
+					c->axis == 0 ? ", left/right" :
+					c->axis == 1 ? ", up/down" : "");
 				break;
 			case HIDR_C_HAT:
-				put(buf, len, &need, "hat -> directions");
+				txt_put(&t, "hat -> directions");
 				break;
 			default:
-				put(buf, len, &need, "%s x%u", hidd_kind_name(c->f->kind),
-				    c->f->count);
+				txt_put(&t, "%s x%u", hidd_kind_name(c->f->kind),
+					c->f->count);
 				break;
 			}
-			put(buf, len, &need, " p%u\n", c->player);
+			txt_put(&t, " p%u\n", c->player);
 		}
 	}
-	return need;
+	return t.n;
 }

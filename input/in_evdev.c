@@ -28,6 +28,8 @@
 
 #include <libevdev/libevdev.h>
 
+#include "engine/core/num.h"
+
 struct in_dev {
 	struct libevdev *ev;
 	int fd;
@@ -203,14 +205,10 @@ static int list_events(const char *dir, unsigned **nums, size_t *count)
 		return -errno;
 	while ((de = readdir(dh)) != NULL) {
 		const char *p = de->d_name;
-		char *end;
-		unsigned long num;
+		int64_t num;
 
-		if (strncmp(p, "event", 5) != 0 || p[5] < '0' || p[5] > '9')
-			continue;
-		errno = 0;
-		num = strtoul(p + 5, &end, 10);
-		if (*end != '\0' || errno || num > 1000000)
+		if (strncmp(p, "event", 5) != 0 || p[5] < '0' || p[5] > '9' ||
+		    num_parse(p + 5, 0, 1000000, &num) < 0)
 			continue;
 		if (n == cap) {
 			cap = cap ? cap * 2 : 16;

@@ -18,6 +18,7 @@
 #include <gpiod.h>
 #include <linux/input-event-codes.h>
 
+#include "engine/core/num.h"
 #include "input/deb.h"
 
 #define GPIO_MAGIC 0x6770696fu        /* "gpio": in_gpio_update checks its device */
@@ -171,12 +172,9 @@ static int parse_map(struct in_gpio_spec *s, char *t, char *why, size_t whylen)
 
 static int ms_option(const char *v, long lo, long hi, uint64_t *out)
 {
-	char *end;
-	long n;
+	int64_t n;
 
-	errno = 0;
-	n = strtol(v, &end, 10);
-	if (errno || end == v || *end || n < lo || n > hi)
+	if (num_parse(v, lo, hi, &n) < 0)
 		return -1;
 	*out = (uint64_t)n * 1000000u;
 	return 0;

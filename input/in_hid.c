@@ -21,8 +21,10 @@
 
 #include <hidapi.h>
 
+#include "engine/core/num.h"
 #include "input/hidd.h"
 #include "input/in.h"
+#include "input/io.h"
 
 #define HID_SYSFS "/sys"
 #define HID_MAX_READS 256        /* reports per read call: bounds the work of a tick */
@@ -86,19 +88,6 @@ static int axis_usage(const char *v)
 	return -1;
 }
 
-static int number(const char *v, long lo, long hi, long *out)
-{
-	char *end;
-	long n;
-
-	errno = 0;
-	n = strtol(v, &end, 10);
-	if (errno || end == v || *end || n < lo || n > hi)
-		return -1;
-	*out = n;
-	return 0;
-}
-
 static int hex16(const char *v, size_t len)
 {
 	int n = 0;
@@ -127,7 +116,7 @@ static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
 	char *eq = strchr(t, '=');
 	const char *v = eq ? eq + 1 : "";
 	const char *colon = strchr(t, ':');
-	long n;
+	int64_t n;
 	int a;
 
 	if (eq)
@@ -156,7 +145,7 @@ static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
 		if (copy_term(s->node, sizeof(s->node), v) < 0)
 			goto bad;
 	} else if (strcmp(t, "if") == 0) {
-		if (number(v, 0, 255, &n) < 0)
+		if (num_parse(v, 0, 255, &n) < 0)
 			goto bad;
 		s->iface = (int)n;
 	} else if (strcmp(t, "split") == 0) {
@@ -170,7 +159,7 @@ static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
 			goto bad;
 	} else if (strcmp(t, "deadzone") == 0 || strcmp(t, "press") == 0 ||
 		   strcmp(t, "release") == 0) {
-		if (number(v, 0, 1000, &n) < 0)
+		if (num_parse(v, 0, 1000, &n) < 0)
 			goto bad;
 		if (t[0] == 'd')
 			s->opts.deadzone = (uint16_t)n;
@@ -179,7 +168,7 @@ static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
 		else
 			s->opts.release = (uint16_t)n;
 	} else if (strcmp(t, "p2_button") == 0) {
-		if (number(v, 1, 65535, &n) < 0)
+		if (num_parse(v, 1, 65535, &n) < 0)
 			goto bad;
 		s->opts.p2_first_button = (uint16_t)n;
 	} else if (strcmp(t, "p2_x") == 0 || strcmp(t, "p2_y") == 0) {
@@ -275,49 +264,13 @@ int in_hid_port(const char *sysroot, const char *node, char *port, size_t len)
 int in_hid_read_desc(const char *sysroot, const char *node, uint8_t **buf, size_t *len)
 {
 	char path[PATH_MAX];
-	uint8_t *b;
-	size_t n = 0;
-	int fd, rc = 0;
 
 	*buf = NULL;
 	*len = 0;
 	if (snprintf(path, sizeof(path), "%s/class/hidraw/%s/device/report_descriptor", sysroot,
 		     node_base(node)) >= (int)sizeof(path))
 		return -ENAMETOOLONG;
-	b = malloc(HIDD_MAX_DESC + 1);
-	if (!b)
-		return -ENOMEM;
-	fd = open(path, O_RDONLY | O_CLOEXEC);
-	if (fd < 0) {
-		rc = -errno;
-		goto fail;
-	}
-	for (;;) {
-		ssize_t r = read(fd, b + n, HIDD_MAX_DESC + 1 - n);
-
-		if (r < 0 && errno == EINTR)
-			continue;
-		if (r < 0) {
-			rc = -errno;
-			break;
-		}
-		if (r == 0)
-			break;
-		n += (size_t)r;
-		if (n > HIDD_MAX_DESC) {
-			rc = -E2BIG;
-			break;
-		}
-	}
-	close(fd);
-	if (rc < 0)
-		goto fail;
-	*buf = b;
-	*len = n;
-	return 0;
-fail:
-	free(b);
-	return rc;
+	return io_read_file(path, HIDD_MAX_DESC, 0, buf, len);
 }
 
 /* UTF-8 of a hidapi wide string (UTF-32 on Linux) into buf, appended. */

@@ -83,7 +83,7 @@ int in_hid_configure(struct in_dev *d, const char *terms, char *why, size_t whyl
 int in_hid_port(const char *sysroot, const char *node, char *port, size_t len);
 
 /* Reads the report descriptor of node under sysroot into a new buffer
- * (free()); 0 or -errno (-E2BIG above HIDD_MAX_DESC bytes). */
+ * (free()); 0 or -errno (-EFBIG above HIDD_MAX_DESC bytes). */
 int in_hid_read_desc(const char *sysroot, const char *node, uint8_t **buf, size_t *len);
 
 struct in_hid_info {

@@ -17,6 +17,9 @@
 #include <unistd.h>
 
 #include "engine/core/hash.h"
+#include "engine/core/le.h"
+#include "input/io.h"
+#include "input/txt.h"
 
 static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 
@@ -27,51 +30,6 @@ static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 #define REC_BUF 4096
 /* Largest render size a header may name (r_new's limit). */
 #define REC_RENDER_MAX 4096
-
-static void rec_put16(uint8_t *p, uint16_t v)
-{
-	p[0] = (uint8_t)v;
-	p[1] = (uint8_t)(v >> 8);
-}
-
-static void rec_put32(uint8_t *p, uint32_t v)
-{
-	for (int i = 0; i < 4; i++)
-		p[i] = (uint8_t)(v >> (8 * i));
-}
-
-static void rec_put64(uint8_t *p, uint64_t v)
-{
-	for (int i = 0; i < 8; i++)
-		p[i] = (uint8_t)(v >> (8 * i));
-}
-
-static uint16_t rec_get16(const uint8_t *p)
-{
-	return (uint16_t)(p[0] | (unsigned)p[1] << 8);
-}
-
-static uint32_t rec_get32(const uint8_t *p)
-{
-	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
-
-static uint64_t rec_get64(const uint8_t *p)
-{
-	return (uint64_t)rec_get32(p) | (uint64_t)rec_get32(p + 4) << 32;
-}
-
-__attribute__((format(printf, 3, 4)))
-static void rec_msg(char *err, size_t errlen, const char *fmt, ...)
-{
-	va_list ap;
-
-	if (!err || !errlen)
-		return;
-	va_start(ap, fmt);
-	vsnprintf(err, errlen, fmt, ap);
-	va_end(ap);
-}
 
 size_t rec_record_size(uint8_t hash_flags)
 {
@@ -86,30 +44,30 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 
 	memset(out, 0, size);
 	memcpy(out, rec_magic, sizeof(rec_magic));
-	rec_put16(out + 8, h->version);
-	rec_put16(out + 10, h->tick_rate);
-	rec_put32(out + 12, (uint32_t)size + snap);
-	rec_put64(out + 16, h->map_hash);
-	rec_put32(out + 24, h->engine_version);
+	le_put16(out + 8, h->version);
+	le_put16(out + 10, h->tick_rate);
+	le_put32(out + 12, (uint32_t)size + snap);
+	le_put64(out + 16, h->map_hash);
+	le_put32(out + 24, h->engine_version);
 	out[28] = h->set.coins_per_credit;
 	out[29] = h->set.freeplay;
 	out[30] = h->set.start_in_play;
 	out[31] = h->set.difficulty;
-	rec_put32(out + 32, h->count);
+	le_put32(out + 32, h->count);
 	out[36] = h->set.lives;
 	if (size == REC_HEADER_SIZE)
 		return size;
-	rec_put16(out + 40, h->render_w);
-	rec_put16(out + 42, h->render_h);
+	le_put16(out + 40, h->render_w);
+	le_put16(out + 42, h->render_h);
 	out[44] = h->hash_flags;
 	out[45] = h->level;
-	rec_put32(out + 48, h->render_version);
+	le_put32(out + 48, h->render_version);
 	memcpy(out + 56, h->map_name, strnlen(h->map_name, 8));
-	rec_put64(out + 64, (uint64_t)h->start_time);
+	le_put64(out + 64, (uint64_t)h->start_time);
 	if (snap) {
 		out[44] |= REC_HAS_SNAPSHOT;
-		rec_put32(out + 52, snap);
-		rec_put64(out + 72, h->snapshot ? hash_bytes(HASH_INIT, h->snapshot, snap)
+		le_put32(out + 52, snap);
+		le_put64(out + 72, h->snapshot ? hash_bytes(HASH_INIT, h->snapshot, snap)
 						: h->snapshot_sum);
 	}
 	return size;
@@ -121,94 +79,94 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 	struct rec_header d;
 
 	if (len < REC_HEADER_SIZE) {
-		rec_msg(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
+		txt_set(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
 			REC_HEADER_SIZE);
 		return -EINVAL;
 	}
 	if (memcmp(buf, rec_magic, sizeof(rec_magic)) != 0) {
-		rec_msg(err, errlen, "bad magic (not an arcaded recording)");
+		txt_set(err, errlen, "bad magic (not an arcaded recording)");
 		return -EINVAL;
 	}
 	memset(&d, 0, sizeof(d));
-	d.version = rec_get16(buf + 8);
-	d.tick_rate = rec_get16(buf + 10);
-	d.header_size = rec_get32(buf + 12);
-	d.map_hash = rec_get64(buf + 16);
-	d.engine_version = rec_get32(buf + 24);
+	d.version = le_get16(buf + 8);
+	d.tick_rate = le_get16(buf + 10);
+	d.header_size = le_get32(buf + 12);
+	d.map_hash = le_get64(buf + 16);
+	d.engine_version = le_get32(buf + 24);
 	d.set.coins_per_credit = buf[28];
 	d.set.freeplay = buf[29];
 	d.set.start_in_play = buf[30];
 	d.set.difficulty = buf[31];
-	d.count = rec_get32(buf + 32);
+	d.count = le_get32(buf + 32);
 	d.set.lives = buf[36];
 	if (d.version == 0) {
-		rec_msg(err, errlen, "version 0 is not a valid version");
+		txt_set(err, errlen, "version 0 is not a valid version");
 		return -EINVAL;
 	}
 	if (d.version > REC_VERSION_MAX) {
-		rec_msg(err, errlen, "version %u is newer than this build (%d)", d.version,
+		txt_set(err, errlen, "version %u is newer than this build (%d)", d.version,
 			REC_VERSION_MAX);
 		return -EINVAL;
 	}
 	if (d.version >= REC_VERSION_2 && len < REC_HEADER_SIZE_V2) {
-		rec_msg(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
+		txt_set(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
 			REC_HEADER_SIZE_V2);
 		return -EINVAL;
 	}
 	if (d.header_size < (d.version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE)) {
-		rec_msg(err, errlen, "header size %" PRIu32 " is smaller than %d", d.header_size,
+		txt_set(err, errlen, "header size %" PRIu32 " is smaller than %d", d.header_size,
 			d.version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE);
 		return -EINVAL;
 	}
 	if (d.header_size > REC_HEADER_SIZE_MAX) {
-		rec_msg(err, errlen, "header size %" PRIu32 " is larger than %u", d.header_size,
+		txt_set(err, errlen, "header size %" PRIu32 " is larger than %u", d.header_size,
 			REC_HEADER_SIZE_MAX);
 		return -EINVAL;
 	}
 	if (d.tick_rate != SIM_TICRATE) {
-		rec_msg(err, errlen, "tick rate %u is not %d", d.tick_rate, SIM_TICRATE);
+		txt_set(err, errlen, "tick rate %u is not %d", d.tick_rate, SIM_TICRATE);
 		return -EINVAL;
 	}
 	if (d.set.coins_per_credit < 1 || d.set.coins_per_credit > 9) {
-		rec_msg(err, errlen, "coins_per_credit %u out of range 1..9",
+		txt_set(err, errlen, "coins_per_credit %u out of range 1..9",
 			d.set.coins_per_credit);
 		return -EINVAL;
 	}
 	if (d.set.freeplay > 1 || d.set.start_in_play > 1) {
-		rec_msg(err, errlen, "freeplay %u / start_in_play %u is not 0 or 1",
+		txt_set(err, errlen, "freeplay %u / start_in_play %u is not 0 or 1",
 			d.set.freeplay, d.set.start_in_play);
 		return -EINVAL;
 	}
 	if (d.set.difficulty > 3) {
-		rec_msg(err, errlen, "difficulty %u out of range 0..3", d.set.difficulty);
+		txt_set(err, errlen, "difficulty %u out of range 0..3", d.set.difficulty);
 		return -EINVAL;
 	}
 	if (d.set.lives > 9) {
-		rec_msg(err, errlen, "lives %u out of range 0..9", d.set.lives);
+		txt_set(err, errlen, "lives %u out of range 0..9", d.set.lives);
 		return -EINVAL;
 	}
 	if (d.version >= REC_VERSION_2) {
-		d.render_w = rec_get16(buf + 40);
-		d.render_h = rec_get16(buf + 42);
+		d.render_w = le_get16(buf + 40);
+		d.render_h = le_get16(buf + 42);
 		d.hash_flags = buf[44];
 		d.level = buf[45];
-		d.render_version = rec_get32(buf + 48);
+		d.render_version = le_get32(buf + 48);
 		memcpy(d.map_name, buf + 56, 8);
 		d.map_name[8] = '\0';
-		d.start_time = (int64_t)rec_get64(buf + 64);
+		d.start_time = (int64_t)le_get64(buf + 64);
 		if (d.hash_flags & ~(REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_SNAPSHOT)) {
-			rec_msg(err, errlen, "hash flags 0x%02x unknown", d.hash_flags);
+			txt_set(err, errlen, "hash flags 0x%02x unknown", d.hash_flags);
 			return -EINVAL;
 		}
 		if (d.hash_flags & REC_HAS_SNAPSHOT) {
-			d.snapshot_len = rec_get32(buf + 52);
-			d.snapshot_sum = rec_get64(buf + 72);
+			d.snapshot_len = le_get32(buf + 52);
+			d.snapshot_sum = le_get64(buf + 72);
 			if (d.snapshot_len == 0) {
-				rec_msg(err, errlen, "snapshot of 0 bytes");
+				txt_set(err, errlen, "snapshot of 0 bytes");
 				return -EINVAL;
 			}
 			if (d.snapshot_len > d.header_size - REC_HEADER_SIZE_V2) {
-				rec_msg(err, errlen,
+				txt_set(err, errlen,
 					"snapshot of %" PRIu32 " bytes does not fit in header size %" PRIu32,
 					d.snapshot_len, d.header_size);
 				return -EINVAL;
@@ -216,14 +174,14 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		}
 		if (d.render_w > REC_RENDER_MAX || d.render_h > REC_RENDER_MAX ||
 		    (d.render_w == 0) != (d.render_h == 0)) {
-			rec_msg(err, errlen, "render size %ux%u out of range", d.render_w,
+			txt_set(err, errlen, "render size %ux%u out of range", d.render_w,
 				d.render_h);
 			return -EINVAL;
 		}
 		for (int i = 0; i < 8; i++) {
 			unsigned char ch = (unsigned char)d.map_name[i];
 			if (ch != 0 && (ch < 0x21 || ch > 0x7e)) {
-				rec_msg(err, errlen, "map name is not printable ASCII");
+				txt_set(err, errlen, "map name is not printable ASCII");
 				return -EINVAL;
 			}
 		}
@@ -237,7 +195,7 @@ void rec_cmd_encode(uint8_t out[REC_CMD_SIZE], const struct sim_cmd *c)
 	/* Two's complement by conversion to the unsigned type: defined in C. */
 	out[0] = (uint8_t)c->forward;
 	out[1] = (uint8_t)c->side;
-	rec_put16(out + 2, (uint16_t)c->turn);
+	le_put16(out + 2, (uint16_t)c->turn);
 	out[4] = c->buttons;
 	out[5] = c->coins;
 }
@@ -249,34 +207,13 @@ static int8_t rec_s8(uint8_t v)
 	return (int8_t)(v < 128 ? (int)v : (int)v - 256);
 }
 
-static int16_t rec_s16(uint16_t v)
-{
-	return (int16_t)(v < 32768 ? (int32_t)v : (int32_t)v - 65536);
-}
-
 void rec_cmd_decode(const uint8_t in[REC_CMD_SIZE], struct sim_cmd *c)
 {
 	c->forward = rec_s8(in[0]);
 	c->side = rec_s8(in[1]);
-	c->turn = rec_s16(rec_get16(in + 2));
+	c->turn = le_s16(in + 2);
 	c->buttons = in[4];
 	c->coins = in[5];
-}
-
-static int rec_write_all(int fd, const uint8_t *p, size_t n)
-{
-	while (n) {
-		ssize_t w = write(fd, p, n);
-
-		if (w < 0) {
-			if (errno == EINTR)
-				continue;
-			return -errno;
-		}
-		p += w;
-		n -= (size_t)w;
-	}
-	return 0;
 }
 
 /* Reads up to n bytes, fewer only at end of file. Returns the count or -errno. */
@@ -336,9 +273,9 @@ int rec_writer_open(const char *path, const struct rec_header *h, struct rec_wri
 		ret = -errno;
 		goto fail_free;
 	}
-	ret = rec_write_all(w->fd, hdr, size);
+	ret = io_write_all(w->fd, hdr, size);
 	if (ret == 0 && hh.snapshot_len)
-		ret = rec_write_all(w->fd, hh.snapshot, hh.snapshot_len);
+		ret = io_write_all(w->fd, hh.snapshot, hh.snapshot_len);
 	if (ret < 0)
 		goto fail_close;
 	*out = w;
@@ -354,7 +291,7 @@ int rec_writer_flush(struct rec_writer *w)
 {
 	if (w->err)
 		return w->err;
-	w->err = rec_write_all(w->fd, w->buf, w->n);
+	w->err = io_write_all(w->fd, w->buf, w->n);
 	w->n = 0;
 	return w->err;
 }
@@ -374,11 +311,11 @@ int rec_writer_put_tick(struct rec_writer *w, const struct rec_tick *t)
 	rec_cmd_encode(p, &t->cmd);
 	p += REC_CMD_SIZE;
 	if (w->flags & REC_HAS_STATE) {
-		rec_put64(p, t->state_hash);
+		le_put64(p, t->state_hash);
 		p += 8;
 	}
 	if (w->flags & REC_HAS_FRAME)
-		rec_put64(p, t->frame_hash);
+		le_put64(p, t->frame_hash);
 	w->n += w->recsize;
 	w->count++;
 	return 0;
@@ -404,7 +341,7 @@ int rec_writer_close(struct rec_writer *w)
 	if (ret == 0) {
 		ssize_t pw;
 
-		rec_put32(cnt, w->count);
+		le_put32(cnt, w->count);
 		pw = pwrite(w->fd, cnt, sizeof(cnt), 32);
 		if (pw < 0)
 			ret = -errno;
@@ -441,34 +378,34 @@ static int rec_read_snapshot(struct rec_reader *r, const char *path, uint64_t si
 	ssize_t got;
 
 	if (size < REC_HEADER_SIZE_V2 + (uint64_t)len) {
-		rec_msg(err, errlen, "%s: snapshot cut short (%" PRIu64 " of %" PRIu32 " bytes)",
+		txt_set(err, errlen, "%s: snapshot cut short (%" PRIu64 " of %" PRIu32 " bytes)",
 			path, size > REC_HEADER_SIZE_V2 ? size - REC_HEADER_SIZE_V2 : 0, len);
 		return -EINVAL;
 	}
 	r->snap = malloc(len);
 	if (!r->snap) {
-		rec_msg(err, errlen, "%s: out of memory", path);
+		txt_set(err, errlen, "%s: out of memory", path);
 		return -ENOMEM;
 	}
 	if (lseek(r->fd, REC_HEADER_SIZE_V2, SEEK_SET) < 0) {
 		int e = errno;
 
-		rec_msg(err, errlen, "%s: %s", path, strerror(e));
+		txt_set(err, errlen, "%s: %s", path, strerror(e));
 		return -e;
 	}
 	got = rec_read_all(r->fd, r->snap, len);
 	if (got < 0) {
-		rec_msg(err, errlen, "%s: %s", path, strerror((int)-got));
+		txt_set(err, errlen, "%s: %s", path, strerror((int)-got));
 		return (int)got;
 	}
 	if ((size_t)got < len) {
-		rec_msg(err, errlen, "%s: snapshot cut short (%zd of %" PRIu32 " bytes)", path, got,
+		txt_set(err, errlen, "%s: snapshot cut short (%zd of %" PRIu32 " bytes)", path, got,
 			len);
 		return -EINVAL;
 	}
 	sum = hash_bytes(HASH_INIT, r->snap, len);
 	if (sum != r->h.snapshot_sum) {
-		rec_msg(err, errlen,
+		txt_set(err, errlen,
 			"%s: snapshot damaged (checksum 0x%016" PRIx64 ", the header says 0x%016" PRIx64
 			")", path, sum, r->h.snapshot_sum);
 		return -EINVAL;
@@ -489,29 +426,29 @@ int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t
 
 	r = calloc(1, sizeof(*r));
 	if (!r) {
-		rec_msg(err, errlen, "%s: out of memory", path);
+		txt_set(err, errlen, "%s: out of memory", path);
 		return -ENOMEM;
 	}
 	r->fd = open(path, O_RDONLY | O_CLOEXEC);
 	if (r->fd < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto fail_free;
 	}
 	if (fstat(r->fd, &sb) < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto fail_close;
 	}
 	got = rec_read_all(r->fd, hdr, sizeof(hdr));
 	if (got < 0) {
 		ret = (int)got;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto fail_close;
 	}
 	ret = rec_header_decode(hdr, (size_t)got, &r->h, why, sizeof(why));
 	if (ret < 0) {
-		rec_msg(err, errlen, "%s: %s", path, why);
+		txt_set(err, errlen, "%s: %s", path, why);
 		goto fail_close;
 	}
 	if (r->h.snapshot_len) {
@@ -521,13 +458,13 @@ int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t
 	}
 	if ((uint64_t)sb.st_size < r->h.header_size) {
 		ret = -EINVAL;
-		rec_msg(err, errlen, "%s: file too short (%jd bytes, the header says %" PRIu32 ")",
+		txt_set(err, errlen, "%s: file too short (%jd bytes, the header says %" PRIu32 ")",
 			path, (intmax_t)sb.st_size, r->h.header_size);
 		goto fail_close;
 	}
 	if (lseek(r->fd, r->h.header_size, SEEK_SET) < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto fail_close;
 	}
 	r->recsize = rec_record_size(r->h.hash_flags);
@@ -589,11 +526,11 @@ int rec_reader_next_tick(struct rec_reader *r, struct rec_tick *t)
 	t->state_hash = 0;
 	t->frame_hash = 0;
 	if (r->h.hash_flags & REC_HAS_STATE) {
-		t->state_hash = rec_get64(p);
+		t->state_hash = le_get64(p);
 		p += 8;
 	}
 	if (r->h.hash_flags & REC_HAS_FRAME)
-		t->frame_hash = rec_get64(p);
+		t->frame_hash = le_get64(p);
 	r->bi += r->recsize;
 	r->pos++;
 	return 1;
@@ -635,7 +572,7 @@ int rec_check(const struct rec_header *h, uint64_t map_hash, char *err, size_t e
 			 n ? "; " : "", h->engine_version, REC_ENGINE_VERSION);
 	if (buf[0] == '\0')
 		return 0;
-	rec_msg(err, errlen, "%s", buf);
+	txt_set(err, errlen, "%s", buf);
 	return -EINVAL;
 }
 
@@ -681,24 +618,14 @@ int rec_check_run(const struct rec_header *h, const struct rec_run *run, char *e
 		rec_join(buf, sizeof(buf), &n,
 			 "engine version differs: recording %" PRIu32 ", this build %d",
 			 h->engine_version, REC_ENGINE_VERSION);
-	if (h->set.coins_per_credit != run->set.coins_per_credit)
-		rec_join(buf, sizeof(buf), &n,
-			 "settings differ: coins_per_credit recording %u, this run %u",
-			 h->set.coins_per_credit, run->set.coins_per_credit);
-	if (h->set.freeplay != run->set.freeplay)
-		rec_join(buf, sizeof(buf), &n, "settings differ: freeplay recording %u, this run %u",
-			 h->set.freeplay, run->set.freeplay);
-	if (h->set.start_in_play != run->set.start_in_play)
-		rec_join(buf, sizeof(buf), &n,
-			 "settings differ: start_in_play recording %u, this run %u",
-			 h->set.start_in_play, run->set.start_in_play);
-	if (h->set.difficulty != run->set.difficulty)
-		rec_join(buf, sizeof(buf), &n,
-			 "settings differ: difficulty recording %u, this run %u",
-			 h->set.difficulty, run->set.difficulty);
-	if (h->set.lives != run->set.lives)
-		rec_join(buf, sizeof(buf), &n, "settings differ: lives recording %u, this run %u",
-			 h->set.lives, run->set.lives);
+	/* every setting, from the settings' field list (engine/game/sim.h) */
+#define REC_SETTING_DIFFERS(kind, type, name, limit)                                     \
+	if (h->set.name != run->set.name)                                                \
+		rec_join(buf, sizeof(buf), &n,                                           \
+			 "settings differ: " #name " recording %u, this run %u",          \
+			 h->set.name, run->set.name);
+	SIM_SETTINGS_FIELDS(REC_SETTING_DIFFERS)
+#undef REC_SETTING_DIFFERS
 	if (h->level && h->level != run->level)
 		rec_join(buf, sizeof(buf), &n, "level differs: recording %u, loaded %u", h->level,
 			 run->level);
@@ -717,7 +644,7 @@ int rec_check_run(const struct rec_header *h, const struct rec_run *run, char *e
 	}
 	if (n == 0)
 		return 0;
-	rec_msg(err, errlen, "%s", buf);
+	txt_set(err, errlen, "%s", buf);
 	return -EINVAL;
 }
 
@@ -739,13 +666,13 @@ void rec_verify_init(struct rec_verify *v, const struct rec_header *h, const str
 	if (!(h->hash_flags & REC_HAS_FRAME))
 		return;
 	if (run->render_w == 0)
-		rec_msg(v->note, sizeof(v->note), "frame hashes not compared: not rendering");
+		txt_set(v->note, sizeof(v->note), "frame hashes not compared: not rendering");
 	else if (h->render_w != run->render_w || h->render_h != run->render_h)
-		rec_msg(v->note, sizeof(v->note),
+		txt_set(v->note, sizeof(v->note),
 			"frame hashes not compared: recorded at %ux%u, rendering %ux%u",
 			h->render_w, h->render_h, run->render_w, run->render_h);
 	else if (h->render_version != REC_RENDER_VERSION)
-		rec_msg(v->note, sizeof(v->note),
+		txt_set(v->note, sizeof(v->note),
 			"frame hashes not compared: drawn by renderer version %" PRIu32
 			", this build draws version %d",
 			h->render_version, REC_RENDER_VERSION);
@@ -774,11 +701,11 @@ int rec_verify_tick(struct rec_verify *v, uint32_t tick, const struct rec_tick *
 	if (v->first_bad < 0) {
 		v->first_bad = tick;
 		if (sbad)
-			rec_msg(v->first, sizeof(v->first),
+			txt_set(v->first, sizeof(v->first),
 				"state hash recording 0x%016" PRIx64 ", replay 0x%016" PRIx64,
 				rec->state_hash, state);
 		else
-			rec_msg(v->first, sizeof(v->first),
+			txt_set(v->first, sizeof(v->first),
 				"frame hash recording 0x%016" PRIx64 ", replay 0x%016" PRIx64
 				" (state hashes equal)",
 				rec->frame_hash, frame);
@@ -794,7 +721,7 @@ int rec_verify_summary(const struct rec_verify *v, char *buf, size_t len)
 	if (v->note[0])
 		snprintf(note, sizeof(note), " (%s)", v->note);
 	if (v->first_bad >= 0) {
-		rec_msg(buf, len,
+		txt_set(buf, len,
 			"verify: FAILED: first difference at tick %" PRId64 ": %s; %" PRIu32
 			" state and %" PRIu32 " frame hashes differ of %" PRIu32 " ticks%s",
 			v->first_bad, v->first, v->state_bad, v->frame_bad, v->ticks, note);
@@ -802,10 +729,10 @@ int rec_verify_summary(const struct rec_verify *v, char *buf, size_t len)
 	}
 	ret = v->state_checked + v->frame_checked ? 0 : 1;
 	if (ret)
-		rec_msg(buf, len, "verify: %" PRIu32 " ticks, nothing compared: the recording "
+		txt_set(buf, len, "verify: %" PRIu32 " ticks, nothing compared: the recording "
 			"holds no hashes%s", v->ticks, note);
 	else
-		rec_msg(buf, len, "verify: %" PRIu32 " ticks, %" PRIu32 " state and %" PRIu32
+		txt_set(buf, len, "verify: %" PRIu32 " ticks, %" PRIu32 " state and %" PRIu32
 			" frame hashes equal%s", v->ticks, v->state_checked, v->frame_checked, note);
 	return ret;
 }
@@ -822,18 +749,18 @@ int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen)
 	fd = open(path, O_RDWR | O_CLOEXEC | O_NOFOLLOW);
 	if (fd < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		return ret;
 	}
 	if (fstat(fd, &sb) < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto out;
 	}
 	got = rec_read_all(fd, hdr, sizeof(hdr));
 	if (got < 0) {
 		ret = (int)got;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto out;
 	}
 	ret = rec_header_decode(hdr, (size_t)got, &h, err, errlen);
@@ -841,7 +768,7 @@ int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen)
 		goto out;
 	if ((uint64_t)sb.st_size < h.header_size) {
 		ret = -EINVAL;
-		rec_msg(err, errlen, "file too short for its header");
+		txt_set(err, errlen, "file too short for its header");
 		goto out;
 	}
 	if (h.count != REC_COUNT_UNKNOWN) {
@@ -853,14 +780,14 @@ int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen)
 		whole = REC_COUNT_UNKNOWN - 1;
 	if (ftruncate(fd, (off_t)(h.header_size + whole * rec_record_size(h.hash_flags))) < 0) {
 		ret = -errno;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto out;
 	}
-	rec_put32(cnt, (uint32_t)whole);
+	le_put32(cnt, (uint32_t)whole);
 	errno = 0;
 	if (pwrite(fd, cnt, sizeof(cnt), 32) != (ssize_t)sizeof(cnt) || fsync(fd) < 0) {
 		ret = errno ? -errno : -EIO;
-		rec_msg(err, errlen, "%s: %s", path, strerror(-ret));
+		txt_set(err, errlen, "%s: %s", path, strerror(-ret));
 		goto out;
 	}
 	*count = (uint32_t)whole;

@@ -64,6 +64,11 @@
 #define REC_VERSION_2 2             /* run description and per-tick hashes */
 #define REC_VERSION_MAX 2           /* newest version this build reads */
 #define REC_ENGINE_VERSION 2         /* 2: the game: enemies, stages, modes, menu */
+/* sim_snapshot_size() at REC_ENGINE_VERSION. A field added to the sim's
+ * state (engine/game/sim_table.h) changes the size and every state hash:
+ * raise REC_ENGINE_VERSION and set this to the new size, together
+ * (test_rec fails on the size until then, as a reminder of the version). */
+#define REC_ENGINE_SNAPSHOT 6620
 /* Bumped whenever the renderer draws any frame differently (engine/render/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */

@@ -6,17 +6,15 @@
 #include "input/scr.h"
 
 #include <errno.h>
-#include <fcntl.h>
 #include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "engine/game/sim.h"
 #include "input/act.h"
+#include "input/io.h"
 
 #define SCR_FILE_MAX (1 << 20)
 #define SCR_PATH_MAX 4096
@@ -521,60 +519,21 @@ void scr_free(struct scr *s)
 
 int scr_load(const char *path, struct scr **out, char *err, size_t errlen)
 {
-	struct stat sb;
-	char *buf = NULL;
-	size_t n = 0;
-	int fd, ret;
+	uint8_t *buf;
+	size_t n;
+	int ret = io_read_file(path, SCR_FILE_MAX, 0, &buf, &n);
 
-	fd = open(path, O_RDONLY | O_CLOEXEC);
-	if (fd < 0) {
-		ret = -errno;
-		goto fail;
-	}
-	if (fstat(fd, &sb) < 0) {
-		ret = -errno;
-		goto fail;
-	}
-	if (S_ISDIR(sb.st_mode)) {
-		ret = -EISDIR;
-		goto fail;
-	}
-	/* One byte past the limit tells a too-large file (or pipe) apart. */
-	buf = malloc(SCR_FILE_MAX + 1);
-	if (!buf) {
-		ret = -ENOMEM;
-		goto fail;
-	}
-	while (n <= SCR_FILE_MAX) {
-		ssize_t r = read(fd, buf + n, SCR_FILE_MAX + 1 - n);
-
-		if (r < 0) {
-			if (errno == EINTR)
-				continue;
-			ret = -errno;
-			goto fail;
-		}
-		if (r == 0)
-			break;
-		n += (size_t)r;
-	}
-	if (n > SCR_FILE_MAX) {
+	if (ret == -EFBIG) {
 		if (err && errlen)
 			snprintf(err, errlen, "%s: file is larger than %d bytes", path, SCR_FILE_MAX);
-		ret = -EFBIG;
-		goto out;
+		return ret;
 	}
-	close(fd);
-	fd = -1;
-	ret = scr_parse(buf, n, path, out, err, errlen);
+	if (ret < 0) {
+		if (err && errlen)
+			snprintf(err, errlen, "%s: %s", path, strerror(-ret));
+		return ret;
+	}
+	ret = scr_parse((const char *)buf, n, path, out, err, errlen);
 	free(buf);
-	return ret;
-fail:
-	if (err && errlen)
-		snprintf(err, errlen, "%s: %s", path, strerror(-ret));
-out:
-	free(buf);
-	if (fd >= 0)
-		close(fd);
 	return ret;
 }

@@ -59,6 +59,7 @@ fi
 passed=$((passed + 1))
 
 step check-layers make --no-print-directory check-layers
+step check-state make --no-print-directory check-state
 step check-tables make --no-print-directory check-tables
 step check-levels make --no-print-directory check-levels
 step check-systemd make --no-print-directory check-systemd
@@ -75,6 +76,25 @@ case $rc in
 0) echo "PASS vm"; passed=$((passed + 1)) ;;
 77) grep -A1 'VM TESTS SKIPPED' "$LOG/vm.log"; echo "SKIP vm"; skipped=$((skipped + 1)) ;;
 *) echo "FAIL vm (log: $LOG/vm.log)"; failed=$((failed + 1)); failures="$failures vm" ;;
+esac
+# The Debian package, its life cycle in a clean chroot, the cabinet image
+# and its boots with power cuts (docs/packaging.md).
+step deb scripts/deb.sh
+step package-lifecycle tests/pkg/run.sh build/deb/arcaded.deb
+step image scripts/image.sh build/deb/arcaded.deb build/image
+echo "=== image-powercuts"
+if [ -s build/image/arcaded.img ]; then
+	POWERCUTS=${POWERCUTS:-20} tests/image/run.sh build/image/arcaded.img > "$LOG/image-powercuts.log" 2>&1
+	rc=$?
+else
+	echo "no image (see the image step)" > "$LOG/image-powercuts.log"
+	rc=1
+fi
+grep -E '^(PASS|FAIL|FIGURE)|^image-test: ' "$LOG/image-powercuts.log" | tail -n 40
+case $rc in
+0) echo "PASS image-powercuts"; passed=$((passed + 1)) ;;
+77) echo "SKIP image-powercuts"; skipped=$((skipped + 1)) ;;
+*) echo "FAIL image-powercuts (log: $LOG/image-powercuts.log)"; failed=$((failed + 1)); failures="$failures image-powercuts" ;;
 esac
 step build-O0 make --no-print-directory -j"$JOBS" BUILD=build/O0 OPT="-O0 -g" all
 step script-tests tests/script/run.sh build/arcaded

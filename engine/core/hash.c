@@ -5,6 +5,8 @@
  */
 #include "engine/core/hash.h"
 
+#include "engine/core/le.h"
+
 #define HASH_PRIME 0x100000001b3ull
 
 uint64_t hash_bytes(uint64_t h, const void *p, size_t n)
@@ -26,27 +28,25 @@ uint64_t hash_u8(uint64_t h, uint8_t v)
 
 uint64_t hash_u16(uint64_t h, uint16_t v)
 {
-	unsigned char b[2] = { (unsigned char)v, (unsigned char)(v >> 8) };
+	uint8_t b[2];
+
+	le_put16(b, v);
 	return hash_bytes(h, b, sizeof b);
 }
 
 uint64_t hash_u32(uint64_t h, uint32_t v)
 {
-	unsigned char b[4];
-	int i;
+	uint8_t b[4];
 
-	for (i = 0; i < 4; i++)
-		b[i] = (unsigned char)(v >> (8 * i));
+	le_put32(b, v);
 	return hash_bytes(h, b, sizeof b);
 }
 
 uint64_t hash_u64(uint64_t h, uint64_t v)
 {
-	unsigned char b[8];
-	int i;
+	uint8_t b[8];
 
-	for (i = 0; i < 8; i++)
-		b[i] = (unsigned char)(v >> (8 * i));
+	le_put64(b, v);
 	return hash_bytes(h, b, sizeof b);
 }
 

@@ -19,6 +19,7 @@
 #include <stdint.h>
 
 #include "engine/core/fx.h"
+#include "engine/game/sim_table.h"
 
 #define G_MAX_ENEMIES 96
 #define G_MAX_PICKUPS 96
@@ -64,31 +65,42 @@ enum g_estate {
 	G_E_DEAD                       /* a corpse: not solid, not counted */
 };
 
+/* Its fields: engine/game/sim_table.h. */
+#define G_ENEMY_FIELDS(X) \
+	X(VAL, fx_t, x, SIM_COORD) \
+	X(VAL, fx_t, y, SIM_COORD) \
+	X(VAL, fx_t, z, SIM_COORD) \
+	X(VAL, ang_t, angle, SIM_ANY)               /* facing, for sprites */ \
+	X(VAL, uint32_t, sector, SIM_SECTOR) \
+	X(VAL, fx_t, sx, SIM_COORD)                 /* spawn point (respawn after a death) */ \
+	X(VAL, fx_t, sy, SIM_COORD) \
+	X(VAL, ang_t, sangle, SIM_ANY) \
+	/* the map thing's Doom type (sprite choice) */ \
+	X(VAL, uint16_t, type, SIM_ANY) \
+	X(VAL, uint8_t, kind, SIM_MAX(G_KINDS - 1)) /* enum g_kind */ \
+	X(VAL, uint8_t, state, SIM_MAX(G_E_DEAD))   /* enum g_estate */ \
+	X(VAL, int16_t, health, SIM_ANY) \
+	X(VAL, uint16_t, timer, SIM_ANY)            /* attack countdown / pain ticks */ \
+	X(VAL, uint16_t, anim, SIM_ANY)             /* ticks in the current state */ \
+	X(VAL, ang_t, wander, SIM_ANY)              /* detour heading while stuck */ \
+	X(VAL, uint8_t, stuck, SIM_ANY)             /* detour ticks left */ \
+	X(VAL, uint8_t, flash, SIM_ANY)             /* ticks of the attack flash (sprites) */
 struct g_enemy {
-	fx_t x, y, z;
-	ang_t angle;                   /* facing, for sprites */
-	uint32_t sector;
-	fx_t sx, sy;                   /* spawn point (respawn after a death) */
-	ang_t sangle;
-	uint16_t type;                 /* the map thing's Doom type (sprite choice) */
-	uint8_t kind;                  /* enum g_kind */
-	uint8_t state;                 /* enum g_estate */
-	int16_t health;
-	uint16_t timer;                /* attack countdown / pain ticks */
-	uint16_t anim;                 /* ticks in the current state */
-	ang_t wander;                  /* detour heading while stuck */
-	uint8_t stuck;                 /* detour ticks left */
-	uint8_t flash;                 /* ticks of the attack flash (sprites) */
+	G_ENEMY_FIELDS(SIM_MEMBER)
 };
 
 enum g_pkind { G_P_HEALTH, G_P_AMMO };
 
+#define G_PICKUP_FIELDS(X) \
+	X(VAL, fx_t, x, SIM_COORD) \
+	X(VAL, fx_t, y, SIM_COORD) \
+	X(VAL, fx_t, z, SIM_COORD) \
+	X(VAL, uint16_t, type, SIM_ANY)             /* Doom thing type */ \
+	X(VAL, uint8_t, kind, SIM_MAX(G_P_AMMO))    /* enum g_pkind */ \
+	X(VAL, uint8_t, taken, SIM_MAX(1)) \
+	X(VAL, uint16_t, amount, SIM_ANY)
 struct g_pickup {
-	fx_t x, y, z;
-	uint16_t type;                 /* Doom thing type */
-	uint8_t kind;                  /* enum g_pkind */
-	uint8_t taken;
-	uint16_t amount;
+	G_PICKUP_FIELDS(SIM_MEMBER)
 };
 
 /* Phases of a game in progress (mode PLAY). */
@@ -108,45 +120,56 @@ enum g_phase {
 /* What the last shot did, for the HUD and the puff sprite. */
 enum g_shot { G_SHOT_NONE, G_SHOT_WALL, G_SHOT_ENEMY, G_SHOT_MISS };
 
+#define G_GAME_FIELDS(X) \
+	X(VAL, uint32_t, score, SIM_ANY) \
+	X(VAL, uint8_t, lives, SIM_ANY)             /* left, including the current one */ \
+	X(VAL, uint8_t, continues, SIM_ANY)         /* used in this game */ \
+	X(VAL, uint8_t, stage, SIM_MAX(s->num_stages - 1))  /* index into the sim's stages */ \
+	X(VAL, uint8_t, loop, SIM_ANY)              /* times every stage was cleared */ \
+	X(VAL, uint8_t, phase, SIM_MAX(G_PH_CLEAR)) /* enum g_phase */ \
+	X(VAL, uint16_t, phase_t, SIM_ANY)          /* ticks in the phase */ \
+	X(VAL, uint32_t, stage_t, SIM_ANY)          /* ticks since the stage started */ \
+	X(VAL, uint32_t, kills, SIM_ANY)            /* in this game */ \
+	X(VAL, uint16_t, num_enemies, SIM_MAX(G_MAX_ENEMIES)) \
+	X(VAL, uint16_t, num_pickups, SIM_MAX(G_MAX_PICKUPS)) \
+	X(VAL, uint16_t, alive, SIM_MAX(p->num_enemies))  /* enemies not dead */ \
+	X(SUBS, g_enemy, en, G_MAX_ENEMIES, p->num_enemies) \
+	X(SUBS, g_pickup, pk, G_MAX_PICKUPS, p->num_pickups) \
+	X(VAL, fx_t, shot_x, SIM_COORD)             /* where the last shot ended */ \
+	X(VAL, fx_t, shot_y, SIM_COORD) \
+	X(VAL, fx_t, shot_z, SIM_COORD) \
+	X(VAL, uint8_t, shot, SIM_MAX(G_SHOT_MISS)) /* enum g_shot */ \
+	X(VAL, uint16_t, shot_t, SIM_ANY)           /* ticks since the last shot (saturates) */
 struct g_game {
-	uint32_t score;
-	uint8_t lives;                 /* left, including the current one */
-	uint8_t continues;             /* used in this game */
-	uint8_t stage;                 /* index into the sim's stages */
-	uint8_t loop;                  /* times every stage was cleared */
-	uint8_t phase;                 /* enum g_phase */
-	uint16_t phase_t;              /* ticks in the phase */
-	uint32_t stage_t;              /* ticks since the stage started */
-	uint32_t kills;                /* in this game */
-	uint16_t num_enemies, num_pickups;
-	uint16_t alive;                /* enemies not dead */
-	struct g_enemy en[G_MAX_ENEMIES];
-	struct g_pickup pk[G_MAX_PICKUPS];
-	fx_t shot_x, shot_y, shot_z;   /* where the last shot ended */
-	uint8_t shot;                  /* enum g_shot */
-	uint16_t shot_t;               /* ticks since the last shot (saturates) */
+	G_GAME_FIELDS(SIM_MEMBER)
 };
 
 /* High-score table, best first; the sim gets it at init and changes it
  * when a score makes the table; the app stores it (g_scores_encode). */
+#define G_ENTRY_FIELDS(X) \
+	X(ARR, char, name, G_NAME_LEN, SIM_ALL, SIM_ANY)  /* G_ALPHABET letters, no NUL */ \
+	X(VAL, uint32_t, score, SIM_ANY) \
+	X(VAL, uint8_t, stage, SIM_ANY)             /* stage reached, 1-based */
 struct g_entry {
-	char name[G_NAME_LEN];         /* G_ALPHABET letters, no NUL */
-	uint32_t score;
-	uint8_t stage;                 /* stage reached, 1-based */
+	G_ENTRY_FIELDS(SIM_MEMBER)
 };
 
+#define G_SCORES_FIELDS(X) \
+	X(SUBS, g_entry, e, G_SCORES, SIM_ALL)
 struct g_scores {
-	struct g_entry e[G_SCORES];
+	G_SCORES_FIELDS(SIM_MEMBER)
 };
 
 /* Bookkeeping totals, kept across boots by the app: the sim gets them at
  * init and counts on from there (deterministically); the service menu
  * shows and resets them. */
+#define G_BOOKS_FIELDS(X) \
+	X(VAL, uint32_t, coins, SIM_ANY)            /* coin pulses */ \
+	X(VAL, uint32_t, plays, SIM_ANY)            /* games started (continues not counted) */ \
+	X(VAL, uint64_t, play_ticks, SIM_ANY)       /* ticks in mode PLAY */ \
+	X(VAL, uint64_t, on_ticks, SIM_ANY)         /* ticks the sim ran (power-on time) */
 struct g_books {
-	uint32_t coins;                /* coin pulses */
-	uint32_t plays;                /* games started (continues not counted) */
-	uint64_t play_ticks;           /* ticks in mode PLAY */
-	uint64_t on_ticks;             /* ticks the sim ran (power-on time) */
+	G_BOOKS_FIELDS(SIM_MEMBER)
 };
 
 /* Letters for initials, in the order the joystick steps through them. */

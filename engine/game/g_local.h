@@ -23,6 +23,11 @@ struct g_body {
 	int self;
 };
 
+/* The opening of line l, for bodies (g_blocks) and for sight and shots
+ * (g_sight.c): 0 with its highest floor and lowest ceiling, or -1 when
+ * nothing passes (one-sided or ML_BLOCKING). */
+int g_opening(const struct map *m, const struct map_line *l, fx_t *floor, fx_t *ceil);
+
 /* Whether line l stops a body whose feet are at z (sim.h's rule). */
 int g_blocks(const struct map *m, const struct map_line *l, fx_t z);
 

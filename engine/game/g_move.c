@@ -11,17 +11,28 @@
 #define G_PUSH_ITERS 4
 #define G_PUSH_MARGIN 2                /* fx units left between a body and a wall */
 
-int g_blocks(const struct map *m, const struct map_line *l, fx_t z)
+int g_opening(const struct map *m, const struct map_line *l, fx_t *floor, fx_t *ceil)
 {
 	const struct map_sector *f, *b;
-	int64_t floor, ceil;
 
 	if (l->side[1] == MAP_NONE || (l->flags & ML_BLOCKING))
-		return 1;
+		return -1;
 	f = &m->sectors[m->sides[l->side[0]].sector];
 	b = &m->sectors[m->sides[l->side[1]].sector];
-	floor = f->floor_h > b->floor_h ? f->floor_h : b->floor_h;
-	ceil = f->ceil_h < b->ceil_h ? f->ceil_h : b->ceil_h;
+	*floor = f->floor_h > b->floor_h ? f->floor_h : b->floor_h;
+	*ceil = f->ceil_h < b->ceil_h ? f->ceil_h : b->ceil_h;
+	return 0;
+}
+
+int g_blocks(const struct map *m, const struct map_line *l, fx_t z)
+{
+	fx_t fl, cl;
+	int64_t floor, ceil;
+
+	if (g_opening(m, l, &fl, &cl) < 0)
+		return 1;
+	floor = fl;
+	ceil = cl;
 	return floor - z > SIM_MAX_STEP || ceil - floor < SIM_PLAYER_HEIGHT ||
 	       ceil - z < SIM_PLAYER_HEIGHT;
 }

@@ -12,6 +12,7 @@
 #include <errno.h>
 #include <string.h>
 
+#include "engine/core/le.h"
 #include "engine/game/g_game.h"
 
 #define G_FORMAT 1
@@ -50,28 +51,6 @@ void g_scores_insert(struct g_scores *t, int rank, const char name[G_NAME_LEN],
 	t->e[rank].stage = stage;
 }
 
-static void g_put32(uint8_t *p, uint32_t v)
-{
-	for (int i = 0; i < 4; i++)
-		p[i] = (uint8_t)(v >> (8 * i));
-}
-
-static void g_put64(uint8_t *p, uint64_t v)
-{
-	for (int i = 0; i < 8; i++)
-		p[i] = (uint8_t)(v >> (8 * i));
-}
-
-static uint32_t g_get32(const uint8_t *p)
-{
-	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
-}
-
-static uint64_t g_get64(const uint8_t *p)
-{
-	return (uint64_t)g_get32(p) | (uint64_t)g_get32(p + 4) << 32;
-}
-
 static int g_letter_ok(uint8_t c)
 {
 	return c != '\0' && memchr(G_ALPHABET, c, G_ALPHABET_LEN) != NULL;
@@ -87,7 +66,7 @@ void g_scores_encode(const struct g_scores *t, uint8_t out[G_SCORES_BYTES])
 	out[3] = 0;
 	for (int i = 0; i < G_SCORES; i++, p += G_NAME_LEN + 5) {
 		memcpy(p, t->e[i].name, G_NAME_LEN);
-		g_put32(p + G_NAME_LEN, t->e[i].score);
+		le_put32(p + G_NAME_LEN, t->e[i].score);
 		p[G_NAME_LEN + 4] = t->e[i].stage;
 	}
 }
@@ -106,7 +85,7 @@ int g_scores_decode(const uint8_t *buf, size_t len, struct g_scores *out)
 				return -EINVAL;
 			t.e[i].name[k] = (char)p[k];
 		}
-		t.e[i].score = g_get32(p + G_NAME_LEN);
+		t.e[i].score = le_get32(p + G_NAME_LEN);
 		t.e[i].stage = p[G_NAME_LEN + 4];
 		if (t.e[i].stage == 0 || (i > 0 && t.e[i].score > t.e[i - 1].score))
 			return -EINVAL;
@@ -121,10 +100,10 @@ void g_books_encode(const struct g_books *b, uint8_t out[G_BOOKS_BYTES])
 	out[1] = 'B';
 	out[2] = G_FORMAT;
 	out[3] = 0;
-	g_put32(out + 4, b->coins);
-	g_put32(out + 8, b->plays);
-	g_put64(out + 12, b->play_ticks);
-	g_put64(out + 20, b->on_ticks);
+	le_put32(out + 4, b->coins);
+	le_put32(out + 8, b->plays);
+	le_put64(out + 12, b->play_ticks);
+	le_put64(out + 20, b->on_ticks);
 }
 
 int g_books_decode(const uint8_t *buf, size_t len, struct g_books *out)
@@ -132,9 +111,9 @@ int g_books_decode(const uint8_t *buf, size_t len, struct g_books *out)
 	if (len != G_BOOKS_BYTES || buf[0] != 'G' || buf[1] != 'B' || buf[2] != G_FORMAT ||
 	    buf[3] != 0)
 		return -EINVAL;
-	out->coins = g_get32(buf + 4);
-	out->plays = g_get32(buf + 8);
-	out->play_ticks = g_get64(buf + 12);
-	out->on_ticks = g_get64(buf + 20);
+	out->coins = le_get32(buf + 4);
+	out->plays = le_get32(buf + 8);
+	out->play_ticks = le_get64(buf + 12);
+	out->on_ticks = le_get64(buf + 20);
 	return 0;
 }

@@ -52,16 +52,9 @@ static int g_cross(int64_t p1x, int64_t p1y, int64_t p2x, int64_t p2y, const str
 /* Whether line l stops sight or a shot between heights z1 and z2. */
 static int g_opaque(const struct map *m, const struct map_line *l, fx_t z1, fx_t z2)
 {
-	const struct map_sector *f, *b;
 	fx_t floor, ceil;
 
-	if (l->side[1] == MAP_NONE || (l->flags & ML_BLOCKING))
-		return 1;
-	f = &m->sectors[m->sides[l->side[0]].sector];
-	b = &m->sectors[m->sides[l->side[1]].sector];
-	floor = f->floor_h > b->floor_h ? f->floor_h : b->floor_h;
-	ceil = f->ceil_h < b->ceil_h ? f->ceil_h : b->ceil_h;
-	if (ceil <= floor)
+	if (g_opening(m, l, &floor, &ceil) < 0 || ceil <= floor)
 		return 1;
 	return (z1 < floor && z2 < floor) || (z1 > ceil && z2 > ceil);
 }

@@ -38,6 +38,8 @@
 
 #include <stdint.h>
 
+#include "engine/game/sim_table.h"
+
 struct sim;
 struct r_frame;
 struct hud_env;
@@ -70,18 +72,30 @@ enum menu_display { MENU_D_BARS, MENU_D_GRID, MENU_D_ORIENT, MENU_D_COUNT };
 #define MENU_NAV_LEFT 0x04
 #define MENU_NAV_RIGHT 0x08
 
+/* The cursor is an item of MAIN or of SETTINGS: below the longer list's length. */
+#define MENU_CURSORS ((int)MENU_ITEMS > (int)MENU_SETTINGS_COUNT ? (int)MENU_ITEMS \
+			                                              : (int)MENU_SETTINGS_COUNT)
+
+/* Its fields: engine/game/sim_table.h. */
+#define MENU_FIELDS(X) \
+	X(VAL, uint8_t, page, SIM_MAX(MENU_PAGES - 1))        /* enum menu_page */ \
+	X(VAL, uint8_t, cursor, SIM_MAX(MENU_CURSORS - 1))    /* item on MAIN or SETTINGS */ \
+	/* MAIN's cursor, kept while on a sub-page */ \
+	X(VAL, uint8_t, main_cursor, SIM_MAX(MENU_ITEMS - 1)) \
+	X(VAL, uint8_t, display, SIM_MAX(MENU_D_COUNT - 1))   /* enum menu_display */ \
+	/* CONFIRM: MENU_I_RESET_SCORES or _BOOKS */ \
+	X(VAL, uint8_t, confirm, SIM_MAX(MENU_ITEMS - 1)) \
+	X(VAL, uint8_t, yes, SIM_MAX(1))                      /* CONFIRM: YES highlighted */ \
+	/* render size choice: 0 as configured, 1..MENU_RES_COUNT */ \
+	X(VAL, uint8_t, res, SIM_MAX(MENU_RES_COUNT)) \
+	/* last reset done: MENU_I_RESET_*, 0 none */ \
+	X(VAL, uint8_t, done, SIM_MAX(MENU_ITEMS - 1)) \
+	X(VAL, uint16_t, done_t, SIM_ANY)         /* ticks the "done" note has shown */ \
+	/* input test: coin pulses since the page opened */ \
+	X(VAL, uint32_t, coins_seen, SIM_ANY) \
+	X(VAL, uint32_t, t, SIM_ANY)              /* ticks since the menu was entered */
 struct menu {
-	uint8_t page;                  /* enum menu_page */
-	uint8_t cursor;                /* item on MAIN or SETTINGS */
-	uint8_t main_cursor;           /* MAIN's cursor, kept while on a sub-page */
-	uint8_t display;               /* enum menu_display */
-	uint8_t confirm;               /* CONFIRM: MENU_I_RESET_SCORES or _BOOKS */
-	uint8_t yes;                   /* CONFIRM: YES highlighted */
-	uint8_t res;                   /* render size choice: 0 as configured, 1..MENU_RES_COUNT */
-	uint8_t done;                  /* last reset done: MENU_I_RESET_*, 0 none */
-	uint16_t done_t;               /* ticks the "done" note has shown */
-	uint32_t coins_seen;           /* input test: coin pulses since the page opened */
-	uint32_t t;                    /* ticks since the menu was entered */
+	MENU_FIELDS(SIM_MEMBER)
 };
 
 /* Opens the menu at the main page (res keeps its value). */

@@ -31,6 +31,7 @@
 #include "engine/core/fx.h"
 #include "engine/game/g_game.h"
 #include "engine/game/menu.h"
+#include "engine/game/sim_table.h"
 
 struct map;
 struct r_view;
@@ -47,12 +48,14 @@ struct r_view;
  * see input/rec.h). forward/side: -127..127 of full speed (positive is
  * forward / right). turn: change of view angle this tick in 1/65536 of a
  * turn, positive counter-clockwise (left). coins: coin pulses this tick. */
+#define SIM_CMD_FIELDS(X) \
+	X(VAL, int8_t, forward, SIM_ANY) \
+	X(VAL, int8_t, side, SIM_ANY) \
+	X(VAL, int16_t, turn, SIM_ANY) \
+	X(VAL, uint8_t, buttons, SIM_ANY) \
+	X(VAL, uint8_t, coins, SIM_ANY)
 struct sim_cmd {
-	int8_t forward;
-	int8_t side;
-	int16_t turn;
-	uint8_t buttons;
-	uint8_t coins;
+	SIM_CMD_FIELDS(SIM_MEMBER)
 };
 
 enum sim_mode {
@@ -71,59 +74,81 @@ enum sim_page { SIM_PAGE_TITLE, SIM_PAGE_SCORES, SIM_PAGE_DEMO, SIM_PAGE_COUNT }
 #define SIM_DEMO_TICKS 1800            /* 30 s: the app replays its demo meanwhile */
 
 /* Operator settings that change the game's rules; stored in recordings. */
+#define SIM_SETTINGS_FIELDS(X) \
+	X(VAL, uint8_t, coins_per_credit, SIM_ANY)  /* 1..9; 0 counts as 1 */ \
+	X(VAL, uint8_t, freeplay, SIM_ANY)          /* 0/1: start needs no credit */ \
+	/* 0/1: skip attract (development, make run) */ \
+	X(VAL, uint8_t, start_in_play, SIM_ANY) \
+	/* 0 easy, 1 normal, 2 hard, 3 brutal; above 3 counts as 3 */ \
+	X(VAL, uint8_t, difficulty, SIM_ANY) \
+	X(VAL, uint8_t, lives, SIM_ANY)             /* 1..9; 0 counts as G_LIVES_DEFAULT */
 struct sim_settings {
-	uint8_t coins_per_credit;      /* 1..9; 0 counts as 1 */
-	uint8_t freeplay;              /* 0/1: start needs no credit */
-	uint8_t start_in_play;         /* 0/1: skip attract (development, make run) */
-	uint8_t difficulty;            /* 0 easy, 1 normal, 2 hard, 3 brutal; above 3 counts as 3 */
-	uint8_t lives;                 /* 1..9; 0 counts as G_LIVES_DEFAULT */
+	SIM_SETTINGS_FIELDS(SIM_MEMBER)
 };
 
+#define SIM_PLAYER_FIELDS(X) \
+	X(VAL, fx_t, x, SIM_COORD)                  /* position on the map */ \
+	X(VAL, fx_t, y, SIM_COORD) \
+	/* feet height (follows the floor, steps up) */ \
+	X(VAL, fx_t, z, SIM_COORD) \
+	X(VAL, fx_t, viewz, SIM_COORD)              /* eye height */ \
+	X(VAL, fx_t, momx, SIM_ANY)                 /* momentum per tick */ \
+	X(VAL, fx_t, momy, SIM_ANY) \
+	X(VAL, ang_t, angle, SIM_ANY)               /* view direction */ \
+	X(VAL, uint32_t, sector, SIM_SECTOR)        /* sector under (x, y) */ \
+	/* 16.16; dead at 0 or below */ \
+	X(VAL, fx_t, health, SIM_RANGE(0, G_HEALTH_MAX * FX_ONE)) \
+	X(VAL, uint16_t, ammo, SIM_ANY) \
+	X(VAL, uint16_t, refire, SIM_ANY)           /* ticks until the next shot may fire */ \
+	X(VAL, uint16_t, hurt, SIM_ANY)             /* ticks left of the damage flash */ \
+	X(VAL, uint16_t, bonus, SIM_ANY)            /* ticks left of the pickup flash */
 struct sim_player {
-	fx_t x, y;                     /* position on the map */
-	fx_t z;                        /* feet height (follows the floor, steps up) */
-	fx_t viewz;                    /* eye height */
-	fx_t momx, momy;               /* momentum per tick */
-	ang_t angle;                   /* view direction */
-	uint32_t sector;               /* sector under (x, y) */
-	fx_t health;                   /* 16.16; dead at 0 or below */
-	uint16_t ammo;
-	uint16_t refire;               /* ticks until the next shot may fire */
-	uint16_t hurt;                 /* ticks left of the damage flash */
-	uint16_t bonus;                /* ticks left of the pickup flash */
+	SIM_PLAYER_FIELDS(SIM_MEMBER)
 };
 
+/* The whole state. The current map is one of the stages (its index in the
+ * snapshot). num_stages comes from sim_init_stages: a restore only checks
+ * it. */
+#define SIM_FIELDS(X) \
+	X(FNS, const struct map *, stages, G_MAX_STAGES, sw_stages)  /* borrowed */ \
+	X(FN, const struct map *, map, sw_map)      /* the current stage's map (borrowed) */ \
+	X(VAL, uint8_t, num_stages, SIM_RANGE(p->num_stages, p->num_stages)) \
+	X(SUB, sim_settings, set) \
+	X(VAL, uint32_t, tick, SIM_ANY)             /* ticks simulated since sim_init */ \
+	X(ENUM, enum sim_mode, mode, SIM_MODE_COUNT) \
+	X(VAL, uint8_t, page, SIM_MAX(SIM_PAGE_COUNT - 1))  /* ATTRACT: enum sim_page */ \
+	/* ticks since the mode (or attract page) began */ \
+	X(VAL, uint32_t, mode_t, SIM_ANY) \
+	X(VAL, uint32_t, credits, SIM_ANY)          /* whole credits available */ \
+	X(VAL, uint32_t, coin_rem, SIM_ANY)         /* coins towards the next credit */ \
+	X(VAL, uint32_t, coins_total, SIM_ANY)      /* coins inserted since sim_init */ \
+	X(VAL, uint32_t, plays, SIM_ANY)            /* games started since sim_init */ \
+	X(VAL, uint8_t, prev_buttons, SIM_ANY)      /* for edge detection */ \
+	X(VAL, uint8_t, prev_nav, SIM_ANY)          /* directions held last tick (MENU_NAV_*) */ \
+	/* ticks the current directions have been held */ \
+	X(VAL, uint16_t, nav_t, SIM_ANY) \
+	X(SUB, sim_cmd, cmd)                        /* this tick's command (input test) */ \
+	X(VAL, uint32_t, rng, SIM_ANY)              /* the sim's own RNG state */ \
+	X(SUB, sim_player, pl) \
+	X(SUB, g_game, g) \
+	X(VAL, uint16_t, countdown, SIM_ANY)        /* GAMEOVER: ticks left to continue */ \
+	/* INITIALS: the letter being chosen, 0..2; after the third it stays 3 */ \
+	X(VAL, uint8_t, ini_pos, SIM_MAX(s->mode == SIM_INITIALS ? G_NAME_LEN - 1 : G_NAME_LEN)) \
+	/* INITIALS: indices into G_ALPHABET */ \
+	X(ARR, uint8_t, ini, G_NAME_LEN, SIM_ALL, SIM_MAX(G_ALPHABET_LEN - 1)) \
+	/* INITIALS: the rank the score takes */ \
+	X(VAL, int8_t, ini_rank, SIM_RANGE(s->mode == SIM_INITIALS ? 0 : -1, G_SCORES - 1)) \
+	/* the last entry made (highlighted in attract), -1 none */ \
+	X(VAL, int8_t, new_rank, SIM_RANGE(-1, G_SCORES - 1)) \
+	X(SUB, g_scores, scores) \
+	X(SUB, g_books, books) \
+	/* bumped when the menu changes set (app: persist) */ \
+	X(VAL, uint32_t, set_gen, SIM_ANY) \
+	X(VAL, uint32_t, scores_gen, SIM_ANY)       /* bumped when scores change */ \
+	X(VAL, uint32_t, books_gen, SIM_ANY)        /* bumped on coins, plays and resets */ \
+	X(SUB, menu, menu)
 struct sim {
-	const struct map *map;         /* the current stage's map (borrowed) */
-	const struct map *stages[G_MAX_STAGES];  /* borrowed */
-	uint8_t num_stages;
-	struct sim_settings set;
-	uint32_t tick;                 /* ticks simulated since sim_init */
-	enum sim_mode mode;
-	uint8_t page;                  /* ATTRACT: enum sim_page */
-	uint32_t mode_t;               /* ticks since the mode (or attract page) began */
-	uint32_t credits;              /* whole credits available */
-	uint32_t coin_rem;             /* coins towards the next credit */
-	uint32_t coins_total;          /* coins inserted since sim_init */
-	uint32_t plays;                /* games started since sim_init */
-	uint8_t prev_buttons;          /* for edge detection */
-	uint8_t prev_nav;              /* directions held last tick (MENU_NAV_*) */
-	uint16_t nav_t;                /* ticks the current directions have been held */
-	struct sim_cmd cmd;            /* this tick's command (input test) */
-	uint32_t rng;                  /* the sim's own RNG state */
-	struct sim_player pl;
-	struct g_game g;
-	uint16_t countdown;            /* GAMEOVER: ticks left to continue */
-	uint8_t ini_pos;               /* INITIALS: letter being chosen, 0..2 */
-	uint8_t ini[G_NAME_LEN];       /* INITIALS: indices into G_ALPHABET */
-	int8_t ini_rank;               /* INITIALS: rank the score takes */
-	int8_t new_rank;               /* the last entry made (highlighted in attract), -1 none */
-	struct g_scores scores;
-	struct g_books books;
-	uint32_t set_gen;              /* bumped when the menu changes set (app: persist) */
-	uint32_t scores_gen;           /* bumped when scores change */
-	uint32_t books_gen;            /* bumped on coins, plays and resets */
-	struct menu menu;
+	SIM_FIELDS(SIM_MEMBER)
 };
 
 /* Player dimensions and movement limits, map units (16.16). */
@@ -189,19 +214,22 @@ void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set
 void sim_tick(struct sim *s, const struct sim_cmd *cmd);
 
 /* Hash of the whole sim state (every field, explicit encoding): FNV-1a of
- * every stage map's content_hash, the settings, and every field of struct
- * sim in order, integers as little-endian bytes. */
+ * every stage map's content_hash, the current map's, and every field of
+ * struct sim and its nested structs in order (the lists of
+ * engine/game/sim_table.h), integers as little-endian bytes; slots of an
+ * array past its count are left out. */
 uint64_t sim_hash(const struct sim *s);
 
 /* Snapshots: the whole state as bytes, so a recording can start in the
  * middle of a cabinet's run (the flight recorder records each game from
  * its first tick, with credits, attract timers, RNG, high-score table and
  * bookkeeping as they were). The same walk over the fields as sim_hash
- * (sim_hash.c) writes and reads them, so whatever is hashed is saved and
- * restored: every field of struct sim and its nested structs, little-endian,
- * including the enemy and pickup slots past the counts. The borrowed maps
- * are not saved: the snapshot holds sim_stages_hash of the stages and the
- * index of the current map among them.
+ * (sim_hash.c, generated from the lists of sim_table.h) writes and reads
+ * them, so whatever is hashed is saved and restored: every field of struct
+ * sim and its nested structs, little-endian, including the enemy and
+ * pickup slots past the counts. The borrowed maps are not saved: the
+ * snapshot holds sim_stages_hash of the stages and the index of the current
+ * map among them.
  *
  * sim_snapshot_size: the snapshot's size in bytes (fixed for a build; it
  * changes only when struct sim does, which also changes REC_ENGINE_VERSION).
@@ -212,15 +240,39 @@ uint64_t sim_hash(const struct sim *s);
  * Returns 0 and s becomes the state snapshotted: fed the same commands it
  * gives the same hashes as the original did; or -EINVAL with s unchanged
  * when len is not sim_snapshot_size(), the stages differ (hash or count),
- * or a value is out of its range: the current map index, mode, page,
- * stage, phase, shot, enemy kinds and states, pickup kinds, counts beyond
- * G_MAX_ENEMIES / G_MAX_PICKUPS or alive beyond the enemies, a sector
- * index beyond the current map's, a position beyond MAP_COORD_MAX, health
- * outside 0..G_HEALTH_MAX, initials letters and ranks, menu page, cursor
- * and choices. */
+ * or a value is out of its range (the limits in the lists): the current
+ * map index, mode, page, stage, phase, shot, enemy kinds and states, pickup
+ * kinds, counts beyond G_MAX_ENEMIES / G_MAX_PICKUPS or alive beyond the
+ * enemies, a sector index beyond the current map's, a position beyond
+ * MAP_COORD_MAX, health outside 0..G_HEALTH_MAX, initials letters and
+ * ranks, menu page, cursor and choices. */
 size_t sim_snapshot_size(void);
 void sim_snapshot(const struct sim *s, uint8_t *out);
 int sim_restore(struct sim *s, const uint8_t *buf, size_t len);
+
+/* One integer field of the state, as sim_visit reports it. */
+struct sim_vfield {
+	const char *tag;               /* the struct that declares it: "sim_player" */
+	const char *name;              /* its name there: "x" */
+	int index;                     /* the element of an array field, else 0 */
+	size_t off;                    /* its offset in struct sim */
+	size_t size;                   /* its bytes in memory (sizeof) */
+	size_t at;                     /* its offset in the snapshot */
+	uint8_t bytes;                 /* its bytes in the snapshot and the hash, little-endian */
+	uint8_t sgn;                   /* signed (two's complement) */
+	uint8_t spare;                 /* in a slot past its array's count: not hashed or checked */
+	int64_t lo, hi;                /* what sim_restore accepts, with s as it is now (the
+					  limit may name other fields); unsigned with hi
+					  INT64_MAX: no upper limit */
+};
+typedef void sim_visit_fn(void *ctx, const struct sim_vfield *f);
+
+/* Calls fn for every integer field of s in the order of the hash and the
+ * snapshot (which is also the order in memory): the field list that the
+ * tests check field by field and tools can name. The two borrowed map
+ * fields (stages, map), which are walked by their own rules, are not
+ * reported. fn must not change s. */
+void sim_visit(const struct sim *s, sim_visit_fn *fn, void *ctx);
 
 /* Hash of the stage maps' content hashes, in order: what a recording's map
  * hash should be when a game has several stages (one stage: FNV-1a of its

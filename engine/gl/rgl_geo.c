@@ -40,6 +40,7 @@
 #include "engine/core/tab.h"
 #include "engine/gl/rgl_local.h"
 #include "engine/render/r_id.h"
+#include "engine/render/r_main.h"
 
 #define RGL_BOX (MAP_COORD_MAX / 65536.0 * 2.0)
 
@@ -109,18 +110,9 @@ static int rgl_clip(const double *in, int n, double *out, double px, double py, 
 
 static int rgl_poly_store(struct rgl_ctx *g, uint32_t ss, const double *p, int n)
 {
-	if (g->npv + n > g->maxpv) {
-		int cap = g->maxpv ? g->maxpv : 1024;
-		double *np;
-
-		while (cap < g->npv + n)
-			cap *= 2;
-		np = realloc(g->pv, (size_t)cap * 2 * sizeof(*np));
-		if (!np)
-			return -ENOMEM;
-		g->pv = np;
-		g->maxpv = cap;
-	}
+	/* a point is two doubles */
+	if (r_grow((void **)&g->pv, &g->maxpv, 2 * sizeof(*g->pv), g->npv + n) < 0)
+		return -ENOMEM;
 	memcpy(&g->pv[2 * g->npv], p, (size_t)n * 2 * sizeof(*p));
 	g->poff[ss] = g->npv;
 	g->poff[g->map_nss + ss] = n;
@@ -263,29 +255,12 @@ static struct rgl_vtx *rgl_push(struct rgl_ctx *g, const struct rgl_surf *s, int
 
 	struct rgl_item *it;
 
-	if (g->nvtx + n > g->maxvtx) {
-		int cap = g->maxvtx ? g->maxvtx : 4096;
-		struct rgl_vtx *nv;
-
-		while (cap < g->nvtx + n)
-			cap *= 2;
-		nv = realloc(g->vtx, (size_t)cap * sizeof(*nv));
-		if (!nv)
-			return NULL;
-		g->vtx = nv;
-		g->maxvtx = cap;
-	}
+	if (r_grow((void **)&g->vtx, &g->maxvtx, sizeof(*g->vtx), g->nvtx + n) < 0)
+		return NULL;
 	it = g->nitems ? &g->items[g->nitems - 1] : NULL;
 	if (!it || it->key != key || it->first + it->count != g->nvtx) {
-		if (g->nitems == g->maxitems) {
-			int cap = g->maxitems ? g->maxitems * 2 : 256;
-			struct rgl_item *ni = realloc(g->items, (size_t)cap * sizeof(*ni));
-
-			if (!ni)
-				return NULL;
-			g->items = ni;
-			g->maxitems = cap;
-		}
+		if (r_grow((void **)&g->items, &g->maxitems, sizeof(*g->items), g->nitems + 1) < 0)
+			return NULL;
 		it = &g->items[g->nitems++];
 		it->key = key;
 		it->tex = s->tex;
@@ -656,15 +631,8 @@ static int rgl_sil(struct rgl_ctx *g, const struct rgl_line *l, uint32_t seg, in
 
 	if (!bottom && !top)
 		return 0;
-	if (g->nsils == g->maxsils) {
-		int cap = g->maxsils ? 2 * g->maxsils : 256;
-		struct rgl_sil *ns = realloc(g->sils, (size_t)cap * sizeof(*ns));
-
-		if (!ns)
-			return -ENOMEM;
-		g->sils = ns;
-		g->maxsils = cap;
-	}
+	if (r_grow((void **)&g->sils, &g->maxsils, sizeof(*g->sils), g->nsils + 1) < 0)
+		return -ENOMEM;
 	sl = &g->sils[g->nsils++];
 	sl->ax = l->ax;
 	sl->ay = l->ay;
@@ -681,18 +649,8 @@ static int rgl_sil(struct rgl_ctx *g, const struct rgl_line *l, uint32_t seg, in
 /* Room for n more silhouette vertices, or NULL. */
 static struct rgl_vtx *rgl_sil_push(struct rgl_ctx *g, int n)
 {
-	if (g->nsilv + n > g->maxsilv) {
-		int cap = g->maxsilv ? g->maxsilv : 1024;
-		struct rgl_vtx *nv;
-
-		while (cap < g->nsilv + n)
-			cap *= 2;
-		nv = realloc(g->silv, (size_t)cap * sizeof(*nv));
-		if (!nv)
-			return NULL;
-		g->silv = nv;
-		g->maxsilv = cap;
-	}
+	if (r_grow((void **)&g->silv, &g->maxsilv, sizeof(*g->silv), g->nsilv + n) < 0)
+		return NULL;
 	g->nsilv += n;
 	return &g->silv[g->nsilv - n];
 }
@@ -712,15 +670,8 @@ static int rgl_sil_quads(struct rgl_ctx *g, int sil, int x0, int x1)
 
 	/* the ray l = X d (X = x / half - 1) meets a + t (b - a) at
 	 * t = (X ad - al) / ((bl - al) - X (bd - ad)) */
-	if (g->nruns == g->maxruns) {
-		int cap = g->maxruns ? 2 * g->maxruns : 256;
-		struct rgl_silrun *nr = realloc(g->runs, (size_t)cap * sizeof(*nr));
-
-		if (!nr)
-			return -ENOMEM;
-		g->runs = nr;
-		g->maxruns = cap;
-	}
+	if (r_grow((void **)&g->runs, &g->maxruns, sizeof(*g->runs), g->nruns + 1) < 0)
+		return -ENOMEM;
 	run = &g->runs[g->nruns++];
 	run->sil = sil;
 	run->x0 = x0;
@@ -1168,10 +1119,8 @@ static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_s
 	int64_t dx = (int64_t)gx - g->ex, dy = (int64_t)gy - g->ey;
 	int64_t d = (dx * g->vcos + dy * g->vsin) >> FX_SHIFT;
 	int64_t l = (dx * g->vsin - dy * g->vcos) >> FX_SHIFT;
-	const struct tex_sprframe *fr;
 	const struct tex_pic *pic;
-	unsigned rot, pi;
-	int level;
+	int level, pi, flip;
 	double x0, x1, zt, zb, t0, t1;
 	struct rgl_surf s;
 	struct rgl_vtx *v;
@@ -1179,16 +1128,9 @@ static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_s
 
 	if (d < RGL_SPR_NEAR || l > 4 * d || l < -4 * d)
 		return 0;
-	if (!t->sprites || sp->sprite >= t->num_sprites ||
-	    sp->frame >= t->sprites[sp->sprite].num_frames || !t->sprites[sp->sprite].frames) {
-		g->st.missing++;
-		return 0;
-	}
-	fr = &t->sprites[sp->sprite].frames[sp->frame];
-	rot = (tab_atan2(gy - g->ey, gx - g->ex) - sp->angle + (ANG45 / 2) * 9) >> 29;
-	pi = fr->pic[rot];
-	if (!t->sprpics || pi >= (unsigned)t->num_sprpics || t->sprpics[pi].w <= 0 ||
-	    t->sprpics[pi].h <= 0 || !t->sprpics[pi].px) {
+	pi = tex_sprite_pic(t, sp->sprite, sp->frame, tab_atan2(gy - g->ey, gx - g->ex) - sp->angle,
+			    &flip);
+	if (pi < 0) {
 		g->st.missing++;
 		return 0;
 	}
@@ -1239,7 +1181,7 @@ static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_s
 		g->sbox[2] = bx1 > g->sbox[2] ? bx1 : g->sbox[2];
 		g->sbox[3] = by1 > g->sbox[3] ? by1 : g->sbox[3];
 	}
-	t0 = fr->flip[rot] ? 1 : 0;
+	t0 = flip ? 1 : 0;
 	t1 = 1 - t0;
 	v = rgl_push(g, &s, 6);
 	if (!v)

@@ -30,6 +30,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/le.h"
 #include "engine/core/msg.h"
 #include "engine/map/map.h"
 #include "engine/map/tex.h"
@@ -201,7 +202,7 @@ static int mw_vertices(struct mw *c)
 {
 	for (uint32_t i = 0; i < c->n[MW_VERTEXES]; i++) {
 		const uint8_t *r = c->p[MW_VERTEXES] + 4 * (size_t)i;
-		fx_t x = fx_from_int(wad_i16(r)), y = fx_from_int(wad_i16(r + 2));
+		fx_t x = fx_from_int(le_s16(r)), y = fx_from_int(le_s16(r + 2));
 
 		if (x < -MAP_COORD_MAX || x > MAP_COORD_MAX || y < -MAP_COORD_MAX ||
 		    y > MAP_COORD_MAX) {
@@ -220,17 +221,17 @@ static void mw_sectors(struct mw *c)
 	for (uint32_t i = 0; i < c->n[MW_SECTORS]; i++) {
 		const uint8_t *r = c->p[MW_SECTORS] + 26 * (size_t)i;
 		struct map_sector *s = &c->m->sectors[i];
-		int light = wad_i16(r + 20);
+		int light = le_s16(r + 20);
 
-		s->floor_h = fx_from_int(wad_i16(r));
-		s->ceil_h = fx_from_int(wad_i16(r + 2));
+		s->floor_h = fx_from_int(le_s16(r));
+		s->ceil_h = fx_from_int(le_s16(r + 2));
 		if (s->ceil_h < s->floor_h)
 			s->floor_h = s->ceil_h;
 		s->floor_tex = mw_flat(c, r + 4);
 		s->ceil_tex = mw_flat(c, r + 12);
 		s->light = (uint8_t)(light < 0 ? 0 : light > 255 ? 255 : light);
-		s->special = wad_u16(r + 22);
-		s->tag = wad_u16(r + 24);
+		s->special = le_get16(r + 22);
+		s->tag = le_get16(r + 24);
 	}
 }
 
@@ -240,12 +241,12 @@ static int mw_sides(struct mw *c)
 		const uint8_t *r = c->p[MW_SIDEDEFS] + 30 * (size_t)i;
 		struct map_side *s = &c->m->sides[i];
 
-		s->xoff = fx_from_int(wad_i16(r));
-		s->yoff = fx_from_int(wad_i16(r + 2));
+		s->xoff = fx_from_int(le_s16(r));
+		s->yoff = fx_from_int(le_s16(r + 2));
 		s->top_tex = mw_tex(c, r + 4);
 		s->bot_tex = mw_tex(c, r + 12);
 		s->mid_tex = mw_tex(c, r + 20);
-		s->sector = wad_u16(r + 28);
+		s->sector = le_get16(r + 28);
 		if (s->sector >= c->n[MW_SECTORS])
 			return mw_range(c, MW_SIDEDEFS, i, "sector", s->sector, c->n[MW_SECTORS],
 					"sectors");
@@ -260,13 +261,13 @@ static int mw_lines(struct mw *c)
 	for (uint32_t i = 0; i < c->n[MW_LINEDEFS]; i++) {
 		const uint8_t *r = c->p[MW_LINEDEFS] + 14 * (size_t)i;
 		struct map_line *l = &c->m->lines[i];
-		uint16_t s0 = wad_u16(r + 10), s1 = wad_u16(r + 12);
+		uint16_t s0 = le_get16(r + 10), s1 = le_get16(r + 12);
 
-		l->v1 = wad_u16(r);
-		l->v2 = wad_u16(r + 2);
-		l->flags = wad_u16(r + 4);
-		l->special = wad_u16(r + 6);
-		l->tag = wad_u16(r + 8);
+		l->v1 = le_get16(r);
+		l->v2 = le_get16(r + 2);
+		l->flags = le_get16(r + 4);
+		l->special = le_get16(r + 6);
+		l->tag = le_get16(r + 8);
 		if (l->v1 >= c->n[MW_VERTEXES])
 			return mw_range(c, MW_LINEDEFS, i, "vertex", l->v1, c->n[MW_VERTEXES],
 					"vertices");
@@ -303,7 +304,7 @@ static int mw_lines(struct mw *c)
  * (Freedoom's E3M7 has one at y 24608) and is left out. */
 static int mw_thing_in_range(const uint8_t *r)
 {
-	int64_t x = fx_from_int(wad_i16(r)), y = fx_from_int(wad_i16(r + 2));
+	int64_t x = fx_from_int(le_s16(r)), y = fx_from_int(le_s16(r + 2));
 
 	return x >= -MAP_COORD_MAX && x <= MAP_COORD_MAX && y >= -MAP_COORD_MAX &&
 	       y <= MAP_COORD_MAX;
@@ -325,19 +326,19 @@ static void mw_things(struct mw *c)
 	for (uint32_t i = 0; i < c->n[MW_THINGS]; i++) {
 		const uint8_t *r = c->p[MW_THINGS] + 10 * (size_t)i;
 		struct map_thing *t = &c->m->things[n];
-		int deg = wad_i16(r + 4) % 360;
+		int deg = le_s16(r + 4) % 360;
 
 		if (!mw_thing_in_range(r))
 			continue;
 		n++;
 		if (deg < 0)
 			deg += 360;
-		t->x = fx_from_int(wad_i16(r));
-		t->y = fx_from_int(wad_i16(r + 2));
+		t->x = fx_from_int(le_s16(r));
+		t->y = fx_from_int(le_s16(r + 2));
 		/* degrees to binary angle, rounded down: 90 -> ANG90 exactly */
 		t->angle = (ang_t)(((uint64_t)deg << 32) / 360);
-		t->type = wad_u16(r + 6);
-		t->flags = wad_u16(r + 8);
+		t->type = le_get16(r + 6);
+		t->flags = le_get16(r + 8);
 	}
 }
 
@@ -362,13 +363,13 @@ static int mw_segs(struct mw *c)
 		const uint8_t *r = c->p[MW_SEGS] + 12 * (size_t)i;
 		struct map_seg *s = &m->segs[i];
 		const struct map_line *l;
-		uint16_t dir = wad_u16(r + 8);
+		uint16_t dir = le_get16(r + 8);
 
-		s->v1 = wad_u16(r);
-		s->v2 = wad_u16(r + 2);
-		s->angle = (ang_t)wad_u16(r + 4) << 16;
-		s->line = wad_u16(r + 6);
-		s->offset = fx_from_int(wad_i16(r + 10));
+		s->v1 = le_get16(r);
+		s->v2 = le_get16(r + 2);
+		s->angle = (ang_t)le_get16(r + 4) << 16;
+		s->line = le_get16(r + 6);
+		s->offset = fx_from_int(le_s16(r + 10));
 		if (s->v1 >= m->num_vertices)
 			return mw_range(c, MW_SEGS, i, "vertex", s->v1, m->num_vertices, "vertices");
 		if (s->v2 >= m->num_vertices)
@@ -399,8 +400,8 @@ static int mw_subsectors(struct mw *c)
 		const uint8_t *r = c->p[MW_SSECTORS] + 4 * (size_t)i;
 		struct map_subsector *ss = &m->subsectors[i];
 
-		ss->num_segs = wad_u16(r);
-		ss->first_seg = wad_u16(r + 2);
+		ss->num_segs = le_get16(r);
+		ss->first_seg = le_get16(r + 2);
 		if (ss->num_segs == 0 || ss->first_seg + ss->num_segs > m->num_segs) {
 			mw_entry(c, MW_SSECTORS, i);
 			msg_cat(c->err, c->errlen, "segs ");
@@ -425,10 +426,10 @@ static int mw_nodes(struct mw *c)
 		const uint8_t *r = c->p[MW_NODES] + 28 * (size_t)i;
 		struct map_node *n = &m->nodes[i];
 
-		n->x = fx_from_int(wad_i16(r));
-		n->y = fx_from_int(wad_i16(r + 2));
-		n->dx = fx_from_int(wad_i16(r + 4));
-		n->dy = fx_from_int(wad_i16(r + 6));
+		n->x = fx_from_int(le_s16(r));
+		n->y = fx_from_int(le_s16(r + 2));
+		n->dx = fx_from_int(le_s16(r + 4));
+		n->dy = fx_from_int(le_s16(r + 6));
 		if (n->dx == 0 && n->dy == 0) {
 			mw_entry(c, MW_NODES, i);
 			msg_cat(c->err, c->errlen, "empty partition line");
@@ -436,9 +437,9 @@ static int mw_nodes(struct mw *c)
 		}
 		for (int k = 0; k < 2; k++)
 			for (int b = 0; b < 4; b++)
-				n->bbox[k][b] = fx_from_int(wad_i16(r + 8 + 8 * k + 2 * b));
+				n->bbox[k][b] = fx_from_int(le_s16(r + 8 + 8 * k + 2 * b));
 		for (int k = 0; k < 2; k++) {
-			uint16_t ch = wad_u16(r + 24 + 2 * k);
+			uint16_t ch = le_get16(r + 24 + 2 * k);
 			uint32_t idx = ch & 0x7FFFu;
 
 			if (ch & 0x8000u) {

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/le.h"
 #include "engine/core/msg.h"
 #include "engine/map/map.h"
 #include "engine/map/tex.h"
@@ -50,17 +51,13 @@ static void mww_put(struct mww *w, const void *p, size_t len)
 	mww_bytes(&w->d, &w->n, &w->cap, p, len, &w->oom);
 }
 
+/* A 16-bit field: v's low 16 bits (two's complement for a negative v). */
 static void mww_16(struct mww *w, int v)
 {
-	uint8_t b[2] = { (uint8_t)(v & 255), (uint8_t)((v >> 8) & 255) };
+	uint8_t b[2];
 
+	le_put16(b, (uint16_t)v);
 	mww_put(w, b, 2);
-}
-
-static void mww_32le(uint8_t *b, uint32_t v)
-{
-	for (int i = 0; i < 4; i++)
-		b[i] = (uint8_t)(v >> (8 * i));
 }
 
 static void mww_name(struct mww *w, const char *s)
@@ -77,8 +74,8 @@ static void mww_lump(struct mww *w, const char *name, size_t start)
 {
 	uint8_t e[16];
 
-	mww_32le(e, (uint32_t)start);
-	mww_32le(e + 4, (uint32_t)(w->n - start));
+	le_put32(e, (uint32_t)start);
+	le_put32(e + 4, (uint32_t)(w->n - start));
 	memset(e + 8, 0, 8);
 	for (int i = 0; i < 8 && name[i]; i++)
 		e[8 + i] = (uint8_t)name[i];
@@ -251,8 +248,8 @@ int map_wad_write(const struct map *const *maps, const char *const *names, int n
 		r = -ENOMEM;
 		goto fail;
 	}
-	mww_32le(w.d + 4, (uint32_t)w.nlumps);
-	mww_32le(w.d + 8, (uint32_t)w.n);
+	le_put32(w.d + 4, (uint32_t)w.nlumps);
+	le_put32(w.d + 8, (uint32_t)w.n);
 	if (w.ndir)
 		mww_put(&w, w.dir, w.ndir);
 	if (w.oom) {

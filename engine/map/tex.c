@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/le.h"
 #include "engine/map/tex_local.h"
 #include "engine/map/wad.h"
 
@@ -71,10 +72,10 @@ int tex_pic_header(const uint8_t *d, size_t len, int *w, int *h, int *left, int 
 {
 	if (len < 8)
 		return -EINVAL;
-	*w = wad_i16(d);
-	*h = wad_i16(d + 2);
-	*left = wad_i16(d + 4);
-	*top = wad_i16(d + 6);
+	*w = le_s16(d);
+	*h = le_s16(d + 2);
+	*left = le_s16(d + 4);
+	*top = le_s16(d + 6);
 	if (*w <= 0 || *h <= 0 || *w > TEX_MAX_SIDE || *h > TEX_MAX_SIDE ||
 	    8 + 4 * (size_t)*w > len)
 		return -EINVAL;
@@ -120,7 +121,7 @@ int tex_pic_draw(struct tex_pic *p, const uint8_t *d, size_t len, int x, int y)
 		return -EINVAL;
 	for (int c = 0; c < w; c++) {
 		int px = x + c;
-		size_t ofs = (size_t)(uint32_t)wad_i32(d + 8 + 4 * (size_t)c);
+		size_t ofs = (size_t)(uint32_t)le_s32(d + 8 + 4 * (size_t)c);
 
 		if (px < 0 || px >= p->w || ofs >= len)
 			continue;
@@ -211,45 +212,59 @@ int tex_wall_index(const struct tex_set *t, uint16_t num)
 	return n;
 }
 
-int tex_find(const struct tex_set *t, const char *name)
+/* The index of name among entries first .. n - 1 of an array of stride
+ * bytes at base whose first member is a name of at most len (8 or 4)
+ * characters in tex_name's form; -1 if none, or when name is empty or
+ * longer than len. The one lookup of textures, flats and sprites. */
+static int tex_find_in(const void *base, size_t stride, int first, int n, size_t len,
+		       const char *name)
 {
 	char key[9];
 
-	if (!name[0] || strlen(name) > 8)
+	if (!name[0] || strlen(name) > len)
 		return -1;
-	if (strcmp(name, "-") == 0)
-		return 0;
 	tex_name(key, name);
-	for (int i = 1; i < t->num_textures; i++)
-		if (memcmp(t->textures[i].name, key, 9) == 0)
+	for (int i = first; i < n; i++)
+		if (memcmp((const char *)base + (size_t)i * stride, key, len + 1) == 0)
 			return i;
 	return -1;
+}
+
+int tex_find(const struct tex_set *t, const char *name)
+{
+	if (strcmp(name, "-") == 0)
+		return 0;
+	return tex_find_in(t->textures, sizeof(*t->textures), 1, t->num_textures, 8, name);
 }
 
 int tex_find_flat(const struct tex_set *t, const char *name)
 {
-	char key[9];
-
-	if (!name[0] || strlen(name) > 8)
-		return -1;
-	tex_name(key, name);
-	for (int i = 0; i < t->num_flats; i++)
-		if (memcmp(t->flats[i].name, key, 9) == 0)
-			return i;
-	return -1;
+	return tex_find_in(t->flats, sizeof(*t->flats), 0, t->num_flats, 8, name);
 }
 
 int tex_find_sprite(const struct tex_set *t, const char *name)
 {
-	char key[9];
+	return tex_find_in(t->sprites, sizeof(*t->sprites), 0, t->num_sprites, 4, name);
+}
 
-	if (!name[0] || strlen(name) > 4)
+int tex_sprite_pic(const struct tex_set *t, unsigned sprite, unsigned frame, ang_t view,
+		   int *flip)
+{
+	const struct tex_sprframe *fr;
+	unsigned rot, pi;
+
+	if (!t->sprites || sprite >= (unsigned)t->num_sprites ||
+	    frame >= (unsigned)t->sprites[sprite].num_frames || !t->sprites[sprite].frames)
 		return -1;
-	tex_name(key, name);
-	for (int i = 0; i < t->num_sprites; i++)
-		if (memcmp(t->sprites[i].name, key, 5) == 0)
-			return i;
-	return -1;
+	fr = &t->sprites[sprite].frames[frame];
+	/* eight rotations of 45 degrees, rotation 0 centred on facing the viewer */
+	rot = (view + (ANG45 / 2) * 9) >> 29;
+	pi = fr->pic[rot];
+	if (!t->sprpics || pi >= (unsigned)t->num_sprpics || t->sprpics[pi].w <= 0 ||
+	    t->sprpics[pi].h <= 0 || !t->sprpics[pi].px)
+		return -1;
+	*flip = fr->flip[rot] != 0;
+	return (int)pi;
 }
 
 /* Doom's animated textures and flats (p_spec.c's animdefs: first and last

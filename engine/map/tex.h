@@ -27,6 +27,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "engine/core/fx.h"
 #include "engine/core/pal.h"
 
 struct wad;
@@ -125,6 +126,16 @@ int tex_find_sprite(const struct tex_set *t, const char *name);
  * the renderers then draw their fallback checker and count it missing.
  * One rule for the software and the OSMesa renderer. */
 int tex_wall_index(const struct tex_set *t, uint16_t num);
+
+/* The picture frame `frame` of sprite `sprite` shows from angle view (the
+ * direction from the viewer to the thing minus the thing's facing; Doom's
+ * eight rotations): its index in sprpics, with *flip set when it is drawn
+ * mirrored; or -1 when it cannot be drawn (unknown sprite or frame, a
+ * picture out of range, empty or without pixels): the renderers skip the
+ * thing and count it missing. One rule for the software and the OSMesa
+ * renderer. */
+int tex_sprite_pic(const struct tex_set *t, unsigned sprite, unsigned frame, ang_t view,
+		   int *flip);
 
 /* Sets sky_tex for map `map` by Doom's rule, when that texture exists:
  * ExMy -> SKYx; MAP01-11 -> SKY1, MAP12-20 -> SKY2, MAP21 on -> SKY3;

@@ -22,6 +22,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/le.h"
 #include "engine/core/msg.h"
 #include "engine/map/map.h"
 #include "engine/map/tex_local.h"
@@ -100,12 +101,12 @@ static int tw_lists(struct tw *c)
 		d = wad_data(c->w, i, &len);
 		if (len < 4)
 			return tw_fail(c, names[k], "no count: ", (int64_t)len, -1);
-		if (wad_i32(d) < 0 || 4 + 4 * (uint64_t)(uint32_t)wad_i32(d) > len)
-			return tw_fail(c, names[k], "offsets of textures: ", wad_i32(d),
+		if (le_s32(d) < 0 || 4 + 4 * (uint64_t)(uint32_t)le_s32(d) > len)
+			return tw_fail(c, names[k], "offsets of textures: ", le_s32(d),
 				       (int64_t)len);
 		c->tl[k] = d;
 		c->tlen[k] = len;
-		c->tcount[k] = wad_i32(d);
+		c->tcount[k] = le_s32(d);
 	}
 	if ((int64_t)c->tcount[0] + c->tcount[1] > UINT16_MAX - 2)
 		return tw_fail(c, "TEXTURE1", "too many textures: ",
@@ -114,11 +115,11 @@ static int tw_lists(struct tw *c)
 		return 0;
 	i = wad_find(c->w, "PNAMES");
 	d = wad_data(c->w, i, &len);
-	if (i < 0 || len < 4 || wad_i32(d) < 0 ||
-	    4 + 8 * (uint64_t)(uint32_t)wad_i32(d) > len)
+	if (i < 0 || len < 4 || le_s32(d) < 0 ||
+	    4 + 8 * (uint64_t)(uint32_t)le_s32(d) > len)
 		return tw_fail(c, "PNAMES", "missing, or names past the end: ",
-			       i < 0 || len < 4 ? 0 : wad_i32(d), (int64_t)len);
-	c->num_patches = wad_i32(d);
+			       i < 0 || len < 4 ? 0 : le_s32(d), (int64_t)len);
+	c->num_patches = le_s32(d);
 	c->patches = calloc((size_t)(c->num_patches ? c->num_patches : 1), sizeof *c->patches);
 	if (!c->patches)
 		return -ENOMEM;
@@ -136,7 +137,7 @@ static int tw_lists(struct tw *c)
  * or a picture over budget makes the fallback checker, counted. */
 static int tw_texture(struct tw *c, struct tex_pic *p, const uint8_t *d, size_t len, int k)
 {
-	int32_t ofs = wad_i32(d + 4 + 4 * (size_t)k);
+	int32_t ofs = le_s32(d + 4 + 4 * (size_t)k);
 	const uint8_t *e = d + ofs;
 	char name[9] = "";
 	int w = TEX_CHECKER_SIDE, h = TEX_CHECKER_SIDE, np, r;
@@ -144,9 +145,9 @@ static int tw_texture(struct tw *c, struct tex_pic *p, const uint8_t *d, size_t 
 	if (ofs < 0 || (uint64_t)ofs + 22 > len)
 		goto fallback;
 	memcpy(name, e, 8);
-	w = wad_i16(e + 12);
-	h = wad_i16(e + 14);
-	np = wad_i16(e + 20);
+	w = le_s16(e + 12);
+	h = le_s16(e + 14);
+	np = le_s16(e + 20);
 	if (w <= 0 || h <= 0 || w > TEX_MAX_SIDE || h > TEX_MAX_SIDE) {
 		w = h = TEX_CHECKER_SIDE;
 		goto fallback;
@@ -160,14 +161,14 @@ static int tw_texture(struct tw *c, struct tex_pic *p, const uint8_t *d, size_t 
 		goto fallback;
 	for (int i = 0; i < np; i++) {
 		const uint8_t *pp = e + 22 + 10 * (size_t)i;
-		int pn = wad_u16(pp + 4);
+		int pn = le_get16(pp + 4);
 		size_t plen;
 		const uint8_t *pd;
 
 		if (pn >= c->num_patches || c->patches[pn] < 0)
 			goto fallback;
 		pd = wad_data(c->w, c->patches[pn], &plen);
-		if (tex_pic_draw(p, pd, plen, wad_i16(pp), wad_i16(pp + 2)))
+		if (tex_pic_draw(p, pd, plen, le_s16(pp), le_s16(pp + 2)))
 			goto fallback;
 	}
 	tex_pic_seal(p);

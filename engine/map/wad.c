@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/le.h"
 #include "engine/core/msg.h"
 #include "engine/map/map.h"
 
@@ -96,8 +97,8 @@ int wad_add(struct wad *w, const uint8_t *data, size_t len, const char *name, ch
 		return wad_fail(err, errlen, name, "shorter than a WAD header (12 bytes)");
 	if (memcmp(data, "IWAD", 4) != 0 && memcmp(data, "PWAD", 4) != 0)
 		return wad_fail(err, errlen, name, "not a WAD file (no IWAD/PWAD signature)");
-	count = wad_i32(data + 4);
-	dir = wad_i32(data + 8);
+	count = le_s32(data + 4);
+	dir = le_s32(data + 8);
 	if (count < 0 || dir < 0 || (uint64_t)dir + (uint64_t)count * WAD_ENTRY > len) {
 		wad_fail(err, errlen, name, "directory of ");
 		msg_int(err, errlen, count);
@@ -112,7 +113,7 @@ int wad_add(struct wad *w, const uint8_t *data, size_t len, const char *name, ch
 		return wad_fail(err, errlen, name, "too many lumps");
 	for (int32_t i = 0; i < count; i++) {
 		const uint8_t *e = data + dir + (size_t)i * WAD_ENTRY;
-		int32_t ofs = wad_i32(e), size = wad_i32(e + 4);
+		int32_t ofs = le_s32(e), size = le_s32(e + 4);
 		char lname[9];
 
 		wad_norm(lname, (const char *)e + 8, 8, 1);
@@ -147,10 +148,10 @@ int wad_add(struct wad *w, const uint8_t *data, size_t len, const char *name, ch
 	for (int32_t i = 0; i < count; i++) {
 		const uint8_t *e = data + dir + (size_t)i * WAD_ENTRY;
 		struct wad_lump *l = &w->lumps[w->num_lumps + i];
-		int32_t size = wad_i32(e + 4);
+		int32_t size = le_s32(e + 4);
 
 		l->size = (size_t)size;
-		l->data = size > 0 ? data + wad_i32(e) : data;
+		l->data = size > 0 ? data + le_s32(e) : data;
 		l->file = w->num_files;
 		wad_norm(l->name, (const char *)e + 8, 8, 1);
 	}

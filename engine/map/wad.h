@@ -51,21 +51,4 @@ const char *wad_file(const struct wad *w, int i);
 
 void wad_free(struct wad *w);
 
-/* Little-endian field readers for lump parsers; p must have the bytes. */
-static inline uint16_t wad_u16(const uint8_t *p)
-{
-	return (uint16_t)(p[0] | p[1] << 8);
-}
-
-static inline int16_t wad_i16(const uint8_t *p)
-{
-	return (int16_t)wad_u16(p);
-}
-
-static inline int32_t wad_i32(const uint8_t *p)
-{
-	return (int32_t)((uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |
-			 (uint32_t)p[3] << 24);
-}
-
 #endif

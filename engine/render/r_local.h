@@ -324,9 +324,6 @@ const struct tex_pic *r_wall_pic(struct r_ctx *r, uint16_t num);
 const uint8_t *r_flat_px(struct r_ctx *r, uint16_t num);
 /* 1 when a sector's ceiling number num is the sky. */
 int r_is_sky(const struct r_ctx *r, uint16_t num);
-/* Grows the array *p of *cap elements of size elem to hold at least need.
- * 0, or -ENOMEM with *p unchanged. */
-int r_grow(void **p, int *cap, size_t elem, int need);
 /* Reserves n entries of ctx.open; returns the index of the first or -1. */
 int32_t r_open_alloc(struct r_ctx *r, int n);
 

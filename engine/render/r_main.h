@@ -23,6 +23,7 @@
 #ifndef ARCADED_ENGINE_R_MAIN_H
 #define ARCADED_ENGINE_R_MAIN_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "engine/core/fx.h"
@@ -90,6 +91,12 @@ int r_new(int w, int h, struct r_ctx **out);
 
 /* NULL-safe. */
 void r_free(struct r_ctx *r);
+
+/* Grows the array *p of *cap elements of size elem to hold at least need
+ * (doubling from *cap, or from 16). 0, or -ENOMEM with *p and *cap
+ * unchanged. The growth of the renderers' arrays (the OSMesa renderer's
+ * too). */
+int r_grow(void **p, int *cap, size_t elem, int need);
 
 /* Draws map m with texture set t from view v into f (f->w, f->h must
  * equal the context's), then the nspr sprites of spr (NULL when nspr is

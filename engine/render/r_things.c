@@ -127,14 +127,12 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 	for (int i = 0; i < nspr; i++) {
 		const struct r_sprite *sp = &spr[i];
 		fx_t gx = r_clamp(sp->x), gy = r_clamp(sp->y);
-		const struct tex_sprframe *fr;
 		const struct tex_pic *pic;
 		struct r_vis *vs;
 		struct r_vpt p;
 		int64_t ll, sxl, sxr;
-		unsigned rot, pi;
 		uint32_t sec;
-		int x1, x2;
+		int x1, x2, pi, flip;
 
 		r_to_view(r, gx, gy, &p);
 		if (p.d < R_SPR_NEAR || p.l > 4 * p.d || p.l < -4 * p.d)
@@ -142,17 +140,10 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 		sec = map_point_sector(r->map, gx, gy);
 		if (r->seen_ok && r->sec_seen[sec] != r->frame_no)
 			continue;
-		if (!t->sprites || sp->sprite >= t->num_sprites ||
-		    sp->frame >= t->sprites[sp->sprite].num_frames || !t->sprites[sp->sprite].frames) {
-			r->st.missing++;
-			continue;
-		}
-		fr = &t->sprites[sp->sprite].frames[sp->frame];
 		/* coordinates within MAP_COORD_MAX: differences fit fx_t */
-		rot = (tab_atan2(gy - r->ey, gx - r->ex) - sp->angle + (ANG45 / 2) * 9) >> 29;
-		pi = fr->pic[rot];
-		if (!t->sprpics || pi >= (unsigned)t->num_sprpics || t->sprpics[pi].w <= 0 ||
-		    t->sprpics[pi].h <= 0 || !t->sprpics[pi].px) {
+		pi = tex_sprite_pic(t, sp->sprite, sp->frame,
+				    tab_atan2(gy - r->ey, gx - r->ex) - sp->angle, &flip);
+		if (pi < 0) {
 			r->st.missing++;
 			continue;
 		}
@@ -186,7 +177,7 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 		vs->sxl = sxl;
 		vs->iscale = p.d * 2 / r->w;
 		vs->pic = pic;
-		vs->flip = fr->flip[rot] != 0;
+		vs->flip = flip;
 		vs->order = i;
 		vs->lvl = (sp->flags & R_SPR_FULLBRIGHT) ? 0 :
 			  r_scale_level(r, r_light_base(r->map->sectors[sec].light), vs->scale);

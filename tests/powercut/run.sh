@@ -20,7 +20,7 @@ trap 'rm -rf "$tmp"' EXIT
 fail=0
 
 $CC -std=c11 -O2 -g -Wall -Wextra -Werror -I. -D_GNU_SOURCE \
-	tests/powercut/stsave.c config/st.c -o "$tmp/stsave" || exit 1
+	tests/powercut/stsave.c config/st.c input/io.c input/txt.c -o "$tmp/stsave" || exit 1
 mkdir "$tmp/state"
 if "$tmp/stsave" kill "$tmp/state" "$RUNS" "$SEED" 3000; then
 	echo "PASS power-cut kills"

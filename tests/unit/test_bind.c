@@ -19,6 +19,7 @@
 #include <linux/input-event-codes.h>
 
 #include "config/bind.h"
+#include "config/cini.h"
 
 struct errs {
 	char text[4096];
@@ -569,6 +570,34 @@ static void test_format_round_trips_random_tables(void **state)
 #undef RND
 }
 
+/* One entry, as bindings files and profiles apply it: a good one replaces
+ * the action's keys, an empty one unbinds it, an unknown action or a bad
+ * list is reported at its line and changes nothing. */
+static void test_set_entry_applies_or_reports(void **state)
+{
+	struct errs e = { .n = 0 };
+	struct cini_errs err = { .file = "p.ini", .fn = on_err, .user = &e };
+	struct bind_table b;
+	int before[ACT_COUNT][BIND_MAX];
+	(void)state;
+	bind_defaults(&b);
+	bind_set_entry(b.key, &err, 3, "fire", "z, x");
+	assert_int_equal(b.key[ACT_FIRE][0], KEY_Z);
+	assert_int_equal(b.key[ACT_FIRE][1], KEY_X);
+	assert_int_equal(b.key[ACT_FIRE][2], -1);
+	bind_set_entry(b.key, &err, 4, "use", "");
+	assert_int_equal(b.key[ACT_USE][0], -1);
+	assert_int_equal(err.count, 0);
+	memcpy(before, b.key, sizeof(before));
+	bind_set_entry(b.key, &err, 5, "jump", "space");
+	bind_set_entry(b.key, &err, 6, "fire", "nosuchkey");
+	assert_int_equal(err.count, 2);
+	assert_int_equal(e.count, 2);
+	assert_memory_equal(before, b.key, sizeof(before));
+	assert_string_equal(e.text, "p.ini:5: unknown action 'jump'\n"
+				    "p.ini:6: fire: unknown key name 'nosuchkey'\n");
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -588,6 +617,7 @@ int main(void)
 		cmocka_unit_test(test_format_writes_every_action_of_every_section),
 		cmocka_unit_test(test_format_cut_short_like_snprintf),
 		cmocka_unit_test(test_format_round_trips_random_tables),
+		cmocka_unit_test(test_set_entry_applies_or_reports),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

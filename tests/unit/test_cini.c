@@ -219,6 +219,69 @@ static void test_read_file_errors_and_content(void **state)
 	rmdir(dir);
 }
 
+/* ---- cini_report: the loaders' one error reporter ---------------------- */
+
+struct said {
+	char file[64], msg[CINI_VALUE_MAX + 256];
+	int line, calls;
+	void *user;
+};
+
+static void say(void *user, const char *file, int line, const char *msg)
+{
+	struct said *s = user;
+
+	snprintf(s->file, sizeof(s->file), "%s", file);
+	snprintf(s->msg, sizeof(s->msg), "%s", msg);
+	s->line = line;
+	s->user = user;
+	s->calls++;
+}
+
+static void test_report_counts_formats_and_names_the_file(void **state)
+{
+	struct said s = { .calls = 0 };
+	struct cini_errs e = { .file = "a.ini", .fn = say, .user = &s };
+	(void)state;
+	cini_report(&e, 7, "%s: %d out of range %d..%d", "lives", 12, 1, 9);
+	assert_int_equal(e.count, 1);
+	assert_int_equal(s.calls, 1);
+	assert_ptr_equal(s.user, &s);
+	assert_string_equal(s.file, "a.ini");
+	assert_int_equal(s.line, 7);
+	assert_string_equal(s.msg, "lives: 12 out of range 1..9");
+	e.file = "b.ini";
+	cini_report(&e, 0, "cannot read");
+	assert_int_equal(e.count, 2);
+	assert_string_equal(s.file, "b.ini");
+	assert_int_equal(s.line, 0);
+}
+
+/* Without a function problems are only counted. */
+static void test_report_without_a_function_counts(void **state)
+{
+	struct cini_errs e = { .file = "a.ini" };
+	(void)state;
+	cini_report(&e, 1, "x");
+	cini_report(&e, 2, "y");
+	assert_int_equal(e.count, 2);
+}
+
+/* A whole over-long value fits in the message; past that it is cut. */
+static void test_report_holds_a_whole_value(void **state)
+{
+	static char v[CINI_VALUE_MAX], big[2 * CINI_VALUE_MAX];
+	struct said s = { .calls = 0 };
+	struct cini_errs e = { .file = "a.ini", .fn = say, .user = &s };
+	(void)state;
+	memset(v, 'v', sizeof(v) - 1);
+	cini_report(&e, 3, "key: '%s' is not an integer", v);
+	assert_int_equal(strlen(s.msg), strlen(v) + strlen("key: '' is not an integer"));
+	memset(big, 'b', sizeof(big) - 1);
+	cini_report(&e, 3, "%s", big);
+	assert_int_equal(strlen(s.msg), CINI_VALUE_MAX + 127);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -231,6 +294,9 @@ int main(void)
 		cmocka_unit_test(test_overlong_key_value_and_section),
 		cmocka_unit_test(test_random_bytes_never_crash),
 		cmocka_unit_test(test_read_file_errors_and_content),
+		cmocka_unit_test(test_report_counts_formats_and_names_the_file),
+		cmocka_unit_test(test_report_without_a_function_counts),
+		cmocka_unit_test(test_report_holds_a_whole_value),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

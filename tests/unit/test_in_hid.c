@@ -208,7 +208,7 @@ static void test_report_descriptor_from_sysfs(void **state)
 	for (int i = 0; i <= HIDD_MAX_DESC; i++)
 		fputc(0xc0, f);
 	fclose(f);
-	assert_int_equal(in_hid_read_desc(sys, "hidraw0", &got, &len), -E2BIG);
+	assert_int_equal(in_hid_read_desc(sys, "hidraw0", &got, &len), -EFBIG);
 	assert_null(got);
 	assert_int_equal(in_hid_read_desc(sys, "hidraw1", &got, &len), -ENOENT);
 }

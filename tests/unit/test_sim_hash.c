@@ -1,7 +1,8 @@
-/* Tests for engine/game/sim_hash.c: the state walk behind sim_hash, sim_snapshot
- * and sim_restore. (sim_hash's coverage of each field is tested in
- * test_sim.c; that its values are unchanged is proven by the golden
- * recordings, tests/replay/run.sh and tests/xbuild/run.sh.) */
+/* Tests for engine/game/sim_hash.c: the state walk behind sim_hash, sim_snapshot,
+ * sim_restore and sim_visit, generated from the field lists of
+ * engine/game/sim_table.h. (That the hash values are unchanged is proven by
+ * the golden recordings, tests/replay/run.sh and tests/xbuild/run.sh; that a
+ * member outside the lists stops the build, by tests/check_state.sh.) */
 #include <errno.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -203,8 +204,9 @@ static void reach(struct sim *s, const struct stages *st, enum start which)
 
 /* The restore of a snapshot is the very state: every byte of struct sim
  * (padding is zero in both: sim_init_stages clears the whole struct, and
- * the rules store fields, never a struct with stray padding). A field
- * added to struct sim but not to the walk fails this. */
+ * the rules store fields, never a struct with stray padding). A member
+ * the walk did not restore would fail this (and the build refuses a member
+ * outside the field lists: tests/check_state.sh). */
 static void a_restored_sim_is_byte_identical(void **state)
 {
 	struct stages st;
@@ -325,22 +327,287 @@ static void every_state_of_a_long_session_restores(void **state)
 	stages_free(&st);
 }
 
-/* The size, counted by hand from the walk: stages hash 8, map index 1,
- * num_stages 1, settings 5, tick 4, mode 4, page 1, mode_t, credits,
- * coin_rem, coins_total, plays 4 each, prev_buttons 1, prev_nav 1, nav_t 2,
- * cmd 6, rng 4, player 44 (six 4-byte positions and momenta, angle,
- * sector, health 4 each, four 2-byte counters), game 25 + 96 enemies of 48
- * + 96 pickups of 18 + shot 15, countdown 2, ini_pos 1, ini 3, ranks 2,
- * scores 10 x 8, books 24, gens 12, menu 18. A change means the struct
- * changed: REC_ENGINE_VERSION must change with it. */
-static void the_snapshot_size_is_every_field(void **state)
+/* ---- the field list (sim_visit) -------------------------------------
+ *
+ * The tests below take their list of fields from sim_visit, which is
+ * generated from the same lists as the struct members, the hash and the
+ * snapshot (engine/game/sim_table.h): a field added to a list is checked
+ * here without a line of test. */
+
+struct flist {
+	struct sim_vfield *f;
+	int n, cap;
+};
+
+static void collect(void *ctx, const struct sim_vfield *f)
 {
-	size_t game = 25 + 96 * 48 + 96 * 18 + 15;
-	size_t expect = 8 + 1 + 1 + 5 + 4 + 4 + 1 + 5 * 4 + 1 + 1 + 2 + 6 + 4 + 44 + game + 2 +
-			1 + 3 + 2 + 80 + 24 + 12 + 18;
+	struct flist *l = ctx;
+
+	if (l->n == l->cap) {
+		l->cap = l->cap ? 2 * l->cap : 1024;
+		l->f = realloc(l->f, (size_t)l->cap * sizeof(*l->f));
+		assert_non_null(l->f);
+	}
+	l->f[l->n++] = *f;
+}
+
+static struct flist fields_of(const struct sim *s)
+{
+	struct flist l = { 0 };
+
+	sim_visit(s, collect, &l);
+	assert_true(l.n > 0);
+	return l;
+}
+
+/* The field at offset off of struct sim, or NULL. */
+static const struct sim_vfield *field_at(const struct flist *l, size_t off)
+{
+	for (int i = 0; i < l->n; i++)
+		if (l->f[i].off == off)
+			return &l->f[i];
+	return NULL;
+}
+
+/* The value of f in s (host order in memory), as the bits of its type. */
+static uint64_t get_bits(const struct sim *s, const struct sim_vfield *f)
+{
+	const uint8_t *p = (const uint8_t *)s + f->off;
+	uint8_t b8;
+	uint16_t b16;
+	uint32_t b32;
+	uint64_t b64;
+
+	switch (f->size) {
+	case 1: memcpy(&b8, p, 1); return b8;
+	case 2: memcpy(&b16, p, 2); return b16;
+	case 4: memcpy(&b32, p, 4); return b32;
+	default: memcpy(&b64, p, 8); return b64;
+	}
+}
+
+static void set_bits(struct sim *s, const struct sim_vfield *f, uint64_t v)
+{
+	uint8_t *p = (uint8_t *)s + f->off;
+	uint8_t b8 = (uint8_t)v;
+	uint16_t b16 = (uint16_t)v;
+	uint32_t b32 = (uint32_t)v;
+
+	switch (f->size) {
+	case 1: memcpy(p, &b8, 1); break;
+	case 2: memcpy(p, &b16, 2); break;
+	case 4: memcpy(p, &b32, 4); break;
+	default: memcpy(p, &v, 8); break;
+	}
+}
+
+/* Every field is listed once, in the order of memory and of the snapshot,
+ * which it fills from the two map fields (the 8-byte stages hash and the
+ * 1-byte map index) to the end: the snapshot size is the listed fields'
+ * bytes. */
+static void the_fields_are_listed_in_memory_and_snapshot_order(void **state)
+{
+	static const char *const tags[] = { "sim", "sim_settings", "sim_cmd", "sim_player",
+					    "g_game", "g_enemy", "g_pickup", "g_entry",
+					    "g_books", "menu" };
+	struct stages st;
+	struct sim *a = malloc(sizeof(*a));
+	struct flist l;
+	const struct sim_vfield *f;
 	(void)state;
-	assert_int_equal(sim_snapshot_size(), expect);
-	assert_int_equal(expect, 6620);
+	assert_non_null(a);
+	stages_load(&st);
+	reach(a, &st, ST_PLAY);
+	l = fields_of(a);
+	assert_int_equal(l.f[0].at, 8 + 1);
+	for (int i = 0; i < l.n; i++) {
+		f = &l.f[i];
+		assert_true(f->off + f->size <= sizeof(*a));
+		assert_true(f->bytes >= 1 && f->bytes <= 8);
+		/* only an enum differs: 4 bytes in the snapshot */
+		if (f->size != f->bytes)
+			assert_int_equal(f->bytes, 4);
+		if (i == 0)
+			continue;
+		if (f->off < l.f[i - 1].off + l.f[i - 1].size)
+			fail_msg("%s.%s (offset %zu) overlaps or precedes %s.%s", f->tag, f->name,
+				 f->off, l.f[i - 1].tag, l.f[i - 1].name);
+		assert_int_equal(f->at, l.f[i - 1].at + l.f[i - 1].bytes);
+	}
+	f = &l.f[l.n - 1];
+	assert_int_equal(sim_snapshot_size(), f->at + f->bytes);
+	for (size_t k = 0; k < sizeof(tags) / sizeof(tags[0]); k++) {
+		int seen = 0;
+		for (int i = 0; i < l.n; i++)
+			seen |= strcmp(l.f[i].tag, tags[k]) == 0;
+		if (!seen)
+			fail_msg("no field of struct %s listed", tags[k]);
+	}
+	/* the names and offsets are the members' */
+	f = field_at(&l, offsetof(struct sim, pl.x));
+	assert_non_null(f);
+	assert_string_equal(f->tag, "sim_player");
+	assert_string_equal(f->name, "x");
+	f = field_at(&l, offsetof(struct sim, ini[2]));
+	assert_non_null(f);
+	assert_string_equal(f->name, "ini");
+	assert_int_equal(f->index, 2);
+	assert_int_equal(f->hi, G_ALPHABET_LEN - 1);
+	/* limits as the state is: alive at most the enemies */
+	f = field_at(&l, offsetof(struct sim, g.alive));
+	assert_non_null(f);
+	assert_int_equal(f->hi, a->g.num_enemies);
+	/* the first enemy slot past the count is spare, the last counted is not */
+	assert_true(a->g.num_enemies > 0 && a->g.num_enemies < G_MAX_ENEMIES);
+	f = field_at(&l, offsetof(struct sim, g.en) +
+			     (size_t)a->g.num_enemies * sizeof(struct g_enemy));
+	assert_non_null(f);
+	assert_int_equal(f->spare, 1);
+	f = field_at(&l, offsetof(struct sim, g.en) +
+			     (size_t)(a->g.num_enemies - 1) * sizeof(struct g_enemy));
+	assert_non_null(f);
+	assert_int_equal(f->spare, 0);
+	free(l.f);
+	free(a);
+	stages_free(&st);
+}
+
+/* Each listed field, changed alone (its lowest byte plus one), changes the
+ * hash unless it is in a spare slot, and changes exactly its own first
+ * byte of the snapshot (little-endian, at its place). Over every start. */
+static void every_field_is_hashed_unless_spare_and_saved_in_place(void **state)
+{
+	struct stages st;
+	struct sim *a = malloc(sizeof(*a)), *u = malloc(sizeof(*u));
+	size_t n = sim_snapshot_size();
+	uint8_t *x = malloc(n), *y = malloc(n);
+	(void)state;
+	assert_non_null(a);
+	assert_non_null(u);
+	assert_non_null(x);
+	assert_non_null(y);
+	stages_load(&st);
+	for (int k = 0; k < ST_COUNT; k++) {
+		struct flist l;
+		uint64_t h;
+		int spare = 0;
+
+		reach(a, &st, (enum start)k);
+		l = fields_of(a);
+		h = sim_hash(a);
+		sim_snapshot(a, x);
+		for (int i = 0; i < l.n; i++) {
+			const struct sim_vfield *f = &l.f[i];
+			uint64_t v = get_bits(a, f);
+
+			*u = *a;
+			set_bits(u, f, (v & ~(uint64_t)0xff) | ((v + 1) & 0xff));
+			if ((sim_hash(u) != h) == f->spare)
+				fail_msg("start %d: %s.%s[%d] (offset %zu, %s): the hash %s", k, f->tag,
+					 f->name, f->index, f->off, f->spare ? "spare" : "state",
+					 f->spare ? "changed" : "did not change");
+			spare += f->spare;
+			sim_snapshot(u, y);
+			/* from the first listed field on (num_stages also feeds the
+			 * stages hash before it) */
+			for (size_t j = l.f[0].at; j < n; j++) {
+				int want = j == f->at ? (uint8_t)(x[j] + 1) : x[j];
+				if (y[j] != want)
+					fail_msg("start %d: %s.%s[%d] (snapshot byte %zu on): byte "
+						 "%zu is %d, want %d", k, f->tag, f->name, f->index,
+						 f->at, j, y[j], want);
+			}
+		}
+		/* the PLAY start has spare enemy and pickup slots */
+		if (k == ST_PLAY)
+			assert_true(spare > 0);
+		free(l.f);
+	}
+	free(x);
+	free(y);
+	free(a);
+	free(u);
+	stages_free(&st);
+}
+
+/* The lowest and highest values of f's type. */
+static void type_range(const struct sim_vfield *f, int64_t *min, int64_t *max)
+{
+	int bits = 8 * (int)f->bytes;
+
+	if (f->sgn) {
+		*min = -((int64_t)1 << (bits - 1));
+		*max = ((int64_t)1 << (bits - 1)) - 1;
+	} else {
+		*min = 0;
+		*max = bits >= 63 ? INT64_MAX : ((int64_t)1 << bits) - 1;
+	}
+}
+
+/* Each listed limit is enforced: a field (not spare) set one past either
+ * end of its range, where its type can hold that value, makes sim_restore
+ * refuse the snapshot and leave the sim as it was. From the starts whose
+ * limits differ (PLAY; INITIALS, where the letter and rank limits narrow;
+ * SERVICE). */
+static void every_listed_limit_is_enforced(void **state)
+{
+	static const enum start starts[] = { ST_PLAY, ST_INITIALS, ST_SERVICE };
+	struct stages st;
+	struct sim *a = malloc(sizeof(*a)), *u = malloc(sizeof(*u)), *b = malloc(sizeof(*b)),
+		   *keep = malloc(sizeof(*keep));
+	size_t n = sim_snapshot_size();
+	uint8_t *buf = malloc(n);
+	int cases = 0;
+	(void)state;
+	assert_non_null(a);
+	assert_non_null(u);
+	assert_non_null(b);
+	assert_non_null(keep);
+	assert_non_null(buf);
+	stages_load(&st);
+	for (size_t k = 0; k < sizeof(starts) / sizeof(starts[0]); k++) {
+		struct flist l;
+
+		reach(a, &st, starts[k]);
+		l = fields_of(a);
+		for (int i = 0; i < l.n; i++) {
+			const struct sim_vfield *f = &l.f[i];
+			int64_t min, max, out[2];
+			int made = 0;
+
+			if (f->spare)
+				continue;
+			type_range(f, &min, &max);
+			out[0] = f->lo > min ? f->lo - 1 : 1;
+			out[1] = f->hi < max ? f->hi + 1 : 0;
+			for (int e = 0; e < 2; e++) {
+				if (e == 0 ? !(f->lo > min) : !(f->hi < max))
+					continue;
+				*u = *a;
+				set_bits(u, f, (uint64_t)out[e]);
+				sim_snapshot(u, buf);
+				fresh(b, &st);
+				*keep = *b;
+				if (sim_restore(b, buf, n) != -EINVAL)
+					fail_msg("start %d: %s.%s[%d] = %lld (limit %lld..%lld) accepted",
+						 (int)starts[k], f->tag, f->name, f->index,
+						 (long long)out[e], (long long)f->lo, (long long)f->hi);
+				assert_memory_equal(b, keep, sizeof(*b));
+				made++;
+			}
+			cases += made;
+		}
+		free(l.f);
+	}
+	/* the lists hold limits (the contract's own cases are counted in
+	 * out_of_range_values_are_refused) */
+	assert_true(cases >= 33);
+	free(buf);
+	free(a);
+	free(u);
+	free(b);
+	free(keep);
+	stages_free(&st);
 }
 
 /* Snapshot encoding: little-endian fields at fixed offsets. */
@@ -545,7 +812,9 @@ static void spare_slots_are_saved_but_not_hashed(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(the_snapshot_size_is_every_field),
+		cmocka_unit_test(the_fields_are_listed_in_memory_and_snapshot_order),
+		cmocka_unit_test(every_field_is_hashed_unless_spare_and_saved_in_place),
+		cmocka_unit_test(every_listed_limit_is_enforced),
 		cmocka_unit_test(the_snapshot_is_little_endian_fields_in_order),
 		cmocka_unit_test(a_restored_sim_is_byte_identical),
 		cmocka_unit_test(a_restored_sim_follows_the_original_for_5000_ticks),

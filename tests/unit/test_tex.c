@@ -256,6 +256,35 @@ static void sprite_rotations_and_mirroring_follow_lump_names(void **state)
 	unload(&f);
 }
 
+/* The picture a thing shows: by the angle from the viewer to it minus its
+ * facing (180 degrees: it faces the viewer, rotation 1; 0: its back,
+ * rotation 5), mirrored where the lump names say; a frame without
+ * pictures shows picture 0, the checker; none for an unknown frame or
+ * sprite. */
+static void the_sprite_picture_follows_the_view_angle(void **state)
+{
+	struct fx f = load_fixture(1);
+	int s, flip = 7;
+
+	(void)state;
+	s = tex_find_sprite(f.t, "TROO");
+	assert_int_equal(tex_sprite_pic(f.t, (unsigned)s, 0, ANG180, &flip), 1);
+	assert_int_equal(flip, 0);
+	assert_int_equal(tex_sprite_pic(f.t, (unsigned)s, 0, 0, &flip), 5);
+	assert_int_equal(flip, 0);
+	assert_int_equal(tex_sprite_pic(f.t, (unsigned)s, 0, ANG180 + ANG45, &flip), 2);
+	assert_int_equal(flip, 0);
+	assert_int_equal(tex_sprite_pic(f.t, (unsigned)s, 0, ANG180 - ANG45, &flip), 2);
+	assert_int_equal(flip, 1);
+	/* within half a rotation of 180 degrees it is still rotation 1 */
+	assert_int_equal(tex_sprite_pic(f.t, (unsigned)s, 0, ANG180 + ANG45 / 2 - 1, &flip), 1);
+	assert_int_equal(tex_sprite_pic(f.t, (unsigned)s, 1, 12345, &flip), 6);
+	assert_int_equal(tex_sprite_pic(f.t, (unsigned)s, 2, ANG180, &flip), 0);
+	assert_int_equal(tex_sprite_pic(f.t, (unsigned)s, 4, ANG180, &flip), -1);
+	assert_int_equal(tex_sprite_pic(f.t, (unsigned)s + 1, 0, ANG180, &flip), -1);
+	unload(&f);
+}
+
 static void animations_cycle_whole_ranges_only(void **state)
 {
 	struct fx f = load_fixture(1);
@@ -480,6 +509,7 @@ int main(void)
 		cmocka_unit_test(numbering_and_lookup),
 		cmocka_unit_test(flats_are_read_exactly),
 		cmocka_unit_test(sprite_rotations_and_mirroring_follow_lump_names),
+		cmocka_unit_test(the_sprite_picture_follows_the_view_angle),
 		cmocka_unit_test(animations_cycle_whole_ranges_only),
 		cmocka_unit_test(pwad_overrides_a_texture_and_a_flat),
 		cmocka_unit_test(bad_palette_and_lists_are_errors),

@@ -207,16 +207,6 @@ static void free_accepts_null(void **state)
 	wad_free(NULL);
 }
 
-static void readers_are_little_endian(void **state)
-{
-	static const uint8_t b[4] = { 0xfe, 0xff, 0x01, 0x80 };
-
-	(void)state;
-	assert_int_equal(wad_u16(b), 0xfffe);
-	assert_int_equal(wad_i16(b), -2);
-	assert_int_equal(wad_i32(b), (int32_t)0x8001fffe);
-}
-
 /* The committed files (tests/data/wad/, written by mkfixtures.c) are the
  * images the tests build; run from the repository root. */
 static void fixtures_on_disk_match_generator(void **state)
@@ -255,7 +245,6 @@ int main(void)
 		cmocka_unit_test(bad_files_name_file_lump_and_problem),
 		cmocka_unit_test(every_truncation_is_refused_or_bounded),
 		cmocka_unit_test(free_accepts_null),
-		cmocka_unit_test(readers_are_little_endian),
 		cmocka_unit_test(fixtures_on_disk_match_generator),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -389,7 +389,7 @@ phase_hotplug() {
 # to hid-dr (DragonRise's driver, with force feedback), not hid-generic. Its
 # report descriptor is the 101-byte original DragonRise descriptor that
 # Linux's drivers/hid/hid-dr.c documents (a 0079:0011 pad; also
-# tests/unit/test_hid_dec.c) with one byte changed: the output report holds
+# tests/unit/test_hidr.c) with one byte changed: the output report holds
 # 7 bytes, not 4, because hid-dr's force-feedback set-up for 0079:0006 fails
 # the probe when it has fewer than 7 (then no driver binds and there is no
 # hidraw node). No byte-exact 0079:0006 descriptor is on record

@@ -1,8 +1,10 @@
 /*
  * replay: the headless replayer of the cross-build determinism test.
  *
- * Links only the engine (every engine/ source) and the recording code (input/rec.c),
- * no platform library, so it builds with any C11 compiler for any CPU
+ * Links only the engine (every engine/ source but gl), the recording and
+ * script code (input/rec.c, scr.c, act.c, with their file and message
+ * helpers io.c and txt.c) and the app's content and view code (app/ct.c,
+ * view.c, demo.c, cmd.c): no platform library, so it builds with any C11 compiler for any CPU
  * (tests/xbuild/run.sh builds it with gcc -O0, gcc -O3, clang -O2 and an
  * aarch64 cross gcc). It does per tick exactly what `arcaded --replay`
  * does, through the same engine functions, and prints the same lines:

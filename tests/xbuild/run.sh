@@ -1,10 +1,11 @@
 #!/bin/sh
 # Cross-build determinism test (issue 8 item 2). The headless replayer
-# tests/xbuild/replay.c (the engine and input/rec.c, nothing else) is built
-# with gcc -O0, gcc -O3, clang -O2, gcc -O2 with UBSan (undefined behaviour
-# such as signed overflow or bad shifts is an error: it is what lets
-# optimisers make builds differ) and an aarch64 cross gcc (static, run
-# under qemu-user). Every build replays every recording:
+# tests/xbuild/replay.c (the engine, input/rec.c and the few files SRC
+# names, no platform library) is built with gcc -O0, gcc -O3, clang -O2,
+# gcc -O2 with UBSan (undefined behaviour such as signed overflow or bad
+# shifts is an error: it is what lets optimisers make builds differ) and
+# an aarch64 cross gcc (static, run under qemu-user). Every build replays
+# every recording:
 #   - the committed goldens tests/replay/*.rec,
 #   - recordings made now by the daemon from tests/replay/*.scr and
 #     tests/script/*.scr (one also with other coin settings and free play),
@@ -51,7 +52,7 @@ fi
 # ---- builds --------------------------------------------------------------
 WARN="-std=c11 -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes"
 FLAGS="$WARN -fno-strict-aliasing -I. -D_GNU_SOURCE"
-SRC="tests/xbuild/replay.c $(ls engine/core/*.c engine/map/*.c engine/game/*.c engine/render/*.c engine/ui/*.c | tr '\n' ' ') input/rec.c input/scr.c input/act.c app/ct.c app/view.c app/demo.c app/cmd.c"
+SRC="tests/xbuild/replay.c $(ls engine/core/*.c engine/map/*.c engine/game/*.c engine/render/*.c engine/ui/*.c | tr '\n' ' ') input/rec.c input/scr.c input/act.c input/io.c input/txt.c app/ct.c app/view.c app/demo.c app/cmd.c"
 build() { # $1 name; rest: compiler and flags
 	name=$1; shift
 	# shellcheck disable=SC2086
