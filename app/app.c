@@ -5,6 +5,7 @@
  */
 #include "app/app.h"
 
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -275,11 +276,14 @@ static int setup_game(struct app *a, int *rw, int *rh)
 		*rw = o->size_w;
 		*rh = o->size_h;
 	}
+	spec.stop = sig_stop_flag();   /* a stop signal ends a long load */
 	rc = ct_load(&a->ct, &spec, err, sizeof(err));
 	if (rc < 0) {
 		say_err("%s", err);
 		return rc;
 	}
+	if (a->ct.note[0])
+		say("%s", a->ct.note);
 	say("content: %s, %u sectors, %u lines, %d light(s)%s", a->ct.what, a->ct.map->num_sectors,
 	    a->ct.map->num_lines, a->ct.nlights,
 	    a->ct.map->missing_textures ? ", some textures missing (drawn as a checker)" : "");
@@ -420,6 +424,7 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 {
 	struct app *a = calloc(1, sizeof(*a));
 	int code = APP_SETUP_FAILED;
+	int rc;
 
 	if (!a) {
 		say_err("out of memory");
@@ -428,7 +433,8 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 	a->cfg = c;
 	a->o = o;
 	sig_install();
-	if (setup(a) == 0) {
+	rc = setup(a);
+	if (rc == 0) {
 		uint64_t now;
 		a->wd_interval = a->headless ? 0 : svc_watchdog_interval_ns();
 		now = in_now_ns();
@@ -437,6 +443,8 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 		a->hang_at = sig_fault_setup();
 		loop_run(&app_steps, a);
 		code = finish(a);
+	} else if (rc == -ECANCELED && sig_stop()) {
+		code = APP_OK;                 /* stopped by a signal while loading: an ordinary end */
 	}
 	teardown(a);
 	free(a);

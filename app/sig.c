@@ -11,13 +11,13 @@
 #include "app/say.h"
 #include "display/dp.h"
 
-static volatile sig_atomic_t sig_stop_flag;
+static volatile sig_atomic_t sig_stopped;
 static volatile sig_atomic_t sig_summary_flag;
 static volatile sig_atomic_t sig_fault_flag;
 
 static void on_stop(int sig)
 {
-	sig_stop_flag = sig;
+	sig_stopped = sig;
 }
 
 static void on_summary(int sig)
@@ -63,9 +63,14 @@ void sig_install(void)
 		sigaction(fatal[i], &sa, NULL);
 }
 
+const volatile sig_atomic_t *sig_stop_flag(void)
+{
+	return &sig_stopped;
+}
+
 int sig_stop(void)
 {
-	return (int)sig_stop_flag;
+	return (int)sig_stopped;
 }
 
 int sig_summary(void)
@@ -113,6 +118,6 @@ void sig_hang(void)
 
 	say_err("fault injection: main loop hung");
 	/* a stop signal interrupts the sleep (EINTR) and ends the hang */
-	while (!sig_stop_flag)
+	while (!sig_stopped)
 		nanosleep(&s, NULL);
 }
