@@ -92,7 +92,7 @@ uint32_t sig_fault_setup(void)
 		char *end;
 		unsigned long n = strtoul(f + 8, &end, 10);
 		if (*end == '\0' && end != f + 8 && n < UINT32_MAX) {
-			say("fault injection: the main loop hangs after tick %lu", n);
+			say_warn("fault injection: the main loop hangs after tick %lu", n);
 			return (uint32_t)n;
 		}
 	} else if (strcmp(f, "sigusr2") == 0) {
@@ -100,10 +100,10 @@ uint32_t sig_fault_setup(void)
 		sigemptyset(&sa.sa_mask);
 		sa.sa_handler = on_fault;
 		sigaction(SIGUSR2, &sa, NULL);
-		say("fault injection: SIGUSR2 hangs the main loop");
+		say_warn("fault injection: SIGUSR2 hangs the main loop");
 		return UINT32_MAX;
 	}
-	say("ARCADED_FAULT=%s not understood (hang-at:N or sigusr2); ignored", f);
+	say_warn("ARCADED_FAULT=%s not understood (hang-at:N or sigusr2); ignored", f);
 	return UINT32_MAX;
 }
 
@@ -116,7 +116,7 @@ void sig_hang(void)
 {
 	struct timespec s = { 1, 0 };
 
-	say("fault injection: main loop hung");
+	say_err("fault injection: main loop hung");
 	/* a stop signal interrupts the sleep (EINTR) and ends the hang */
 	while (!sig_stopped)
 		nanosleep(&s, NULL);

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Terminal preview, as `make run` shows it: the daemon runs in a tmux pane and
 # draws the level with half-block characters; keys typed into the pane must
-# reach the game, and Ctrl-C ends it cleanly.
+# reach the game, one tap moves the service menu's cursor one item, and
+# Ctrl-C ends it cleanly.
 #
 # The picture changes on its own (the STAGE banner, moving enemies), so
 # "the picture changed after a key" proves nothing. Instead each run records
@@ -90,6 +91,40 @@ check "Left held: turning commands recorded ($2 ticks), no forward ($1)" \
 set -- $(moves "$tmp/w.rec" 2>/dev/null) x x
 check "W held: forward commands recorded ($1 ticks), no turning ($2)" \
 	$([ "$1" != x ] && [ "$1" -gt 0 ] && [ "$2" = 0 ]; echo $?)
+
+# One tap moves the service menu's cursor once (the terminal sends one byte
+# for a tap, and the key decoder must not hold it past the menu's repeat
+# delay). Service (9), then fire (space) on the first item opens INPUT;
+# service goes back to the list with the cursor kept; one Down tap and fire
+# must open the next item, DISPLAY, whose first screen is eight colour bars
+# across the top of the picture. The INPUT page before it shows that the
+# count can fail.
+tmux -S "$sock" -f /dev/null new-session -d -s menu -x 120 -y 40 \
+	"$BIN --display term --play --set input.evdev=none $common 2>$tmp/menu.err; echo exit=\$? > $tmp/menu.status; sleep 30"
+i=0
+while [ $i -lt 50 ]; do
+	tmux -S "$sock" capture-pane -t menu -p -e 2>/dev/null | grep -q '▀' && break
+	sleep 0.1; i=$((i + 1))
+done
+sleep 0.5
+tap() { tmux -S "$sock" send-keys -t menu "$1"; sleep 0.8; }
+# distinct 24-bit colours on the picture's first line
+top_colours() {
+	tmux -S "$sock" capture-pane -t menu -p -e | head -n 1 |
+		grep -o '[34]8;2;[0-9]*;[0-9]*;[0-9]*' | sed 's/^[34]8;2;//' | sort -u | wc -l
+}
+tap 9; tap Space
+n_input=$(top_colours)
+tap 9; tap Down; tap Space
+n_display=$(top_colours)
+check "the INPUT page has fewer than 8 colours on its top line ($n_input)" \
+	$([ "$n_input" -lt 8 ]; echo $?)
+check "one Down tap moves the menu cursor one item: DISPLAY's 8 colour bars ($n_display colours on the top line)" \
+	$([ "$n_display" -eq 8 ]; echo $?)
+tmux -S "$sock" send-keys -t menu C-c
+i=0
+while [ $i -lt 50 ] && [ ! -s "$tmp/menu.status" ]; do sleep 0.1; i=$((i + 1)); done
+tmux -S "$sock" kill-session -t menu 2>/dev/null
 
 # The replays: each run's hashes per tick; a keyed run against the run
 # with no key at their last common tick.
