@@ -2,6 +2,7 @@
  * dp: the ordered backend list, the automatic choice and the emergency
  * restore (contracts in dp.h). Backends live in dp_<name>.c.
  */
+#include "display/con.h"
 #include "display/dp.h"
 #include "display/dp_int.h"
 
@@ -76,6 +77,6 @@ int dp_open(const struct dp_config *cfg, const struct dp_backend **be, struct dp
 
 void dp_emergency_restore(void)
 {
-	dp_fbdev_emergency();
+	con_emergency();
 	dp_term_emergency();
 }
