@@ -110,6 +110,9 @@ int scene_open_display(struct scene *s, int headless)
 	if (headless && strcmp(dc.backend, "auto") == 0)
 		dc.backend = c->display.file[0] ? "file" : "null";
 	dc.device = c->display.device;
+	dc.card = c->display.card;
+	dc.mode = c->display.mode;
+	dc.buffers = c->display.buffers;
 	dc.tty = c->display.tty;
 	dc.file = c->display.file;
 	dc.file_w = c->display.file_width;

@@ -12,7 +12,8 @@
 #include <unistd.h>
 
 /* Automatic choice tries these in order. */
-static const struct dp_backend *const dp_backends[] = { &dp_fbdev, &dp_term, &dp_file, &dp_null };
+static const struct dp_backend *const dp_backends[] = { &dp_kms, &dp_fbdev, &dp_term, &dp_file,
+								     &dp_null };
 
 #define DP_NBACKENDS (sizeof(dp_backends) / sizeof(dp_backends[0]))
 

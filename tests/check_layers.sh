@@ -143,7 +143,7 @@ if [ -n "$bad" ]; then
 fi
 
 # ---- platform headers only in backends --------------------------------
-allowed_platform='^(display/con\.c|display/dp_fbdev\.c|display/dp_term\.c|input/in_evdev\.c|input/in_tty\.c|input/ttyk\.c|input/in_keys\.c|input/hidr\.c|input/in_hid\.c|input/in_gpio\.c|systemd/svc\.c)$'
+allowed_platform='^(display/dp_kms\.c|display/con\.c|display/dp_fbdev\.c|display/dp_term\.c|input/in_evdev\.c|input/in_tty\.c|input/ttyk\.c|input/in_keys\.c|input/hidr\.c|input/in_hid\.c|input/in_gpio\.c|systemd/svc\.c)$'
 for f in $(grep -lE '#[[:space:]]*include[[:space:]]*<(linux/|sys/ioctl|sys/kd|termios|libevdev|systemd/|hidapi|gpiod|xf86drm)' \
 	app/*.c app/*.h input/*.c input/*.h display/*.c display/*.h config/*.c config/*.h 2>/dev/null); do
 	if ! echo "$f" | grep -qE "$allowed_platform"; then
