@@ -163,6 +163,28 @@ int scene_show(struct scene *s, const struct sim *sim, const struct sim *under,
 	return rc;
 }
 
+int scene_wait_fd(struct scene *s)
+{
+	return s->dpb && s->dpb->wait_fd ? s->dpb->wait_fd(s->dp) : -1;
+}
+
+int scene_flips(struct scene *s, struct dp_flip *done, int max)
+{
+	int n;
+
+	if (!s->dpb || !s->dpb->event)
+		return 0;
+	n = s->dpb->event(s->dp, done, max);
+	if (n < 0 && s->event_errors++ == 0)
+		say("display %s: %s", s->dpb->name, strerror(-n));
+	return n < 0 ? 0 : n;
+}
+
+const char *scene_status(struct scene *s)
+{
+	return s->dpb && s->dpb->status ? s->dpb->status(s->dp) : NULL;
+}
+
 void scene_close_display(struct scene *s)
 {
 	if (s->dpb)

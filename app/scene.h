@@ -19,6 +19,7 @@
 struct ct;
 struct dp;
 struct dp_backend;
+struct dp_flip;
 struct pool;
 struct sim;
 struct wiz;
@@ -38,6 +39,7 @@ struct scene {
 	const struct dp_backend *dpb;
 	struct dp *dp;
 	int present_errors;
+	int event_errors;
 };
 
 /* Prepares s for the content ct with configuration c (rotation, render
@@ -63,6 +65,17 @@ void scene_follow_menu(struct scene *s, const struct sim *sim);
  * present's -errno (the first failure is logged). */
 int scene_show(struct scene *s, const struct sim *sim, const struct sim *under,
 	       const struct wiz *wiz);
+
+/* The display's fd to watch between ticks (dp_backend.wait_fd), -1 none. */
+int scene_wait_fd(struct scene *s);
+
+/* Serves the display's fd (dp_backend.event) without blocking: up to max
+ * page flips completed since the last call into done; their count (0
+ * for a display without events; an error is logged once and counts 0). */
+int scene_flips(struct scene *s, struct dp_flip *done, int max);
+
+/* The display's counters (dp_backend.status) or NULL. */
+const char *scene_status(struct scene *s);
 
 /* Closes the display (the console back in text mode, the terminal
  * restored); NULL-safe state. */
