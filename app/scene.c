@@ -45,6 +45,8 @@ int scene_init(struct scene *s, const struct cfg *c, const struct ct *ct, int gl
 			s->pool = NULL;
 		} else {
 			pool_r_par(s->pool, &s->par);
+			pool_px_par(s->pool, &s->ppar);
+			s->view.par = &s->par;
 		}
 	}
 	return scene_resize(s, w, h);
@@ -123,6 +125,7 @@ int scene_open_display(struct scene *s, int headless)
 	dc.scale = c->display.fill ? DP_SCALE_FILL : DP_SCALE_INTEGER;
 	dc.render_w = s->frame.w;
 	dc.render_h = s->frame.h;
+	dc.par = s->pool ? &s->ppar : NULL;
 	rc = dp_open(&dc, &s->dpb, &s->dp, why, sizeof(why));
 	if (rc < 0) {
 		say("display %s: %s", dc.backend, why[0] ? why : strerror(-rc));

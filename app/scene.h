@@ -14,6 +14,7 @@
 #include "app/glr.h"
 #include "app/view.h"
 #include "config/cfg.h"
+#include "display/px.h"
 #include "engine/render/r_main.h"
 
 struct ct;
@@ -31,6 +32,7 @@ struct scene {
 	struct r_ctx *r;
 	struct pool *pool;         /* render worker threads, NULL: one thread */
 	struct r_par par;
+	struct px_par ppar;        /* the same pool for the display's present */
 	int use_gl;                /* --renderer gl */
 	struct glr glr;
 	struct rgl_ctx *gl;

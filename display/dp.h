@@ -17,6 +17,7 @@
 #include <stdint.h>
 
 struct dp;
+struct px_par;
 
 enum dp_scale {
 	DP_SCALE_INTEGER,  /* largest integer factor, centred, black letterbox */
@@ -39,6 +40,9 @@ struct dp_config {
 	int rotate;              /* 0, 90, 180, 270 degrees clockwise */
 	enum dp_scale scale;
 	int render_w, render_h;  /* size of the frames that will be presented */
+	const struct px_par *par; /* kms, fbdev, file: threads for the present's row
+				   * ranges (display/px.h), NULL: the caller's
+				   * alone; borrowed, must outlive the display */
 };
 
 /* A frame the screen took (dp_backend.event), CLOCK_MONOTONIC. */

@@ -191,6 +191,7 @@ static int fbdev_open(const struct dp_config *cfg, struct dp **out, char *why, s
 			 cfg->render_h);
 		goto fail;
 	}
+	px_panel_set_par(&d->panel, cfg->par);
 	d->mem = mmap(NULL, d->maplen, PROT_READ | PROT_WRITE, MAP_SHARED, d->fd, 0);
 	if (d->mem == MAP_FAILED) {
 		rc = -errno;

@@ -526,6 +526,7 @@ static int kms_open(const struct dp_config *cfg, struct dp **out, char *why, siz
 			 cfg->render_h);
 		goto fail;
 	}
+	px_panel_set_par(&d->panel, cfg->par);
 	d->saved = drmModeGetCrtc(d->fd, d->crtc);
 	/* the first mode set shows a black buffer and proves we are master */
 	rc = kms_setcrtc(d, 0);
