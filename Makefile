@@ -55,7 +55,7 @@ SYSUSERSDIR ?= /usr/lib/sysusers.d
 TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
 .PHONY: all setup run test test-unit test-asan test-script test-replay test-clang \
-	check-layers check-state check-tables check-systemd check-install check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
+	check-layers check-state check-tables check-systemd check-install check-levels test-vm docs-shots fuzz fuzzers bench bench-pacing install clean tests tools
 
 all: $(BIN) $(GL_SO) tools
 
@@ -155,6 +155,12 @@ check-levels: $(BUILD)/tools/mklevels
 
 bench: all
 	@tests/bench.sh $(BIN)
+
+# Frame pacing: 10 minutes of play replayed in real time at 1920x1080
+# (PACING_SECONDS to change it); figures and targets, not a test.
+PACING_SECONDS ?= 600
+bench-pacing: all
+	@tests/bench/pacing.sh $(BIN) $(PACING_SECONDS)
 
 install: $(BIN) $(GL_SO)
 	install -D -m 0755 $(BIN) $(DESTDIR)$(PREFIX)/bin/arcaded
