@@ -8,7 +8,7 @@ BUILD ?= build
 CC ?= cc
 OPT ?= -O2 -g
 SAN ?=
-PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod libusb-1.0
+PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod libusb-1.0 libdrm
 TEST_PKGS := cmocka
 
 WARN := -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes
@@ -56,7 +56,7 @@ TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
 .PHONY: all setup setup-test run test deb image test-image test-pkg test-unit test-asan test-script \
 	test-replay test-clang check-layers check-state check-tables check-systemd check-install \
-	check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
+	check-levels test-vm docs-shots fuzz fuzzers bench bench-pacing install clean tests tools
 
 all: $(BIN) $(GL_SO) tools
 
@@ -182,6 +182,12 @@ check-levels: $(BUILD)/tools/mklevels
 
 bench: all
 	@tests/bench.sh $(BIN)
+
+# Frame pacing: 10 minutes of play replayed in real time at 1920x1080
+# (PACING_SECONDS to change it); figures and targets, not a test.
+PACING_SECONDS ?= 600
+bench-pacing: all
+	@tests/bench/pacing.sh $(BIN) $(PACING_SECONDS)
 
 install: $(BIN) $(GL_SO)
 	install -D -m 0755 $(BIN) $(DESTDIR)$(PREFIX)/bin/arcaded
