@@ -54,7 +54,7 @@ struct scene {
 	int present_errors;
 	/* The display is missing: the null display stands in (see above). */
 	int waiting;
-	char missing[512];         /* why, as the log and the status say it */
+	char missing[1200];        /* why, as the log and the status say it */
 	struct hp *hp;             /* display node notices while waiting, NULL none */
 	uint64_t retry_ns;         /* the next periodic try */
 	uint64_t shown;            /* frames presented on the display asked for */
