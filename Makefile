@@ -56,7 +56,7 @@ TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
 .PHONY: all setup setup-test run test deb image test-image test-pkg test-unit test-asan test-script \
 	test-replay test-clang check-layers check-state check-tables check-systemd check-install \
-	check-levels test-vm docs-shots fuzz fuzzers bench bench-pacing install clean tests tools
+	check-levels test-vm docs-shots docs-pinout fuzz fuzzers bench bench-pacing install clean tests tools
 
 all: $(BIN) $(GL_SO) tools
 
@@ -127,6 +127,12 @@ $(BUILD)/tools/%: tools/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< -lm
 
+# pinout draws with the daemon's own code (the GPIO spec parser, v_video,
+# the PNG writer): linked with the library.
+$(BUILD)/tools/pinout: tools/pinout.c $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 # libFuzzer targets (tests/fuzz/fuzz_<parser>.c, each defining
 # LLVMFuzzerTestOneInput), linked against the library built for fuzzing.
 $(BUILD)/fuzz/%: tests/fuzz/%.c $(LIB)
@@ -172,9 +178,17 @@ check-install: $(BIN)
 	@tests/check_install.sh
 
 # The screenshots in docs/ are made by the daemon's own screenshot command.
-docs-shots: $(BIN)
+docs-shots: $(BIN) docs-pinout
 	@scripts/docs-shots.sh $(BIN)
 	@scripts/game-shots.sh $(BIN)
+
+# The GPIO wiring picture of docs/operator.md: the example spec of the
+# shipped config/arcaded.ini (its `; gpio:gpiochip0:...` line; the shipped
+# default is gpio = none) drawn on a Raspberry Pi's 40-pin header.
+PINOUT_SPEC = $(shell sed -n 's/^; *\(gpio:gpiochip0:[^ ]*\)$$/\1/p' config/arcaded.ini)
+docs-pinout: $(BUILD)/tools/pinout
+	@test -n "$(PINOUT_SPEC)" || { echo "docs-pinout: no '; gpio:gpiochip0:...' line in config/arcaded.ini"; exit 1; }
+	$(BUILD)/tools/pinout '$(PINOUT_SPEC)' docs/images/gpio-pinout.png
 
 # engine/map/lvl_wad.c is exactly what tools/mklevels makes of levels/*.txt.
 check-levels: $(BUILD)/tools/mklevels
