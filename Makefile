@@ -177,10 +177,12 @@ check-systemd:
 check-install: $(BIN)
 	@tests/check_install.sh
 
-# The screenshots in docs/ are made by the daemon's own screenshot command.
+# The screenshots in docs/ are made by the daemon's own screenshot command
+# (maps, the game flow, every service menu page) and tools/pinout.
 docs-shots: $(BIN) docs-pinout
 	@scripts/docs-shots.sh $(BIN)
 	@scripts/game-shots.sh $(BIN)
+	@scripts/service-shots.sh $(BIN)
 
 # The GPIO wiring picture of docs/operator.md: the example spec of the
 # shipped config/arcaded.ini (its `; gpio:gpiochip0:...` line; the shipped
