@@ -56,7 +56,7 @@ TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
 .PHONY: all setup setup-test run test deb image test-image test-pkg test-unit test-asan test-script \
 	test-replay test-clang check-layers check-state check-tables check-systemd check-install \
-	check-levels test-vm docs-shots docs-pinout fuzz fuzzers bench bench-pacing install clean tests tools
+	check-levels test-vm docs-shots docs-pinout check-docs fuzz fuzzers bench bench-pacing install clean tests tools
 
 all: $(BIN) $(GL_SO) tools
 
@@ -191,6 +191,11 @@ PINOUT_SPEC = $(shell sed -n 's/^; *\(gpio:gpiochip0:[^ ]*\)$$/\1/p' config/arca
 docs-pinout: $(BUILD)/tools/pinout
 	@test -n "$(PINOUT_SPEC)" || { echo "docs-pinout: no '; gpio:gpiochip0:...' line in config/arcaded.ini"; exit 1; }
 	$(BUILD)/tools/pinout '$(PINOUT_SPEC)' docs/images/gpio-pinout.png
+
+# docs/operator.md names only images, options, keys, targets, pages and
+# profiles that exist.
+check-docs: $(BIN)
+	@BIN=$(BIN) tests/check_docs.sh
 
 # engine/map/lvl_wad.c is exactly what tools/mklevels makes of levels/*.txt.
 check-levels: $(BUILD)/tools/mklevels
