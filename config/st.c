@@ -112,7 +112,9 @@ static int st_read_file(int dfd, const char *name, uint8_t **img, size_t *n)
 	struct stat sb;
 	int fd, ret;
 
-	fd = openat(dfd, name, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+	/* O_NONBLOCK: the open of a FIFO would block until a writer comes;
+	 * fstat then refuses it. No effect on a regular file. */
+	fd = openat(dfd, name, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
 	if (fd < 0)
 		return -errno;
 	if (fstat(fd, &sb) < 0)

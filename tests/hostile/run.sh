@@ -169,6 +169,25 @@ elif ! grep -qF "books: not saved:" "$tmp/err"; then
 else
 	ok "state: failed first save: $(grep -F "not saved" "$tmp/err" | head -n 1)"
 fi
+# item 13: a FIFO named *.ini in the config directory and one named books
+# in the state directory: start-up must not block in open() (the guard
+# catches a hang); each is refused by name and the cabinet runs.
+S="$tmp/s13"; mkdir -p "$S" "$tmp/etc13"
+mkfifo "$tmp/etc13/zz.ini" "$S/books"
+timeout -s KILL 10 "$BIN" --config-dir "$tmp/etc13" --state-dir "$S" --ticks 10 \
+	--set display.backend=file --set display.file="$tmp/fb" >/dev/null 2>"$tmp/err"
+rc=$?; [ "$rc" -eq 137 ] && rc=124
+if [ "$rc" -eq 124 ]; then
+	bad "fifo: start-up blocked on a FIFO (killed after 10 s)"
+elif [ "$rc" -ne 0 ]; then
+	bad "fifo: exit $rc, log:"; sed 's/^/    /' "$tmp/err"
+elif ! grep -qF "$tmp/etc13/zz.ini: not a regular file" "$tmp/err"; then
+	bad "fifo: the config FIFO is not named as such, log:"; sed 's/^/    /' "$tmp/err"
+elif ! grep -qF "$S/books: books: not a regular file" "$tmp/err"; then
+	bad "fifo: the state FIFO is not named as such, log:"; sed 's/^/    /' "$tmp/err"
+else
+	ok "fifo: $(grep -F "zz.ini" "$tmp/err" | head -n 1) / $(grep -F "not a regular" "$tmp/err" | grep -F books | head -n 1)"
+fi
 fi
 
 echo "hostile: $pass passed, $fail failed"
