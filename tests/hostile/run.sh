@@ -84,8 +84,8 @@ case_() {
 }
 
 if [ "$PART" != files ]; then
-case_ dag.wad 2 "MAP01: node 1199: child[1] node 1198 is reached a second time: the BSP is not a tree"
-case_ high.wad 2 "MAP01: SECTORS entry 0: floor 32730 out of range (+/-16383 units"
+case_ dag.wad 2 "dag.wad: MAP01: node 1199: child[1] node 1198 is reached a second time: the BSP is not a tree"
+case_ high.wad 2 "high.wad: MAP01: SECTORS entry 0: floor 32730 out of range (+/-16383 units"
 case_ tall.wad 2 "tall.wad: TEXTURE1 entry 0 (HOSTILE): the textures need more than 268435456 steps to compose (limit TEX_MAX_STEPS)"
 case_ cross2004.wad 2 "cross2004.wad: MAP01: NODES (built here): node builder: 2008 lines need more than 268435456 steps (limit NB_MAX_STEPS)"
 case_ cross30004.wad 2 "cross30004.wad: MAP01: NODES (built here): node builder: 30008 lines need more than 268435456 steps (limit NB_MAX_STEPS)"
@@ -187,6 +187,20 @@ elif ! grep -qF "$S/books: books: not a regular file" "$tmp/err"; then
 	bad "fifo: the state FIFO is not named as such, log:"; sed 's/^/    /' "$tmp/err"
 else
 	ok "fifo: $(grep -F "zz.ini" "$tmp/err" | head -n 1) / $(grep -F "not a regular" "$tmp/err" | grep -F books | head -n 1)"
+fi
+# item 14: a --state-dir of 256 bytes (one more than paths.state_dir holds)
+# is refused by name; cut at 255 bytes the state would go to another
+# directory (here one that exists, so nothing else would stop the run)
+long="$tmp/s14/$(printf '%0*d' $((255 - ${#tmp} - 5)) 0)"
+mkdir -p "$long"
+run_ "${long}y"
+if [ "${#long}" -ne 255 ]; then
+	bad "state-dir: the test path is ${#long} bytes, not 255"
+elif [ "$rc" -ne 2 ] || ! grep -qF -- "--state-dir: path too long (at most 255 bytes)" "$tmp/err"; then
+	bad "state-dir: 256 bytes: exit $rc (expected 2), state in the cut path: $(ls "$long" | tr '\n' ' ') log:"
+	sed 's/^/    /' "$tmp/err"
+else
+	ok "state-dir: 256 bytes: exit 2: $(grep -F -- "--state-dir" "$tmp/err" | head -n 1)"
 fi
 fi
 
