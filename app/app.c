@@ -437,7 +437,10 @@ static int finish(struct app *a)
 	if (o->screenshot) {
 		int rc = shot_png(o->screenshot, f->px, f->w, f->h, f->pitch, a->ct.tex->pal.rgb);
 		if (rc < 0) {
-			say_err("%s: %s", o->screenshot, strerror(-rc));
+			char why[160];
+
+			shot_why(o->screenshot, rc, why, sizeof(why));
+			say_err("%s: %s", o->screenshot, why);
 			code = APP_SETUP_FAILED;
 		}
 	}

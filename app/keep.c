@@ -18,12 +18,30 @@
 #include "engine/game/g_game.h"
 #include "input/rec.h"
 
+/* The payload checks st_load_usable and st_save_usable take: a scores or
+ * books copy that this build cannot decode (a newer format byte, say) is
+ * a bad copy, so .prev is loaded instead and the copy is never rotated
+ * into .prev. */
+static int keep_scores_usable(const void *p, size_t len)
+{
+	struct g_scores s;
+
+	return g_scores_decode(p, len, &s);
+}
+
+static int keep_books_usable(const void *p, size_t len)
+{
+	struct g_books b;
+
+	return g_books_decode(p, len, &b);
+}
+
 /* Loads a state file's payload; NULL when missing or unusable (reported). */
-static void *keep_load(struct keep *k, const char *name, size_t *len)
+static void *keep_load(struct keep *k, const char *name, st_usable_fn usable, size_t *len)
 {
 	char msg[256] = "";
 	void *buf = NULL;
-	int rc = st_load(k->dir, name, &buf, len, NULL, msg, sizeof(msg));
+	int rc = st_load_usable(k->dir, name, usable, &buf, len, NULL, msg, sizeof(msg));
 
 	if (msg[0] && rc != -ENOENT)
 		say_warn("%s/%s: %s", k->dir, name, msg);
@@ -35,12 +53,24 @@ static void *keep_load(struct keep *k, const char *name, size_t *len)
 	return buf;
 }
 
-static void keep_save(struct keep *k, const char *name, const void *data, size_t len)
+static void keep_save(struct keep *k, const char *name, st_usable_fn usable, const void *data,
+		      size_t len)
 {
-	int rc = st_save(k->dir, name, data, len);
-	if (rc < 0)
+	void *old = NULL;
+	size_t olen;
+	int rc = st_save_usable(k->dir, name, usable, data, len);
+
+	if (rc >= 0)
+		return;
+	/* A failed save leaves both copies as they were: say so only when one
+	 * of them is a copy that loads. */
+	if (st_load_usable(k->dir, name, usable, &old, &olen, NULL, NULL, 0) == 0)
 		say_err("%s/%s: not saved: %s (the previous copy is intact)", k->dir, name,
-		    strerror(-rc));
+			strerror(-rc));
+	else
+		say_err("%s/%s: not saved: %s (and there is no previous copy)", k->dir, name,
+			strerror(-rc));
+	free(old);
 }
 
 void keep_start(struct keep *k, const char *dir, int on, struct sim *s, const struct ct *ct,
@@ -54,13 +84,13 @@ void keep_start(struct keep *k, const char *dir, int on, struct sim *s, const st
 	k->dir = dir;
 	k->on = on;
 	if (on) {
-		buf = keep_load(k, "scores", &len);
+		buf = keep_load(k, "scores", keep_scores_usable, &len);
 		if (buf && g_scores_decode(buf, len, &scores) == 0)
 			sp = &scores;
 		else if (buf)
 			say_warn("%s/scores: not a high-score table; using the defaults", dir);
 		free(buf);
-		buf = keep_load(k, "books", &len);
+		buf = keep_load(k, "books", keep_books_usable, &len);
 		if (buf && g_books_decode(buf, len, &books) == 0)
 			bp = &books;
 		else if (buf)
@@ -85,7 +115,7 @@ static void keep_settings(struct keep *k, const struct sim *s, int w, int h)
 			 "render_width = %d\nrender_height = %d\n",
 			 st->coins_per_credit, st->freeplay ? "yes" : "no", st->difficulty,
 			 st->lives, w, h);
-	keep_save(k, "settings.ini", ini, (size_t)n);
+	keep_save(k, "settings.ini", NULL, ini, (size_t)n);
 }
 
 void keep_tick(struct keep *k, const struct sim *s, int w, int h)
@@ -107,12 +137,12 @@ void keep_tick(struct keep *k, const struct sim *s, int w, int h)
 	if (s->scores_gen != k->scores_gen) {
 		k->scores_gen = s->scores_gen;
 		g_scores_encode(&s->scores, buf);
-		keep_save(k, "scores", buf, G_SCORES_BYTES);
+		keep_save(k, "scores", keep_scores_usable, buf, G_SCORES_BYTES);
 	}
 	if (s->books_gen != k->books_gen) {
 		k->books_gen = s->books_gen;
 		g_books_encode(&s->books, buf);
-		keep_save(k, "books", buf, G_BOOKS_BYTES);
+		keep_save(k, "books", keep_books_usable, buf, G_BOOKS_BYTES);
 	}
 }
 
@@ -222,6 +252,6 @@ void keep_close(struct keep *k, const struct sim *s, uint64_t ticks)
 		/* play and power-on time count up without a generation bump */
 		uint8_t buf[G_BOOKS_BYTES];
 		g_books_encode(&s->books, buf);
-		keep_save(k, "books", buf, G_BOOKS_BYTES);
+		keep_save(k, "books", keep_books_usable, buf, G_BOOKS_BYTES);
 	}
 }

@@ -266,6 +266,13 @@ int main(int argc, char **argv)
 
 	/* Layers: defaults < config dir < state dir < command line. */
 	cfg_defaults(&c);
+	if (state_dir && strlen(state_dir) >= sizeof(c.paths.state_dir)) {
+		/* cut short it would name another directory: refused, as
+		 * paths.state_dir set in a file or by --set is */
+		say_err("--state-dir: path too long (at most %zu bytes)",
+			sizeof(c.paths.state_dir) - 1);
+		return 2;
+	}
 	if (state_dir)
 		snprintf(c.paths.state_dir, sizeof(c.paths.state_dir), "%s", state_dir);
 	if (o.config_dir)

@@ -101,8 +101,11 @@ void script_checks(struct script *s, uint32_t t, const struct sim *sim, const st
 		case SCR_SCREENSHOT: {
 			int rc = shot_png(sp->path, f->px, f->w, f->h, f->pitch, rgb);
 			if (rc < 0) {
+				char why[160];
+
+				shot_why(sp->path, rc, why, sizeof(why));
 				say_err("%s:%u: screenshot %s: %s", s->path, sp->line, sp->path,
-				    strerror(-rc));
+					why);
 				s->failures++;
 			}
 			break;

@@ -109,9 +109,13 @@ int tape_next(struct tape *t, uint32_t tick, struct rec_tick *rt)
 {
 	int rc = rec_reader_next_tick(t->rep, rt);
 
-	if (rc < 0)
+	if (rc < 0) {
 		say_err("%s: tick %u: %s", t->replay, tick,
-		    rc == -EIO ? "the recording ends before its header's count" : strerror(-rc));
+			rc == -EIO ? "the recording is not the length its header's count says "
+				     "(records missing, or bytes after them)"
+				   : strerror(-rc));
+		t->damaged = 1;
+	}
 	return rc > 0;
 }
 
@@ -145,6 +149,13 @@ int tape_verdict(struct tape *t)
 
 	if (!t->verifying)
 		return 0;
+	if (t->damaged) {
+		/* the hashes of what was there may all match: a recording that
+		 * is not whole does not pass */
+		say_err("%s: FAILED: the recording could not be read to its header's count",
+			t->replay);
+		return 1;
+	}
 	bad = rec_verify_summary(&t->verify, sum, sizeof(sum));
 	if (bad)
 		say_err("%s: %s", t->replay, sum);

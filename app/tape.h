@@ -24,6 +24,7 @@ struct tape {
 	struct rec_reader *rep;
 	struct rec_verify verify;
 	int verifying;             /* --verify, once the recording was accepted */
+	int damaged;               /* the reader reported the file not whole */
 	int quiet;                 /* replay: print no per-tick hashes */
 	int no_render;             /* replay: no frames, so no frame hashes */
 	FILE *out;                 /* per-tick hashes */

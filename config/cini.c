@@ -186,7 +186,7 @@ void cini_report(struct cini_errs *e, int line, const char *fmt, ...)
 int cini_read_file(const char *path, char **text, size_t *len)
 {
 	uint8_t *b;
-	int ret = io_read_file(path, CINI_FILE_MAX, 0, &b, len);
+	int ret = io_read_file(path, CINI_FILE_MAX, IO_REGULAR, &b, len);
 
 	*text = (char *)b;
 	return ret;
@@ -206,6 +206,8 @@ int cini_load_file(const char *path,
 	if (ret < 0) {
 		if (ret == -EFBIG)
 			snprintf(msg, sizeof(msg), "file is larger than %d bytes", CINI_FILE_MAX);
+		else if (ret == -EINVAL)
+			snprintf(msg, sizeof(msg), "not a regular file; ignored");
 		else
 			snprintf(msg, sizeof(msg), "cannot read: %s", strerror(-ret));
 		if (fn)

@@ -53,7 +53,9 @@ int cini_parse(const char *text, size_t len, cini_fn fn, void *user);
 
 /* Reads a whole file (input/io.h's io_read_file) into a malloc'd,
  * NUL-terminated buffer that the caller frees. 0, or -errno with *text
- * NULL: -EFBIG above CINI_FILE_MAX bytes, -EISDIR for a directory. */
+ * NULL: -EFBIG above CINI_FILE_MAX bytes, -EISDIR for a directory,
+ * -EINVAL for anything else that is not a regular file (a FIFO, a device:
+ * refused without blocking, IO_REGULAR). */
 int cini_read_file(const char *path, char **text, size_t *len);
 
 /* Reports a problem: file, line (0: none), message (cfg_err_fn's shape). */

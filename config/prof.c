@@ -240,7 +240,8 @@ int prof_load_dir(struct prof_set *s, const char *dir, cfg_err_fn fn, void *user
 		if (r < 0) {
 			problems++;
 			if (fn)
-				fn(user, path, 0, strerror(-r));
+				fn(user, path, 0,
+				   r == -EINVAL ? "not a regular file; ignored" : strerror(-r));
 			continue;
 		}
 		problems += prof_load_text(s, text, len, path, fn, user);

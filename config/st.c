@@ -2,8 +2,9 @@
  * st: power-cut-safe state files. Why each step of st_save is there:
  *  - the new bytes go to NAME.tmp and are fsynced before any name changes,
  *    so a rename never publishes data that is not on disk;
- *  - the current NAME is kept as NAME.prev only if it checks out: rotating
- *    a corrupt NAME would push the last good copy out of .prev;
+ *  - the current NAME is kept as NAME.prev only if it checks out (and its
+ *    payload passes the caller's usable check): rotating a corrupt or
+ *    undecodable NAME would push the last good copy out of .prev;
  *  - .prev is made by a hard link and a rename, so NAME itself never
  *    disappears (file systems without hard links fall back to renaming
  *    NAME to NAME.prev: for that instant only .prev exists, and st_load
@@ -111,7 +112,9 @@ static int st_read_file(int dfd, const char *name, uint8_t **img, size_t *n)
 	struct stat sb;
 	int fd, ret;
 
-	fd = openat(dfd, name, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+	/* O_NONBLOCK: the open of a FIFO would block until a writer comes;
+	 * fstat then refuses it. No effect on a regular file. */
+	fd = openat(dfd, name, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
 	if (fd < 0)
 		return -errno;
 	if (fstat(fd, &sb) < 0)
@@ -124,9 +127,10 @@ static int st_read_file(int dfd, const char *name, uint8_t **img, size_t *n)
 	return ret;
 }
 
-/* 1 if NAME in dfd is a valid state file, 0 if missing or invalid, -errno
- * on a read error other than a missing file. */
-static int st_valid(int dfd, const char *name)
+/* 1 if NAME in dfd is a valid state file whose payload passes usable (when
+ * not NULL), 0 if missing or invalid, -errno on a read error other than a
+ * missing file. */
+static int st_valid(int dfd, const char *name, st_usable_fn usable)
 {
 	uint8_t *img;
 	size_t n, plen;
@@ -137,7 +141,8 @@ static int st_valid(int dfd, const char *name)
 		return 0;
 	if (ret < 0)
 		return ret;
-	ret = st_check(img, n, &plen, NULL, 0) == 0;
+	ret = st_check(img, n, &plen, NULL, 0) == 0 &&
+	      (!usable || usable(img + ST_HEADER_SIZE, plen) == 0);
 	free(img);
 	return ret;
 }
@@ -197,6 +202,12 @@ static int st_publish(int dfd, const char *tmp, const char *name)
 
 int st_save(const char *dir, const char *name, const void *data, size_t len)
 {
+	return st_save_usable(dir, name, NULL, data, len);
+}
+
+int st_save_usable(const char *dir, const char *name, st_usable_fn usable, const void *data,
+		   size_t len)
+{
 	char tmp[ST_NAME_MAX + 16], prev[ST_NAME_MAX + 16], prevtmp[ST_NAME_MAX + 16];
 	uint8_t hdr[ST_HEADER_SIZE];
 	const void *part[2] = { hdr, data };
@@ -216,7 +227,7 @@ int st_save(const char *dir, const char *name, const void *data, size_t len)
 	ret = st_write_tmp(dfd, tmp, part, plen, len ? 2 : 1);
 	if (ret < 0)
 		goto out;
-	ret = st_valid(dfd, name);
+	ret = st_valid(dfd, name, usable);
 	if (ret == 1)
 		ret = st_keep_prev(dfd, name, prev, prevtmp);
 	if (ret < 0) {
@@ -249,8 +260,8 @@ int st_write_plain(const char *dir, const char *name, const void *data, size_t l
 
 /* Loads and checks one copy: 0 with the payload moved to the front of a
  * malloc'd buffer, or -errno with the reason in why. */
-static int st_load_one(int dfd, const char *name, void **buf, size_t *len, char *why,
-		       size_t whylen)
+static int st_load_one(int dfd, const char *name, st_usable_fn usable, void **buf, size_t *len,
+		       char *why, size_t whylen)
 {
 	uint8_t *img;
 	size_t n, plen;
@@ -271,6 +282,11 @@ static int st_load_one(int dfd, const char *name, void **buf, size_t *len, char 
 		free(img);
 		return ret;
 	}
+	if (usable && usable(img + ST_HEADER_SIZE, plen) < 0) {
+		txt_set(why, whylen, "payload not usable by this version");
+		free(img);
+		return -EBADMSG;
+	}
 	memmove(img, img + ST_HEADER_SIZE, plen);
 	*buf = img;
 	*len = plen;
@@ -279,6 +295,12 @@ static int st_load_one(int dfd, const char *name, void **buf, size_t *len, char 
 
 int st_load(const char *dir, const char *name, void **buf, size_t *len, enum st_which *which,
 	    char *msg, size_t msglen)
+{
+	return st_load_usable(dir, name, NULL, buf, len, which, msg, msglen);
+}
+
+int st_load_usable(const char *dir, const char *name, st_usable_fn usable, void **buf,
+		   size_t *len, enum st_which *which, char *msg, size_t msglen)
 {
 	char prev[ST_NAME_MAX + 16], why1[128], why2[128];
 	int dfd, r1, r2;
@@ -295,14 +317,14 @@ int st_load(const char *dir, const char *name, void **buf, size_t *len, enum st_
 		txt_set(msg, msglen, "%s: %s", dir, strerror(-r1));
 		return r1;
 	}
-	r1 = st_load_one(dfd, name, buf, len, why1, sizeof(why1));
+	r1 = st_load_one(dfd, name, usable, buf, len, why1, sizeof(why1));
 	if (r1 == 0) {
 		if (which)
 			*which = ST_MAIN;
 		close(dfd);
 		return 0;
 	}
-	r2 = st_load_one(dfd, prev, buf, len, why2, sizeof(why2));
+	r2 = st_load_one(dfd, prev, usable, buf, len, why2, sizeof(why2));
 	close(dfd);
 	if (r2 == 0) {
 		if (which)

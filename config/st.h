@@ -18,6 +18,13 @@
  * DIR/NAME.prev holds a complete, checksummed copy of the last saved or
  * the one before; st_load finds it.
  *
+ * A copy whose checksums hold may still be unusable: its payload is in a
+ * format this build cannot decode (a newer format byte, say). The _usable
+ * variants take the caller's check of the payload; a copy that fails it is
+ * a bad copy like a corrupt one: st_load_usable goes on to .prev, and
+ * st_save_usable never rotates it into .prev (that would push the last
+ * good copy out).
+ *
  * st_write_plain is the same write-fsync-rename-fsync sequence for a plain
  * file without the header (one copy, no .prev).
  *
@@ -40,6 +47,10 @@ enum st_which {
 	ST_PREV,                 /* DIR/NAME.prev: NAME was missing or corrupt */
 };
 
+/* A caller's check of a payload whose checksums hold: 0 when this build
+ * can use it, a negative errno when it cannot decode it. */
+typedef int (*st_usable_fn)(const void *payload, size_t len);
+
 /* Saves len bytes of data (len <= ST_MAX_LEN) as DIR/NAME, power-cut safe
  * as described above. NAME is a plain file name (no '/', not "." or "..",
  * at most ST_NAME_MAX bytes). Returns 0 once the new file and the
@@ -48,6 +59,11 @@ enum st_which {
  * failed: the .tmp is removed and DIR/NAME and DIR/NAME.prev are as they
  * were). */
 int st_save(const char *dir, const char *name, const void *data, size_t len);
+
+/* st_save, but the current DIR/NAME is kept as DIR/NAME.prev only when it
+ * also passes usable (NULL: st_save). */
+int st_save_usable(const char *dir, const char *name, st_usable_fn usable, const void *data,
+		   size_t len);
 
 /* Writes len bytes of data (len <= ST_MAX_LEN) as the plain file DIR/NAME
  * (no header: text other programs read, like STATE_DIR/bindings.ini),
@@ -70,6 +86,11 @@ int st_write_plain(const char *dir, const char *name, const void *data, size_t l
  * may be NULL; which may be NULL. */
 int st_load(const char *dir, const char *name, void **buf, size_t *len, enum st_which *which,
 	    char *msg, size_t msglen);
+
+/* st_load, where a copy whose payload fails usable (NULL: st_load) is bad
+ * too: the reason given is "payload not usable by this version". */
+int st_load_usable(const char *dir, const char *name, st_usable_fn usable, void **buf,
+		   size_t *len, enum st_which *which, char *msg, size_t msglen);
 
 /* Checks a whole state file image of n bytes: 0 with the payload's offset
  * and length, or -EBADMSG with the reason in why ("too short (10 bytes)",

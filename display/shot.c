@@ -1,6 +1,10 @@
 /*
  * shot: PNG screenshots (libpng). The image is written to "<path>.tmp",
  * fsynced and renamed over path, so a reader never sees half a file.
+ * A path (or "<path>.tmp") that exists and is not a regular file is never
+ * written or replaced: renaming over a device node, FIFO or symbolic link
+ * would replace the node or link itself (run as root, /dev/full became a
+ * PNG).
  *
  * libpng reports errors by longjmp; the setjmp and every libpng call stay
  * inside shot_write, and our error handler keeps libpng from printing.
@@ -14,6 +18,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static void shot_error(png_structp png, png_const_charp msg)
@@ -68,6 +73,55 @@ static int shot_write(FILE *f, const uint8_t *px, int w, int h, int pitch,
 	return 0;
 }
 
+/* What lstat says path is, when it is not a regular file. */
+static const char *shot_kind(mode_t m)
+{
+	if (S_ISLNK(m))
+		return "a symbolic link";
+	if (S_ISFIFO(m))
+		return "a FIFO";
+	if (S_ISCHR(m) || S_ISBLK(m))
+		return "a device node";
+	if (S_ISDIR(m))
+		return "a directory";
+	if (S_ISSOCK(m))
+		return "a socket";
+	return "not a regular file";
+}
+
+const char *shot_target_kind(const char *path)
+{
+	struct stat sb;
+
+	if (lstat(path, &sb) < 0 || S_ISREG(sb.st_mode))
+		return NULL;
+	return shot_kind(sb.st_mode);
+}
+
+void shot_why(const char *path, int rc, char *why, size_t whylen)
+{
+	const char *k = shot_target_kind(path);
+
+	if (rc != -EEXIST) {
+		snprintf(why, whylen, "%s", strerror(-rc));
+	} else if (k) {
+		snprintf(why, whylen, "is %s, not a regular file: not replaced", k);
+	} else {
+		/* the temporary name is in the way */
+		size_t n = strlen(path);
+		char *tmp = malloc(n + 5);
+
+		if (tmp) {
+			memcpy(tmp, path, n);
+			memcpy(tmp + n, ".tmp", 5);
+			k = shot_target_kind(tmp);
+			free(tmp);
+		}
+		snprintf(why, whylen, "%s.tmp is %s, not a regular file: not written", path,
+			 k ? k : "not a regular file");
+	}
+}
+
 int shot_png(const char *path, const uint8_t *px, int w, int h, int pitch,
 	     const uint8_t rgb[256][3])
 {
@@ -87,7 +141,13 @@ int shot_png(const char *path, const uint8_t *px, int w, int h, int pitch,
 	}
 	memcpy(tmp, path, n);
 	memcpy(tmp + n, ".tmp", 5);
-	fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+	if (shot_target_kind(path) || shot_target_kind(tmp)) {
+		rc = -EEXIST;
+		goto out;
+	}
+	/* O_NOFOLLOW, O_NONBLOCK: should one appear after the check, a link
+	 * is not followed and a FIFO does not block the open */
+	fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
 	if (fd < 0) {
 		rc = -errno;
 		goto out;

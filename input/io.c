@@ -105,13 +105,18 @@ int io_read_file(const char *path, size_t max, int flags, uint8_t **buf, size_t 
 
 	*buf = NULL;
 	*len = 0;
-	fd = open(path, O_RDONLY | O_CLOEXEC);
+	/* O_NONBLOCK with IO_REGULAR: opening a FIFO for reading blocks until
+	 * a writer comes, before fstat could refuse it; for a regular file the
+	 * flag changes nothing. */
+	fd = open(path, O_RDONLY | O_CLOEXEC | ((flags & IO_REGULAR) ? O_NONBLOCK : 0));
 	if (fd < 0)
 		return -errno;
 	if (!(flags & IO_REGULAR))
 		ret = io_read_fd(fd, max, buf, len);
 	else if (fstat(fd, &sb) < 0)
 		ret = -errno;
+	else if (S_ISDIR(sb.st_mode))
+		ret = -EISDIR;
 	else if (!S_ISREG(sb.st_mode))
 		ret = -EINVAL;
 	else

@@ -19,8 +19,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* io_read_file flag: anything but a regular file is -EINVAL (a FIFO or a
- * device would block or never end). */
+/* io_read_file flag: a directory is -EISDIR, anything else but a regular
+ * file is -EINVAL (a FIFO or a
+ * device would block or never end); the file is opened O_NONBLOCK, so not
+ * even the open of a FIFO without a writer blocks. */
 #define IO_REGULAR 0x1
 
 /* Reads fd from its position to its end. At most max bytes (taken as at

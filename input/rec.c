@@ -73,6 +73,18 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 	return size;
 }
 
+/* 1 (with the reason in err) when a byte of buf[from..to) is not 0. */
+static int rec_nonzero(const uint8_t *buf, int from, int to, char *err, size_t errlen)
+{
+	for (int i = from; i < to; i++) {
+		if (buf[i]) {
+			txt_set(err, errlen, "reserved byte %d is 0x%02x, not 0", i, buf[i]);
+			return 1;
+		}
+	}
+	return 0;
+}
+
 int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char *err,
 		      size_t errlen)
 {
@@ -145,6 +157,10 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		txt_set(err, errlen, "lives %u out of range 0..9", d.set.lives);
 		return -EINVAL;
 	}
+	/* Reserved bytes are 0 as written: a flip there is damage, not a
+	 * field this build may skip. */
+	if (rec_nonzero(buf, 37, 40, err, errlen))
+		return -EINVAL;
 	if (d.version >= REC_VERSION_2) {
 		d.render_w = le_get16(buf + 40);
 		d.render_h = le_get16(buf + 42);
@@ -156,6 +172,18 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		d.start_time = (int64_t)le_get64(buf + 64);
 		if (d.hash_flags & ~(REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_SNAPSHOT)) {
 			txt_set(err, errlen, "hash flags 0x%02x unknown", d.hash_flags);
+			return -EINVAL;
+		}
+		if (rec_nonzero(buf, 46, 48, err, errlen))
+			return -EINVAL;
+		if (!(d.hash_flags & REC_HAS_SNAPSHOT) &&
+		    (rec_nonzero(buf, 52, 56, err, errlen) || rec_nonzero(buf, 72, 80, err, errlen)))
+			return -EINVAL;
+		/* start time: 0 (unknown) or a time_t that fits 32 bits (until
+		 * 2106); the high bytes are checked, the low ones cannot be */
+		if ((uint64_t)d.start_time > UINT32_MAX) {
+			txt_set(err, errlen, "start time %" PRIu64 " out of range",
+				(uint64_t)d.start_time);
 			return -EINVAL;
 		}
 		if (d.hash_flags & REC_HAS_SNAPSHOT) {
@@ -182,6 +210,11 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 			unsigned char ch = (unsigned char)d.map_name[i];
 			if (ch != 0 && (ch < 0x21 || ch > 0x7e)) {
 				txt_set(err, errlen, "map name is not printable ASCII");
+				return -EINVAL;
+			}
+			/* NUL-padded: nothing after the first NUL */
+			if (ch != 0 && i > 0 && d.map_name[i - 1] == 0) {
+				txt_set(err, errlen, "map name padding is not all NUL");
 				return -EINVAL;
 			}
 		}
@@ -363,7 +396,7 @@ struct rec_reader {
 	size_t recsize;
 	uint32_t total;          /* records next returns in all */
 	uint32_t pos;            /* records returned so far */
-	bool damaged;            /* finished, yet shorter than its count */
+	bool damaged;            /* finished, yet not the length its count says */
 	size_t bn, bi;           /* bytes in buf, next byte */
 	uint8_t buf[REC_BUF];
 };
@@ -476,7 +509,12 @@ int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t
 		r->total = (uint32_t)whole;
 		r->damaged = true;
 	} else {
+		/* finished: exactly the counted records (rec_repair truncates
+		 * a cut recording to whole records); more bytes mean the count
+		 * or the file was damaged */
 		r->total = r->h.count;
+		r->damaged = (uint64_t)sb.st_size !=
+			     r->h.header_size + (uint64_t)r->h.count * r->recsize;
 	}
 	*out = r;
 	return 0;

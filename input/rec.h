@@ -41,12 +41,19 @@
  *
  * The writer puts 0xffffffff in the count and writes the real count only
  * when it closes, so a recording cut short (power loss, crash) is
- * recognisable and replays up to its last whole record. A finished
- * recording (count known) that holds fewer records than its count was
- * damaged afterwards: its whole records replay, then the reader reports
- * -EIO. Bytes after the counted records, and a partial last record, are
- * ignored. A header larger than the version's size (a later minor
- * addition) is skipped.
+ * recognisable and replays up to its last whole record (a partial last
+ * record is ignored; rec_repair truncates to whole records and writes
+ * the count). A finished recording (count known) is exactly the header
+ * and its counted records: one that holds fewer, or more bytes, was
+ * damaged afterwards: its whole counted records replay, then the reader
+ * reports -EIO (and --verify fails). A header larger than the version's
+ * size (a later minor addition) is skipped.
+ *
+ * Checks on the header beyond the ranges of its fields: reserved bytes
+ * (37..39; 46..47; 52..55 and 72..79 without a snapshot) are 0, the map
+ * name holds nothing after its first NUL, the start time fits 32 bits.
+ * The low four bytes of the start time are the only bytes no check
+ * covers (format 2 has no header checksum).
  *
  * A build before snapshots refuses a recording with one ("hash flags 0x04
  * unknown") rather than replaying it from the wrong start; this build

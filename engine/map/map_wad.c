@@ -86,16 +86,10 @@ static int mw_is_marker(const struct wad *w, int i)
 	       (strcmp(next, "THINGS") == 0 || strcmp(next, "TEXTMAP") == 0);
 }
 
+/* "<file>: <map>: ", in front of every message about a map: the WAD that
+ * holds the map's marker is named too (with layered WADs the map name
+ * alone does not say which file is bad). */
 static void mw_start(struct mw *c)
-{
-	if (c->err && c->errlen)
-		c->err[0] = '\0';
-	msg_cat(c->err, c->errlen, c->map);
-	msg_cat(c->err, c->errlen, ": ");
-}
-
-/* "<file>: <map>: ", for the limits' messages */
-static void mw_start_file(struct mw *c)
 {
 	if (c->err && c->errlen)
 		c->err[0] = '\0';
@@ -105,7 +99,7 @@ static void mw_start_file(struct mw *c)
 	msg_cat(c->err, c->errlen, ": ");
 }
 
-/* "<map>: <LUMP> entry <i>: " */
+/* "<file>: <map>: <LUMP> entry <i>: " */
 static void mw_entry(struct mw *c, int lump, uint32_t i)
 {
 	mw_start(c);
@@ -115,7 +109,7 @@ static void mw_entry(struct mw *c, int lump, uint32_t i)
 	msg_cat(c->err, c->errlen, ": ");
 }
 
-/* "<map>: <LUMP> entry <i>: <field> <v> out of range (<count> <what>)" */
+/* "<file>: <map>: <LUMP> entry <i>: <field> <v> out of range (<count> <what>)" */
 static int mw_range(struct mw *c, int lump, uint32_t i, const char *field, uint32_t v,
 		    uint32_t count, const char *what)
 {
@@ -154,7 +148,7 @@ static int mw_collect(struct mw *c, const struct wad *w, int i)
 			return -EINVAL;
 		}
 		if (l < MW_REJECT && len / mw_size[l] > MW_MAX_RECORDS) {
-			mw_start_file(c);
+			mw_start(c);
 			msg_cat(c->err, c->errlen, mw_names[l]);
 			msg_cat(c->err, c->errlen, ": ");
 			msg_int(c->err, c->errlen, (int64_t)(len / mw_size[l]));
@@ -544,20 +538,17 @@ static int mw_build(struct mw *c)
 	r = mw_bsp(c);
 	if (r)
 		return r;
-	/* map_finish names entries by its own words ("line 3"); the map name
-	 * goes in front, and the file too for the node builder's limits and
-	 * stop. No BSP lumps (or ones in another format) are why it ran. */
+	/* map_finish names entries by its own words ("line 3"); the file and
+	 * the map name go in front. No BSP lumps (or ones in another format)
+	 * are why the node builder ran. */
 	r = map_finish_lim(c->m, c->stop, c->err, c->errlen);
 	if (r && r != -ENOMEM && c->err && c->errlen) {
 		char tail[256] = "";
 
 		msg_cat(tail, sizeof tail, c->err);
-		if (r == -EINVAL) {
-			mw_start(c);
-		} else {
-			mw_start_file(c);
+		mw_start(c);
+		if (r != -EINVAL)
 			msg_cat(c->err, c->errlen, "NODES (built here): ");
-		}
 		msg_cat(c->err, c->errlen, tail);
 	}
 	return r;

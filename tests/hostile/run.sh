@@ -10,10 +10,13 @@
 # Then a SIGTERM and a SIGINT sent while a long load runs must end it
 # (exit 0, "stopped" in the log); the time from the signal to the exit is
 # printed, and the guard is 5 s.
+# Then hostile state and config files (items 10-14), further down.
 # Usage: tests/hostile/run.sh path/to/arcaded
+# PART=files runs only the hostile files, PART=maps only the maps.
 set -u
 BIN=$(realpath "$1")
 GUARD=${GUARD:-30}
+PART=${PART:-all}
 cd "$(dirname "$0")/../.."
 CC=${CC:-cc}
 tmp=$(mktemp -d)
@@ -80,8 +83,9 @@ case_() {
 	fi
 }
 
-case_ dag.wad 2 "MAP01: node 1199: child[1] node 1198 is reached a second time: the BSP is not a tree"
-case_ high.wad 2 "MAP01: SECTORS entry 0: floor 32730 out of range (+/-16383 units"
+if [ "$PART" != files ]; then
+case_ dag.wad 2 "dag.wad: MAP01: node 1199: child[1] node 1198 is reached a second time: the BSP is not a tree"
+case_ high.wad 2 "high.wad: MAP01: SECTORS entry 0: floor 32730 out of range (+/-16383 units"
 case_ tall.wad 2 "tall.wad: TEXTURE1 entry 0 (HOSTILE): the textures need more than 268435456 steps to compose (limit TEX_MAX_STEPS)"
 case_ cross2004.wad 2 "cross2004.wad: MAP01: NODES (built here): node builder: 2008 lines need more than 268435456 steps (limit NB_MAX_STEPS)"
 case_ cross30004.wad 2 "cross30004.wad: MAP01: NODES (built here): node builder: 30008 lines need more than 268435456 steps (limit NB_MAX_STEPS)"
@@ -108,6 +112,97 @@ signal_() {
 signal_ TERM cross30004.wad
 signal_ INT tall.wad
 signal_ TERM litlines.wad
+fi
+
+# ---- hostile files (issue 13 items 10-14) -------------------------------
+if [ "$PART" != maps ]; then
+# run_ STATE [ARGS...]: the daemon, not headless (so it keeps state in
+# STATE), for 10 ticks; rc (124: still running after GUARD s), log in err
+run_() {
+	st=$1; shift
+	timeout -s KILL "$GUARD" "$BIN" --config-dir "$tmp/etc" --state-dir "$st" --ticks 10 \
+		--set display.backend=file --set display.file="$tmp/fb" "$@" \
+		>/dev/null 2>"$tmp/err"
+	rc=$?
+	[ "$rc" -eq 137 ] && rc=124
+}
+# crc_ : the CRC-32 of stdin as 4 little-endian bytes (gzip's trailer
+# holds it: a second implementation, not config/st.c's)
+crc_() { gzip -c | tail -c 8 | head -c 4; }
+# poke_ FILE OFFSET OCTAL: one byte of FILE set
+poke_() { printf "\\$3" | dd of="$1" bs=1 seek="$2" conv=notrunc 2>/dev/null; }
+# reseal_ FILE: the payload and header CRCs of a state file made valid again
+reseal_() {
+	tail -c +25 "$1" | crc_ | dd of="$1" bs=1 seek=16 conv=notrunc 2>/dev/null
+	head -c 20 "$1" | crc_ | dd of="$1" bs=1 seek=20 conv=notrunc 2>/dev/null
+}
+# u64_ FILE OFFSET: a little-endian 64-bit field
+u64_() { od -An -t u8 -j "$2" -N 8 "$1" | tr -d ' '; }
+
+# item 10: books with valid checksums but a format byte this build does
+# not know (payload byte 2: G_FORMAT) is a bad copy: books.prev is loaded,
+# and the next save does not rotate the bad copy into books.prev.
+S="$tmp/s10"; mkdir -p "$S"
+run_ "$S"; run_ "$S"
+cp "$S/books.prev" "$tmp/books.A"; cp "$S/books" "$tmp/books.B"
+poke_ "$S/books" 26 377; reseal_ "$S/books"
+run_ "$S"
+if [ "$rc" -ne 0 ]; then
+	bad "state: undecodable books: exit $rc, log:"; sed 's/^/    /' "$tmp/err"
+elif ! grep -qF "books: payload not usable by this version; loaded books.prev" "$tmp/err"; then
+	bad "state: undecodable books did not load books.prev, log:"; sed 's/^/    /' "$tmp/err"
+elif ! cmp -s "$S/books.prev" "$tmp/books.A"; then
+	bad "state: the save rotated the undecodable books into books.prev (the good copy is lost)"
+elif [ "$(u64_ "$S/books" 44)" != "$(u64_ "$tmp/books.B" 44)" ]; then
+	# the same 10 ticks on top of the same copy A: the same power-on time
+	bad "state: power-on ticks $(u64_ "$S/books" 44) after the run, $(u64_ "$tmp/books.B" 44) expected (counted on books.prev)"
+else
+	ok "state: undecodable books: $(grep -F "loaded books.prev" "$tmp/err" | head -n 1); books.prev kept"
+fi
+# item 10: a save that fails with no earlier copy does not claim one
+S="$tmp/s10b"; mkdir -p "$S/books.tmp"
+run_ "$S"
+if grep -qF "previous copy is intact" "$tmp/err"; then
+	bad "state: a failed first save claims a previous copy: $(grep -F "not saved" "$tmp/err" | head -n 1)"
+elif ! grep -qF "books: not saved:" "$tmp/err"; then
+	bad "state: the failed save is not reported, log:"; sed 's/^/    /' "$tmp/err"
+else
+	ok "state: failed first save: $(grep -F "not saved" "$tmp/err" | head -n 1)"
+fi
+# item 13: a FIFO named *.ini in the config directory and one named books
+# in the state directory: start-up must not block in open() (the guard
+# catches a hang); each is refused by name and the cabinet runs.
+S="$tmp/s13"; mkdir -p "$S" "$tmp/etc13"
+mkfifo "$tmp/etc13/zz.ini" "$S/books"
+timeout -s KILL 10 "$BIN" --config-dir "$tmp/etc13" --state-dir "$S" --ticks 10 \
+	--set display.backend=file --set display.file="$tmp/fb" >/dev/null 2>"$tmp/err"
+rc=$?; [ "$rc" -eq 137 ] && rc=124
+if [ "$rc" -eq 124 ]; then
+	bad "fifo: start-up blocked on a FIFO (killed after 10 s)"
+elif [ "$rc" -ne 0 ]; then
+	bad "fifo: exit $rc, log:"; sed 's/^/    /' "$tmp/err"
+elif ! grep -qF "$tmp/etc13/zz.ini: not a regular file" "$tmp/err"; then
+	bad "fifo: the config FIFO is not named as such, log:"; sed 's/^/    /' "$tmp/err"
+elif ! grep -qF "$S/books: books: not a regular file" "$tmp/err"; then
+	bad "fifo: the state FIFO is not named as such, log:"; sed 's/^/    /' "$tmp/err"
+else
+	ok "fifo: $(grep -F "zz.ini" "$tmp/err" | head -n 1) / $(grep -F "not a regular" "$tmp/err" | grep -F books | head -n 1)"
+fi
+# item 14: a --state-dir of 256 bytes (one more than paths.state_dir holds)
+# is refused by name; cut at 255 bytes the state would go to another
+# directory (here one that exists, so nothing else would stop the run)
+long="$tmp/s14/$(printf '%0*d' $((255 - ${#tmp} - 5)) 0)"
+mkdir -p "$long"
+run_ "${long}y"
+if [ "${#long}" -ne 255 ]; then
+	bad "state-dir: the test path is ${#long} bytes, not 255"
+elif [ "$rc" -ne 2 ] || ! grep -qF -- "--state-dir: path too long (at most 255 bytes)" "$tmp/err"; then
+	bad "state-dir: 256 bytes: exit $rc (expected 2), state in the cut path: $(ls "$long" | tr '\n' ' ') log:"
+	sed 's/^/    /' "$tmp/err"
+else
+	ok "state-dir: 256 bytes: exit 2: $(grep -F -- "--state-dir" "$tmp/err" | head -n 1)"
+fi
+fi
 
 echo "hostile: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

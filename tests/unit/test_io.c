@@ -114,6 +114,28 @@ static void missing_files_directories_and_devices(void **state)
 	rmdir(d.path);
 }
 
+/* A FIFO without a writer: with IO_REGULAR it is refused at once, not
+ * waited on in open() (alarm: a blocked open ends the test, as a failure). */
+static void a_fifo_is_refused_without_blocking(void **state)
+{
+	struct dir d;
+	char p[128];
+	uint8_t *b;
+	size_t len;
+	(void)state;
+	dir_make(&d);
+	snprintf(p, sizeof(p), "%s/fifo.ini", d.path);
+	assert_int_equal(mkfifo(p, 0600), 0);
+	alarm(5);
+	assert_int_equal(io_read_file(p, 100, IO_REGULAR, &b, &len), -EINVAL);
+	alarm(0);
+	assert_null(b);
+	/* a directory stays -EISDIR with the flag */
+	assert_int_equal(io_read_file(d.path, 100, IO_REGULAR, &b, &len), -EISDIR);
+	unlink(p);
+	rmdir(d.path);
+}
+
 /* A pipe has no size: the reader grows its buffer to the end, bounded by
  * max; more than max is -EFBIG. */
 static void a_pipe_is_read_to_its_end_within_max(void **state)
@@ -207,6 +229,7 @@ int main(void)
 		cmocka_unit_test(a_file_is_read_whole_with_a_zero_after),
 		cmocka_unit_test(the_limit_is_max_bytes),
 		cmocka_unit_test(missing_files_directories_and_devices),
+		cmocka_unit_test(a_fifo_is_refused_without_blocking),
 		cmocka_unit_test(a_pipe_is_read_to_its_end_within_max),
 		cmocka_unit_test(sizeless_files_and_the_fd_position),
 		cmocka_unit_test(write_all_writes_everything_or_says_why),

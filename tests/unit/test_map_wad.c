@@ -191,23 +191,23 @@ static void corrupt_maps_name_map_lump_and_entry(void **state)
 		void (*fix)(struct wbuf *l);
 		const char *msg;
 	} cases[] = {
-		{ bad_line_vertex, "MAP01: LINEDEFS entry 3: vertex 99 out of range (6 vertices)" },
-		{ bad_line_side, "MAP01: LINEDEFS entry 4: sidedef 65534 out of range (8 sidedefs)" },
-		{ no_front_side, "MAP01: LINEDEFS entry 5: no front sidedef" },
-		{ zero_length, "MAP01: LINEDEFS entry 0: zero length" },
+		{ bad_line_vertex, "fix.wad: MAP01: LINEDEFS entry 3: vertex 99 out of range (6 vertices)" },
+		{ bad_line_side, "fix.wad: MAP01: LINEDEFS entry 4: sidedef 65534 out of range (8 sidedefs)" },
+		{ no_front_side, "fix.wad: MAP01: LINEDEFS entry 5: no front sidedef" },
+		{ zero_length, "fix.wad: MAP01: LINEDEFS entry 0: zero length" },
 		{ far_vertex,
-		  "MAP01: VERTEXES entry 5: coordinates out of range (+/-16384 units)" },
-		{ bad_side_sector, "MAP01: SIDEDEFS entry 5: sector 9 out of range (2 sectors)" },
-		{ bad_seg_vertex, "MAP01: SEGS entry 6: vertex 6 out of range (6 vertices)" },
-		{ bad_seg_line, "MAP01: SEGS entry 1: linedef 7 out of range (7 linedefs)" },
-		{ bad_seg_side, "MAP01: SEGS entry 0: direction 1: no such side of linedef 0" },
-		{ bad_ssector, "MAP01: SSECTORS entry 1: segs 4+60000 out of range (8 segs)" },
+		  "fix.wad: MAP01: VERTEXES entry 5: coordinates out of range (+/-16384 units)" },
+		{ bad_side_sector, "fix.wad: MAP01: SIDEDEFS entry 5: sector 9 out of range (2 sectors)" },
+		{ bad_seg_vertex, "fix.wad: MAP01: SEGS entry 6: vertex 6 out of range (6 vertices)" },
+		{ bad_seg_line, "fix.wad: MAP01: SEGS entry 1: linedef 7 out of range (7 linedefs)" },
+		{ bad_seg_side, "fix.wad: MAP01: SEGS entry 0: direction 1: no such side of linedef 0" },
+		{ bad_ssector, "fix.wad: MAP01: SSECTORS entry 1: segs 4+60000 out of range (8 segs)" },
 		{ bad_child_ss,
-		  "MAP01: NODES entry 0: right child subsector 5 out of range (2 subsectors)" },
-		{ bad_child_node, "MAP01: NODES entry 0: left child node 0 is not listed before it" },
-		{ empty_partition, "MAP01: NODES entry 0: empty partition line" },
-		{ odd_segs, "MAP01: SEGS size 97 is not a multiple of 12" },
-		{ odd_sectors, "MAP01: SECTORS size 49 is not a multiple of 26" },
+		  "fix.wad: MAP01: NODES entry 0: right child subsector 5 out of range (2 subsectors)" },
+		{ bad_child_node, "fix.wad: MAP01: NODES entry 0: left child node 0 is not listed before it" },
+		{ empty_partition, "fix.wad: MAP01: NODES entry 0: empty partition line" },
+		{ odd_segs, "fix.wad: MAP01: SEGS size 97 is not a multiple of 12" },
+		{ odd_sectors, "fix.wad: MAP01: SECTORS size 49 is not a multiple of 26" },
 	};
 	char err[160];
 
@@ -218,7 +218,7 @@ static void corrupt_maps_name_map_lump_and_entry(void **state)
 	}
 }
 
-/* Every lump of the map cut to every length: an error naming MAP01 or a
+/* Every lump of the map cut to every length: an error naming the file and MAP01 or a
  * map that passes map_finish, never a read past the lump (ASan build). */
 static int cut_lump, cut_len;
 static void cut(struct wbuf *l) { l[cut_lump].n = (size_t)cut_len; }
@@ -234,7 +234,7 @@ static void truncated_lumps_fail_cleanly(void **state)
 			int r = load_fixed(cut, err, sizeof err);
 			assert_true(r == 0 || r == -EINVAL);
 			if (r)
-				assert_memory_equal(err, "MAP01: ", 7);
+				assert_memory_equal(err, "fix.wad: MAP01: ", 16);
 		}
 	}
 }
@@ -368,11 +368,11 @@ static void other_formats_and_missing_lumps_are_refused(void **state)
 	assert_int_equal(wad_new(&w), 0);
 	assert_int_equal(wad_add(w, img, len, "o.wad", err, sizeof err), 0);
 	assert_int_equal(map_load_wad(w, t, "MAP01", &m, err, sizeof err), -EINVAL);
-	assert_string_equal(err, "MAP01: UDMF map (TEXTMAP) not supported");
+	assert_string_equal(err, "o.wad: MAP01: UDMF map (TEXTMAP) not supported");
 	assert_int_equal(map_load_wad(w, t, "MAP02", &m, err, sizeof err), -EINVAL);
-	assert_string_equal(err, "MAP02: Hexen-format map (BEHAVIOR lump) not supported");
+	assert_string_equal(err, "o.wad: MAP02: Hexen-format map (BEHAVIOR lump) not supported");
 	assert_int_equal(map_load_wad(w, t, "MAP03", &m, err, sizeof err), -EINVAL);
-	assert_string_equal(err, "MAP03: no SIDEDEFS lump");
+	assert_string_equal(err, "o.wad: MAP03: no SIDEDEFS lump");
 	wad_free(w);
 	free(img);
 	tex_free(t);
@@ -648,7 +648,7 @@ static void bsp_dag_is_refused(void **state)
 	(void)state;
 	img = hf_dag(1200, &len);
 	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), -EINVAL);
-	assert_string_equal(err, "MAP01: node 1199: child[1] node 1198 is reached a second "
+	assert_string_equal(err, "hostile.wad: MAP01: node 1199: child[1] node 1198 is reached a second "
 				 "time: the BSP is not a tree");
 	img = hf_dag(1, &len);
 	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), 0);
@@ -669,7 +669,7 @@ static void heights_the_view_cannot_hold_are_refused(void **state)
 	(void)state;
 	img = hf_heights(32730, 32760, &len);
 	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), -EINVAL);
-	assert_string_equal(err, "MAP01: SECTORS entry 0: floor 32730 out of range (+/-16383 "
+	assert_string_equal(err, "hostile.wad: MAP01: SECTORS entry 0: floor 32730 out of range (+/-16383 "
 				 "units: the view's fixed point holds no more)");
 	img = hf_heights(-16384, 0, &len);
 	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), -EINVAL);

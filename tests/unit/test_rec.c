@@ -336,10 +336,11 @@ static void test_finished_but_short_replays_then_reports_eio(void **state)
 	/* Count says 100, the file holds 50 and 2 bytes. */
 	write_bytes(path, buf, REC_HEADER_SIZE + 50 * REC_CMD_SIZE + 2);
 	assert_int_equal(replay(path, 50), -EIO);
-	/* Extra bytes after the counted commands are not commands. */
+	/* Extra bytes after the counted commands are not commands, but the
+	 * file is not the length its count says: the 100 replay, then -EIO. */
 	memset(buf + REC_HEADER_SIZE + 100 * REC_CMD_SIZE, 0x11, 10);
 	write_bytes(path, buf, sizeof(buf));
-	assert_int_equal(replay(path, 100), 0);
+	assert_int_equal(replay(path, 100), -EIO);
 }
 
 static void test_larger_header_is_skipped(void **state)
@@ -513,6 +514,37 @@ static void test_v2_header_decode_round_trip(void **state)
 	assert_int_equal(h.hash_flags, 0);
 	assert_int_equal(h.render_w, 0);
 	assert_string_equal(h.map_name, "");
+}
+
+/* Bytes no field reads are checked too (issue 13 item 11): reserved bytes
+ * must be 0, the map name holds nothing after its first NUL, the start
+ * time fits 32 bits. */
+static void test_v2_header_unused_bytes_are_checked(void **state)
+{
+	static const int reserved[] = { 37, 38, 39, 46, 47, 52, 53, 54, 55,
+					72, 73, 74, 75, 76, 77, 78, 79 };
+	uint8_t b[REC_HEADER_SIZE_V2];
+	struct rec_header h;
+	char err[128], want[64];
+
+	(void)state;
+	for (size_t i = 0; i < sizeof(reserved) / sizeof(reserved[0]); i++) {
+		memcpy(b, sample_bytes_v2, sizeof(b));
+		b[reserved[i]] = 0x20;
+		assert_int_equal(rec_header_decode(b, sizeof(b), &h, err, sizeof(err)), -EINVAL);
+		snprintf(want, sizeof(want), "reserved byte %d is 0x20, not 0", reserved[i]);
+		assert_string_equal(err, want);
+	}
+	memcpy(b, sample_bytes_v2, sizeof(b));
+	b[62] = 'X';                          /* "MAP01\0\0X" */
+	assert_int_equal(rec_header_decode(b, sizeof(b), &h, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "map name padding is not all NUL");
+	for (int off = 68; off < 72; off++) {
+		memcpy(b, sample_bytes_v2, sizeof(b));
+		b[off] = 1;
+		assert_int_equal(rec_header_decode(b, sizeof(b), &h, err, sizeof(err)), -EINVAL);
+		assert_non_null(strstr(err, "start time"));
+	}
 }
 
 static int decode_v2_patched(size_t off, uint8_t v, char *err, size_t errlen)
@@ -1056,6 +1088,7 @@ int main(void)
 		cmocka_unit_test(test_check_names_every_difference),
 		cmocka_unit_test(test_v2_header_encode_is_byte_exact),
 		cmocka_unit_test(test_v2_header_decode_round_trip),
+		cmocka_unit_test(test_v2_header_unused_bytes_are_checked),
 		cmocka_unit_test(test_v2_header_errors),
 		cmocka_unit_test(test_v2_round_trip_for_every_hash_choice),
 		cmocka_unit_test(test_v2_put_without_hashes_is_refused),

@@ -140,6 +140,60 @@ static void png_replaces_existing_file(void **state)
 	free(rgb);
 }
 
+/* A target that exists and is not a regular file is left alone: a symbolic
+ * link stays a link (its target unchanged), a FIFO stays a FIFO (and the
+ * call does not block on it), a directory stays; the call is -EEXIST and
+ * shot_why names the kind. A .tmp name in the way is refused too. */
+static void png_refuses_targets_that_are_not_regular_files(void **state)
+{
+	struct fixture *f = *state;
+	uint8_t pal[256][3], px[PITCH * H];
+	char target[160], why[160];
+	struct stat st;
+	FILE *fp;
+
+	make(pal, px);
+	snprintf(target, sizeof(target), "%s/target", f->dir);
+	fp = fopen(target, "w");
+	assert_non_null(fp);
+	fputs("keep", fp);
+	fclose(fp);
+	assert_int_equal(symlink(target, f->path), 0);
+	assert_int_equal(shot_png(f->path, px, W, H, PITCH, pal), -EEXIST);
+	assert_int_equal(lstat(f->path, &st), 0);
+	assert_true(S_ISLNK(st.st_mode));
+	assert_int_equal(stat(target, &st), 0);
+	assert_int_equal(st.st_size, 4);
+	shot_why(f->path, -EEXIST, why, sizeof(why));
+	assert_string_equal(why, "is a symbolic link, not a regular file: not replaced");
+	assert_int_equal(unlink(f->path), 0);
+
+	assert_int_equal(mkfifo(f->path, 0600), 0);
+	alarm(5);
+	assert_int_equal(shot_png(f->path, px, W, H, PITCH, pal), -EEXIST);
+	alarm(0);
+	assert_int_equal(lstat(f->path, &st), 0);
+	assert_true(S_ISFIFO(st.st_mode));
+	shot_why(f->path, -EEXIST, why, sizeof(why));
+	assert_string_equal(why, "is a FIFO, not a regular file: not replaced");
+	assert_int_equal(unlink(f->path), 0);
+
+	/* nothing at path, but a FIFO at path.tmp */
+	assert_int_equal(mkfifo(f->tmp, 0600), 0);
+	alarm(5);
+	assert_int_equal(shot_png(f->path, px, W, H, PITCH, pal), -EEXIST);
+	alarm(0);
+	assert_int_equal(lstat(f->path, &st), -1);
+	shot_why(f->path, -EEXIST, why, sizeof(why));
+	assert_non_null(strstr(why, ".tmp is a FIFO, not a regular file: not written"));
+	assert_int_equal(unlink(f->tmp), 0);
+	assert_int_equal(unlink(target), 0);
+
+	/* other errors are strerror's words */
+	shot_why(f->path, -ENOENT, why, sizeof(why));
+	assert_string_equal(why, strerror(ENOENT));
+}
+
 static void png_errors_are_negative_errno(void **state)
 {
 	struct fixture *f = *state;
@@ -179,6 +233,8 @@ int main(void)
 		cmocka_unit_test_setup_teardown(png_round_trips_palette_colours, setup, teardown),
 		cmocka_unit_test_setup_teardown(png_replaces_existing_file, setup, teardown),
 		cmocka_unit_test_setup_teardown(png_errors_are_negative_errno, setup, teardown),
+		cmocka_unit_test_setup_teardown(png_refuses_targets_that_are_not_regular_files, setup,
+						teardown),
 		cmocka_unit_test_setup_teardown(libpng_error_is_eio_and_leaves_no_file, setup,
 						teardown),
 	};

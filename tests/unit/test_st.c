@@ -283,6 +283,48 @@ static void test_saving_over_a_corrupt_main_keeps_the_good_prev(void **state)
 	expect_load("k", "good-1", ST_PREV, msg, sizeof(msg));
 }
 
+/* The caller's payload check: payloads that start with "v9" are a format
+ * this "build" cannot decode, although their checksums hold. */
+static int usable_not_v9(const void *p, size_t len)
+{
+	return len >= 2 && memcmp(p, "v9", 2) == 0 ? -EINVAL : 0;
+}
+
+static void test_undecodable_main_is_a_bad_copy(void **state)
+{
+	char msg[256];
+	enum st_which which = ST_MAIN;
+	void *buf = NULL;
+	size_t len = 0;
+
+	(void)state;
+	save_str("u", "v1-good");
+	assert_int_equal(st_save_usable(dir, "u", usable_not_v9, "v9-newer", 8), 0);
+	/* checksums hold: plain st_load takes it */
+	expect_load("u", "v9-newer", ST_MAIN, msg, sizeof(msg));
+	/* the payload check makes it a bad copy: .prev is loaded */
+	assert_int_equal(st_load_usable(dir, "u", usable_not_v9, &buf, &len, &which, msg,
+					sizeof(msg)), 0);
+	assert_int_equal(which, ST_PREV);
+	assert_int_equal(len, 7);
+	assert_memory_equal(buf, "v1-good", 7);
+	free(buf);
+	assert_string_equal(msg, "u: payload not usable by this version; loaded u.prev");
+	/* a save does not rotate the undecodable copy into .prev */
+	assert_int_equal(st_save_usable(dir, "u", usable_not_v9, "v1-next", 7), 0);
+	rm("u");
+	expect_load("u", "v1-good", ST_PREV, msg, sizeof(msg));
+	/* neither copy usable: -EBADMSG naming both */
+	save_str("w", "v9-a");
+	save_str("w", "v9-b");
+	buf = NULL;
+	assert_int_equal(st_load_usable(dir, "w", usable_not_v9, &buf, &len, NULL, msg,
+					sizeof(msg)), -EBADMSG);
+	assert_null(buf);
+	assert_string_equal(msg, "w: payload not usable by this version; w.prev: payload not "
+				 "usable by this version");
+}
+
 static void test_leftovers_of_a_killed_save_do_not_matter(void **state)
 {
 	char p[128], msg[256];
@@ -507,6 +549,7 @@ int main(void)
 		cmocka_unit_test(test_corrupt_prev_is_ignored_while_main_is_good),
 		cmocka_unit_test(test_both_bad_or_missing_are_errors),
 		cmocka_unit_test(test_saving_over_a_corrupt_main_keeps_the_good_prev),
+		cmocka_unit_test(test_undecodable_main_is_a_bad_copy),
 		cmocka_unit_test(test_leftovers_of_a_killed_save_do_not_matter),
 		cmocka_unit_test(test_short_write_loses_nothing),
 		cmocka_unit_test(test_bad_arguments_are_refused),
