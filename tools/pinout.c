@@ -158,7 +158,7 @@ static void po_pin(struct r_frame *f, int pin, const struct po_use *use)
 	int y = PO_TOP + row * PO_ROW;
 	int px = left ? PO_HX + 8 : PO_HX + PO_HW - 8 - PO_PIN;
 	int colour = C_GPIO, tc = C_DIM;
-	char label[64], num[4];
+	char label[64], num[12];
 
 	if (code == PO_GND) {
 		colour = C_GND;
