@@ -243,6 +243,8 @@ void g_spec_start(struct sim *s);
 /* One tick of the specials in play: movers, lights, buttons, the player's
  * sector (damage, secrets, the exit floor), messages. */
 void g_spec_tick(struct sim *s);
+/* ---- g_exit.c: leaving the map ---------------------------------------- */
+
 /* The map is left (exit lines, sector 11): the intermission begins. */
 void g_exit(struct sim *s, int secret);
 /* Doom's next map after the current one: the stage index (which may be
