@@ -11,12 +11,14 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "engine/game/g_game.h"
+
 struct lmap;
 struct map;
 struct tex_set;
 
 #define CT_MAX_WADS 8
-#define CT_MAX_STAGES 8
+#define CT_MAX_STAGES G_MAX_STAGES
 
 struct ct_spec {
 	const char *wads[CT_MAX_WADS];

@@ -46,19 +46,21 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 		return;
 	}
 	if (s->map != v->lit) {
-		/* a new stage: its own light maps */
+		/* a new stage: its own light maps and Doom's sky for its name */
 		r_set_lmap(v->r, ct_lmap_for(v->ct, s->map));
+		tex_pick_sky(tex, s->map->name);
 		v->lit = s->map;
 	}
 	/* Animated textures follow the game tick, so replays see the same. */
 	tex_animate(tex, s->tick);
 	if (hud_world(s)) {
 		int n = r_game_sprites(s, tex, v->spr, v->spr_max);
+		const struct map *m = r_game_live(&v->live, s, tex);
 		r_game_view(s, &rv);
 		if (v->world)
-			v->world(v->world_ctx, s->map, tex, &rv, v->spr, n, f);
+			v->world(v->world_ctx, m, tex, &rv, v->spr, n, f);
 		else
-			r_render(v->r, s->map, tex, &rv, v->spr, n, f);
+			r_render(v->r, m, tex, &rv, v->spr, n, f);
 	}
 	hud_draw(s, &env, f);
 }
@@ -67,4 +69,5 @@ void view_free(struct view *v)
 {
 	free(v->spr);
 	v->spr = NULL;
+	r_live_free(&v->live);
 }

@@ -20,6 +20,8 @@ struct tex_set;
 
 struct r_view;
 
+#include "engine/render/r_game.h"
+
 /* Draws the world (r_render's shape): the software renderer by default;
  * the daemon may put the OSMesa renderer here (--renderer gl). */
 typedef void (*view_world_fn)(void *ctx, const struct map *m, const struct tex_set *t,
@@ -34,6 +36,7 @@ struct view {
 	struct r_sprite *spr;      /* owned: room for the largest stage's sprites */
 	int spr_max;
 	const struct map *lit;     /* the stage whose light maps r has */
+	struct r_live live;        /* owned: the stage as the sim has changed it */
 	int rotate;                /* the display's rotation (service menu) */
 	const struct r_par *par;   /* optional, borrowed: threads for the HUD's large
 				    * darkened areas (the renderer's pool) */

@@ -24,7 +24,7 @@
 static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 
 /* Header sizes above this are refused as garbage rather than skipped. */
-#define REC_HEADER_SIZE_MAX 65536u
+#define REC_HEADER_SIZE_MAX 1048576u
 /* Bytes buffered by the writer and the reader. Records go in whole, so
  * every flush ends on a record boundary. */
 #define REC_BUF 4096

@@ -70,12 +70,14 @@
 #define REC_VERSION 1               /* commands only (see REC_VERSION_2) */
 #define REC_VERSION_2 2             /* run description and per-tick hashes */
 #define REC_VERSION_MAX 2           /* newest version this build reads */
-#define REC_ENGINE_VERSION 2         /* 2: the game: enemies, stages, modes, menu */
+/* 2: the game: enemies, stages, modes, menu; 3: Doom's specials (the map's
+ * changing parts, movers, keys, exits: engine/game/g_world.h) */
+#define REC_ENGINE_VERSION 3
 /* sim_snapshot_size() at REC_ENGINE_VERSION. A field added to the sim's
  * state (engine/game/sim_table.h) changes the size and every state hash:
  * raise REC_ENGINE_VERSION and set this to the new size, together
  * (test_rec fails on the size until then, as a reminder of the version). */
-#define REC_ENGINE_SNAPSHOT 6620
+#define REC_ENGINE_SNAPSHOT 96542
 /* Bumped whenever the renderer draws any frame differently (engine/render/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */
@@ -179,7 +181,7 @@ struct rec_reader;
 /* Opens and checks a recording; 0 or -errno / -EINVAL with reason in err
  * ("FILE: bad magic", "FILE: version 7 is newer than this build (2)").
  * A snapshot is read and checked at open ("FILE: snapshot cut short (100
- * of 6620 bytes)", "FILE: snapshot damaged (checksum 0x..., the header
+ * of 96542 bytes)", "FILE: snapshot damaged (checksum 0x..., the header
  * says 0x...)"); rec_reader_header(r)->snapshot then holds it. Whether
  * it suits this build and content is sim_restore's to say. */
 int rec_reader_open(const char *path, struct rec_reader **out, char *err, size_t errlen);

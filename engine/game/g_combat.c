@@ -20,8 +20,9 @@
  * fraction only places the puff, so its rounding does not matter; which
  * walls block is decided exactly.
  */
-static fx_t g_wall_along(const struct map *m, fx_t px, fx_t py, fx_t pz, int64_t dx, int64_t dy)
+static fx_t g_wall_along(const struct sim *s, fx_t px, fx_t py, fx_t pz, int64_t dx, int64_t dy)
 {
+	const struct map *m = s->map;
 	int64_t ex = px + dx, ey = py + dy;
 	fx_t best = FX_ONE;
 
@@ -30,7 +31,7 @@ static fx_t g_wall_along(const struct map *m, fx_t px, fx_t py, fx_t pz, int64_t
 		const struct map_vertex *a = &m->vertices[l->v1], *b = &m->vertices[l->v2];
 		int64_t wx, wy, den, num;
 		fx_t t;
-		if (!g_line_stops(m, l, px, py, pz, ex, ey, pz))
+		if (!g_line_stops(s, l, px, py, pz, ex, ey, pz))
 			continue;
 		wx = (int64_t)b->x - a->x;
 		wy = (int64_t)b->y - a->y;
@@ -68,6 +69,7 @@ void g_fire(struct sim *s)
 	s->pl.ammo--;
 	s->pl.refire = G_REFIRE;
 	g->shot_t = 0;
+	g_noise(s);
 	/* every living enemy whose circle the ray enters within range */
 	for (int i = 0; i < g->num_enemies; i++) {
 		const struct g_enemy *e = &g->en[i];
@@ -96,11 +98,12 @@ void g_fire(struct sim *s)
 		fx_t hx = (fx_t)(p->x + ((entry[best] * cx) >> FX_SHIFT));
 		fx_t hy = (fx_t)(p->y + ((entry[best] * cy) >> FX_SHIFT));
 		fx_t hz = e->z + g_kinds[e->kind].eye;
-		if (g_sight(s->map, p->x, p->y, p->viewz, hx, hy, hz)) {
+		if (g_sight(s, p->x, p->y, p->viewz, hx, hy, hz)) {
 			g->shot = G_SHOT_ENEMY;
 			g->shot_x = hx;
 			g->shot_y = hy;
 			g->shot_z = hz;
+			g_shoot_lines(s, p->x, p->y, hx, hy);
 			g_hurt_enemy(s, cand[best], G_SHOT_DAMAGE);
 			return;
 		}
@@ -110,11 +113,12 @@ void g_fire(struct sim *s)
 	}
 	{
 		int64_t dx = (range * cx) >> FX_SHIFT, dy = (range * cy) >> FX_SHIFT;
-		fx_t t = g_wall_along(s->map, p->x, p->y, p->viewz, dx, dy);
+		fx_t t = g_wall_along(s, p->x, p->y, p->viewz, dx, dy);
 		g->shot = t < FX_ONE ? G_SHOT_WALL : G_SHOT_MISS;
 		g->shot_x = (fx_t)(p->x + ((dx * t) >> FX_SHIFT));
 		g->shot_y = (fx_t)(p->y + ((dy * t) >> FX_SHIFT));
 		g->shot_z = p->viewz;
+		g_shoot_lines(s, p->x, p->y, g->shot_x, g->shot_y);
 	}
 }
 
@@ -127,20 +131,42 @@ void g_pickups_tick(struct sim *s)
 	for (int i = 0; i < g->num_pickups; i++) {
 		struct g_pickup *k = &g->pk[i];
 		int64_t dx = (int64_t)k->x - p->x, dy = (int64_t)k->y - p->y;
+		struct g_thing_info ti;
 		if (k->taken || dx >= reach || dx <= -reach || dy >= reach || dy <= -reach ||
 		    dx * dx + dy * dy >= reach * reach)
 			continue;
-		if (k->kind == G_P_HEALTH) {
+		g_thing_info(k->type, &ti);
+		switch (k->kind) {
+		case G_P_HEALTH: {
 			int64_t h = p->health + (int64_t)k->amount * FX_ONE;
-			if (p->health >= G_HEALTH_MAX * FX_ONE)
+			/* Doom's counted items (bonuses, spheres) are always taken */
+			if (p->health >= G_HEALTH_MAX * FX_ONE && !ti.counted)
 				continue;
 			p->health = (fx_t)(h > G_HEALTH_MAX * FX_ONE ? G_HEALTH_MAX * FX_ONE : h);
-		} else {
+			break;
+		}
+		case G_P_AMMO: {
 			uint32_t a = (uint32_t)p->ammo + k->amount;
 			if (p->ammo >= G_AMMO_MAX)
 				continue;
 			p->ammo = (uint16_t)(a > G_AMMO_MAX ? G_AMMO_MAX : a);
+			break;
 		}
+		case G_P_KEY:
+			s->w.keys = (uint8_t)(s->w.keys | (k->amount & 0x3f));
+			g_message(s, G_MSG_KEY);
+			g_event(s, G_EV_KEY, MAP_NONE);
+			break;
+		case G_P_SUIT:
+			s->w.suit = k->amount;
+			break;
+		default:
+			break;
+		}
+		if (ti.counted && s->w.items < UINT16_MAX)
+			s->w.items++;
+		if (k->kind != G_P_KEY)
+			g_event(s, G_EV_ITEM, MAP_NONE);
 		k->taken = 1;
 		p->bonus = G_BONUS_TICKS;
 	}

@@ -3,7 +3,10 @@
  * map's things, and their behaviour: wake on sight, chase, attack.
  *
  * An enemy wakes when it sees the player within its sight distance (idle
- * enemies look every 8 ticks, staggered by index) or when it is shot. Awake,
+ * enemies look every 8 ticks, staggered by index), when it is shot, or
+ * when it hears the player's shot (g_noise: Doom's sound flood through
+ * open two-sided lines, stopped by closed doors and by a second
+ * sound-blocking line) unless it is deaf (the map's ambush flag). Awake,
  * it attacks while the player's centre is within its range and in line of
  * sight: the first attack `reaction` ticks after it came into range, then
  * one every `period` ticks, each taking `damage` (scaled by difficulty).
@@ -18,17 +21,12 @@
 #include "engine/map/map.h"
 
 #define G_IDLE_LOOK 8                  /* idle enemies look every 8 ticks */
-#define G_PAIN_TICKS 8
 #define G_FLASH_TICKS 8
-#define G_HURT_TICKS 12
 
 /* Per difficulty 0..3: percent of the kinds' damage and speed. Each loop
  * through all stages adds 25% damage and 10% speed (speed capped at 200%). */
 static const uint8_t g_damage_pct[4] = { 50, 100, 150, 200 };
 static const uint8_t g_speed_pct[4] = { 80, 100, 115, 130 };
-
-/* Chance (of 256) that a hit makes an enemy flinch, per kind. */
-static const uint8_t g_pain_chance[G_KINDS] = { 200, 80, 128 };
 
 fx_t g_enemy_damage(const struct sim *s, int kind)
 {
@@ -49,7 +47,7 @@ fx_t g_enemy_speed(const struct sim *s, int kind)
 static void g_settle_enemy(const struct sim *s, struct g_enemy *e)
 {
 	e->sector = map_point_sector(s->map, e->x, e->y);
-	e->z = s->map->sectors[e->sector].floor_h;
+	e->z = s->w.sec[e->sector].floor_h;
 }
 
 void g_spawn_stage(struct sim *s)
@@ -77,16 +75,18 @@ void g_spawn_stage(struct sim *s)
 			e->kind = ti.kind;
 			e->state = G_E_IDLE;
 			e->health = g_kinds[ti.kind].health;
+			e->ambush = (t->flags & G_TF_AMBUSH) != 0;
 			g_settle_enemy(s, e);
 		} else if (ti.cls == G_C_PICKUP && g->num_pickups < G_MAX_PICKUPS) {
 			struct g_pickup *p = &g->pk[g->num_pickups++];
 			*p = (struct g_pickup){ 0 };
 			p->x = t->x;
 			p->y = t->y;
-			p->z = m->sectors[map_point_sector(m, t->x, t->y)].floor_h;
+			p->z = s->w.sec[map_point_sector(m, t->x, t->y)].floor_h;
 			p->type = t->type;
 			p->kind = ti.kind;
 			p->amount = ti.amount;
+			s->w.items_total = (uint16_t)(s->w.items_total + ti.counted);
 		}
 	}
 	g->alive = g->num_enemies;
@@ -126,7 +126,7 @@ static int g_within(const struct sim *s, const struct g_enemy *e, fx_t dist)
 
 static int g_sees(const struct sim *s, const struct g_enemy *e)
 {
-	return g_sight(s->map, e->x, e->y, e->z + g_kinds[e->kind].eye, s->pl.x, s->pl.y,
+	return g_sight(s, e->x, e->y, e->z + g_kinds[e->kind].eye, s->pl.x, s->pl.y,
 		       s->pl.viewz);
 }
 
@@ -161,6 +161,8 @@ static void g_chase(struct sim *s, int i)
 	b.self = i;
 	if (g_move(s, &b)) {
 		int64_t mx = (int64_t)b.x - e->x, my = (int64_t)b.y - e->y;
+		/* a door in the way: Doom's monsters open the plain ones */
+		g_enemy_bump(s, i, b.x, b.y);
 		/* less than half the intended step: take a detour */
 		if ((uint64_t)(mx * mx + my * my) * 4 < (uint64_t)((int64_t)speed * speed)) {
 			uint32_t r = g_random(s);
@@ -168,9 +170,13 @@ static void g_chase(struct sim *s, int i)
 			e->stuck = (uint8_t)(16 + ((r >> 1) & 15));
 		}
 	}
-	e->x = b.x;
-	e->y = b.y;
-	g_settle_enemy(s, e);
+	{
+		fx_t ox = e->x, oy = e->y;
+		e->x = b.x;
+		e->y = b.y;
+		g_settle_enemy(s, e);
+		g_cross(s, i, ox, oy, e->x, e->y, b.radius);
+	}
 }
 
 static void g_enemy_tick(struct sim *s, int i)
@@ -221,16 +227,61 @@ static void g_enemy_tick(struct sim *s, int i)
 	}
 }
 
-void g_hurt_player(struct sim *s, fx_t dmg)
+#define G_ML_SOUNDBLOCK 0x0040
+
+/* Sectors sound reaches from sec over open two-sided lines: heard[] is 1
+ * for those reached without crossing a sound-blocking line, 2 for those
+ * behind one (sound crosses one, not two). */
+static void g_flood(const struct sim *s, uint32_t start, uint8_t *heard, uint32_t *queue)
 {
-	if (s->g.phase != G_PH_PLAY)
-		return;
-	s->pl.health -= dmg;
-	s->pl.hurt = G_HURT_TICKS;
-	if (s->pl.health <= 0) {
-		s->pl.health = 0;
-		s->g.phase = G_PH_DEAD;
-		s->g.phase_t = 0;
+	const struct map *m = s->map;
+
+	for (int pass = 1; pass <= 2; pass++) {
+		uint32_t head = 0, tail = 0;
+		if (pass == 1) {
+			heard[start] = 1;
+			queue[tail++] = start;
+		} else {
+			for (uint32_t i = 0; i < s->w.num_sectors; i++)
+				if (heard[i] == 2)
+					queue[tail++] = i;
+		}
+		while (head < tail) {
+			uint32_t sec = queue[head++], n;
+			const uint32_t *ls = map_sector_lines(m, sec, &n);
+			for (uint32_t k = 0; k < n; k++) {
+				const struct map_line *l = &m->lines[ls[k]];
+				uint32_t o = g_other_sector(m, l, sec);
+				const struct g_sector *a, *b;
+				if (o == MAP_NONE || heard[o])
+					continue;
+				a = &s->w.sec[sec];
+				b = &s->w.sec[o];
+				if ((a->ceil_h < b->ceil_h ? a->ceil_h : b->ceil_h) -
+				    (int64_t)(a->floor_h > b->floor_h ? a->floor_h : b->floor_h) <= 0)
+					continue;      /* a closed door */
+				if (l->flags & G_ML_SOUNDBLOCK) {
+					if (pass == 1)
+						heard[o] = 2;
+					continue;
+				}
+				heard[o] = (uint8_t)pass;
+				queue[tail++] = o;
+			}
+		}
+	}
+}
+
+void g_noise(struct sim *s)
+{
+	uint8_t heard[G_MAX_SECTORS] = { 0 };
+	uint32_t queue[G_MAX_SECTORS];
+
+	g_flood(s, s->pl.sector, heard, queue);
+	for (int i = 0; i < s->g.num_enemies; i++) {
+		struct g_enemy *e = &s->g.en[i];
+		if (e->state == G_E_IDLE && !e->ambush && heard[e->sector])
+			g_set_state(e, G_E_CHASE, 0);
 	}
 }
 
@@ -238,26 +289,4 @@ void g_enemies_tick(struct sim *s)
 {
 	for (int i = 0; i < s->g.num_enemies && s->g.phase == G_PH_PLAY; i++)
 		g_enemy_tick(s, i);
-}
-
-void g_hurt_enemy(struct sim *s, int i, int dmg)
-{
-	struct g_enemy *e = &s->g.en[i];
-
-	if (e->state == G_E_DEAD)
-		return;
-	e->health = (int16_t)(e->health - dmg);
-	if (e->health <= 0) {
-		e->health = 0;
-		g_set_state(e, G_E_DEAD, 0);
-		e->flash = 0;
-		s->g.alive--;
-		s->g.kills++;
-		s->g.score += g_kinds[e->kind].score;
-		return;
-	}
-	if ((g_random(s) & 255) < g_pain_chance[e->kind])
-		g_set_state(e, G_E_PAIN, G_PAIN_TICKS);
-	else if (e->state == G_E_IDLE)
-		g_set_state(e, G_E_CHASE, 0);
 }

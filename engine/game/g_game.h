@@ -23,7 +23,7 @@
 
 #define G_MAX_ENEMIES 96
 #define G_MAX_PICKUPS 96
-#define G_MAX_STAGES 8
+#define G_MAX_STAGES 32                /* Doom II's 32 maps */
 #define G_SCORES 10                    /* entries in the high-score table */
 #define G_NAME_LEN 3                   /* initials */
 
@@ -84,19 +84,26 @@ enum g_estate {
 	X(VAL, uint16_t, anim, SIM_ANY)             /* ticks in the current state */ \
 	X(VAL, ang_t, wander, SIM_ANY)              /* detour heading while stuck */ \
 	X(VAL, uint8_t, stuck, SIM_ANY)             /* detour ticks left */ \
-	X(VAL, uint8_t, flash, SIM_ANY)             /* ticks of the attack flash (sprites) */
+	X(VAL, uint8_t, flash, SIM_ANY)             /* ticks of the attack flash (sprites) */ \
+	/* Doom's ambush (deaf) flag: wakes only on seeing the player */ \
+	X(VAL, uint8_t, ambush, SIM_MAX(1))
 struct g_enemy {
 	G_ENEMY_FIELDS(SIM_MEMBER)
 };
 
-enum g_pkind { G_P_HEALTH, G_P_AMMO };
+/* Pickups: health (Doom's health items, armour and the health-giving
+ * powerups), ammo (ammo and weapons), keys (amount: the G_KEY_* bit), the
+ * radiation suit (amount: ticks of protection from damaging floors), and
+ * items the game has no use for but counts (Doom's computer map, light
+ * visor, invisibility). */
+enum g_pkind { G_P_HEALTH, G_P_AMMO, G_P_KEY, G_P_SUIT, G_P_ITEM, G_P_KINDS };
 
 #define G_PICKUP_FIELDS(X) \
 	X(VAL, fx_t, x, SIM_COORD) \
 	X(VAL, fx_t, y, SIM_COORD) \
 	X(VAL, fx_t, z, SIM_COORD) \
 	X(VAL, uint16_t, type, SIM_ANY)             /* Doom thing type */ \
-	X(VAL, uint8_t, kind, SIM_MAX(G_P_AMMO))    /* enum g_pkind */ \
+	X(VAL, uint8_t, kind, SIM_MAX(G_P_KINDS - 1))  /* enum g_pkind */ \
 	X(VAL, uint8_t, taken, SIM_MAX(1)) \
 	X(VAL, uint16_t, amount, SIM_ANY)
 struct g_pickup {
@@ -107,11 +114,15 @@ struct g_pickup {
 enum g_phase {
 	G_PH_PLAY,                     /* fighting */
 	G_PH_DEAD,                     /* the player died: G_DEAD_TICKS, then respawn or game over */
-	G_PH_CLEAR                     /* every enemy is dead: G_CLEAR_TICKS, then the next stage */
+	G_PH_CLEAR,                    /* every enemy is dead: G_CLEAR_TICKS, then the next stage */
+	G_PH_INTER                     /* the map's exit was taken: the intermission page
+					* (kills, items, secrets, time), then the next stage */
 };
 
 #define G_DEAD_TICKS 120
 #define G_CLEAR_TICKS 150
+#define G_INTER_TICKS 600              /* the intermission: 10 s, or FIRE/USE after 1 s */
+#define G_INTER_MIN 60
 #define G_BANNER_TICKS 120             /* "STAGE n" shown after a stage starts */
 #define G_CONTINUE_TICKS 600           /* 10 s continue countdown */
 #define G_INITIALS_TICKS 1800          /* 30 s to enter initials */
@@ -126,7 +137,7 @@ enum g_shot { G_SHOT_NONE, G_SHOT_WALL, G_SHOT_ENEMY, G_SHOT_MISS };
 	X(VAL, uint8_t, continues, SIM_ANY)         /* used in this game */ \
 	X(VAL, uint8_t, stage, SIM_MAX(s->num_stages - 1))  /* index into the sim's stages */ \
 	X(VAL, uint8_t, loop, SIM_ANY)              /* times every stage was cleared */ \
-	X(VAL, uint8_t, phase, SIM_MAX(G_PH_CLEAR)) /* enum g_phase */ \
+	X(VAL, uint8_t, phase, SIM_MAX(G_PH_INTER)) /* enum g_phase */ \
 	X(VAL, uint16_t, phase_t, SIM_ANY)          /* ticks in the phase */ \
 	X(VAL, uint32_t, stage_t, SIM_ANY)          /* ticks since the stage started */ \
 	X(VAL, uint32_t, kills, SIM_ANY)            /* in this game */ \
@@ -206,7 +217,9 @@ enum g_class { G_C_NONE, G_C_PLAYER, G_C_ENEMY, G_C_PICKUP, G_C_LIGHT, G_C_DECOR
 struct g_thing_info {
 	uint8_t cls;                   /* enum g_class */
 	uint8_t kind;                  /* enemy: enum g_kind; pickup: enum g_pkind */
-	uint16_t amount;               /* pickup: health or ammo it gives */
+	uint16_t amount;               /* pickup: health or ammo it gives, the key's bit,
+					* the suit's ticks */
+	uint8_t counted;               /* Doom counts it among the map's items */
 	char sprite[5];                /* Doom sprite name, e.g. "POSS" */
 	uint8_t bright;                /* drawn full bright (lights) */
 	uint8_t stand;                 /* standing frame (0 = 'A'), from th.h */
@@ -223,7 +236,13 @@ void g_thing_info(uint16_t type, struct g_thing_info *out);
 
 /* Whether a thing with Doom flags `flags` appears at difficulty d (0..3):
  * Doom's skill bits 1 (easy: d 0), 2 (normal: d 1), 4 (hard: d 2, 3).
- * Flags without any skill bit count as every skill (hand-made maps). */
+ * Flags without any skill bit count as every skill (hand-made maps).
+ * Things flagged multiplayer-only (16) never appear: the game has one
+ * player at a time. */
 int g_thing_at_difficulty(uint16_t flags, int d);
+
+/* Doom's thing flags. */
+#define G_TF_AMBUSH 0x0008
+#define G_TF_MULTI 0x0010
 
 #endif

@@ -11,6 +11,7 @@
 
 struct map;
 struct map_line;
+struct map_vertex;
 
 /* ---- g_move.c: bodies moving with the player's collision ------------- */
 
@@ -23,13 +24,14 @@ struct g_body {
 	int self;
 };
 
-/* The opening of line l, for bodies (g_blocks) and for sight and shots
- * (g_sight.c): 0 with its highest floor and lowest ceiling, or -1 when
- * nothing passes (one-sided or ML_BLOCKING). */
-int g_opening(const struct map *m, const struct map_line *l, fx_t *floor, fx_t *ceil);
+/* The opening of line l of the current map with its sectors' heights now
+ * (s->w), for bodies (g_blocks) and for sight and shots (g_sight.c): 0
+ * with its highest floor and lowest ceiling, or -1 when nothing passes
+ * (one-sided or ML_BLOCKING). */
+int g_opening(const struct sim *s, const struct map_line *l, fx_t *floor, fx_t *ceil);
 
 /* Whether line l stops a body whose feet are at z (sim.h's rule). */
-int g_blocks(const struct map *m, const struct map_line *l, fx_t z);
+int g_blocks(const struct sim *s, const struct map_line *l, fx_t z);
 
 /* Moves b by (momx, momy) in sub-steps of at most half its radius, pushed
  * out of walls (sliding), with Doom's x-only / y-only fallback; living
@@ -53,38 +55,201 @@ void g_spawn_stage(struct sim *s);
 void g_enemies_reset(struct sim *s);
 /* One tick of every enemy. */
 void g_enemies_tick(struct sim *s);
+/* The player's shot is heard: idle enemies that are not deaf (ambush) in
+ * the sectors the sound reaches wake. */
+void g_noise(struct sim *s);
 /* Damage per attack of kind k at the sim's difficulty and loop (16.16). */
 fx_t g_enemy_damage(const struct sim *s, int kind);
 /* Chase speed per tick of kind k at the sim's difficulty and loop. */
 fx_t g_enemy_speed(const struct sim *s, int kind);
-/* Takes dmg (16.16) off the player's health. */
+
+/* ---- g_hurt.c: damage ----------------------------------------------- */
+
+/* Takes dmg (16.16) off the player's health (in phase PLAY only); at 0 the
+ * player dies (phase DEAD). */
 void g_hurt_player(struct sim *s, fx_t dmg);
+/* Damage to enemy i; kills give score. A hit may make it flinch (PAIN) or
+ * wake it. */
+void g_hurt_enemy(struct sim *s, int i, int dmg);
 
 /* ---- g_sight.c ------------------------------------------------------- */
 
 /* Whether line l stops the straight line from (x1, y1) at height z1 to
  * (x2, y2) at z2: the segments share a point (touching counts) and l is
- * one-sided, ML_BLOCKING, or two-sided with an opening that is closed or
- * lies wholly above or wholly below both heights. */
-int g_line_stops(const struct map *m, const struct map_line *l, int64_t x1, int64_t y1, fx_t z1,
+ * one-sided, ML_BLOCKING, or two-sided with an opening (now) that is closed
+ * or lies wholly above or wholly below both heights. */
+int g_line_stops(const struct sim *s, const struct map_line *l, int64_t x1, int64_t y1, fx_t z1,
 		 int64_t x2, int64_t y2, fx_t z2);
+
+/* Whether the closed segments (p1x, p1y)-(p2x, p2y) and q1-q2 share a
+ * point (exact). */
+int g_segs_cross(int64_t p1x, int64_t p1y, int64_t p2x, int64_t p2y, const struct map_vertex *q1,
+		 const struct map_vertex *q2);
 
 /* Whether the straight line from (x1, y1) at eye height z1 to (x2, y2)
  * at z2 crosses no wall: exact integer segment tests against one-sided and
  * ML_BLOCKING lines, and two-sided lines whose opening is closed or lies
  * wholly above or wholly below both heights. Touching a wall counts as
  * crossing it. */
-int g_sight(const struct map *m, fx_t x1, fx_t y1, fx_t z1, fx_t x2, fx_t y2, fx_t z2);
+int g_sight(const struct sim *s, fx_t x1, fx_t y1, fx_t z1, fx_t x2, fx_t y2, fx_t z2);
 
 /* ---- g_combat.c ------------------------------------------------------ */
 
 /* The player's shot along the view centre (g_combat.c); called on a FIRE
  * level when refire allows and there is ammo. */
 void g_fire(struct sim *s);
-/* Damage to enemy i; kills give score. */
-void g_hurt_enemy(struct sim *s, int i, int dmg);
 /* Takes the pickups the player touches (when they are of use). */
 void g_pickups_tick(struct sim *s);
+
+/* ---- g_world.c: what every special shares ---------------------------- */
+
+/* Events of the specials, for the sound seam. */
+enum g_ev {
+	G_EV_DOOR_OPEN, G_EV_DOOR_CLOSE, G_EV_BLAZE_OPEN, G_EV_BLAZE_CLOSE,
+	G_EV_PLANE_MOVE,               /* a floor or ceiling moving (every 8 tics) */
+	G_EV_PLAT_START, G_EV_PLAT_STOP,
+	G_EV_SWITCH, G_EV_SWITCH_EXIT, /* a switch or button pressed, or popping back */
+	G_EV_NOWAY,                    /* USE on a wall with nothing to use */
+	G_EV_LOCKED,                   /* a locked door or switch refused */
+	G_EV_TELEPORT, G_EV_SECRET, G_EV_ITEM, G_EV_KEY
+};
+
+/* Where the specials' events happen (doors opening and closing, lifts
+ * starting and stopping, switches, teleports, secrets), at a sector of the
+ * current map (MAP_NONE: the player). The one place a sound module hooks
+ * in; it changes no state. */
+void g_event(struct sim *s, enum g_ev ev, uint32_t sector);
+
+/* The sector on line l's other side from sec (MAP_NONE: one-sided). */
+uint32_t g_other_sector(const struct map *m, const struct map_line *l, uint32_t sec);
+/* Doom's searches over a sector's neighbours (its two-sided lines), with
+ * the heights now: the lowest floor (sec's own if lower), the highest floor
+ * (at least -500), the lowest floor above h (h when none), the lowest
+ * ceiling (FX_MAX when none), the highest ceiling (at least 0); the light
+ * furthest from start towards dark (brightest 0) or bright. */
+fx_t g_lowest_floor_around(const struct sim *s, uint32_t sec);
+fx_t g_highest_floor_around(const struct sim *s, uint32_t sec);
+fx_t g_next_floor_above(const struct sim *s, uint32_t sec, fx_t h);
+fx_t g_lowest_ceil_around(const struct sim *s, uint32_t sec);
+fx_t g_highest_ceil_around(const struct sim *s, uint32_t sec);
+int g_light_around(const struct sim *s, uint32_t sec, int start, int brightest);
+/* The first sector after index `after` (-1: from the start) whose tag is
+ * tag, or -1. */
+int g_tagged(const struct sim *s, uint16_t tag, int after);
+/* The mover of sector sec, or NULL. */
+struct g_mover *g_mover_of(struct sim *s, uint32_t sec);
+/* A new mover of sector sec (zeroed but for sector, kind, type), or NULL
+ * when the sector has one or the list is full. */
+struct g_mover *g_mover_new(struct sim *s, uint32_t sec, int kind, int type);
+/* Removes m from the list, keeping the others' order. */
+void g_mover_remove(struct sim *s, struct g_mover *m);
+/* Sets or clears a line's bit in w.used or w.switched (g_world_bit reads
+ * it). */
+void g_line_set(uint32_t *bits, uint32_t line, int on);
+/* The stage's Doom tic (35 Hz) and whether one began this tick. */
+uint32_t g_dtic(const struct sim *s);
+int g_dtic_now(const struct sim *s);
+/* Shows message msg (enum g_msg) on the HUD. */
+void g_message(struct sim *s, int msg);
+
+/* ---- g_plane.c: moving floors and ceilings among the bodies ---------- */
+
+enum g_res { G_RES_OK, G_RES_CRUSHED, G_RES_PASTDEST };
+
+/* Body heights for fitting under ceilings. */
+#define G_BODY_HEIGHT (56 * FX_ONE)
+
+/* Doom's T_MovePlane: moves sector sec's floor (ceiling 0) or ceiling
+ * (ceiling 1) by speed towards dest in direction dir (-1, 1). A body that
+ * would no longer fit stops the move (the plane goes back; G_RES_CRUSHED)
+ * unless crush (then it is crushed: 10 damage every 4 tics, and the move
+ * goes on; also G_RES_CRUSHED); reaching dest is G_RES_PASTDEST. Bodies
+ * standing in sec ride its floor. */
+int g_plane_move(struct sim *s, uint32_t sec, fx_t speed, fx_t dest, int crush, int ceiling,
+		 int dir);
+
+/* ---- the movers: g_door.c, g_floor.c, g_ceil.c (with platforms) ------- */
+
+/* Who triggers: G_WHO_PLAYER, or an enemy's index (>= 0). */
+#define G_WHO_PLAYER (-1)
+
+/* Doom's EV_DoDoor on the sectors tagged like line l: 1 if one started. */
+int g_door_tagged(struct sim *s, const struct map_line *l, int type);
+/* Doom's EV_VerticalDoor: the door behind line `line` (its back sector),
+ * used by who; keys checked (a message when one is missing). 1 when a
+ * door started or turned. */
+int g_door_manual(struct sim *s, uint32_t line, int who);
+/* The locked switches' doors (Doom's EV_DoLockedDoor): 1 if one started. */
+int g_door_locked(struct sim *s, uint32_t line, int type, int who);
+/* Sector specials 10 and 14 at the stage start. */
+void g_door_spawn(struct sim *s, uint32_t sec, int raise5);
+/* One tick of door m; 1 when it finished (removed). */
+int g_door_tick(struct sim *s, struct g_mover *m);
+
+int g_floor_tagged(struct sim *s, const struct map_line *l, int type);
+int g_stairs(struct sim *s, const struct map_line *l, int turbo);
+int g_donut(struct sim *s, const struct map_line *l);
+int g_floor_tick(struct sim *s, struct g_mover *m);
+
+int g_ceil_tagged(struct sim *s, const struct map_line *l, int type);
+int g_ceil_stop(struct sim *s, uint16_t tag);
+int g_ceil_tick(struct sim *s, struct g_mover *m);
+/* Doom's EV_DoPlat (amount: raise-and-change's height in units), with the
+ * line's front sector giving the new flat. */
+int g_plat_tagged(struct sim *s, const struct map_line *l, int type, int amount);
+void g_plat_stop(struct sim *s, uint16_t tag);
+int g_plat_tick(struct sim *s, struct g_mover *m);
+
+/* ---- g_light.c ------------------------------------------------------- */
+
+/* Starts light effect `lfx` (enum g_lfx) in sector sec; sync: strobes all
+ * start together. */
+void g_light_spawn(struct sim *s, uint32_t sec, int lfx, int sync);
+/* The light of the sectors tagged `tag`: to `level`, or (level < 0) to
+ * their brightest (-1) or darkest (-2) neighbour. */
+void g_light_set(struct sim *s, uint16_t tag, int level);
+/* Line 17: slow strobes in the tagged sectors that have no mover. */
+void g_light_strobe_tagged(struct sim *s, uint16_t tag);
+/* One Doom tic of every light effect. */
+void g_lights_tic(struct sim *s);
+
+/* ---- g_tele.c -------------------------------------------------------- */
+
+/* Doom's EV_Teleport over line l crossed from side `side` by who: to the
+ * teleport destination thing in the tagged sector, facing its angle. 1 if
+ * who moved. */
+int g_teleport(struct sim *s, const struct map_line *l, int side, int who);
+
+/* ---- g_line.c: the line specials and their triggers ------------------ */
+
+/* A body moved from (ox, oy) to (nx, ny) with radius r: the walk-over
+ * specials of the lines it crossed (players all, enemies Doom's few). */
+void g_cross(struct sim *s, int who, fx_t ox, fx_t oy, fx_t nx, fx_t ny, fx_t r);
+/* The player pressed USE: the first line within 64 units in front. */
+void g_use(struct sim *s);
+/* Enemy i bumped into walls at (x, y): it opens the manual doors there. */
+void g_enemy_bump(struct sim *s, int i, fx_t x, fx_t y);
+/* The player's shot from (x1, y1) to (x2, y2) (where it stopped): the
+ * gun-triggered specials of the lines it reached. */
+void g_shoot_lines(struct sim *s, fx_t x1, fx_t y1, fx_t x2, fx_t y2);
+/* One tick of the buttons popping back. */
+void g_buttons_tick(struct sim *s);
+
+/* ---- g_spec.c: the stage's specials ----------------------------------- */
+
+/* The stage's world from its map (sectors, lines, counts), its sector
+ * specials started (lights, timed doors, secrets). */
+void g_spec_start(struct sim *s);
+/* One tick of the specials in play: movers, lights, buttons, the player's
+ * sector (damage, secrets, the exit floor), messages. */
+void g_spec_tick(struct sim *s);
+/* ---- g_exit.c: leaving the map ---------------------------------------- */
+
+/* The map is left (exit lines, sector 11): the intermission begins. */
+void g_exit(struct sim *s, int secret);
+/* Doom's next map after the current one: the stage index (which may be
+ * 0 again after the last). */
+int g_next_stage(const struct sim *s, int secret);
 
 /* ---- the sim's RNG ---------------------------------------------------- */
 

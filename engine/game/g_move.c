@@ -11,25 +11,26 @@
 #define G_PUSH_ITERS 4
 #define G_PUSH_MARGIN 2                /* fx units left between a body and a wall */
 
-int g_opening(const struct map *m, const struct map_line *l, fx_t *floor, fx_t *ceil)
+int g_opening(const struct sim *s, const struct map_line *l, fx_t *floor, fx_t *ceil)
 {
-	const struct map_sector *f, *b;
+	const struct map *m = s->map;
+	const struct g_sector *f, *b;
 
 	if (l->side[1] == MAP_NONE || (l->flags & ML_BLOCKING))
 		return -1;
-	f = &m->sectors[m->sides[l->side[0]].sector];
-	b = &m->sectors[m->sides[l->side[1]].sector];
+	f = &s->w.sec[m->sides[l->side[0]].sector];
+	b = &s->w.sec[m->sides[l->side[1]].sector];
 	*floor = f->floor_h > b->floor_h ? f->floor_h : b->floor_h;
 	*ceil = f->ceil_h < b->ceil_h ? f->ceil_h : b->ceil_h;
 	return 0;
 }
 
-int g_blocks(const struct map *m, const struct map_line *l, fx_t z)
+int g_blocks(const struct sim *s, const struct map_line *l, fx_t z)
 {
 	fx_t fl, cl;
 	int64_t floor, ceil;
 
-	if (g_opening(m, l, &fl, &cl) < 0)
+	if (g_opening(s, l, &fl, &cl) < 0)
 		return 1;
 	floor = fl;
 	ceil = cl;
@@ -106,8 +107,9 @@ static int g_push(fx_t *x, fx_t *y, fx_t r, const struct map_vertex *a,
  * it then fits and moved no more than a radius per axis from (ox, oy) (so a
  * push can never carry it through a wall), else 0. Lines are tested only
  * when their bounding box, grown by the radius, contains the centre. */
-static int g_fit(const struct map *m, fx_t r, fx_t z, fx_t ox, fx_t oy, fx_t *x, fx_t *y)
+static int g_fit(const struct sim *s, fx_t r, fx_t z, fx_t ox, fx_t oy, fx_t *x, fx_t *y)
 {
+	const struct map *m = s->map;
 	int iter, apply;
 
 	for (iter = 0; iter <= G_PUSH_ITERS; iter++) {
@@ -125,7 +127,7 @@ static int g_fit(const struct map *m, fx_t r, fx_t z, fx_t ox, fx_t oy, fx_t *x,
 			hi = (a->y > b->y ? a->y : b->y) + (int64_t)r;
 			if (*y <= lo || *y >= hi)
 				continue;
-			if (g_blocks(m, l, z) && g_push(x, y, r, a, b, apply))
+			if (g_blocks(s, l, z) && g_push(x, y, r, a, b, apply))
 				hit = 1;
 		}
 		if (!hit)
@@ -176,7 +178,7 @@ static int g_try(struct sim *s, struct g_body *b, fx_t dx, fx_t dy)
 {
 	fx_t x = b->x + dx, y = b->y + dy;
 
-	if (!g_fit(s->map, b->radius, b->z, b->x, b->y, &x, &y))
+	if (!g_fit(s, b->radius, b->z, b->x, b->y, &x, &y))
 		return 0;
 	if (g_body_blocked(s, b->self, b->x, b->y, x, y, b->radius))
 		return 0;

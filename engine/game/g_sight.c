@@ -27,8 +27,7 @@ static int g_between(int64_t ax, int64_t ay, int64_t bx, int64_t by, int64_t cx,
 	       (cy >= (ay < by ? ay : by)) && (cy <= (ay > by ? ay : by));
 }
 
-/* Whether the closed segments p1-p2 and q1-q2 share a point. */
-static int g_cross(int64_t p1x, int64_t p1y, int64_t p2x, int64_t p2y, const struct map_vertex *q1,
+int g_segs_cross(int64_t p1x, int64_t p1y, int64_t p2x, int64_t p2y, const struct map_vertex *q1,
 		   const struct map_vertex *q2)
 {
 	int o1 = g_orient(p1x, p1y, p2x, p2y, q1->x, q1->y);
@@ -50,11 +49,11 @@ static int g_cross(int64_t p1x, int64_t p1y, int64_t p2x, int64_t p2y, const str
 }
 
 /* Whether line l stops sight or a shot between heights z1 and z2. */
-static int g_opaque(const struct map *m, const struct map_line *l, fx_t z1, fx_t z2)
+static int g_opaque(const struct sim *s, const struct map_line *l, fx_t z1, fx_t z2)
 {
 	fx_t floor, ceil;
 
-	if (g_opening(m, l, &floor, &ceil) < 0 || ceil <= floor)
+	if (g_opening(s, l, &floor, &ceil) < 0 || ceil <= floor)
 		return 1;
 	return (z1 < floor && z2 < floor) || (z1 > ceil && z2 > ceil);
 }
@@ -67,21 +66,24 @@ static int g_box_misses(const struct map_vertex *a, const struct map_vertex *b, 
 	       (a->y < loy && b->y < loy) || (a->y > hiy && b->y > hiy);
 }
 
-int g_line_stops(const struct map *m, const struct map_line *l, int64_t x1, int64_t y1, fx_t z1,
+int g_line_stops(const struct sim *s, const struct map_line *l, int64_t x1, int64_t y1, fx_t z1,
 		 int64_t x2, int64_t y2, fx_t z2)
 {
+	const struct map *m = s->map;
 	const struct map_vertex *a = &m->vertices[l->v1], *b = &m->vertices[l->v2];
 	int64_t lox = x1 < x2 ? x1 : x2, hix = x1 > x2 ? x1 : x2;
 	int64_t loy = y1 < y2 ? y1 : y2, hiy = y1 > y2 ? y1 : y2;
 
-	return !g_box_misses(a, b, lox, hix, loy, hiy) && g_opaque(m, l, z1, z2) &&
-	       g_cross(x1, y1, x2, y2, a, b);
+	return !g_box_misses(a, b, lox, hix, loy, hiy) && g_opaque(s, l, z1, z2) &&
+	       g_segs_cross(x1, y1, x2, y2, a, b);
 }
 
-int g_sight(const struct map *m, fx_t x1, fx_t y1, fx_t z1, fx_t x2, fx_t y2, fx_t z2)
+int g_sight(const struct sim *s, fx_t x1, fx_t y1, fx_t z1, fx_t x2, fx_t y2, fx_t z2)
 {
+	const struct map *m = s->map;
+
 	for (uint32_t i = 0; i < m->num_lines; i++)
-		if (g_line_stops(m, &m->lines[i], x1, y1, z1, x2, y2, z2))
+		if (g_line_stops(s, &m->lines[i], x1, y1, z1, x2, y2, z2))
 			return 0;
 	return 1;
 }

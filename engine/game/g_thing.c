@@ -6,31 +6,44 @@
  * decoration). This file adds the game's meaning: monsters become one of
  * the three enemy kinds by how they fight in Doom (hitscan soldiers are
  * grunts, melee and close-range monsters brutes, slow or floating ranged
- * monsters sentries, which stand their ground); health items, ammo and
- * weapons become health and ammo pickups (the game has one weapon and one
- * ammo). Lights are th's light things (Doom's lamps, candles and torches,
- * and arcaded's point-light types); decorations are drawn and nothing else.
- * Types th does not know, keys, and monsters not listed here (Commander
- * Keen, the boss brain) are ignored.
+ * monsters sentries, which stand their ground); health items, armour and
+ * the health-giving powerups (soulsphere, megasphere, berserk,
+ * invulnerability) become health pickups, ammo and weapons ammo pickups
+ * (the game has one weapon and one ammo); the six keys open Doom's locked
+ * doors; the radiation suit keeps damaging floors off for a minute; the
+ * computer map, light visor and invisibility are taken and counted among
+ * the map's items, nothing more. `counted` is Doom's COUNTITEM (the
+ * intermission's items). Lights are th's light things (Doom's lamps,
+ * candles and torches, and arcaded's point-light types); decorations are
+ * drawn and nothing else. Types th does not know and monsters not listed
+ * here (Commander Keen, the boss brain) are ignored. docs/game.md lists
+ * the mapping.
  */
 #include <string.h>
 
 #include "engine/game/g_game.h"
+#include "engine/game/g_world.h"
+#include "engine/game/sim.h"
 #include "engine/map/th.h"
 
 struct g_thing_row {
 	uint16_t type;
 	uint8_t cls, kind;
 	uint16_t amount;
+	uint8_t counted;
 	/* enemies: walk frames and Doom's frame letters (0 = 'A') of the
 	 * attack, pain and death (first .. last, the last is the corpse);
 	 * pickups: frames cycled */
 	uint8_t frames, attack, pain, death0, death1;
 };
 
-#define E(t, k, walk, att, pain, d0, d1) { t, G_C_ENEMY, k, 0, walk, att, pain, d0, d1 }
-#define H(t, n, frames) { t, G_C_PICKUP, G_P_HEALTH, n, frames, 0, 0, 0, 0 }
-#define M(t, n) { t, G_C_PICKUP, G_P_AMMO, n, 1, 0, 0, 0, 0 }
+#define E(t, k, walk, att, pain, d0, d1) { t, G_C_ENEMY, k, 0, 0, walk, att, pain, d0, d1 }
+#define H(t, n, frames) { t, G_C_PICKUP, G_P_HEALTH, n, 0, frames, 0, 0, 0, 0 }
+/* counted health items (Doom's bonuses and spheres) */
+#define HC(t, n, frames) { t, G_C_PICKUP, G_P_HEALTH, n, 1, frames, 0, 0, 0, 0 }
+#define M(t, n) { t, G_C_PICKUP, G_P_AMMO, n, 0, 1, 0, 0, 0, 0 }
+#define K(t, bit, frames) { t, G_C_PICKUP, G_P_KEY, bit, 0, frames, 0, 0, 0, 0 }
+#define I(t, kind, n, frames) { t, G_C_PICKUP, kind, n, 1, frames, 0, 0, 0, 0 }
 
 static const struct g_thing_row g_thing_rows[] = {
 	/* grunts: hitscan soldiers */
@@ -57,9 +70,27 @@ static const struct g_thing_row g_thing_rows[] = {
 	/* health */
 	H(2011, 10, 1),                               /* stimpack STIM */
 	H(2012, 25, 1),                               /* medikit MEDI */
-	H(2014, 2, 4),                                /* health bonus BON1 */
-	H(2013, 100, 4),                              /* soulsphere SOUL */
-	H(83, 100, 4),                                /* megasphere MEGA */
+	HC(2014, 2, 4),                               /* health bonus BON1 */
+	HC(2013, 100, 4),                             /* soulsphere SOUL */
+	HC(83, 100, 4),                               /* megasphere MEGA */
+	/* armour and powerups, as health */
+	HC(2015, 2, 4),                               /* armour bonus BON2 */
+	H(2018, 25, 2),                               /* green armour ARM1 */
+	H(2019, 50, 2),                               /* blue armour ARM2 */
+	HC(2023, 100, 1),                             /* berserk PSTR */
+	HC(2022, 100, 4),                             /* invulnerability PINV */
+	/* keys: cards and skulls */
+	K(5, G_KEY_BLUE, 2),                          /* blue keycard BKEY */
+	K(6, G_KEY_YELLOW, 2),                        /* yellow keycard YKEY */
+	K(13, G_KEY_RED, 2),                          /* red keycard RKEY */
+	K(40, G_KEY_BLUE_SKULL, 2),                   /* blue skull key BSKU */
+	K(39, G_KEY_YELLOW_SKULL, 2),                 /* yellow skull key YSKU */
+	K(38, G_KEY_RED_SKULL, 2),                    /* red skull key RSKU */
+	/* the radiation suit: a minute; items that are only counted */
+	{ 2025, G_C_PICKUP, G_P_SUIT, 60 * SIM_TICRATE, 0, 1, 0, 0, 0, 0 },  /* SUIT */
+	I(2026, G_P_ITEM, 0, 1),                      /* computer area map PMAP */
+	I(2045, G_P_ITEM, 0, 2),                      /* light amplification visor PVIS */
+	I(2024, G_P_ITEM, 0, 4),                      /* partial invisibility PINS */
 	/* ammo, and weapons as ammo */
 	M(2007, 10),                                  /* clip CLIP */
 	M(2048, 50),                                  /* box of bullets AMMO */
@@ -98,6 +129,7 @@ void g_thing_info(uint16_t type, struct g_thing_info *out)
 		out->cls = r->cls;
 		out->kind = r->kind;
 		out->amount = r->amount;
+		out->counted = r->counted;
 		out->frames = r->frames;
 		out->attack = r->attack;
 		out->pain = r->pain;
@@ -117,6 +149,8 @@ int g_thing_at_difficulty(uint16_t flags, int d)
 {
 	static const uint16_t bit[4] = { 1, 2, 4, 4 };
 
+	if (flags & G_TF_MULTI)
+		return 0;
 	if ((flags & 7) == 0)
 		return 1;
 	return (flags & bit[d < 0 ? 0 : d > 3 ? 3 : d]) != 0;

@@ -74,7 +74,7 @@ static void sim_settle(struct sim *s)
 	struct sim_player *p = &s->pl;
 
 	p->sector = map_point_sector(s->map, p->x, p->y);
-	p->z = s->map->sectors[p->sector].floor_h;
+	p->z = s->w.sec[p->sector].floor_h;
 	p->viewz = p->z + SIM_VIEW_HEIGHT;
 }
 
@@ -126,6 +126,7 @@ static void sim_start_stage(struct sim *s, int i)
 	s->g.stage_t = 0;
 	s->g.shot = G_SHOT_NONE;
 	s->g.shot_t = UINT16_MAX;
+	g_spec_start(s);
 	g_spawn_stage(s);
 	sim_spawn(s);
 }
@@ -206,6 +207,11 @@ static void sim_player_move(struct sim *s, const struct sim_cmd *cmd)
 	struct sim_player *p = &s->pl;
 	int64_t mx = p->momx, my = p->momy;
 
+	if (p->freeze) {
+		/* held still after a teleport (Doom's reactiontime) */
+		p->freeze--;
+		return;
+	}
 	p->angle += (uint32_t)cmd->turn * 65536u;
 	if (cmd->forward) {
 		fx_t f = cmd->forward * SIM_THRUST;
@@ -221,12 +227,15 @@ static void sim_player_move(struct sim *s, const struct sim_cmd *cmd)
 	p->momy = sim_clamp_mom(my);
 	if (p->momx || p->momy) {
 		struct g_body b = { p->x, p->y, p->z, p->momx, p->momy, SIM_PLAYER_RADIUS, -1 };
+		fx_t ox = p->x, oy = p->y;
 		g_move(s, &b);
 		p->x = b.x;
 		p->y = b.y;
 		p->momx = b.momx;
 		p->momy = b.momy;
 		sim_settle(s);
+		/* the walk-over specials (a teleport moves the player on) */
+		g_cross(s, G_WHO_PLAYER, ox, oy, p->x, p->y, SIM_PLAYER_RADIUS);
 	}
 	if (!cmd->forward && !cmd->side && fx_abs(p->momx) < SIM_STOPSPEED &&
 	    fx_abs(p->momy) < SIM_STOPSPEED) {
@@ -285,7 +294,20 @@ static void sim_life_lost(struct sim *s)
 	s->countdown = G_CONTINUE_TICKS;
 }
 
-static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd)
+/* The next stage after the intermission (or a cleared stage): one loop
+ * harder when the game comes back to the first. */
+static void sim_next_stage(struct sim *s, int next)
+{
+	struct g_game *g = &s->g;
+
+	if (s->pl.ammo < G_AMMO_START)
+		s->pl.ammo = G_AMMO_START;
+	if (next == 0 && g->loop < UINT8_MAX)
+		g->loop++;
+	sim_start_stage(s, next);
+}
+
+static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd, uint8_t pressed)
 {
 	struct g_game *g = &s->g;
 	struct sim_player *p = &s->pl;
@@ -303,11 +325,16 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd)
 	switch (g->phase) {
 	case G_PH_PLAY:
 		sim_player_move(s, cmd);
-		if ((cmd->buttons & SIM_BT_FIRE) && p->refire == 0 && p->ammo > 0)
+		if ((pressed & SIM_BT_USE) && g->phase == G_PH_PLAY)
+			g_use(s);
+		if ((cmd->buttons & SIM_BT_FIRE) && p->refire == 0 && p->ammo > 0 &&
+		    g->phase == G_PH_PLAY)
 			g_fire(s);
 		g_pickups_tick(s);
 		g_enemies_tick(s);
-		if (g->phase == G_PH_PLAY && g->num_enemies > 0 && g->alive == 0) {
+		g_spec_tick(s);
+		/* a map with an exit ends there; one without when it is cleared */
+		if (g->phase == G_PH_PLAY && !s->w.has_exit && g->num_enemies > 0 && g->alive == 0) {
 			g->score += G_STAGE_BONUS * ((uint32_t)g->stage + 1);
 			g->phase = G_PH_CLEAR;
 			g->phase_t = 0;
@@ -315,6 +342,7 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd)
 		break;
 	case G_PH_DEAD:
 		g->phase_t++;
+		g_spec_tick(s);
 		p->momx = p->momy = 0;
 		if (p->viewz - p->z > SIM_DEAD_VIEW)
 			p->viewz -= FX_ONE;
@@ -322,21 +350,20 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd)
 			sim_life_lost(s);
 		break;
 	case G_PH_CLEAR:
-	default:
 		/* the player may walk about while the banner shows */
 		g->phase_t++;
 		sim_player_move(s, cmd);
-		if (g->phase_t >= G_CLEAR_TICKS) {
-			int next = g->stage + 1;
-			if (p->ammo < G_AMMO_START)
-				p->ammo = G_AMMO_START;
-			if (next >= s->num_stages) {
-				next = 0;
-				if (g->loop < UINT8_MAX)
-					g->loop++;
-			}
-			sim_start_stage(s, next);
-		}
+		g_spec_tick(s);
+		if (g->phase_t >= G_CLEAR_TICKS)
+			sim_next_stage(s, g->stage + 1 < s->num_stages ? g->stage + 1 : 0);
+		break;
+	case G_PH_INTER:
+	default:
+		/* the intermission: FIRE or USE goes on after a second */
+		g->phase_t++;
+		if (g->phase_t >= G_INTER_TICKS ||
+		    (g->phase_t >= G_INTER_MIN && (pressed & (SIM_BT_FIRE | SIM_BT_USE))))
+			sim_next_stage(s, s->w.next < s->num_stages ? s->w.next : 0);
 		break;
 	}
 }
@@ -477,7 +504,7 @@ void sim_tick(struct sim *s, const struct sim_cmd *cmd)
 		break;
 	case SIM_PLAY:
 		s->books.play_ticks++;
-		sim_play_tick(s, cmd);
+		sim_play_tick(s, cmd, pressed);
 		break;
 	case SIM_GAMEOVER:
 		sim_gameover_tick(s, pressed);

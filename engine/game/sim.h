@@ -30,6 +30,7 @@
 
 #include "engine/core/fx.h"
 #include "engine/game/g_game.h"
+#include "engine/game/g_world.h"
 #include "engine/game/menu.h"
 #include "engine/game/sim_table.h"
 
@@ -101,7 +102,9 @@ struct sim_settings {
 	X(VAL, uint16_t, ammo, SIM_ANY) \
 	X(VAL, uint16_t, refire, SIM_ANY)           /* ticks until the next shot may fire */ \
 	X(VAL, uint16_t, hurt, SIM_ANY)             /* ticks left of the damage flash */ \
-	X(VAL, uint16_t, bonus, SIM_ANY)            /* ticks left of the pickup flash */
+	X(VAL, uint16_t, bonus, SIM_ANY)            /* ticks left of the pickup flash */ \
+	/* ticks the player is held still (after a teleport) */ \
+	X(VAL, uint16_t, freeze, SIM_ANY)
 struct sim_player {
 	SIM_PLAYER_FIELDS(SIM_MEMBER)
 };
@@ -131,6 +134,7 @@ struct sim_player {
 	X(VAL, uint32_t, rng, SIM_ANY)              /* the sim's own RNG state */ \
 	X(SUB, sim_player, pl) \
 	X(SUB, g_game, g) \
+	X(SUB, g_world, w)                          /* the current map as the game changed it */ \
 	X(VAL, uint16_t, countdown, SIM_ANY)        /* GAMEOVER: ticks left to continue */ \
 	/* INITIALS: the letter being chosen, 0..2; after the third it stays 3 */ \
 	X(VAL, uint8_t, ini_pos, SIM_MAX(s->mode == SIM_INITIALS ? G_NAME_LEN - 1 : G_NAME_LEN)) \

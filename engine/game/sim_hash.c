@@ -239,7 +239,9 @@ static void sw_map(struct sim_walk *w, struct sim *s)
 	{                                                                                       \
 		int up_ = w->spare;                                                             \
 		for (int i_ = 0; i_ < (n); i_++) {                                              \
-			w->spare = up_ || i_ >= (used);                                         \
+			w->spare = up_ || i_ >= (int64_t)(used);                                       \
+			if (w->spare && w->op == SIM_OP_HASH)                                   \
+				break;         /* the rest is spare: nothing to hash */         \
 			(sw_##type)(w, &p->name[i_], #name, i_, SIM_LO limit, SIM_HI limit);    \
 		}                                                                               \
 		w->spare = up_;                                                                 \
@@ -256,7 +258,9 @@ static void sw_map(struct sim_walk *w, struct sim *s)
 	{                                                                                       \
 		int up_ = w->spare;                                                             \
 		for (int i_ = 0; i_ < (n); i_++) {                                              \
-			w->spare = up_ || i_ >= (used);                                         \
+			w->spare = up_ || i_ >= (int64_t)(used);                                       \
+			if (w->spare && w->op == SIM_OP_HASH)                                   \
+				break;         /* the rest is spare: nothing to hash */         \
 			(sw_struct_##tag)(w, s, &p->name[i_]);                                  \
 		}                                                                               \
 		w->spare = up_;                                                                 \
@@ -307,6 +311,10 @@ SW_STRUCT(sim_player, SIM_PLAYER_FIELDS)
 SW_STRUCT(g_enemy, G_ENEMY_FIELDS)
 SW_STRUCT(g_pickup, G_PICKUP_FIELDS)
 SW_STRUCT(g_game, G_GAME_FIELDS)
+SW_STRUCT(g_sector, G_SECTOR_FIELDS)
+SW_STRUCT(g_mover, G_MOVER_FIELDS)
+SW_STRUCT(g_button, G_BUTTON_FIELDS)
+SW_STRUCT(g_world, G_WORLD_FIELDS)
 SW_STRUCT(g_entry, G_ENTRY_FIELDS)
 SW_STRUCT(g_scores, G_SCORES_FIELDS)
 SW_STRUCT(g_books, G_BOOKS_FIELDS)

@@ -86,6 +86,10 @@ void map_free(struct map *m)
 	free(m->subsectors);
 	free(m->nodes);
 	free(m->things);
+	free(m->sec_first);
+	free(m->sec_lines);
+	free(m->spec_lines);
+	free(m->tex_h);
 	free(m);
 }
 
@@ -371,6 +375,65 @@ static uint64_t map_content_hash(const struct map *m)
 	return h;
 }
 
+/* Each sector's bordering lines (map.h: sec_first, sec_lines), counted
+ * then filled in line order. 0 or -ENOMEM. */
+static int map_sector_index(struct map *m)
+{
+	uint32_t *first, *lines, *spec, i, total = 0, nspec = 0;
+
+	free(m->sec_first);
+	free(m->sec_lines);
+	free(m->spec_lines);
+	m->sec_first = m->sec_lines = m->spec_lines = NULL;
+	m->num_spec_lines = 0;
+	first = calloc((size_t)m->num_sectors + 1, sizeof(*first));
+	if (!first)
+		return -ENOMEM;
+	for (i = 0; i < m->num_lines; i++) {
+		uint32_t a = map_side_sector(m, &m->lines[i], 0);
+		uint32_t b = map_side_sector(m, &m->lines[i], 1);
+		first[a + 1]++;
+		if (b != MAP_NONE && b != a)
+			first[b + 1]++;
+	}
+	for (i = 0; i < m->num_sectors; i++) {
+		total += first[i + 1];
+		first[i + 1] = total;
+	}
+	lines = calloc(total ? total : 1, sizeof(*lines));
+	if (!lines) {
+		free(first);
+		return -ENOMEM;
+	}
+	/* first[s] counts up while sector s is filled, then is put back */
+	for (i = 0; i < m->num_lines; i++) {
+		uint32_t a = map_side_sector(m, &m->lines[i], 0);
+		uint32_t b = map_side_sector(m, &m->lines[i], 1);
+		lines[first[a]++] = i;
+		if (b != MAP_NONE && b != a)
+			lines[first[b]++] = i;
+	}
+	for (i = m->num_sectors; i > 0; i--)
+		first[i] = first[i - 1];
+	first[0] = 0;
+	for (i = 0; i < m->num_lines; i++)
+		nspec += m->lines[i].special != 0;
+	spec = calloc(nspec ? nspec : 1, sizeof(*spec));
+	if (!spec) {
+		free(first);
+		free(lines);
+		return -ENOMEM;
+	}
+	for (i = 0, nspec = 0; i < m->num_lines; i++)
+		if (m->lines[i].special)
+			spec[nspec++] = i;
+	m->sec_first = first;
+	m->sec_lines = lines;
+	m->spec_lines = spec;
+	m->num_spec_lines = nspec;
+	return 0;
+}
+
 int map_finish(struct map *m, char *err, size_t errlen)
 {
 	return map_finish_lim(m, NULL, err, errlen);
@@ -391,7 +454,12 @@ int map_finish_lim(struct map *m, const struct lim_stop *stop, char *err, size_t
 		if (r)
 			return r;
 	}
-	return map_check_bsp(m, err, errlen);
+	r = map_check_bsp(m, err, errlen);
+	if (r == 0 && map_sector_index(m) < 0) {
+		msg_cat(err, errlen, "out of memory");
+		r = -ENOMEM;
+	}
+	return r;
 }
 
 static fx_t map_clamp(fx_t v)

@@ -129,6 +129,19 @@ struct map {
 	uint32_t missing_textures;     /* texture/flat names a loader could not resolve
 					* (drawn as the fallback; map_wad.h); 0 for maps
 					* built in code. Not part of content_hash. */
+	/* Derived by map_finish (not part of content_hash), for the game's
+	 * sector specials: the lines bordering each sector, in line order, a
+	 * line once even when both its sides face the sector. Sector i's
+	 * lines are sec_lines[sec_first[i] .. sec_first[i + 1] - 1]. */
+	uint32_t *sec_first;           /* num_sectors + 1 entries */
+	uint32_t *sec_lines;
+	uint32_t *spec_lines;          /* the lines with a special, in order */
+	uint32_t num_spec_lines;
+	/* Height in map units of every wall texture of the set the map was
+	 * drawn with (tex_map_heights, tex.h), for the floors that rise by
+	 * their lower texture's height; NULL when not given (64 is used). */
+	uint16_t *tex_h;
+	uint32_t num_tex_h;
 };
 
 /* Allocates an empty map with room for the given numbers of level objects
@@ -154,11 +167,22 @@ int map_alloc(struct map **out, uint32_t vertices, uint32_t sectors, uint32_t si
  * -ENOMEM. stop (may be NULL) is polled by the node builder; map_finish
  * is map_finish_lim without one.
  *
+ * Then fills the sector line lists (sec_first, sec_lines) and the list of
+ * lines with a special (spec_lines).
+ *
  * content_hash: FNV-1a (hash.h) of the counts, then every field of every
  * vertex, sector, side, line and thing in that order, taken before the node
  * builder appends split vertices. Not the name, not the BSP. */
 int map_finish_lim(struct map *m, const struct lim_stop *stop, char *err, size_t errlen);
 int map_finish(struct map *m, char *err, size_t errlen);
+
+/* The lines bordering sector `sec` of a finished map: *n of them from the
+ * returned pointer (line indices, ascending). */
+static inline const uint32_t *map_sector_lines(const struct map *m, uint32_t sec, uint32_t *n)
+{
+	*n = m->sec_first[sec + 1] - m->sec_first[sec];
+	return m->sec_lines + m->sec_first[sec];
+}
 
 /* NULL-safe. Frees the map and all of its arrays. */
 void map_free(struct map *m);

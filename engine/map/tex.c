@@ -12,6 +12,7 @@
 
 #include "engine/core/le.h"
 #include "engine/core/lim.h"
+#include "engine/map/map.h"
 #include "engine/map/tex_local.h"
 #include "engine/map/wad.h"
 
@@ -278,6 +279,39 @@ int tex_find(const struct tex_set *t, const char *name)
 		return t->num_textures > 1 ? tex_bsearch(t, 0, t->tex_by_name, t->num_textures - 1, name)
 					   : -1;
 	return tex_find_in(t->textures, sizeof(*t->textures), 1, t->num_textures, 8, name);
+}
+
+int tex_switch_partner(const struct tex_set *t, uint16_t num)
+{
+	char other[9];
+	int i;
+
+	if (num == 0 || num >= t->num_textures)
+		return 0;
+	memcpy(other, t->textures[num].name, sizeof(other));
+	other[8] = '\0';
+	if (strncmp(other, "SW1", 3) == 0)
+		other[2] = '2';
+	else if (strncmp(other, "SW2", 3) == 0)
+		other[2] = '1';
+	else
+		return 0;
+	i = tex_find(t, other);
+	return i > 0 ? i : 0;
+}
+
+int tex_map_heights(const struct tex_set *t, struct map *m)
+{
+	uint16_t *h = calloc(t->num_textures > 0 ? (size_t)t->num_textures : 1, sizeof(*h));
+
+	if (!h)
+		return -ENOMEM;
+	for (int i = 0; i < t->num_textures; i++)
+		h[i] = t->textures[i].h > 0 ? (uint16_t)t->textures[i].h : 0;
+	free(m->tex_h);
+	m->tex_h = h;
+	m->num_tex_h = (uint32_t)t->num_textures;
+	return 0;
 }
 
 int tex_find_flat(const struct tex_set *t, const char *name)

@@ -31,6 +31,7 @@
 #include "engine/core/pal.h"
 
 struct lim_stop;
+struct map;
 struct wad;
 
 /* A decoded picture. px is column-major: column x is px[x * h .. x * h +
@@ -157,6 +158,15 @@ int tex_wall_index(const struct tex_set *t, uint16_t num);
  * renderer. */
 int tex_sprite_pic(const struct tex_set *t, unsigned sprite, unsigned frame, ang_t view,
 		   int *flip);
+
+/* The other state of a switch texture: for texture number num named
+ * SW1name its SW2name and the other way round (every switch pair of Doom
+ * and Freedoom is named so), when the set has it; else 0. */
+int tex_switch_partner(const struct tex_set *t, uint16_t num);
+
+/* Fills m->tex_h with the height of each of t's wall textures (map.h), for
+ * the floors that rise by a lower texture's height. 0 or -ENOMEM. */
+int tex_map_heights(const struct tex_set *t, struct map *m);
 
 /* Sets sky_tex for map `map` by Doom's rule, when that texture exists:
  * ExMy -> SKYx; MAP01-11 -> SKY1, MAP12-20 -> SKY2, MAP21 on -> SKY3;

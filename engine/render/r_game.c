@@ -9,6 +9,8 @@
 #include "engine/render/r_game.h"
 
 #include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "engine/game/g_game.h"
 #include "engine/game/sim.h"
@@ -108,7 +110,8 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite
 		if (p->taken)
 			continue;
 		g_thing_info(p->type, &ti);
-		r_put(&o, p->x, p->y, p->z, 0,
+		/* on its floor as it is now (a lift carries it) */
+		r_put(&o, p->x, p->y, s->w.sec[map_point_sector(m, p->x, p->y)].floor_h, 0,
 		      r_sprite_index(t, ti.sprite, p->kind == G_P_HEALTH ? "MEDI" : "CLIP"),
 		      ti.stand + (ti.frames > 1 ? (int)(s->tick / R_ANIM % ti.frames) : 0),
 		      ti.bright, 0);
@@ -119,7 +122,7 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite
 		g_thing_info(th->type, &ti);
 		if ((ti.cls != G_C_LIGHT && ti.cls != G_C_DECOR) || !ti.sprite[0])
 			continue;
-		r_put(&o, th->x, th->y, m->sectors[map_point_sector(m, th->x, th->y)].floor_h,
+		r_put(&o, th->x, th->y, s->w.sec[map_point_sector(m, th->x, th->y)].floor_h,
 		      th->angle, r_sprite_index(t, ti.sprite, ti.cls == G_C_LIGHT ? "COLU" : "BAR1"),
 		      ti.stand + (ti.frames > 1 ? (int)(s->tick / R_ANIM % ti.frames) : 0),
 		      ti.bright, 0);
@@ -159,6 +162,77 @@ int r_map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite 
 		n++;
 	}
 	return n;
+}
+
+/* Grows *p (of *cap elements of size elem) to n. 0 or -1. */
+static int r_live_grow(void **p, uint32_t *cap, size_t elem, uint32_t n)
+{
+	void *q;
+
+	if (n <= *cap)
+		return 0;
+	q = realloc(*p, (size_t)n * elem);
+	if (!q)
+		return -1;
+	*p = q;
+	*cap = n;
+	return 0;
+}
+
+const struct map *r_game_live(struct r_live *l, const struct sim *s, const struct tex_set *t)
+{
+	const struct map *m = s->map;
+	/* the scroll: a unit a Doom tic (35 Hz) of the stage's ticks */
+	fx_t scroll = (fx_t)((int64_t)s->g.stage_t * 35 * FX_ONE / 60);
+
+	if (r_live_grow((void **)&l->sectors, &l->cap_sectors, sizeof(*l->sectors),
+			m->num_sectors) < 0 ||
+	    r_live_grow((void **)&l->sides, &l->cap_sides, sizeof(*l->sides), m->num_sides) < 0 ||
+	    s->w.num_sectors != m->num_sectors)
+		return m;
+	l->map = *m;
+	l->map.sectors = l->sectors;
+	l->map.sides = l->sides;
+	memcpy(l->sectors, m->sectors, (size_t)m->num_sectors * sizeof(*l->sectors));
+	memcpy(l->sides, m->sides, (size_t)m->num_sides * sizeof(*l->sides));
+	for (uint32_t i = 0; i < m->num_sectors; i++) {
+		const struct g_sector *g = &s->w.sec[i];
+		l->sectors[i].floor_h = g->floor_h;
+		l->sectors[i].ceil_h = g->ceil_h;
+		l->sectors[i].floor_tex = g->floor_tex;
+		l->sectors[i].light = g->light;
+		l->sectors[i].special = g->special;
+	}
+	for (uint32_t k = 0; k < m->num_spec_lines; k++) {
+		uint32_t i = m->spec_lines[k];
+		const struct map_line *ln = &m->lines[i];
+		struct map_side *sd = &l->sides[ln->side[0]];
+		if (ln->special == 48)
+			sd->xoff += scroll;
+		else if (ln->special == 85)
+			sd->xoff -= scroll;
+		if (t && g_world_bit(s->w.switched, i)) {
+			/* Doom's order: the upper, middle, then lower texture */
+			uint16_t *part[3] = { &sd->top_tex, &sd->mid_tex, &sd->bot_tex };
+			for (int p = 0; p < 3; p++) {
+				int o = tex_switch_partner(t, *part[p]);
+				if (o > 0) {
+					*part[p] = (uint16_t)o;
+					break;
+				}
+			}
+		}
+	}
+	return &l->map;
+}
+
+void r_live_free(struct r_live *l)
+{
+	if (!l)
+		return;
+	free(l->sectors);
+	free(l->sides);
+	memset(l, 0, sizeof(*l));
 }
 
 void r_game_view(const struct sim *s, struct r_view *v)

@@ -5,13 +5,37 @@
 #ifndef ARCADED_ENGINE_R_GAME_H
 #define ARCADED_ENGINE_R_GAME_H
 
+#include <stdint.h>
+
 #include "engine/game/g_game.h"
+#include "engine/map/map.h"
 
 struct map;
 struct r_sprite;
 struct r_view;
 struct sim;
 struct tex_set;
+
+/* The map as a sim has it now, for the renderers (both draw a struct
+ * map): a shallow copy of the current stage map whose sectors carry the
+ * sim's heights, floor flats and light (g_world.h) and whose sides show
+ * the switches' other textures (SW1/SW2, tex_switch_partner) and the
+ * scrolling walls' offsets (line 48 left, Boom's 85 right: a unit a Doom
+ * tic). Owns its arrays (r_live_free); the stage map is borrowed. */
+struct r_live {
+	struct map map;
+	struct map_sector *sectors;
+	struct map_side *sides;
+	uint32_t cap_sectors, cap_sides;
+};
+
+/* Fills l from s (t: the texture set, for the switch pairs; may be NULL)
+ * and returns &l->map; s->map itself when the arrays cannot grow (the
+ * frame then shows the map as loaded). */
+const struct map *r_game_live(struct r_live *l, const struct sim *s, const struct tex_set *t);
+
+/* NULL-safe; frees l's arrays. */
+void r_live_free(struct r_live *l);
 
 /* The camera for the current tick. */
 void r_game_view(const struct sim *s, struct r_view *v);

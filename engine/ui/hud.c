@@ -33,7 +33,27 @@ void hud_minimap_rect(const struct r_frame *f, int *x, int *y, int *size)
 
 int hud_world(const struct sim *s)
 {
-	return s->mode == SIM_PLAY || s->mode == SIM_GAMEOVER || s->mode == SIM_ATTRACT;
+	if (s->mode == SIM_PLAY)
+		return s->g.phase != G_PH_INTER;
+	return s->mode == SIM_GAMEOVER || s->mode == SIM_ATTRACT;
+}
+
+/* What the specials tell the player (g_world.h enum g_msg), Doom's words. */
+static const char *hud_msg_text(int msg)
+{
+	static const char text[G_MSG_COUNT][48] = {
+		[G_MSG_BLUE_DOOR] = "YOU NEED A BLUE KEY TO OPEN THIS DOOR",
+		[G_MSG_YELLOW_DOOR] = "YOU NEED A YELLOW KEY TO OPEN THIS DOOR",
+		[G_MSG_RED_DOOR] = "YOU NEED A RED KEY TO OPEN THIS DOOR",
+		[G_MSG_BLUE_OBJECT] = "YOU NEED A BLUE KEY TO ACTIVATE THIS",
+		[G_MSG_YELLOW_OBJECT] = "YOU NEED A YELLOW KEY TO ACTIVATE THIS",
+		[G_MSG_RED_OBJECT] = "YOU NEED A RED KEY TO ACTIVATE THIS",
+		[G_MSG_SECRET] = "A SECRET IS REVEALED!",
+		[G_MSG_NOTHING] = "NOTHING TO USE HERE",
+		[G_MSG_KEY] = "PICKED UP A KEY",
+	};
+
+	return msg > 0 && msg < G_MSG_COUNT ? text[msg] : "";
 }
 
 /* ---- the minimap ------------------------------------------------------ */
@@ -92,8 +112,9 @@ static void hud_minimap(const struct sim *s, const struct hud_colours *c, struct
 		uint8_t col = c->grey;
 		int x0, y0, x1, y1;
 		if (l->side[1] != MAP_NONE && !(l->flags & ML_BLOCKING)) {
-			const struct map_sector *fs = &map->sectors[map->sides[l->side[0]].sector];
-			const struct map_sector *bs = &map->sectors[map->sides[l->side[1]].sector];
+			/* heights as they are now: an open door is a passage */
+			const struct g_sector *fs = &s->w.sec[map->sides[l->side[0]].sector];
+			const struct g_sector *bs = &s->w.sec[map->sides[l->side[1]].sector];
 			if (fs->floor_h == bs->floor_h && fs->ceil_h == bs->ceil_h)
 				continue;
 			col = c->dark;
@@ -112,7 +133,8 @@ static void hud_minimap(const struct sim *s, const struct hud_colours *c, struct
 	for (int i = 0; i < s->g.num_pickups; i++) {
 		const struct g_pickup *p = &s->g.pk[i];
 		if (!p->taken)
-			hud_mm_dot(f, &m, p->x, p->y, dot, p->kind == G_P_HEALTH ? c->green : c->cyan);
+			hud_mm_dot(f, &m, p->x, p->y, dot, p->kind == G_P_HEALTH ? c->green
+							   : p->kind == G_P_KEY ? c->purple : c->cyan);
 	}
 	for (int i = 0; i < s->g.num_enemies; i++) {
 		const struct g_enemy *e = &s->g.en[i];
@@ -250,6 +272,25 @@ static void hud_banners(const struct sim *s, const struct hud_colours *c, struct
 	}
 }
 
+/* The keys held: a small card (and a skull's dot) of each colour. */
+static void hud_keys(const struct sim *s, const struct hud_colours *c, struct r_frame *f, int x,
+		     int y)
+{
+	static const uint8_t bits[3] = { G_KEY_BLUE, G_KEY_YELLOW, G_KEY_RED };
+	const uint8_t col[3] = { c->blue, c->yellow, c->red };
+	int sc = hud_scale(f);
+
+	for (int i = 0; i < 3; i++) {
+		int have = s->w.keys & bits[i], skull = s->w.keys & (bits[i] << 3);
+		if (!have && !skull)
+			continue;
+		v_fill(f, x, y, 5 * sc, 7 * sc, col[i]);
+		if (skull)
+			v_fill(f, x + 2 * sc, y + 2 * sc, sc, 2 * sc, c->white);
+		x += 7 * sc;
+	}
+}
+
 static void hud_play(const struct sim *s, const struct hud_env *env, const struct hud_colours *c,
 		     struct r_frame *f)
 {
@@ -296,6 +337,9 @@ static void hud_play(const struct sim *s, const struct hud_env *env, const struc
 		hud_credits_text(s, buf, sizeof(buf));
 		hud_text(f, c, 2 * sc, 22 * sc, sc, c->grey, buf);
 	}
+	hud_keys(s, c, f, 2 * sc + v_text_width("LIVES 9 ", sc), 12 * sc);
+	if (s->w.msg)
+		hud_text_centre(f, c, 34 * sc, sc, c->yellow, hud_msg_text(s->w.msg));
 	hud_minimap(s, c, f);
 	hud_banners(s, c, f);
 }
@@ -310,7 +354,10 @@ void hud_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f)
 		v_fill(f, 0, 0, f->w, f->h, c.black);
 	switch (s->mode) {
 	case SIM_PLAY:
-		hud_play(s, env, &c, f);
+		if (s->g.phase == G_PH_INTER)
+			hud_page_inter(s, &c, f);
+		else
+			hud_play(s, env, &c, f);
 		break;
 	case SIM_GAMEOVER:
 		hud_page_gameover(s, &c, f);

@@ -37,5 +37,8 @@ void hud_credits_text(const struct sim *s, char *buf, size_t len);
 void hud_page_attract(const struct sim *s, const struct hud_colours *c, struct r_frame *f);
 void hud_page_gameover(const struct sim *s, const struct hud_colours *c, struct r_frame *f);
 void hud_page_initials(const struct sim *s, const struct hud_colours *c, struct r_frame *f);
+/* The intermission after a map's exit (phase G_PH_INTER): kills, items,
+ * secrets, time, score, the next map. */
+void hud_page_inter(const struct sim *s, const struct hud_colours *c, struct r_frame *f);
 
 #endif

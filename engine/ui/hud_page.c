@@ -1,12 +1,14 @@
 /*
  * hud_page: the screens of the arcade flow: attract (title, high scores,
- * the demo's banner), game over with the continue countdown, and initials
- * entry. Pure functions of the sim state; pixels through v_video.
+ * the demo's banner), game over with the continue countdown, initials
+ * entry, and the intermission after a map's exit. Pure functions of the
+ * sim state; pixels through v_video.
  */
 #include <string.h>
 
 #include "engine/core/msg.h"
 #include "engine/game/sim.h"
+#include "engine/map/map.h"
 #include "engine/render/r_main.h"
 #include "engine/ui/hud_local.h"
 #include "engine/ui/v_video.h"
@@ -139,4 +141,57 @@ void hud_page_initials(const struct sim *s, const struct hud_colours *c, struct 
 		    (G_INITIALS_TICKS - (s->mode_t < G_INITIALS_TICKS ? s->mode_t : G_INITIALS_TICKS) +
 		     SIM_TICRATE - 1) / SIM_TICRATE, 2, '0');
 	hud_text_centre(f, c, y + 14 * sc, sc, c->white, buf);
+}
+
+/* "KILLS   12 / 25   48%" */
+static void hud_inter_line(struct r_frame *f, const struct hud_colours *c, int x, int y, int sc,
+			   const char *what, unsigned got, unsigned total)
+{
+	char buf[48] = "";
+	unsigned pct = total ? got * 100u / total : 100u;
+
+	msg_cat(buf, sizeof(buf), what);
+	hud_cat_num(buf, sizeof(buf), got, 4, ' ');
+	msg_cat(buf, sizeof(buf), " /");
+	hud_cat_num(buf, sizeof(buf), total, 4, ' ');
+	hud_cat_num(buf, sizeof(buf), pct, 6, ' ');
+	msg_cat(buf, sizeof(buf), "%");
+	hud_text(f, c, x, y, sc, pct >= 100 ? c->yellow : c->white, buf);
+}
+
+void hud_page_inter(const struct sim *s, const struct hud_colours *c, struct r_frame *f)
+{
+	const struct g_world *w = &s->w;
+	int sc = hud_scale(f), y = f->h / 8;
+	int x = (f->w - v_text_width("SECRETS 1000 / 1000   100%", sc)) / 2;
+	unsigned dead = 0;
+	char buf[48] = "";
+
+	for (int i = 0; i < s->g.num_enemies; i++)
+		dead += s->g.en[i].state == G_E_DEAD;
+	msg_cat(buf, sizeof(buf), s->map->name);
+	msg_cat(buf, sizeof(buf), " FINISHED");
+	hud_text_centre(f, c, y, 2 * sc, c->red, buf);
+	if (w->exit == G_EXIT_SECRET)
+		hud_text_centre(f, c, y + 20 * sc, sc, c->cyan, "SECRET EXIT");
+	y += 40 * sc;
+	hud_inter_line(f, c, x, y, sc, "KILLS   ", dead, s->g.num_enemies);
+	hud_inter_line(f, c, x, y + 14 * sc, sc, "ITEMS   ", w->items, w->items_total);
+	hud_inter_line(f, c, x, y + 28 * sc, sc, "SECRETS ", w->secrets, w->secrets_total);
+	buf[0] = '\0';
+	msg_cat(buf, sizeof(buf), "TIME    ");
+	hud_cat_time(buf, sizeof(buf), w->exit_t);
+	hud_text(f, c, x, y + 42 * sc, sc, c->white, buf);
+	buf[0] = '\0';
+	msg_cat(buf, sizeof(buf), "SCORE   ");
+	hud_cat_num(buf, sizeof(buf), s->g.score, 1, '0');
+	hud_text(f, c, x, y + 56 * sc, sc, c->white, buf);
+	if (w->next < s->num_stages && s->stages[w->next]) {
+		buf[0] = '\0';
+		msg_cat(buf, sizeof(buf), "ENTERING ");
+		msg_cat(buf, sizeof(buf), s->stages[w->next]->name);
+		hud_text_centre(f, c, y + 80 * sc, sc, c->green, buf);
+	}
+	if (s->g.phase_t >= G_INTER_MIN && hud_blink(s))
+		hud_text_centre(f, c, f->h - 24 * sc, sc, c->yellow, "PRESS FIRE");
 }

@@ -44,16 +44,19 @@ static void sight_crosses_an_open_room_but_not_a_pillar(void **state)
 {
 	static const struct gf_box pillar = { 500, 200, 600, 300 };
 	struct map *m = arena(NULL, 0, &pillar, 1);
+	static const struct sim_settings set = { 1, 0, 1, 1, 3 };
+	struct sim sim, *sm = &sim;
 	fx_t z = U(40);
 	(void)state;
-	assert_true(g_sight(m, U(100), U(100), z, U(1000), U(100), z));
-	assert_false(g_sight(m, U(100), U(250), z, U(1000), U(250), z));
+	sim_init(&sim, m, &set);
+	assert_true(g_sight(sm, U(100), U(100), z, U(1000), U(100), z));
+	assert_false(g_sight(sm, U(100), U(250), z, U(1000), U(250), z));
 	/* a line that just touches the pillar's corner (500, 300) is blocked */
-	assert_false(g_sight(m, U(400), U(200), z, U(600), U(400), z));
+	assert_false(g_sight(sm, U(400), U(200), z, U(600), U(400), z));
 	/* one unit above the corner passes */
-	assert_true(g_sight(m, U(400), U(201), z, U(599), U(400), z));
+	assert_true(g_sight(sm, U(400), U(201), z, U(599), U(400), z));
 	/* symmetric */
-	assert_false(g_sight(m, U(1000), U(250), z, U(100), U(250), z));
+	assert_false(g_sight(sm, U(1000), U(250), z, U(100), U(250), z));
 	map_free(m);
 }
 
@@ -61,14 +64,17 @@ static void sight_crosses_an_open_room_but_not_a_pillar(void **state)
 static void sight_through_a_window_depends_on_the_heights(void **state)
 {
 	struct map *m;
+	static const struct sim_settings set = { 1, 0, 1, 1, 3 };
+	struct sim sim, *sm = &sim;
 	(void)state;
 	assert_int_equal(lvl_builtin(0, &m), 0);
-	assert_true(g_sight(m, U(600), U(192), U(41), U(700), U(192), U(41)));
-	assert_true(g_sight(m, U(600), U(192), U(20), U(700), U(192), U(60)));
-	assert_false(g_sight(m, U(600), U(192), U(20), U(700), U(192), U(39)));
-	assert_false(g_sight(m, U(600), U(192), U(100), U(700), U(192), U(90)));
+	sim_init(&sim, m, &set);
+	assert_true(g_sight(sm, U(600), U(192), U(41), U(700), U(192), U(41)));
+	assert_true(g_sight(sm, U(600), U(192), U(20), U(700), U(192), U(60)));
+	assert_false(g_sight(sm, U(600), U(192), U(20), U(700), U(192), U(39)));
+	assert_false(g_sight(sm, U(600), U(192), U(100), U(700), U(192), U(90)));
 	/* beside the window the hall's east wall blocks at any height */
-	assert_false(g_sight(m, U(600), U(100), U(60), U(700), U(100), U(60)));
+	assert_false(g_sight(sm, U(600), U(100), U(60), U(700), U(100), U(60)));
 	map_free(m);
 }
 

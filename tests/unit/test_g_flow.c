@@ -182,7 +182,7 @@ static int target(const struct sim *s)
 		uint64_t d = (uint64_t)(dx * dx) + (uint64_t)(dy * dy);
 		if (e->state == G_E_DEAD || d >= bd)
 			continue;
-		if (!g_sight(s->map, s->pl.x, s->pl.y, s->pl.viewz, e->x, e->y,
+		if (!g_sight(s, s->pl.x, s->pl.y, s->pl.viewz, e->x, e->y,
 			     e->z + g_kinds[e->kind].eye))
 			continue;
 		best = i;

@@ -8,6 +8,7 @@
 #include <cmocka.h>
 
 #include "engine/game/g_game.h"
+#include "engine/game/g_world.h"
 #include "engine/map/th.h"
 
 static int kind_of(uint16_t type)
@@ -91,8 +92,20 @@ static void lights_decorations_and_the_rest(void **state)
 	assert_int_equal(ti.stand, 'L' - 'A');
 	g_thing_info(1, &ti);
 	assert_int_equal(ti.cls, G_C_PLAYER);
-	g_thing_info(5, &ti);                       /* blue key: no keys here */
-	assert_int_equal(ti.cls, G_C_NONE);
+	g_thing_info(5, &ti);                       /* blue keycard: opens blue doors */
+	assert_int_equal(ti.cls, G_C_PICKUP);
+	assert_int_equal(ti.kind, G_P_KEY);
+	assert_int_equal(ti.amount, G_KEY_BLUE);
+	assert_int_equal(ti.counted, 0);
+	g_thing_info(38, &ti);                      /* red skull key */
+	assert_int_equal(ti.kind, G_P_KEY);
+	assert_int_equal(ti.amount, G_KEY_RED_SKULL);
+	g_thing_info(2018, &ti);                    /* green armour: health here */
+	assert_int_equal(ti.kind, G_P_HEALTH);
+	assert_int_equal(ti.amount, 25);
+	g_thing_info(2026, &ti);                    /* computer map: only counted */
+	assert_int_equal(ti.kind, G_P_ITEM);
+	assert_int_equal(ti.counted, 1);
 	g_thing_info(11, &ti);                      /* deathmatch start */
 	assert_int_equal(ti.cls, G_C_NONE);
 	g_thing_info(12345, &ti);                   /* unknown */
@@ -111,6 +124,9 @@ static void skill_bits_select_difficulties(void **state)
 	assert_false(g_thing_at_difficulty(4, 0));
 	assert_true(g_thing_at_difficulty(0, 3));   /* no bits: every skill */
 	assert_true(g_thing_at_difficulty(8, 1));   /* ambush bit only: every skill */
+	/* multiplayer-only things never appear (one player at a time) */
+	assert_false(g_thing_at_difficulty(7 | G_TF_MULTI, 1));
+	assert_false(g_thing_at_difficulty(G_TF_MULTI, 0));
 }
 
 int main(void)

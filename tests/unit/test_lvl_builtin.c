@@ -22,8 +22,10 @@
 /* Whether a circle of radius r at (x, y) overlaps a wall that blocks a
  * body standing at z there (same rule as movement). Exact: squared
  * distances to each segment in 64-bit integer arithmetic. */
-static int overlaps_wall(const struct map *m, fx_t x, fx_t y, fx_t z, fx_t r)
+static int overlaps_wall(const struct sim *sm, fx_t x, fx_t y, fx_t z, fx_t r)
 {
+	const struct map *m = sm->map;
+
 	for (uint32_t i = 0; i < m->num_lines; i++) {
 		const struct map_line *l = &m->lines[i];
 		const struct map_vertex *a = &m->vertices[l->v1], *b = &m->vertices[l->v2];
@@ -31,7 +33,7 @@ static int overlaps_wall(const struct map *m, fx_t x, fx_t y, fx_t z, fx_t r)
 		int64_t px = (int64_t)x - a->x, py = (int64_t)y - a->y;
 		int64_t t = px * dx + py * dy, len2 = dx * dx + dy * dy;
 		int64_t qx, qy;
-		if (!g_blocks(m, l, z))
+		if (!g_blocks(sm, l, z))
 			continue;
 		if (t <= 0) {
 			qx = px;
@@ -69,16 +71,16 @@ static void every_stage_is_playable(void **state)
 		sim_init(&s, m, &set);
 		assert_true(s.g.num_enemies >= 4);
 		assert_true(s.g.num_pickups >= 3);
-		assert_false(overlaps_wall(m, s.pl.x, s.pl.y, s.pl.z, SIM_PLAYER_RADIUS));
+		assert_false(overlaps_wall(&s, s.pl.x, s.pl.y, s.pl.z, SIM_PLAYER_RADIUS));
 		for (int k = 0; k < s.g.num_enemies; k++) {
 			const struct g_enemy *e = &s.g.en[k];
-			if (overlaps_wall(m, e->x, e->y, e->z, g_kinds[e->kind].radius))
+			if (overlaps_wall(&s, e->x, e->y, e->z, g_kinds[e->kind].radius))
 				fail_msg("level %d enemy %d at (%d, %d) is in a wall", i, k,
 					 e->x >> 16, e->y >> 16);
 		}
 		for (int k = 0; k < s.g.num_pickups; k++) {
 			const struct g_pickup *p = &s.g.pk[k];
-			if (overlaps_wall(m, p->x, p->y, p->z, SIM_PLAYER_RADIUS))
+			if (overlaps_wall(&s, p->x, p->y, p->z, SIM_PLAYER_RADIUS))
 				fail_msg("level %d pickup %d at (%d, %d) cannot be reached", i, k,
 					 p->x >> 16, p->y >> 16);
 		}

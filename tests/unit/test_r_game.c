@@ -33,7 +33,7 @@ static void sprites_follow_the_state(void **state)
 		{ 650, 100, 0, 2008, 0 },                    /* shells: SHEL, not in the set */
 		{ 700, 100, 0, 2028, 0 },                    /* floor lamp COLU */
 		{ 800, 100, 0, TH_LIGHT_FIRST + 7, 0 },      /* arcaded light: invisible */
-		{ 900, 100, 0, 5, 0 },                       /* a key: not in this game */
+		{ 900, 100, 0, 11, 0 },                      /* deathmatch start: not in this game */
 	};
 	struct map *m = gf_room(1024, 256, t, 10, NULL, 0);
 	struct tex_set *ts;

@@ -552,14 +552,16 @@ static void hash_covers_the_current_map(void **state)
 static void a_line_opening_is_the_higher_floor_and_lower_ceiling(void **state)
 {
 	struct map *m = low_opening();
+	struct sim s;
 	fx_t floor = 7, ceil = 7;
 	(void)state;
-	assert_int_equal(g_opening(m, &m->lines[2], &floor, &ceil), 0);
+	sim_init(&s, m, &play);
+	assert_int_equal(g_opening(&s, &m->lines[2], &floor, &ceil), 0);
 	assert_int_equal(floor, 8 * FX_ONE);
 	assert_int_equal(ceil, 56 * FX_ONE);
-	assert_int_equal(g_opening(m, &m->lines[0], &floor, &ceil), -1);
+	assert_int_equal(g_opening(&s, &m->lines[0], &floor, &ceil), -1);
 	m->lines[2].flags |= ML_BLOCKING;
-	assert_int_equal(g_opening(m, &m->lines[2], &floor, &ceil), -1);
+	assert_int_equal(g_opening(&s, &m->lines[2], &floor, &ceil), -1);
 	map_free(m);
 }
 

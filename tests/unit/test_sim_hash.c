@@ -664,12 +664,12 @@ static void out_of_range_values_are_refused(void **state)
 		case 4: a->g.num_pickups = G_MAX_PICKUPS + 1; break;
 		case 5: a->g.alive = (uint16_t)(a->g.num_enemies + 1); break;
 		case 6: a->g.stage = (uint8_t)st.n; break;
-		case 7: a->g.phase = G_PH_CLEAR + 1; break;
+		case 7: a->g.phase = G_PH_INTER + 1; break;
 		case 8: a->g.shot = G_SHOT_MISS + 1; break;
 		case 9: a->g.en[0].kind = G_KINDS; break;
 		case 10: a->g.en[0].state = G_E_DEAD + 1; break;
 		case 11: a->g.en[a->g.num_enemies - 1].sector = a->map->num_sectors; break;
-		case 12: a->g.pk[0].kind = G_P_AMMO + 1; break;
+		case 12: a->g.pk[0].kind = G_P_KINDS; break;
 		case 13: a->g.pk[0].taken = 2; break;
 		case 14: a->pl.sector = a->map->num_sectors; break;
 		case 15: a->pl.x = MAP_COORD_MAX + 1; break;

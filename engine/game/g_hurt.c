@@ -1,0 +1,56 @@
+/*
+ * g_hurt: damage to the player and to the enemies, from every source:
+ * enemies' attacks, the player's shot, crushing ceilings, damaging floors,
+ * telefrags. Its own module so that the specials (which crush and
+ * telefrag) and the enemies (which trigger specials) call it without
+ * calling each other in a loop.
+ */
+#include "engine/game/g_local.h"
+
+#define G_PAIN_TICKS 8
+#define G_HURT_TICKS 12
+
+/* Chance (of 256) that a hit makes an enemy flinch, per kind. */
+static const uint8_t g_pain_chance[G_KINDS] = { 200, 80, 128 };
+
+void g_hurt_player(struct sim *s, fx_t dmg)
+{
+	if (s->g.phase != G_PH_PLAY)
+		return;
+	s->pl.health -= dmg;
+	s->pl.hurt = G_HURT_TICKS;
+	if (s->pl.health <= 0) {
+		s->pl.health = 0;
+		s->g.phase = G_PH_DEAD;
+		s->g.phase_t = 0;
+	}
+}
+
+static void g_hurt_state(struct g_enemy *e, int st, uint16_t timer)
+{
+	e->state = (uint8_t)st;
+	e->timer = timer;
+	e->anim = 0;
+}
+
+void g_hurt_enemy(struct sim *s, int i, int dmg)
+{
+	struct g_enemy *e = &s->g.en[i];
+
+	if (e->state == G_E_DEAD)
+		return;
+	e->health = (int16_t)(e->health - dmg);
+	if (e->health <= 0) {
+		e->health = 0;
+		g_hurt_state(e, G_E_DEAD, 0);
+		e->flash = 0;
+		s->g.alive--;
+		s->g.kills++;
+		s->g.score += g_kinds[e->kind].score;
+		return;
+	}
+	if ((g_random(s) & 255) < g_pain_chance[e->kind])
+		g_hurt_state(e, G_E_PAIN, G_PAIN_TICKS);
+	else if (e->state == G_E_IDLE)
+		g_hurt_state(e, G_E_CHASE, 0);
+}

@@ -1,0 +1,194 @@
+/*
+ * Tests for engine/game/g_door.c (with USE from g_line.c, which starts the
+ * manual doors): a door behind a DR line opens to 4 below the lowest
+ * neighbouring ceiling, waits and closes; keys; the player walks through.
+ *
+ * Expected values come from Doom's rules, not from this code: a normal
+ * door moves 2 units a Doom tic (35 Hz) and waits 150 tics. At the sim's
+ * 60 Hz that is 2 * 35 / 60 units a tick, so 124 units take 62 tics =
+ * 62 * 60 / 35 = 106.3 ticks (the top is reached on tick 107), and the
+ * wait is 150 * 60 / 35 = 257.1 ticks (257).
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "engine/game/g_local.h"
+#include "engine/game/sim.h"
+#include "engine/map/map.h"
+#include "map_fixture.h"
+
+static const struct sim_settings play = { 1, 0, 1, 0, 0 };
+
+/* Room A (x 0..256, sector 0) | door (256..272, sector 1, floor and
+ * ceiling 0) | room B (272..528, sector 2); ceilings 128 but B's 100, so
+ * the lowest neighbour ceiling is 100 when `low_b`. Line 2 (x = 256, front
+ * A, back the door) has `special`. The player starts at (sx, 64) facing
+ * east. */
+static struct map *door_map(int special, int sx, int low_b)
+{
+	static const int v[][2] = {
+		{ 0, 0 }, { 0, 128 }, { 256, 128 }, { 256, 0 },
+		{ 272, 128 }, { 272, 0 }, { 528, 128 }, { 528, 0 },
+	};
+	struct fix_sector s[] = { { 0, 128, 160 }, { 0, 0, 160 }, { 0, low_b ? 100 : 128, 160 } };
+	static const struct fix_line l[] = {
+		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
+		{ 2, 4, 1, -1 }, { 4, 5, 1, 2 }, { 5, 3, 1, -1 },
+		{ 4, 6, 2, -1 }, { 6, 7, 2, -1 }, { 7, 5, 2, -1 },
+	};
+	struct fix_map f = { v, 8, s, 3, l, 10, sx, 64, 0 };
+	struct map *m = fix_alloc(&f);
+
+	assert_non_null(m);
+	m->lines[2].special = (uint16_t)special;
+	assert_int_equal(map_finish(m, NULL, 0), 0);
+	return m;
+}
+
+static void run(struct sim *s, const struct sim_cmd *c, int ticks)
+{
+	for (int i = 0; i < ticks; i++)
+		sim_tick(s, c);
+}
+
+static void use(struct sim *s)
+{
+	const struct sim_cmd u = { .buttons = SIM_BT_USE }, none = { 0 };
+
+	sim_tick(s, &u);
+	sim_tick(s, &none);
+}
+
+static fx_t door_ceil(const struct sim *s)
+{
+	return s->w.sec[1].ceil_h;
+}
+
+static void dr_door_opens_waits_and_closes(void **state)
+{
+	struct map *m = door_map(1, 200, 0);       /* DR: 56 units from the line */
+	struct sim s;
+	const struct sim_cmd u = { .buttons = SIM_BT_USE }, none = { 0 };
+	int t;
+	(void)state;
+	sim_init(&s, m, &play);
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(door_ceil(&s), 0);
+	sim_tick(&s, &u);                          /* tick 1: the door starts */
+	assert_int_equal(s.w.num_movers, 1);
+	assert_int_equal(s.w.mv[0].kind, G_MV_DOOR);
+	assert_true(door_ceil(&s) > 0);
+	run(&s, &none, 105);                       /* tick 106: not yet */
+	assert_true(door_ceil(&s) < 124 * FX_ONE);
+	assert_true(door_ceil(&s) > 120 * FX_ONE);
+	run(&s, &none, 1);                         /* tick 107: the top */
+	assert_int_equal(door_ceil(&s), 124 * FX_ONE);
+	/* it stays open for the wait, then comes down */
+	for (t = 0; t < 257 && door_ceil(&s) == 124 * FX_ONE; t++)
+		sim_tick(&s, &none);
+	assert_in_range(t, 256, 257);
+	/* and closes fully in about the time it took to open */
+	for (t = 0; t < 200 && s.w.num_movers > 0; t++)
+		sim_tick(&s, &none);
+	assert_in_range(t, 106, 109);
+	assert_int_equal(door_ceil(&s), 0);
+	map_free(m);
+}
+
+static void door_top_is_lowest_neighbour_ceiling_minus_4(void **state)
+{
+	struct map *m = door_map(1, 200, 1);       /* room B's ceiling 100 */
+	struct sim s;
+	const struct sim_cmd none = { 0 };
+	(void)state;
+	sim_init(&s, m, &play);
+	use(&s);
+	run(&s, &none, 150);
+	assert_int_equal(door_ceil(&s), 96 * FX_ONE);
+	map_free(m);
+}
+
+static void use_reaches_64_units_only(void **state)
+{
+	struct map *m = door_map(1, 190, 0);       /* 66 units away */
+	struct sim s;
+	const struct sim_cmd none = { 0 };
+	(void)state;
+	sim_init(&s, m, &play);
+	use(&s);
+	run(&s, &none, 30);
+	assert_int_equal(s.w.num_movers, 0);
+	assert_int_equal(door_ceil(&s), 0);
+	map_free(m);
+}
+
+static void open_stay_door_stays_open(void **state)
+{
+	struct map *m = door_map(31, 200, 0);      /* D1 open stay */
+	struct sim s;
+	const struct sim_cmd none = { 0 };
+	(void)state;
+	sim_init(&s, m, &play);
+	use(&s);
+	run(&s, &none, 1000);
+	assert_int_equal(door_ceil(&s), 124 * FX_ONE);
+	assert_int_equal(s.w.num_movers, 0);
+	map_free(m);
+}
+
+static void locked_door_wants_its_key(void **state)
+{
+	struct map *m = door_map(26, 200, 0);      /* DR blue */
+	struct sim s;
+	const struct sim_cmd none = { 0 };
+	(void)state;
+	sim_init(&s, m, &play);
+	use(&s);
+	run(&s, &none, 30);
+	assert_int_equal(door_ceil(&s), 0);
+	assert_int_equal(s.w.msg, G_MSG_BLUE_DOOR);
+	s.w.keys = G_KEY_RED | G_KEY_YELLOW;       /* the wrong colours */
+	use(&s);
+	run(&s, &none, 30);
+	assert_int_equal(door_ceil(&s), 0);
+	s.w.keys = G_KEY_BLUE_SKULL;               /* a skull of its colour will do */
+	use(&s);
+	run(&s, &none, 150);
+	assert_int_equal(door_ceil(&s), 124 * FX_ONE);
+	map_free(m);
+}
+
+static void the_player_walks_through_the_opened_door(void **state)
+{
+	struct map *m = door_map(1, 200, 0);
+	struct sim s;
+	const struct sim_cmd fwd = { .forward = 127 }, none = { 0 };
+	(void)state;
+	sim_init(&s, m, &play);
+	/* closed: walking east stops at the door line */
+	run(&s, &fwd, 60);
+	assert_int_equal(s.pl.sector, 0);
+	assert_true(s.pl.x <= 256 * FX_ONE - SIM_PLAYER_RADIUS);
+	use(&s);
+	run(&s, &none, 110);
+	run(&s, &fwd, 60);
+	assert_int_equal(s.pl.sector, 2);
+	map_free(m);
+}
+
+int main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(dr_door_opens_waits_and_closes),
+		cmocka_unit_test(door_top_is_lowest_neighbour_ceiling_minus_4),
+		cmocka_unit_test(use_reaches_64_units_only),
+		cmocka_unit_test(open_stay_door_stays_open),
+		cmocka_unit_test(locked_door_wants_its_key),
+		cmocka_unit_test(the_player_walks_through_the_opened_door),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
