@@ -2,7 +2,7 @@
 # Proves the layering rules of STYLE.md and engine/README.md on the sources
 # and the compiled objects:
 # - engine/ is folders by subsystem, and calls and includes go one way
-#   between them: core < map < game < render < ui, and gl (the OSMesa
+#   between them: core < map < sound < game < render < ui, and gl (the OSMesa
 #   plugin) above render beside ui. A folder may use its own and the ones
 #   below it, never one above or a sibling. Checked twice: on the
 #   `#include "engine/..."` lines, and on the compiled objects (each
@@ -36,16 +36,17 @@ fail=0
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-DIRS="core map game render ui"
+DIRS="core map sound game render ui"
 # Folders each folder may use (itself included).
 allowed() {
 	case $1 in
 	core) echo "core" ;;
 	map) echo "core map" ;;
-	game) echo "core map game" ;;
-	render) echo "core map game render" ;;
-	ui) echo "core map game render ui" ;;
-	gl) echo "core map game render gl" ;;
+	sound) echo "core map sound" ;;
+	game) echo "core map sound game" ;;
+	render) echo "core map sound game render" ;;
+	ui) echo "core map sound game render ui" ;;
+	gl) echo "core map sound game render gl" ;;
 	*) echo "" ;;
 	esac
 }
@@ -108,7 +109,7 @@ else
 			fail=1
 		fi
 	done < "$tmp/calls"
-	for d in core map game ui; do
+	for d in core map sound game ui; do
 		awk -v d="$d" '$1 == d && $3 == d { print $2, $4 }' "$tmp/calls" | sort -u > "$tmp/edges-$d"
 		if ! tsort "$tmp/edges-$d" > /dev/null 2> "$tmp/loop-$d"; then
 			echo "FAIL modules of engine/$d call each other in a loop:"
@@ -136,16 +137,17 @@ bad=$(grep -nwE 'float|double|long double' $src || true)
 if [ -n "$bad" ]; then
 	echo "FAIL engine uses floating point:"; echo "$bad"; fail=1
 fi
-bad=$(grep -rlE '#[[:space:]]*include[[:space:]]*<(GL|EGL)/' app config display engine input \
+bad=$(grep -rlE '#[[:space:]]*include[[:space:]]*<(GL|EGL)/' app config display audio engine input \
 	systemd tests tools 2>/dev/null | grep -vx 'engine/gl/rgl.c' || true)
 if [ -n "$bad" ]; then
 	echo "FAIL OSMesa/GL headers outside engine/gl/rgl.c:"; echo "$bad"; fail=1
 fi
 
 # ---- platform headers only in backends --------------------------------
-allowed_platform='^(display/dp_fbdev\.c|display/dp_term\.c|input/in_evdev\.c|input/in_tty\.c|input/ttyk\.c|input/in_keys\.c|input/hidr\.c|input/in_hid\.c|input/in_gpio\.c|systemd/svc\.c)$'
-for f in $(grep -lE '#[[:space:]]*include[[:space:]]*<(linux/|sys/ioctl|sys/kd|termios|libevdev|systemd/|hidapi|gpiod)' \
-	app/*.c app/*.h input/*.c input/*.h display/*.c display/*.h config/*.c config/*.h 2>/dev/null); do
+allowed_platform='^(audio/au_alsa\.c|display/dp_fbdev\.c|display/dp_term\.c|input/in_evdev\.c|input/in_tty\.c|input/ttyk\.c|input/in_keys\.c|input/hidr\.c|input/in_hid\.c|input/in_gpio\.c|systemd/svc\.c)$'
+for f in $(grep -lE '#[[:space:]]*include[[:space:]]*<(linux/|sys/ioctl|sys/kd|termios|libevdev|systemd/|hidapi|gpiod|alsa/)' \
+	app/*.c app/*.h input/*.c input/*.h display/*.c display/*.h audio/*.c audio/*.h \
+	config/*.c config/*.h 2>/dev/null); do
 	if ! echo "$f" | grep -qE "$allowed_platform"; then
 		echo "FAIL $f includes a platform header but is not a backend"; fail=1
 	fi
@@ -155,7 +157,7 @@ done
 shipped=""
 for d in $DIRS; do shipped="$shipped $(objs_of engine/"$d" | tr '\n' ' ')"; done
 shipped="$shipped $(objs_of engine/gl pic/ | tr '\n' ' ')"
-for d in app input display config systemd; do
+for d in app input display audio config systemd; do
 	shipped="$shipped $(objs_of "$d" | tr '\n' ' ')"
 done
 for o in $shipped; do
@@ -168,5 +170,5 @@ if [ -s "$tmp/names" ]; then
 	cat "$tmp/names"; fail=1
 fi
 
-[ "$fail" -eq 0 ] && echo "check-layers: engine folders call one way (core < map < game < render < ui, gl), no module loops outside the renderer; engine is portable and state-free; platform headers only in backends; exported names match their files"
+[ "$fail" -eq 0 ] && echo "check-layers: engine folders call one way (core < map < sound < game < render < ui, gl), no module loops outside the renderer; engine is portable and state-free; platform headers only in backends; exported names match their files"
 exit "$fail"
