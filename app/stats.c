@@ -16,6 +16,7 @@ void stats_init(struct stats *s, const char *const *names, int n)
 	memset(s, 0, sizeof(*s));
 	lat_reset(&s->frame_time);
 	lat_reset(&s->latency);
+	lat_reset(&s->sound);
 	s->nsrc = n < STATS_SRCS ? n : STATS_SRCS;
 	for (int k = 0; k < s->nsrc; k++) {
 		s->src_name[k] = names[k];
@@ -31,6 +32,12 @@ void stats_input(struct stats *s, int src, uint64_t t)
 		return;
 	if (s->src_pending_ns[src] == 0 || t < s->src_pending_ns[src])
 		s->src_pending_ns[src] = t;
+}
+
+void stats_sound(struct stats *s, uint64_t heard_ns)
+{
+	if (s->pending_ns && heard_ns > s->pending_ns)
+		lat_add_ns(&s->sound, heard_ns - s->pending_ns);
 }
 
 void stats_presented(struct stats *s, uint64_t t0, uint64_t t1)
@@ -82,6 +89,9 @@ void stats_print(const struct stats *s)
 	fprintf(stderr, "arcaded: summary: %s\n", line);
 	lat_format(&s->latency, "input-to-present latency", line, sizeof(line));
 	fprintf(stderr, "arcaded: summary: %s\n", line);
+	lat_format(&s->sound, "input-to-sound latency", line, sizeof(line));
+	fprintf(stderr, "arcaded: summary: %s; sound output: %" PRIu64 " underruns, %" PRIu64
+		" frames dropped\n", line, s->underruns, s->audio_dropped);
 	for (int k = 0; k < s->nsrc; k++) {
 		char name[64];
 		if (!s->src[k].count)

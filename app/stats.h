@@ -5,7 +5,10 @@
  * (render + present), and input-to-present latency, overall and per kind
  * of input source (each input backend, scripts): from the kernel's stamp
  * of the first event that changed an action to the end of the present
- * that first showed it.
+ * that first showed it. And sound: input-to-sound latency (from the
+ * first input event of a tick in which a sound starts to the time the
+ * sound card plays that sound's first audible sample, as the output
+ * reports its queue), the output's underruns and the frames it dropped.
  */
 #ifndef ARCADED_APP_STATS_H
 #define ARCADED_APP_STATS_H
@@ -17,13 +20,14 @@
 #define STATS_SRCS 8
 
 struct stats {
-	struct lat_series frame_time, latency;
+	struct lat_series frame_time, latency, sound;
 	struct lat_series src[STATS_SRCS];
 	const char *src_name[STATS_SRCS];  /* borrowed */
 	int nsrc;
 	uint64_t pending_ns;               /* earliest unpresented input event, 0 none */
 	uint64_t src_pending_ns[STATS_SRCS];
 	uint64_t start_ns, ticks, frames, dropped;
+	uint64_t underruns, audio_dropped;   /* of the sound output */
 };
 
 /* Empty statistics of sources names[0..n) (at most STATS_SRCS; the
@@ -38,6 +42,10 @@ void stats_input(struct stats *s, int src, uint64_t t);
 /* A frame was drawn from t0 and presented at t1: frame time, and the
  * latency of every input waiting for it. */
 void stats_presented(struct stats *s, uint64_t t0, uint64_t t1);
+
+/* A sound that began this tick is heard at heard_ns: the latency of the
+ * input waiting for this tick's present (when there is one). */
+void stats_sound(struct stats *s, uint64_t heard_ns);
 
 /* Prints the summary lines ("arcaded: summary: ...") on stderr; only the
  * sources that gave input get a latency line. */

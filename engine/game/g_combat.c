@@ -68,6 +68,7 @@ void g_fire(struct sim *s)
 	s->pl.ammo--;
 	s->pl.refire = G_REFIRE;
 	g->shot_t = 0;
+	g_sound_play(s, SFX_PISTOL, G_SRC_WEAPON);
 	/* every living enemy whose circle the ray enters within range */
 	for (int i = 0; i < g->num_enemies; i++) {
 		const struct g_enemy *e = &g->en[i];
@@ -115,6 +116,8 @@ void g_fire(struct sim *s)
 		g->shot_x = (fx_t)(p->x + ((dx * t) >> FX_SHIFT));
 		g->shot_y = (fx_t)(p->y + ((dy * t) >> FX_SHIFT));
 		g->shot_z = p->viewz;
+		if (g->shot == G_SHOT_WALL)
+			g_sound_start(s, SFX_WALLHIT, g->shot_x, g->shot_y, G_SRC_PUFF);
 	}
 }
 
@@ -143,5 +146,6 @@ void g_pickups_tick(struct sim *s)
 		}
 		k->taken = 1;
 		p->bonus = G_BONUS_TICKS;
+		g_sound_play(s, SFX_PICKUP, G_SRC_ITEM);
 	}
 }

@@ -30,6 +30,22 @@ static const uint8_t g_speed_pct[4] = { 80, 100, 115, 130 };
 /* Chance (of 256) that a hit makes an enemy flinch, per kind. */
 static const uint8_t g_pain_chance[G_KINDS] = { 200, 80, 128 };
 
+/* Each kind's sounds: sight, attack, pain, death. */
+enum { G_CRY_SIGHT, G_CRY_ATTACK, G_CRY_PAIN, G_CRY_DEATH, G_CRIES };
+static const uint8_t g_cries[G_KINDS][G_CRIES] = {
+	[G_GRUNT] = { SFX_GRUNT_SIGHT, SFX_GRUNT_ATTACK, SFX_GRUNT_PAIN, SFX_GRUNT_DEATH },
+	[G_BRUTE] = { SFX_BRUTE_SIGHT, SFX_BRUTE_ATTACK, SFX_BRUTE_PAIN, SFX_BRUTE_DEATH },
+	[G_SENTRY] = { SFX_SENTRY_SIGHT, SFX_SENTRY_ATTACK, SFX_SENTRY_PAIN, SFX_SENTRY_DEATH },
+};
+
+/* Enemy i's cry, where it stands; its next cry cuts this one. */
+static void g_cry(struct sim *s, int i, int cry)
+{
+	const struct g_enemy *e = &s->g.en[i];
+
+	g_sound_start(s, g_cries[e->kind % G_KINDS][cry], e->x, e->y, (uint16_t)G_SRC_ENEMY(i));
+}
+
 fx_t g_enemy_damage(const struct sim *s, int kind)
 {
 	int64_t pct = g_damage_pct[g_difficulty(s)] + 25 * (int64_t)s->g.loop;
@@ -186,8 +202,10 @@ static void g_enemy_tick(struct sim *s, int i)
 	switch (e->state) {
 	case G_E_IDLE:
 		if ((s->tick + (uint32_t)i) % G_IDLE_LOOK == 0 && g_within(s, e, k->sight) &&
-		    g_sees(s, e))
+		    g_sees(s, e)) {
 			g_set_state(e, G_E_CHASE, 0);
+			g_cry(s, i, G_CRY_SIGHT);
+		}
 		return;
 	case G_E_PAIN:
 		if (e->timer)
@@ -217,6 +235,7 @@ static void g_enemy_tick(struct sim *s, int i)
 	if (e->timer == 0) {
 		e->timer = k->period;
 		e->flash = G_FLASH_TICKS;
+		g_cry(s, i, G_CRY_ATTACK);
 		g_hurt_player(s, g_enemy_damage(s, e->kind));
 	}
 }
@@ -231,7 +250,10 @@ void g_hurt_player(struct sim *s, fx_t dmg)
 		s->pl.health = 0;
 		s->g.phase = G_PH_DEAD;
 		s->g.phase_t = 0;
+		g_sound_play(s, SFX_PLAYER_DEATH, G_SRC_PLAYER);
+		return;
 	}
+	g_sound_play(s, SFX_PLAYER_HURT, G_SRC_PLAYER);
 }
 
 void g_enemies_tick(struct sim *s)
@@ -254,10 +276,14 @@ void g_hurt_enemy(struct sim *s, int i, int dmg)
 		s->g.alive--;
 		s->g.kills++;
 		s->g.score += g_kinds[e->kind].score;
+		g_cry(s, i, G_CRY_DEATH);
 		return;
 	}
-	if ((g_random(s) & 255) < g_pain_chance[e->kind])
+	if ((g_random(s) & 255) < g_pain_chance[e->kind]) {
 		g_set_state(e, G_E_PAIN, G_PAIN_TICKS);
-	else if (e->state == G_E_IDLE)
+		g_cry(s, i, G_CRY_PAIN);
+	} else if (e->state == G_E_IDLE) {
 		g_set_state(e, G_E_CHASE, 0);
+		g_cry(s, i, G_CRY_SIGHT);
+	}
 }

@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 
+#include "engine/game/g_sound.h"
 #include "engine/game/sim.h"
 
 struct map;

@@ -15,7 +15,7 @@
 
 #define U(v) fx_from_int(v)
 
-static const struct sim_settings normal = { 1, 0, 1, 1, 3 };
+static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1 };
 
 static const struct sim_cmd idle = { 0 };
 static const struct sim_cmd fire = { .buttons = SIM_BT_FIRE };

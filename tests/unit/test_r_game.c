@@ -17,7 +17,7 @@
 #include "engine/render/r_main.h"
 #include "g_fixture.h"
 
-static const struct sim_settings play = { 1, 0, 1, 1, 3 };
+static const struct sim_settings play = { 1, 0, 1, 1, 3, 100, 1 };
 
 static void sprites_follow_the_state(void **state)
 {

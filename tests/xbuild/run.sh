@@ -37,7 +37,7 @@ ok() { say "PASS $*"; pass=$((pass + 1)); }
 bad() { say "FAIL $*"; fail=$((fail + 1)); }
 
 # ---- static checks: what would make builds differ ----------------------
-if grep -nE '\b(float|double)\b|<math\.h>' engine/core/*.c engine/core/*.h engine/map/*.c engine/map/*.h engine/game/*.c engine/game/*.h engine/render/*.c engine/render/*.h engine/ui/*.c engine/ui/*.h >"$tmp/fp" 2>/dev/null; then
+if grep -nE '\b(float|double)\b|<math\.h>' engine/core/*.c engine/core/*.h engine/map/*.c engine/map/*.h engine/sound/*.c engine/sound/*.h engine/game/*.c engine/game/*.h engine/render/*.c engine/render/*.h engine/ui/*.c engine/ui/*.h >"$tmp/fp" 2>/dev/null; then
 	bad "floating point in the engine (fp contraction and x87/NEON differences):"
 	cat "$tmp/fp"
 else
@@ -52,7 +52,7 @@ fi
 # ---- builds --------------------------------------------------------------
 WARN="-std=c11 -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes"
 FLAGS="$WARN -fno-strict-aliasing -I. -D_GNU_SOURCE"
-SRC="tests/xbuild/replay.c $(ls engine/core/*.c engine/map/*.c engine/game/*.c engine/render/*.c engine/ui/*.c | tr '\n' ' ') input/rec.c input/scr.c input/act.c input/io.c input/txt.c app/ct.c app/view.c app/demo.c app/cmd.c"
+SRC="tests/xbuild/replay.c $(ls engine/core/*.c engine/map/*.c engine/sound/*.c engine/game/*.c engine/render/*.c engine/ui/*.c | tr '\n' ' ') input/rec.c input/rec_check.c input/scr.c input/act.c input/io.c input/txt.c app/ct.c app/view.c app/demo.c app/cmd.c app/hear.c"
 build() { # $1 name; rest: compiler and flags
 	name=$1; shift
 	# shellcheck disable=SC2086
