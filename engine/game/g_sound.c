@@ -166,12 +166,13 @@ void g_sound_age(struct sim *s)
 		if (c->age >= c->len)
 			g_sound_free(c);
 	}
+	/* the credit's chime, G_CREDIT_DELAY ticks after the coin that made it */
+	if (s->snd.credit_t && --s->snd.credit_t == 0)
+		g_sound_play(s, SFX_CREDIT, G_SRC_CREDIT);
 }
 
 void g_sound_follow(struct sim *s)
 {
-	if (s->snd.credit_t && --s->snd.credit_t == 0)
-		g_sound_play(s, SFX_CREDIT, G_SRC_CREDIT);
 	for (int i = 0; i < G_SND_CHANNELS; i++) {
 		struct g_schan *c = &s->snd.ch[i];
 		int vol, sep;

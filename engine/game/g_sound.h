@@ -129,12 +129,12 @@ void g_sound_stop(struct sim *s, uint16_t src);
 void g_sound_clear(struct sim *s, int cabinet);
 
 /* At the start of each tick: the sounds grow a tick older; finished
- * ones free their channel. */
+ * ones free their channel; the credit's chime when it is due. */
 void g_sound_age(struct sim *s);
 
-/* At the end of each tick: the credit chime when due; volume and
- * separation of the sounds in the map again, from where the player and
- * the enemies are now (out of hearing: stopped). */
+/* At the end of each tick: volume and separation of the sounds in the
+ * map again, from where the player and the enemies are now (out of
+ * hearing: stopped). */
 void g_sound_follow(struct sim *s);
 
 /* Whether attract mode's sounds are heard now (the setting, this cycle). */

@@ -37,9 +37,9 @@ enum {
 
 static const struct syn_part syn_parts[] = {
 	/* the player's pistol: a crack of white noise, a rumble, a thump */
-	P(PISTOL, NOISE, 0, 150, 11025, 11025, 22000, 0, 5)
-	P(PISTOL, NOISE, 0, 250, 3000, 1200, 9000, 0, 10)
-	P(PISTOL, SQUARE, 0, 120, 180, 50, 10000, 0, 0)
+	P(PISTOL, NOISE, 0, 150, 11025, 11025, 16000, 0, 5)
+	P(PISTOL, NOISE, 0, 250, 3000, 1200, 7000, 0, 10)
+	P(PISTOL, SQUARE, 0, 120, 180, 50, 8000, 0, 0)
 	/* a bullet on a wall: a short tick and a ricochet's glide */
 	P(WALLHIT, NOISE, 0, 50, 8000, 8000, 12000, 0, 0)
 	P(WALLHIT, TRI, 0, 80, 2400, 1200, 5000, 0, 0)
@@ -47,9 +47,9 @@ static const struct syn_part syn_parts[] = {
 	P(GRUNT_SIGHT, SAW, 0, 200, 150, 220, 11000, 20, 40)
 	P(GRUNT_SIGHT, SAW, 200, 150, 220, 160, 9000, 5, 20)
 	P(GRUNT_SIGHT, NOISE, 0, 300, 1500, 1500, 2500, 20, 40)
-	P(GRUNT_ATTACK, NOISE, 0, 180, 11025, 11025, 20000, 0, 5)
-	P(GRUNT_ATTACK, NOISE, 0, 300, 2000, 800, 8000, 0, 10)
-	P(GRUNT_ATTACK, SQUARE, 0, 150, 140, 45, 9000, 0, 0)
+	P(GRUNT_ATTACK, NOISE, 0, 180, 11025, 11025, 15000, 0, 5)
+	P(GRUNT_ATTACK, NOISE, 0, 300, 2000, 800, 7000, 0, 10)
+	P(GRUNT_ATTACK, SQUARE, 0, 150, 140, 45, 8000, 0, 0)
 	P(GRUNT_PAIN, SAW, 0, 300, 330, 200, 12000, 10, 20)
 	P(GRUNT_PAIN, SQUARE, 0, 300, 165, 100, 4000, 10, 20)
 	P(GRUNT_DEATH, SAW, 0, 700, 280, 70, 12000, 10, 20)
