@@ -52,7 +52,7 @@ static void out_audio_try(struct out_audio *o)
 	if (!o->silent_said)
 		say("sound: %s %s: %s; %s", o->be->name, o->arg, why[0] ? why : strerror(-rc),
 		    o->be->live ? "no sound card: playing silent (looking again every second)"
-				: "no sound");
+				: "no sound output");
 	o->silent_said = 1;
 }
 

@@ -104,6 +104,19 @@ static int alsa_sw(struct au_dev *d)
 	return rc;
 }
 
+/* libasound's own messages ("ALSA lib confmisc.c:855: cannot find card
+ * '0'") go nowhere: a cabinet without a card looks for one every second,
+ * and what failed is said once, by the app, with snd_strerror's reason. */
+__attribute__((format(printf, 5, 6)))
+static void alsa_quiet(const char *file, int line, const char *fn, int err, const char *fmt, ...)
+{
+	(void)file;
+	(void)line;
+	(void)fn;
+	(void)err;
+	(void)fmt;
+}
+
 /* -ENODEV for errors that mean the device is gone or unusable now. */
 static int alsa_gone(int rc)
 {
@@ -122,6 +135,7 @@ static int alsa_open(const char *arg, uint32_t rate, struct au_dev **out, char *
 		return -ENOMEM;
 	}
 	d->rate = rate;
+	snd_lib_error_set_handler(alsa_quiet);
 	rc = snd_pcm_open(&d->pcm, arg, SND_PCM_STREAM_PLAYBACK, SND_PCM_NONBLOCK);
 	if (rc < 0) {
 		snprintf(why, whylen, "%s", snd_strerror(rc));
@@ -130,8 +144,10 @@ static int alsa_open(const char *arg, uint32_t rate, struct au_dev **out, char *
 		return -ENODEV;
 	}
 	rc = alsa_hw(d, 1, why, whylen);
-	if (rc < 0 && why[0] == '\0')
+	if (rc < 0) {
+		why[0] = '\0';
 		rc = alsa_hw(d, 0, why, whylen);   /* the device's own sizes */
+	}
 	if (rc == 0)
 		rc = alsa_sw(d);
 	if (rc == 0) {
@@ -261,6 +277,7 @@ static int alsa_list(FILE *out)
 {
 	int card = -1, n = 0;
 
+	snd_lib_error_set_handler(alsa_quiet);
 	while (snd_card_next(&card) == 0 && card >= 0) {
 		char hw[16], *name = NULL, *lname = NULL;
 		snd_ctl_t *ctl;

@@ -75,14 +75,14 @@ static int wav_open(const char *arg, uint32_t rate, struct au_dev **out, char *w
 	d->fd = open(arg, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
 	if (d->fd < 0) {
 		rc = -errno;
-		snprintf(why, whylen, "%s: %s", arg, strerror(-rc));
+		snprintf(why, whylen, "%s", strerror(-rc));
 		free(d);
 		return rc;
 	}
 	wav_header(h, rate, 0);
 	rc = io_write_all(d->fd, h, WAV_HEADER);
 	if (rc < 0) {
-		snprintf(why, whylen, "%s: %s", arg, strerror(-rc));
+		snprintf(why, whylen, "%s", strerror(-rc));
 		close(d->fd);
 		free(d);
 		return rc;

@@ -12,6 +12,7 @@ libevdev-dev
 libhidapi-dev
 libgpiod-dev
 libusb-1.0-0-dev
+libasound2-dev
 libpng-dev
 libosmesa6-dev
 libsystemd-dev
