@@ -97,6 +97,13 @@ $(BUILD)/tests/%: tests/unit/%.c $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) $(TEST_CFLAGS) -MMD -MP -o $@ $< $(LIB) \
 		$(LDLIBS) $(TEST_LIBS)
 
+# Test tools that link the library: sndfind finds a sound in a recording of
+# what was played (the script and VM sound tests).
+TEST_TOOLS := $(BUILD)/tests/sndfind
+$(BUILD)/tests/sndfind: tests/sound/sndfind.c $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -o $@ $< $(LIB) $(LDLIBS)
+
 $(BUILD)/tools/%: tools/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< -lm
@@ -107,7 +114,7 @@ $(BUILD)/fuzz/%: tests/fuzz/%.c $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -fsanitize=fuzzer -o $@ $< $(LIB) $(LDLIBS)
 
-tests: $(TEST_BIN)
+tests: $(TEST_BIN) $(TEST_TOOLS)
 tools: $(TOOL_BIN)
 fuzzers: $(FUZZ_BIN)
 
