@@ -55,13 +55,18 @@ UDEV_RULESDIR ?= /lib/udev/rules.d
 SYSUSERSDIR ?= /usr/lib/sysusers.d
 TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
-.PHONY: all setup run test test-unit test-asan test-script test-replay test-clang \
-	check-layers check-state check-tables check-systemd check-install check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
+.PHONY: all setup setup-test run test deb image test-image test-pkg test-unit test-asan test-script \
+	test-replay test-clang check-layers check-state check-tables check-systemd check-install \
+	check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
 
 all: $(BIN) $(GL_SO) tools
 
 setup:
 	@scripts/setup.sh
+
+# What the tests, the package and the image need as well.
+setup-test:
+	@scripts/setup.sh test
 
 # `make run` goes straight into play; RUN_ARGS= (empty) boots into attract.
 RUN_ARGS ?= --play
@@ -69,8 +74,30 @@ run: setup
 	@$(MAKE) --no-print-directory all
 	./$(BIN) $(RUN_ARGS)
 
-test: setup
+test: setup-test
 	@tests/run_all.sh
+
+# The Debian package (debian/, debhelper) of the work tree, version from git:
+# build/deb/arcaded_VERSION_ARCH.deb, linked as build/deb/arcaded.deb;
+# lintian's findings in build/deb/lintian.txt (docs/packaging.md).
+deb: setup-test
+	@scripts/deb.sh
+
+# The cabinet's disk image (mmdebstrap, no loop device, no mount) with that
+# package installed: build/image/arcaded.img (docs/packaging.md). Cached in
+# ~/.cache/arcaded-image by its inputs.
+image: deb
+	@scripts/image.sh build/deb/arcaded.deb build/image
+
+# The image boots in QEMU (UEFI) to the attract screen and survives
+# POWERCUTS hard power cuts (default 20).
+POWERCUTS ?= 20
+test-image: image
+	@POWERCUTS=$(POWERCUTS) tests/image/run.sh build/image/arcaded.img
+
+# Install, start, stop, remove and purge of the package in a clean chroot.
+test-pkg: deb
+	@tests/pkg/run.sh build/deb/arcaded.deb
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -142,7 +169,7 @@ check-state:
 	@tests/check_state.sh
 
 # Appliance tests in a QEMU VM: systemd, the installed unit, real devices (docs/vm.md).
-test-vm: setup
+test-vm: setup-test
 	@BUILD=$(BUILD) tests/vm/run.sh
 
 check-systemd:

@@ -5,6 +5,7 @@
  */
 #include "app/app.h"
 
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -171,6 +172,14 @@ static void step_persist(void *ctx, struct loop_tick *k)
 	keep_tick(&a->keep, &a->sim, a->scene.frame.w, a->scene.frame.h);
 }
 
+/* The service's status while no display shows the game. */
+static void app_status_no_display(const struct app *a)
+{
+	if (!a->headless)
+		svc_status("no display: %s; the game runs, looking for one",
+			   a->scene.missing);
+}
+
 static void step_present(void *ctx, struct loop_tick *k)
 {
 	struct app *a = ctx;
@@ -180,6 +189,9 @@ static void step_present(void *ctx, struct loop_tick *k)
 	if (a->o->no_render)
 		return;
 	t0 = in_now_ns();
+	/* a display that was missing is looked for again */
+	if (scene_poll_display(&a->scene, t0) == SCENE_STILL_MISSING)
+		app_status_no_display(a);
 	scene_show(&a->scene, &a->sim, demo_under(&a->demo, &a->sim),
 		   a->ctl.wiz_on ? &a->ctl.wiz : NULL);
 	stats_presented(&a->stats, t0, in_now_ns());
@@ -205,8 +217,10 @@ static void step_notify(void *ctx, struct loop_tick *k)
 	struct app *a = ctx;
 
 	(void)k;
-	if (!a->ready && !a->headless) {
-		/* READY=1 only once the first frame is on the screen. */
+	if (!a->ready && !a->headless && a->scene.shown) {
+		/* READY=1 only once a frame was presented on the display asked
+		 * for: not while a missing one is waited for, not after a
+		 * present that failed. */
 		svc_ready();
 		a->ready = 1;
 	}
@@ -281,11 +295,14 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 		*rw = o->size_w;
 		*rh = o->size_h;
 	}
+	spec.stop = sig_stop_flag();   /* a stop signal ends a long load */
 	rc = ct_load(&a->ct, &spec, err, sizeof(err));
 	if (rc < 0) {
-		say("%s", err);
+		say_err("%s", err);
 		return rc;
 	}
+	if (a->ct.note[0])
+		say("%s", a->ct.note);
 	say("content: %s, %u sectors, %u lines, %d light(s)%s", a->ct.what, a->ct.map->num_sectors,
 	    a->ct.map->num_lines, a->ct.nlights,
 	    a->ct.map->missing_textures ? ", some textures missing (drawn as a checker)" : "");
@@ -354,7 +371,7 @@ static int setup(struct app *a)
 			 a->hear.rate, a->ct.sounds->hash);
 	rc = demo_init(&a->demo, &a->ct, err, sizeof(err));
 	if (rc < 0) {
-		say("%s", err);
+		say_err("%s", err);
 		return rc;
 	}
 	rc = scene_init(&a->scene, c, &a->ct, o->gl, rw, rh);
@@ -364,6 +381,8 @@ static int setup(struct app *a)
 		rc = out_audio_open(&a->audio, c, a->hear.rate, a->headless);
 	if (rc < 0)
 		return rc;
+	if (a->scene.waiting)
+		app_status_no_display(a);
 
 	/* latency by source: each input backend, then scripts */
 	a->nkinds = slot_kinds(c, a->kinds);
@@ -374,6 +393,7 @@ static int setup(struct app *a)
 	ctl_load(&a->ctl, c, o->config_dir, o->bindings, !a->headless, persist, &a->stats,
 		 &a->tape);
 	slot_init(&a->slots, &ctl_hooks, &a->ctl);
+	a->slots.log_nodes = c->input.log;
 	if (!a->headless)
 		slot_open(&a->slots, a->kinds, a->nkinds, a->scene.dpb);
 
@@ -415,7 +435,7 @@ static int finish(struct app *a)
 	if (o->screenshot) {
 		int rc = shot_png(o->screenshot, f->px, f->w, f->h, f->pitch, a->ct.tex->pal.rgb);
 		if (rc < 0) {
-			say("%s: %s", o->screenshot, strerror(-rc));
+			say_err("%s: %s", o->screenshot, strerror(-rc));
 			code = APP_SETUP_FAILED;
 		}
 	}
@@ -423,7 +443,7 @@ static int finish(struct app *a)
 		code = APP_EXPECT_FAILED;
 	if (a->script.scr) {
 		if (a->script.failures)
-			say("%s: %d check(s) failed", o->script, a->script.failures);
+			say_err("%s: %d check(s) failed", o->script, a->script.failures);
 		code = a->script.failures ? APP_EXPECT_FAILED : APP_OK;
 	}
 	/* The summary while everything is still open: its fd count is the
@@ -437,15 +457,17 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 {
 	struct app *a = calloc(1, sizeof(*a));
 	int code = APP_SETUP_FAILED;
+	int rc;
 
 	if (!a) {
-		say("out of memory");
+		say_err("out of memory");
 		return APP_SETUP_FAILED;
 	}
 	a->cfg = c;
 	a->o = o;
 	sig_install();
-	if (setup(a) == 0) {
+	rc = setup(a);
+	if (rc == 0) {
 		uint64_t now;
 		a->wd_interval = a->headless ? 0 : svc_watchdog_interval_ns();
 		now = in_now_ns();
@@ -454,6 +476,8 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 		a->hang_at = sig_fault_setup();
 		loop_run(&app_steps, a);
 		code = finish(a);
+	} else if (rc == -ECANCELED && sig_stop()) {
+		code = APP_OK;                 /* stopped by a signal while loading: an ordinary end */
 	}
 	teardown(a);
 	free(a);

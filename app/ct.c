@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/lim.h"
 #include "engine/map/grid.h"
 #include "engine/map/lmap.h"
 #include "engine/map/lvl_builtin.h"
@@ -24,7 +25,22 @@ int ct_read_file(const char *path, uint8_t **buf, size_t *len)
 	return io_read_file(path, CT_FILE_MAX, IO_REGULAR, buf, len);
 }
 
-static int load_wads(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
+/* The loaders' stop hook: the app's signal flag. */
+static int ct_stop_fn(void *ctx)
+{
+	return *(const volatile sig_atomic_t *)ctx != 0;
+}
+
+static int ct_stopped(const struct ct_spec *s, char *err, size_t errlen)
+{
+	if (!s->stop || !*s->stop)
+		return 0;
+	snprintf(err, errlen, "loading stopped by a signal");
+	return -ECANCELED;
+}
+
+static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_stop *stop,
+		     char *err, size_t errlen)
 {
 	uint8_t *bufs[CT_MAX_WADS] = { 0 };
 	char names[64][9];
@@ -40,9 +56,11 @@ static int load_wads(struct ct *c, const struct ct_spec *s, char *err, size_t er
 			snprintf(err, errlen, "%s: %s", s->wads[i], strerror(-rc));
 		else
 			rc = wad_add(w, bufs[i], len, s->wads[i], err, errlen);
+		if (rc == 0)
+			rc = ct_stopped(s, err, errlen);
 	}
 	if (rc == 0)
-		rc = tex_load_wad(w, &c->tex, err, errlen);
+		rc = tex_load_wad_lim(w, stop, &c->tex, err, errlen);
 	if (rc == 0) {
 		/* the WADs' sounds (copied out: the images go below) */
 		rc = snd_load_wad(w, &c->sounds, c->sound_note, sizeof(c->sound_note));
@@ -59,8 +77,10 @@ static int load_wads(struct ct *c, const struct ct_spec *s, char *err, size_t er
 			name = names[0];
 		}
 		if (rc == 0 && !s->grid) {
-			rc = map_load_wad(w, c->tex, name, &c->maps[0], err, errlen);
+			rc = map_load_wad_lim(w, c->tex, name, stop, &c->maps[0], err, errlen);
 			c->nmaps = rc == 0;
+			/* the loader takes the last marker of the name */
+			snprintf(c->src, sizeof c->src, "%s", wad_file(w, wad_find(w, name)));
 		}
 		if (rc == 0) {
 			tex_pick_sky(c->tex, name);
@@ -76,7 +96,8 @@ static int load_wads(struct ct *c, const struct ct_spec *s, char *err, size_t er
 	return rc;
 }
 
-static int load_grid(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
+static int load_grid(struct ct *c, const struct ct_spec *s, const struct lim_stop *stop,
+		     char *err, size_t errlen)
 {
 	struct grid_names names;
 	uint8_t *buf = NULL;
@@ -102,7 +123,8 @@ static int load_grid(struct ct *c, const struct ct_spec *s, char *err, size_t er
 		text = (const char *)buf;
 	}
 	grid_names_from_tex(&names, c->tex);
-	rc = grid_parse(text, len, s->grid, &names, &c->maps[0], err, errlen);
+	snprintf(c->src, sizeof c->src, "%s", s->grid);
+	rc = grid_parse_lim(text, len, s->grid, &names, stop, &c->maps[0], err, errlen);
 	c->nmaps = rc == 0;
 	free(buf);
 	if (rc == 0)
@@ -110,9 +132,13 @@ static int load_grid(struct ct *c, const struct ct_spec *s, char *err, size_t er
 	return rc;
 }
 
-static int load_lights(struct ct *c, int i, char *err, size_t errlen)
+/* A map over a light-map limit is drawn without light maps (lights are
+ * cosmetic; the cabinet keeps running), and c->note says so. */
+static int load_lights(struct ct *c, int i, const struct lim_stop *stop, char *err,
+		       size_t errlen)
 {
 	struct lmap_light *lights;
+	char why[160] = "";
 	int n, rc;
 
 	n = lmap_lights_from_map(c->maps[i], LMAP_DECOR, NULL, 0);
@@ -120,13 +146,26 @@ static int load_lights(struct ct *c, int i, char *err, size_t errlen)
 		c->nlights = n;
 	if (n <= 0)
 		return 0;
-	lights = calloc((size_t)n, sizeof(*lights));
-	if (!lights)
-		return -ENOMEM;
-	lmap_lights_from_map(c->maps[i], LMAP_DECOR, lights, n);
-	rc = lmap_new(c->maps[i], lights, n, &c->lms[i]);
-	free(lights);
-	if (rc < 0)
+	if (n > LMAP_MAX_LIGHTS) {
+		rc = -E2BIG;
+		snprintf(why, sizeof why, "%d lights, more than the limit of %d (LMAP_MAX_LIGHTS)",
+			 n, LMAP_MAX_LIGHTS);
+	} else {
+		lights = calloc((size_t)n, sizeof(*lights));
+		if (!lights)
+			return -ENOMEM;
+		lmap_lights_from_map(c->maps[i], LMAP_DECOR, lights, n);
+		rc = lmap_new_lim(c->maps[i], lights, n, stop, &c->lms[i], why, sizeof why);
+		free(lights);
+	}
+	if (rc == -E2BIG) {
+		snprintf(c->note, sizeof c->note, "%s: %s: THINGS: %s: drawn without light maps",
+			 c->src, c->maps[i]->name, why);
+		return 0;
+	}
+	if (rc == -ECANCELED)
+		snprintf(err, errlen, "%s: %s: THINGS: %s", c->src, c->maps[i]->name, why);
+	else if (rc < 0)
 		snprintf(err, errlen, "light maps of %s: %s", c->maps[i]->name, strerror(-rc));
 	return rc;
 }
@@ -149,6 +188,7 @@ static int load_builtin(struct ct *c, int first, char *err, size_t errlen)
 	}
 	if (rc < 0)
 		return rc;
+	snprintf(c->src, sizeof c->src, "built-in levels");
 	/* The built-in levels' texture numbers index tex_builtin's set
 	 * (map.h: lvl_builtin). */
 	rc = tex_builtin(&c->tex);
@@ -163,15 +203,16 @@ static int load_builtin(struct ct *c, int first, char *err, size_t errlen)
 
 int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
 {
+	struct lim_stop stop = { ct_stop_fn, (void *)(uintptr_t)s->stop, NULL };
+	const struct lim_stop *hook = s->stop ? &stop : NULL;
 	int rc;
 
 	memset(c, 0, sizeof(*c));
-	if (s->nwads > 0)
-		rc = load_wads(c, s, err, errlen);
-	else
-		rc = 0;
+	rc = ct_stopped(s, err, errlen);
+	if (rc == 0 && s->nwads > 0)
+		rc = load_wads(c, s, hook, err, errlen);
 	if (rc == 0 && s->grid)
-		rc = load_grid(c, s, err, errlen);
+		rc = load_grid(c, s, hook, err, errlen);
 	else if (rc == 0 && s->nwads == 0)
 		rc = load_builtin(c, s->level, err, errlen);
 	if (rc == 0 && !c->sounds) {
@@ -180,7 +221,7 @@ int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
 			snprintf(err, errlen, "built-in sounds: %s", strerror(-rc));
 	}
 	for (int i = 0; rc == 0 && s->lights && i < c->nmaps; i++)
-		rc = load_lights(c, i, err, errlen);
+		rc = load_lights(c, i, hook, err, errlen);
 	c->map = c->maps[0];
 	if (rc < 0)
 		ct_free(c);

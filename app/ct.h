@@ -9,6 +9,7 @@
 #ifndef ARCADED_APP_CT_H
 #define ARCADED_APP_CT_H
 
+#include <signal.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -27,6 +28,10 @@ struct ct_spec {
 	const char *grid;       /* grid map file, or "builtin" for GRID1 */
 	int level;              /* built-in level, 1-based (no WAD, no grid) */
 	int lights;             /* build light maps (arcaded lights + Doom lamps) */
+	/* The app's stop flag (set by its SIGTERM/SIGINT handler), or NULL:
+	 * the loaders poll it (engine/core/lim.h) and a load ends within
+	 * well under a second of it becoming nonzero. */
+	const volatile sig_atomic_t *stop;
 };
 
 struct ct {
@@ -43,10 +48,16 @@ struct ct {
 	/* malformed sound lumps, each played by its built-in sound instead:
 	 * "DSPEDTH: format 0, not 3 (Doom's digital sound)"; "" none */
 	char sound_note[512];
+	char src[160];          /* the file the maps came from, for messages */
+	char note[400];         /* what was left out and why ("" if nothing): a
+				 * map over a light-map limit is drawn without
+				 * light maps (issue 13 item 8); the app logs it */
 };
 
 /* Loads the content s names. 0, or -errno with err naming the file, lump
- * or entry. On error c holds nothing (ct_free is still safe). */
+ * or entry: -E2BIG when a file is over a loader's limit, -ECANCELED when
+ * s->stop became nonzero during the load. On error c holds nothing
+ * (ct_free is still safe). */
 int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen);
 
 /* Reads the whole regular file path (at most 512 MiB: a WAD) into *buf, a

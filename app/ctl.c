@@ -14,42 +14,59 @@
 #include "app/tape.h"
 #include "config/st.h"
 
-void ctl_load(struct ctl *c, const struct cfg *cfg, const char *config_dir, const char *extra,
-	      int live, int persist, struct stats *stats, const struct tape *tape)
+void ctl_bindings_load(struct bind_table *b, const struct cfg *cfg, const char *config_dir,
+		       const char *extra, int *saved)
 {
 	char path[CFG_PATH_MAX + 32];
-	int rc, saved = 0;
+	int rc;
 
-	c->cfg = cfg;
-	c->live = live;
-	c->persist = persist;
-	c->stats = stats;
-	c->tape = tape;
-	bind_defaults(&c->binds);
+	bind_defaults(b);
+	*saved = 0;
 	/* Until the wizard has saved STATE_DIR/bindings.ini the cabinet was
 	 * never configured on screen (a first boot): the wizard then starts
 	 * by itself for a pad nothing names (ctl_opened). The shipped
 	 * CONFIG_DIR/bindings.ini only repeats the keyboard defaults. */
 	if (config_dir) {
 		snprintf(path, sizeof(path), "%s/bindings.ini", config_dir);
-		bind_load(&c->binds, path, say_cfg, NULL);
+		bind_load(b, path, say_cfg, NULL);
 	}
 	if (cfg->paths.state_dir[0]) {
 		/* what the wizard saved: the operator's choice on screen wins
 		 * over the configuration directory's file */
 		snprintf(path, sizeof(path), "%s/bindings.ini", cfg->paths.state_dir);
-		saved = bind_load(&c->binds, path, say_cfg, NULL) != -ENOENT;
+		*saved = bind_load(b, path, say_cfg, NULL) != -ENOENT;
 	}
 	if (cfg->input.bindings[0]) {
-		rc = bind_load(&c->binds, cfg->input.bindings, say_cfg, NULL);
+		rc = bind_load(b, cfg->input.bindings, say_cfg, NULL);
 		if (rc == -ENOENT)
-			say("%s: %s", cfg->input.bindings, strerror(-rc));
+			say_warn("%s: %s", cfg->input.bindings, strerror(-rc));
 	}
 	if (extra) {
-		rc = bind_load(&c->binds, extra, say_cfg, NULL);
+		rc = bind_load(b, extra, say_cfg, NULL);
 		if (rc < 0)
-			say("%s: %s", extra, strerror(-rc));
+			say_warn("%s: %s", extra, strerror(-rc));
 	}
+}
+
+int ctl_bound(void *b, const struct in_ident *id, int code)
+{
+	int acts[ACT_COUNT];
+
+	return bind_lookup_dev(b, id, code, acts, ACT_COUNT) > 0;
+}
+
+void ctl_load(struct ctl *c, const struct cfg *cfg, const char *config_dir, const char *extra,
+	      int live, int persist, struct stats *stats, const struct tape *tape)
+{
+	char path[CFG_PATH_MAX + 32];
+	int saved;
+
+	c->cfg = cfg;
+	c->live = live;
+	c->persist = persist;
+	c->stats = stats;
+	c->tape = tape;
+	ctl_bindings_load(&c->binds, cfg, config_dir, extra, &saved);
 	c->wiz_auto = persist && !saved;
 	prof_init(&c->profs);
 	if (config_dir) {
@@ -71,7 +88,7 @@ void ctl_wizard_start(struct ctl *c, const char *why)
 		return;
 	if (rec) {
 		/* its screens are not the sim's: they would not replay */
-		say("input wizard: not while recording (%s)", rec);
+		say_warn("input wizard: not while recording (%s)", rec);
 		return;
 	}
 	c->wiz_auto = 0;
@@ -92,7 +109,7 @@ static void ctl_wizard_save(struct ctl *c)
 	int rc;
 
 	if (!t) {
-		say("input wizard: bindings not saved: out of memory");
+		say_err("input wizard: bindings not saved: out of memory");
 		return;
 	}
 	/* What the operator set: [keyboard] and every device section except
@@ -111,7 +128,7 @@ static void ctl_wizard_save(struct ctl *c)
 	text = malloc(n + 1);
 
 	if (!text) {
-		say("input wizard: bindings not saved: out of memory");
+		say_err("input wizard: bindings not saved: out of memory");
 		free(t);
 		return;
 	}
@@ -119,7 +136,7 @@ static void ctl_wizard_save(struct ctl *c)
 	free(t);
 	rc = dir[0] ? st_write_plain(dir, "bindings.ini", text, n) : -ENOENT;
 	if (rc < 0)
-		say("input wizard: %s/bindings.ini not saved: %s (the bindings apply until the "
+		say_err("input wizard: %s/bindings.ini not saved: %s (the bindings apply until the "
 		    "daemon stops)", dir, strerror(-rc));
 	else
 		say("input wizard: bindings saved in %s/bindings.ini", dir);
@@ -169,7 +186,7 @@ static void ctl_opened(void *ctx, struct slot *s)
 		}
 		if (s->be->configure && p->hid[0] &&
 		    s->be->configure(s->dev, p->hid, why, sizeof(why)) < 0)
-			say("input %s: profile %s: %s", s->be->name, p->name, why);
+			say_warn("input %s: profile %s: %s", s->be->name, p->name, why);
 		say("input %s: %s: profile %s", s->be->name, s->be->describe(s->dev), p->name);
 	}
 	if (!named && c->wiz_auto && (s->be->flags & IN_NEEDS_BINDINGS)) {
@@ -246,9 +263,15 @@ static void ctl_gone(void *ctx, struct slot *s)
 		wiz_drop(&c->wiz, &s->id);
 }
 
+static int ctl_hook_bound(void *ctx, const struct in_ident *id, int code)
+{
+	return ctl_bound(&((struct ctl *)ctx)->binds, id, code);
+}
+
 const struct slot_hooks ctl_hooks = {
 	.opened = ctl_opened,
 	.key = ctl_key,
 	.released = ctl_released,
 	.gone = ctl_gone,
+	.bound = ctl_hook_bound,
 };

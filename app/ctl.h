@@ -61,6 +61,18 @@ extern const struct slot_hooks ctl_hooks;
 void ctl_load(struct ctl *c, const struct cfg *cfg, const char *config_dir, const char *extra,
 	      int live, int persist, struct stats *stats, const struct tape *tape);
 
+/* Loads into b the bindings a run uses, as ctl_load does: the defaults,
+ * CONFIG_DIR/bindings.ini (config_dir NULL: none), STATE_DIR/bindings.ini
+ * (*saved: whether the wizard ever saved it), cfg's input.bindings and
+ * extra (--bindings, NULL none). Problems are logged. */
+void ctl_bindings_load(struct bind_table *b, const struct cfg *cfg, const char *config_dir,
+		       const char *extra, int *saved);
+
+/* Whether control code of the device id does something in bindings b (a
+ * struct bind_table *): its own [device] section's, else [keyboard]'s. In
+ * the form in_backend.set_bound takes. */
+int ctl_bound(void *b, const struct in_ident *id, int code);
+
 /* Starts the wizard (why is logged) unless it runs, the cabinet is not
  * live, or a recording is being made (its screens would not replay). */
 void ctl_wizard_start(struct ctl *c, const char *why);

@@ -8,6 +8,7 @@
 #include <limits.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #ifndef ARCADED_LIBDIR
@@ -44,6 +45,21 @@ static int glr_try(struct glr *g, const char *path, char *why, size_t whylen)
 	return -ENOENT;
 }
 
+int glr_can_jit(void)
+{
+	long page = sysconf(_SC_PAGESIZE);
+	size_t len = page > 0 ? (size_t)page : 4096;
+	void *p = mmap(NULL, len, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+	int rc = 0;
+
+	if (p == MAP_FAILED)
+		return -errno;
+	if (mprotect(p, len, PROT_READ | PROT_EXEC) != 0)
+		rc = -errno;
+	munmap(p, len);
+	return rc;
+}
+
 int glr_load(struct glr *g, char *why, size_t whylen)
 {
 	char exe[PATH_MAX], path[PATH_MAX + 32];
@@ -53,6 +69,17 @@ int glr_load(struct glr *g, char *why, size_t whylen)
 	memset(g, 0, sizeof(*g));
 	if (whylen)
 		why[0] = '\0';
+	rc = glr_can_jit();
+	if (rc < 0) {
+		/* llvmpipe would fail inside LLVM, long after the load */
+		snprintf(why, whylen,
+			 "this process may not make memory executable (mprotect PROT_EXEC: %s), "
+			 "and llvmpipe compiles its shaders at run time; under arcaded.service that "
+			 "is MemoryDenyWriteExecute=yes: the drop-in in docs/systemd.md allows it",
+			 strerror(-rc));
+		return rc;
+	}
+	rc = -ENOENT;
 	n = readlink("/proc/self/exe", exe, sizeof(exe) - 1);
 	if (n > 0) {
 		char *slash;

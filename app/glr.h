@@ -10,6 +10,12 @@
  * running executable (a build tree: build/arcaded-gl.so), then in
  * ARCADED_LIBDIR (make install: $(PREFIX)/lib/arcaded).
  *
+ * OSMesa draws with llvmpipe, which compiles its shaders to machine code
+ * at run time: it needs memory it may write and then execute. A process
+ * that may not make memory executable (systemd's
+ * MemoryDenyWriteExecute=yes, which the shipped unit sets) would fail
+ * inside LLVM; glr_load looks first and refuses with the reason.
+ *
  * Ownership: glr_load fills a struct glr the caller owns; glr_unload
  * (NULL-safe, idempotent) closes the plugin once nothing of it is in use.
  */
@@ -34,8 +40,15 @@ struct glr {
 };
 
 /* Loads the plugin. 0, or -ENOENT / -ELIBBAD with why naming each place
- * tried and dlopen's or dlsym's message. */
+ * tried and dlopen's or dlsym's message, or the error of glr_can_jit
+ * (nothing loaded) with why saying what stops it and what allows it. */
 int glr_load(struct glr *g, char *why, size_t whylen);
+
+/* Whether this process may make memory it wrote executable, as a JIT
+ * does (an anonymous page mapped read-write, then turned read-execute).
+ * 0 yes, else the -errno that refused it (-EPERM under
+ * MemoryDenyWriteExecute=yes). */
+int glr_can_jit(void);
 
 void glr_unload(struct glr *g);
 

@@ -26,10 +26,10 @@ static void *keep_load(struct keep *k, const char *name, size_t *len)
 	int rc = st_load(k->dir, name, &buf, len, NULL, msg, sizeof(msg));
 
 	if (msg[0] && rc != -ENOENT)
-		say("%s/%s: %s", k->dir, name, msg);
+		say_warn("%s/%s: %s", k->dir, name, msg);
 	if (rc < 0) {
 		if (rc != -ENOENT)
-			say("%s/%s: %s; using defaults", k->dir, name, strerror(-rc));
+			say_warn("%s/%s: %s; using defaults", k->dir, name, strerror(-rc));
 		return NULL;
 	}
 	return buf;
@@ -39,7 +39,7 @@ static void keep_save(struct keep *k, const char *name, const void *data, size_t
 {
 	int rc = st_save(k->dir, name, data, len);
 	if (rc < 0)
-		say("%s/%s: not saved: %s (the previous copy is intact)", k->dir, name,
+		say_err("%s/%s: not saved: %s (the previous copy is intact)", k->dir, name,
 		    strerror(-rc));
 }
 
@@ -58,13 +58,13 @@ void keep_start(struct keep *k, const char *dir, int on, struct sim *s, const st
 		if (buf && g_scores_decode(buf, len, &scores) == 0)
 			sp = &scores;
 		else if (buf)
-			say("%s/scores: not a high-score table; using the defaults", dir);
+			say_warn("%s/scores: not a high-score table; using the defaults", dir);
 		free(buf);
 		buf = keep_load(k, "books", &len);
 		if (buf && g_books_decode(buf, len, &books) == 0)
 			bp = &books;
 		else if (buf)
-			say("%s/books: not bookkeeping; starting from zero", dir);
+			say_warn("%s/books: not bookkeeping; starting from zero", dir);
 		free(buf);
 	}
 	sim_init_stages(s, (const struct map *const *)ct->maps, ct->nmaps, set, sp, bp);
@@ -133,9 +133,9 @@ void keep_flight_open(struct keep *k, int keep, int max_mb, uint64_t map_hash,
 	snprintf(dir, sizeof(dir), "%s/recordings", k->dir);
 	rc = fr_open(dir, keep, (uint64_t)max_mb << 20, &k->fr, msg, sizeof(msg));
 	if (msg[0])
-		say("%s: %s", dir, msg);
+		say_warn("%s: %s", dir, msg);
 	if (rc < 0) {
-		say("%s: %s; games are not recorded", dir, strerror(-rc));
+		say_warn("%s: %s; games are not recorded", dir, strerror(-rc));
 		k->fr = NULL;
 		return;
 	}
@@ -161,10 +161,10 @@ static void keep_flight_finish(struct keep *k)
 	int rc = rec_writer_close(k->game);
 	k->game = NULL;
 	if (rc < 0)
-		say("flight recorder: %s", strerror(-rc));
+		say_err("flight recorder: %s", strerror(-rc));
 	rc = fr_end_game(k->fr, rc == 0);
 	if (rc < 0)
-		say("flight recorder: %s", strerror(-rc));
+		say_err("flight recorder: %s", strerror(-rc));
 }
 
 void keep_flight_after(struct keep *k, const struct sim *s, const struct sim_cmd *cmd, int w,
@@ -188,13 +188,13 @@ void keep_flight_after(struct keep *k, const struct sim *s, const struct sim_cmd
 		hd.snapshot_len = (uint32_t)sim_snapshot_size();
 		rc = fr_begin_game(k->fr, time(NULL), path, sizeof(path));
 		if (rc < 0) {
-			say("flight recorder: %s", strerror(-rc));
+			say_err("flight recorder: %s", strerror(-rc));
 			return;
 		}
 		rc = rec_writer_open(path, &hd, &k->game);
 		if (rc < 0) {
 			/* give the slot back, or every later game would be refused */
-			say("flight recorder: %s: %s", path, strerror(-rc));
+			say_err("flight recorder: %s: %s", path, strerror(-rc));
 			k->game = NULL;
 			fr_end_game(k->fr, 0);
 			return;
@@ -204,7 +204,7 @@ void keep_flight_after(struct keep *k, const struct sim *s, const struct sim_cmd
 		return;
 	struct rec_tick t = { *cmd, sim_hash(s), 0, audio_hash };
 	if (rec_writer_put_tick(k->game, &t) < 0) {
-		say("flight recorder: write failed; this game is not kept whole");
+		say_err("flight recorder: write failed; this game is not kept whole");
 		keep_flight_finish(k);
 		return;
 	}

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "app/app.h"
+#include "app/ctl.h"
 #include "app/say.h"
 #include "app/slot.h"
 #include "audio/au.h"
@@ -78,15 +79,22 @@ static const char *list_profile(void *u, const struct in_ident *id)
 	return p ? p->name : NULL;
 }
 
-static int list_devices(const char *config_dir)
+static int list_devices(const struct cfg *c, const char *config_dir, const char *bindings)
 {
 	struct prof_set *profs = calloc(1, sizeof(*profs));
+	struct bind_table *binds = calloc(1, sizeof(*binds));
 	struct slot_kind kinds[SLOT_KINDS];
 	char path[CFG_PATH_MAX + 32];
-	int n;
+	int n, saved;
 
-	if (!profs)
+	if (!profs || !binds) {
+		free(profs);
+		free(binds);
 		return 2;
+	}
+	/* auto-detection by the bindings a run would use: which devices it
+	 * takes */
+	ctl_bindings_load(binds, c, config_dir, bindings, &saved);
 	prof_init(profs);
 	snprintf(path, sizeof(path), "%s/profiles", config_dir);
 	prof_load_dir(profs, path, NULL, NULL);
@@ -94,12 +102,17 @@ static int list_devices(const char *config_dir)
 	n = slot_kinds(NULL, kinds);
 	for (int k = 0; k < n; k++) {
 		struct list_ctx l = { profs, kinds[k].be->name };
+		if (kinds[k].be->set_bound)
+			kinds[k].be->set_bound(ctl_bound, binds);
 		if (kinds[k].be->list)
 			kinds[k].be->list(stdout, list_profile, &l);
+		if (kinds[k].be->set_bound)
+			kinds[k].be->set_bound(NULL, NULL);
 	}
 	for (int k = 0; au_backends[k]; k++)
 		if (au_backends[k]->list)
 			au_backends[k]->list(stdout);
+	free(binds);
 	free(profs);
 	return 0;
 }
@@ -145,9 +158,11 @@ int main(int argc, char **argv)
 	static char sets[MAX_SETS][CFG_PATH_MAX + 32];
 	struct app_opts o = { .out = stdout, .config_dir = "/etc/arcaded" };
 	const char *state_dir = NULL;
-	int nsets = 0, print_config = 0, no_lights = 0, opt;
+	int nsets = 0, print_config = 0, no_lights = 0, devices = 0, opt;
 	struct cfg c;
 
+	/* under systemd, lines carry their priority for the journal */
+	say_open();
 	while ((opt = getopt_long(argc, argv, "", opts, NULL)) != -1) {
 		const char *prefix = NULL;
 		switch (opt) {
@@ -168,7 +183,7 @@ int main(int argc, char **argv)
 		case O_UNTIL: {
 			int64_t v;
 			if (num_parse(optarg, 0, 0xfffffffe, &v) < 0) {
-				fprintf(stderr, "arcaded: --%s: '%s' is not a tick number\n",
+				say_err("--%s: '%s' is not a tick number",
 					opt == O_TICKS ? "ticks" : "until", optarg);
 				return 2;
 			}
@@ -181,7 +196,7 @@ int main(int argc, char **argv)
 			if (strcmp(optarg, "gl") == 0) {
 				o.gl = 1;
 			} else if (strcmp(optarg, "software") != 0) {
-				fprintf(stderr, "arcaded: --renderer: '%s' is not software or gl\n",
+				say_err("--renderer: '%s' is not software or gl",
 					optarg);
 				return 2;
 			}
@@ -190,7 +205,7 @@ int main(int argc, char **argv)
 			char x;
 			if (sscanf(optarg, "%d%c%d", &o.size_w, &x, &o.size_h) != 3 || x != 'x' ||
 			    o.size_w < 64 || o.size_w > 4096 || o.size_h < 48 || o.size_h > 4096) {
-				fprintf(stderr, "arcaded: --size: '%s' is not WxH within 64x48..4096x4096\n",
+				say_err("--size: '%s' is not WxH within 64x48..4096x4096",
 					optarg);
 				return 2;
 			}
@@ -201,7 +216,7 @@ int main(int argc, char **argv)
 		case O_PRINT_CONFIG: print_config = 1; break;
 		case O_WAD:
 			if (o.content.nwads == CT_MAX_WADS) {
-				fprintf(stderr, "arcaded: more than %d --wad files\n", CT_MAX_WADS);
+				say_err("more than %d --wad files", CT_MAX_WADS);
 				return 2;
 			}
 			o.content.wads[o.content.nwads++] = optarg;
@@ -215,41 +230,43 @@ int main(int argc, char **argv)
 		}
 		if (prefix) {
 			if (nsets == MAX_SETS) {
-				fprintf(stderr, "arcaded: more than %d --set options\n", MAX_SETS);
+				say_err("more than %d --set options", MAX_SETS);
 				return 2;
 			}
 			snprintf(sets[nsets++], sizeof(sets[0]), "%s%s", prefix, optarg);
 		}
 	}
-	if (optind + 1 == argc && strcmp(argv[optind], "devices") == 0)
-		return list_devices(o.config_dir);
+	if (optind + 1 == argc && strcmp(argv[optind], "devices") == 0) {
+		devices = 1;
+		optind++;
+	}
 	/* Subcommand form: `arcaded replay FILE [options]`. */
 	if (optind + 2 == argc && strcmp(argv[optind], "replay") == 0 && !o.replay) {
 		o.replay = argv[optind + 1];
 		optind += 2;
 	}
 	if (optind < argc) {
-		fprintf(stderr, "arcaded: unexpected argument '%s'\n", argv[optind]);
+		say_err("unexpected argument '%s'", argv[optind]);
 		usage(stderr);
 		return 2;
 	}
 	if (o.gl && (o.replay || o.script || o.record)) {
 		/* llvmpipe's frames are not bit-exact: hashes, recordings and
 		 * scripts stay on the deterministic software renderer */
-		fprintf(stderr, "arcaded: --renderer gl is for play; scripts, recordings and "
-			"replays use the software renderer\n");
+		say_err("--renderer gl is for play; scripts, recordings and replays use the "
+			"software renderer");
 		return 2;
 	}
 	if (o.verify && !o.replay) {
-		fprintf(stderr, "arcaded: --verify goes with --replay\n");
+		say_err("--verify goes with --replay");
 		return 2;
 	}
 	if (o.script && o.replay) {
-		fprintf(stderr, "arcaded: --script and --replay cannot be combined\n");
+		say_err("--script and --replay cannot be combined");
 		return 2;
 	}
 	if (o.no_render && !o.replay) {
-		fprintf(stderr, "arcaded: --no-render goes with --replay\n");
+		say_err("--no-render goes with --replay");
 		return 2;
 	}
 
@@ -269,16 +286,17 @@ int main(int argc, char **argv)
 				 sizeof(msg));
 		snprintf(name, sizeof(name), "%s/settings.ini", c.paths.state_dir);
 		if (msg[0] && rc != -ENOENT)
-			fprintf(stderr, "arcaded: %s: %s\n", name, msg);
+			say_warn("%s: %s", name, msg);
 		if (rc == 0)
 			cfg_load_text(&c, buf, len, name, say_cfg, NULL);
 		else if (rc != -ENOENT)
-			fprintf(stderr, "arcaded: %s: %s; using the other layers\n", name,
-				strerror(-rc));
+			say_warn("%s: %s; using the other layers", name, strerror(-rc));
 		free(buf);
 	}
 	for (int i = 0; i < nsets; i++)
 		cfg_set(&c, sets[i], say_cfg, NULL);
+	if (devices)
+		return list_devices(&c, o.config_dir, o.bindings);
 
 	if (print_config) {
 		size_t n = cfg_format(&c, NULL, 0);
@@ -293,7 +311,7 @@ int main(int argc, char **argv)
 	o.content.level = c.game.level;
 	o.content.lights = !no_lights;
 	if (o.content.map && o.content.nwads == 0) {
-		fprintf(stderr, "arcaded: --map goes with --wad\n");
+		say_err("--map goes with --wad");
 		return 2;
 	}
 	return app_run(&c, &o);

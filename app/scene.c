@@ -12,6 +12,8 @@
 #include "app/say.h"
 #include "app/wiz.h"
 #include "display/dp.h"
+#include "input/hp.h"
+#include "input/in.h"
 #include "engine/game/menu.h"
 #include "engine/game/sim.h"
 #include "engine/map/tex.h"
@@ -41,7 +43,7 @@ int scene_init(struct scene *s, const struct cfg *c, const struct ct *ct, int gl
 	if (n > 1) {
 		int prc = pool_new(n, &s->pool);
 		if (prc < 0) {
-			say("render threads: %s; drawing on one", strerror(-prc));
+			say_warn("render threads: %s; drawing on one", strerror(-prc));
 			s->pool = NULL;
 		} else {
 			pool_r_par(s->pool, &s->par);
@@ -57,7 +59,7 @@ int scene_resize(struct scene *s, int w, int h)
 	int rc = r_new(w, h, &r);
 
 	if (rc < 0) {
-		say("renderer %dx%d: %s", w, h, strerror(-rc));
+		say_err("renderer %dx%d: %s", w, h, strerror(-rc));
 		return rc;
 	}
 	px = calloc((size_t)w * (size_t)h, 1);
@@ -75,7 +77,7 @@ int scene_resize(struct scene *s, int w, int h)
 		if (rc == 0)
 			rc = s->glr.create(w, h, &g, gerr, sizeof(gerr));
 		if (rc < 0) {
-			say("renderer gl %dx%d: %s", w, h, gerr[0] ? gerr : strerror(-rc));
+			say_err("renderer gl %dx%d: %s", w, h, gerr[0] ? gerr : strerror(-rc));
 			r_free(r);
 			free(px);
 			return rc;
@@ -97,39 +99,144 @@ int scene_resize(struct scene *s, int w, int h)
 	return 0;
 }
 
-int scene_open_display(struct scene *s, int headless)
+/* The display configuration (headless: unless one is named, the file
+ * framebuffer when configured, else none). */
+static void scene_dp_config(const struct scene *s, int headless, struct dp_config *dc)
 {
 	const struct cfg *c = s->cfg;
+
+	memset(dc, 0, sizeof(*dc));
+	dc->backend = c->display.backend;
+	/* Scripts and replays run headless unless a display is named. */
+	if (headless && strcmp(dc->backend, "auto") == 0)
+		dc->backend = c->display.file[0] ? "file" : "null";
+	dc->device = c->display.device;
+	dc->tty = c->display.tty;
+	dc->file = c->display.file;
+	dc->file_w = c->display.file_width;
+	dc->file_h = c->display.file_height;
+	dc->file_stride = c->display.file_stride;
+	dc->file_format = c->display.file_format;
+	dc->rotate = c->display.rotate;
+	dc->scale = c->display.fill ? DP_SCALE_FILL : DP_SCALE_INTEGER;
+	dc->render_w = s->frame.w;
+	dc->render_h = s->frame.h;
+}
+
+/* Whether a display be opened for dc is a stand-in for a missing one:
+ * "auto" fell through to the display that shows nothing. Named, that
+ * one is what was asked for. */
+static int scene_stand_in(const struct dp_config *dc, const struct dp_backend *be)
+{
+	return (be->flags & DP_SHOWS_NOTHING) && strcmp(dc->backend, "auto") == 0;
+}
+
+/* Takes display dp of be: the content's palette, the log. */
+static void scene_take(struct scene *s, const struct dp_backend *be, struct dp *dp)
+{
+	s->dpb = be;
+	s->dp = dp;
+	s->present_errors = 0;
+	s->dpb->set_palette(s->dp, s->ct->tex->pal.rgb);
+}
+
+/* Begins waiting for the display (why it is missing): the stand-in is
+ * shown, the display nodes are watched. */
+static int scene_wait(struct scene *s, const struct dp_config *dc, const char *why)
+{
+	const char *nodes[HP_MAX_NODES];
+	char hwhy[256] = "", where[160] = "";
+	int n = dp_nodes(nodes, HP_MAX_NODES);
+
+	if (!s->dp) {
+		const struct dp_backend *be;
+		struct dp *dp;
+		int rc = dp_open_stand_in(dc, &be, &dp);
+		if (rc < 0) {
+			say_err("display: %s; %s", why, strerror(-rc));
+			return rc;
+		}
+		scene_take(s, be, dp);
+	}
+	s->waiting = 1;
+	snprintf(s->missing, sizeof(s->missing), "%s", why);
+	for (int i = 0; i < n; i++)
+		in_say(where, sizeof(where), "%s%s*", i ? ", " : "", nodes[i]);
+	if (hp_open(nodes, n, HP_INOTIFY, &s->hp, hwhy, sizeof(hwhy)) < 0) {
+		s->hp = NULL;
+		say_warn("display: none: %s; the game runs unseen; looking again every second (no "
+			 "notices: %s)", why, hwhy);
+	} else {
+		say_warn("display: none: %s; the game runs unseen; looking again when %s appear "
+			 "and every second", why, where[0] ? where : "display nodes");
+	}
+	return 0;
+}
+
+int scene_open_display(struct scene *s, int headless)
+{
 	struct dp_config dc;
+	const struct dp_backend *be;
+	struct dp *dp;
 	char why[1024] = "";
 	int rc;
 
-	memset(&dc, 0, sizeof(dc));
-	dc.backend = c->display.backend;
-	/* Scripts and replays run headless unless a display is named. */
-	if (headless && strcmp(dc.backend, "auto") == 0)
-		dc.backend = c->display.file[0] ? "file" : "null";
-	dc.device = c->display.device;
-	dc.tty = c->display.tty;
-	dc.file = c->display.file;
-	dc.file_w = c->display.file_width;
-	dc.file_h = c->display.file_height;
-	dc.file_stride = c->display.file_stride;
-	dc.file_format = c->display.file_format;
-	dc.rotate = c->display.rotate;
-	dc.scale = c->display.fill ? DP_SCALE_FILL : DP_SCALE_INTEGER;
-	dc.render_w = s->frame.w;
-	dc.render_h = s->frame.h;
-	rc = dp_open(&dc, &s->dpb, &s->dp, why, sizeof(why));
-	if (rc < 0) {
-		say("display %s: %s", dc.backend, why[0] ? why : strerror(-rc));
+	scene_dp_config(s, headless, &dc);
+	rc = dp_open(&dc, &be, &dp, why, sizeof(why));
+	if (rc < 0 && headless) {
+		say_err("display %s: %s", dc.backend, why[0] ? why : strerror(-rc));
 		return rc;
 	}
+	if (rc < 0) {
+		char missing[1100];
+		snprintf(missing, sizeof(missing), "%s: %s", dc.backend, why[0] ? why : strerror(-rc));
+		return scene_wait(s, &dc, missing);
+	}
+	scene_take(s, be, dp);
+	if (!headless && scene_stand_in(&dc, be))
+		return scene_wait(s, &dc, why[0] ? why : "no display backend opened");
 	say("display: %s", s->dpb->describe(s->dp));
 	if (why[0])
 		say("display: skipped %s", why);
-	s->dpb->set_palette(s->dp, s->ct->tex->pal.rgb);
 	return 0;
+}
+
+enum scene_poll scene_poll_display(struct scene *s, uint64_t now_ns)
+{
+	struct dp_config dc;
+	const struct dp_backend *be;
+	struct dp *dp;
+	char why[1024] = "", missing[sizeof(s->missing)];
+	int rc;
+
+	if (!s->waiting)
+		return SCENE_SAME;
+	if (!hp_poll(s->hp) && now_ns < s->retry_ns)
+		return SCENE_SAME;
+	s->retry_ns = now_ns + SCENE_RETRY_NS;
+	scene_dp_config(s, 0, &dc);
+	rc = dp_open(&dc, &be, &dp, why, sizeof(why));
+	if (rc == 0 && !scene_stand_in(&dc, be)) {
+		/* found: the stand-in goes, the display takes the frames */
+		s->dpb->close(s->dp);
+		scene_take(s, be, dp);
+		s->waiting = 0;
+		hp_close(s->hp);
+		s->hp = NULL;
+		say("display: %s (it was missing: %s)", s->dpb->describe(s->dp), s->missing);
+		return SCENE_ACQUIRED;
+	}
+	if (rc == 0) {
+		be->close(dp);
+		snprintf(missing, sizeof(missing), "%s", why[0] ? why : "no display backend opened");
+	} else {
+		snprintf(missing, sizeof(missing), "%s: %s", dc.backend, why[0] ? why : strerror(-rc));
+	}
+	if (strcmp(missing, s->missing) == 0)
+		return SCENE_SAME;
+	snprintf(s->missing, sizeof(s->missing), "%s", missing);
+	say_warn("display: still none: %s", s->missing);
+	return SCENE_STILL_MISSING;
 }
 
 void scene_follow_menu(struct scene *s, const struct sim *sim)
@@ -156,7 +263,9 @@ int scene_show(struct scene *s, const struct sim *sim, const struct sim *under,
 		view_draw(&s->view, sim, under, &s->frame);
 	rc = s->dpb->present(s->dp, s->frame.px, s->frame.w, s->frame.h, s->frame.pitch);
 	if (rc < 0 && s->present_errors++ == 0)
-		say("display %s: present: %s", s->dpb->name, strerror(-rc));
+		say_err("display %s: present: %s", s->dpb->name, strerror(-rc));
+	if (rc == 0 && !s->waiting)
+		s->shown++;
 	return rc;
 }
 
@@ -166,6 +275,9 @@ void scene_close_display(struct scene *s)
 		s->dpb->close(s->dp);
 	s->dpb = NULL;
 	s->dp = NULL;
+	hp_close(s->hp);
+	s->hp = NULL;
+	s->waiting = 0;
 }
 
 void scene_free(struct scene *s)

@@ -5,11 +5,21 @@
  * view that draws the game into the frame (app/view.h), and the display
  * (display/dp.h, reached only through its table) that shows it. The render
  * size follows the service menu's choice.
+ *
+ * A cabinet's display may be missing at start (a nomodeset kernel, a slow
+ * DRM driver, a node the service may not open yet): then the null display
+ * stands in (the game runs, nothing is shown), the reason is kept, and the
+ * display is opened again on a notice from where display nodes appear
+ * (dp_backend.node, through input/hp.h) or every SCENE_RETRY_NS, until it
+ * opens. Headless runs (scripts, replays) never wait: a display that does
+ * not open stops them.
  */
 #ifndef ARCADED_APP_SCENE_H
 #define ARCADED_APP_SCENE_H
 
 #include <stdint.h>
+
+#include "display/dp.h"
 
 #include "app/glr.h"
 #include "app/view.h"
@@ -17,8 +27,7 @@
 #include "engine/render/r_main.h"
 
 struct ct;
-struct dp;
-struct dp_backend;
+struct hp;
 struct pool;
 struct sim;
 struct wiz;
@@ -38,6 +47,21 @@ struct scene {
 	const struct dp_backend *dpb;
 	struct dp *dp;
 	int present_errors;
+	/* The display is missing: the null display stands in (see above). */
+	int waiting;
+	char missing[512];         /* why, as the log and the status say it */
+	struct hp *hp;             /* display node notices while waiting, NULL none */
+	uint64_t retry_ns;         /* the next periodic try */
+	uint64_t shown;            /* frames presented on the display asked for */
+};
+
+#define SCENE_RETRY_NS 1000000000ull
+
+/* What scene_poll_display found. */
+enum scene_poll {
+	SCENE_SAME,                /* nothing new */
+	SCENE_STILL_MISSING,       /* still none, for another reason (missing says it) */
+	SCENE_ACQUIRED,            /* the display opened: frames are shown from now on */
 };
 
 /* Prepares s for the content ct with configuration c (rotation, render
@@ -51,16 +75,25 @@ int scene_resize(struct scene *s, int w, int h);
 
 /* Opens the configured display (headless: unless one is named, the file
  * framebuffer when configured, else none) for the frame's size, with the
- * content's palette. 0 or -errno (logged). */
+ * content's palette. Not headless, a display that does not open (the
+ * one named, or with "auto" any but the null display) is waited for:
+ * waiting is set, missing says why (both logged), and 0 is returned.
+ * 0 or -errno (logged). */
 int scene_open_display(struct scene *s, int headless);
+
+/* Once per tick while waiting (else SCENE_SAME at once): on a display
+ * node notice, or when SCENE_RETRY_NS passed since the last try (now_ns:
+ * CLOCK_MONOTONIC), tries the configured display again. Logged. */
+enum scene_poll scene_poll_display(struct scene *s, uint64_t now_ns);
 
 /* Once per tick: the service menu changed the render size, the frame
  * follows. */
 void scene_follow_menu(struct scene *s, const struct sim *sim);
 
 /* Draws the frame (the wizard's screen when wiz is not NULL, else sim,
- * over the attract demo's under when not NULL) and presents it. 0 or the
- * present's -errno (the first failure is logged). */
+ * over the attract demo's under when not NULL) and presents it; a
+ * successful present on the display asked for (not a stand-in) counts in
+ * shown. 0 or the present's -errno (the first failure is logged). */
 int scene_show(struct scene *s, const struct sim *sim, const struct sim *under,
 	       const struct wiz *wiz);
 

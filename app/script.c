@@ -21,7 +21,7 @@ int script_load(struct script *s, const char *path, FILE *out)
 	int rc = scr_load(path, &s->scr, err, sizeof(err));
 
 	if (rc < 0) {
-		say("%s", err[0] ? err : strerror(-rc));
+		say_err("%s", err[0] ? err : strerror(-rc));
 		return rc;
 	}
 	s->path = path;
@@ -87,7 +87,7 @@ void script_checks(struct script *s, uint32_t t, const struct sim *sim, const st
 			if (!scr_compare(v, sp->cmp, sp->value)) {
 				format_value(sp->field, v, got, sizeof(got));
 				format_value(sp->field, sp->value, want, sizeof(want));
-				say("%s:%u: expect %s %s %s failed: %s is %s", s->path, sp->line,
+				say_err("%s:%u: expect %s %s %s failed: %s is %s", s->path, sp->line,
 				    sim_field_name((int)sp->field), scr_cmp_name(sp->cmp), want,
 				    sim_field_name((int)sp->field), got);
 				s->failures++;
@@ -101,7 +101,7 @@ void script_checks(struct script *s, uint32_t t, const struct sim *sim, const st
 		case SCR_SCREENSHOT: {
 			int rc = shot_png(sp->path, f->px, f->w, f->h, f->pitch, rgb);
 			if (rc < 0) {
-				say("%s:%u: screenshot %s: %s", s->path, sp->line, sp->path,
+				say_err("%s:%u: screenshot %s: %s", s->path, sp->line, sp->path,
 				    strerror(-rc));
 				s->failures++;
 			}

@@ -11,13 +11,13 @@
 #include "app/say.h"
 #include "display/dp.h"
 
-static volatile sig_atomic_t sig_stop_flag;
+static volatile sig_atomic_t sig_stopped;
 static volatile sig_atomic_t sig_summary_flag;
 static volatile sig_atomic_t sig_fault_flag;
 
 static void on_stop(int sig)
 {
-	sig_stop_flag = sig;
+	sig_stopped = sig;
 }
 
 static void on_summary(int sig)
@@ -63,9 +63,14 @@ void sig_install(void)
 		sigaction(fatal[i], &sa, NULL);
 }
 
+const volatile sig_atomic_t *sig_stop_flag(void)
+{
+	return &sig_stopped;
+}
+
 int sig_stop(void)
 {
-	return (int)sig_stop_flag;
+	return (int)sig_stopped;
 }
 
 int sig_summary(void)
@@ -87,7 +92,7 @@ uint32_t sig_fault_setup(void)
 		char *end;
 		unsigned long n = strtoul(f + 8, &end, 10);
 		if (*end == '\0' && end != f + 8 && n < UINT32_MAX) {
-			say("fault injection: the main loop hangs after tick %lu", n);
+			say_warn("fault injection: the main loop hangs after tick %lu", n);
 			return (uint32_t)n;
 		}
 	} else if (strcmp(f, "sigusr2") == 0) {
@@ -95,10 +100,10 @@ uint32_t sig_fault_setup(void)
 		sigemptyset(&sa.sa_mask);
 		sa.sa_handler = on_fault;
 		sigaction(SIGUSR2, &sa, NULL);
-		say("fault injection: SIGUSR2 hangs the main loop");
+		say_warn("fault injection: SIGUSR2 hangs the main loop");
 		return UINT32_MAX;
 	}
-	say("ARCADED_FAULT=%s not understood (hang-at:N or sigusr2); ignored", f);
+	say_warn("ARCADED_FAULT=%s not understood (hang-at:N or sigusr2); ignored", f);
 	return UINT32_MAX;
 }
 
@@ -111,8 +116,8 @@ void sig_hang(void)
 {
 	struct timespec s = { 1, 0 };
 
-	say("fault injection: main loop hung");
+	say_err("fault injection: main loop hung");
 	/* a stop signal interrupts the sleep (EINTR) and ends the hang */
-	while (!sig_stop_flag)
+	while (!sig_stopped)
 		nanosleep(&s, NULL);
 }

@@ -22,6 +22,7 @@
 #ifndef ARCADED_APP_SIG_H
 #define ARCADED_APP_SIG_H
 
+#include <signal.h>
 #include <stdint.h>
 
 /* Installs the handlers above (not the fault injection's). */
@@ -29,6 +30,10 @@ void sig_install(void);
 
 /* The stop signal received, 0 while none. */
 int sig_stop(void);
+
+/* The flag sig_stop reads, for code that polls it while the loop is not
+ * running yet (a long content load: ct_spec.stop). */
+const volatile sig_atomic_t *sig_stop_flag(void);
 
 /* 1 once per SIGUSR1 received since the last call, else 0. */
 int sig_summary(void);

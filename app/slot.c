@@ -14,13 +14,16 @@
 
 /* input.hid = auto opens this many pads: a 4-player cabinet. */
 #define SLOT_HID_AUTO 4
+/* input.evdev = auto opens this many devices with bound keys: keyboard
+ * encoders, a PS/2 port's keyboard, a service keyboard. */
+#define SLOT_EVDEV_AUTO 4
 
 int slot_kinds(const struct cfg *c, struct slot_kind *out)
 {
 	/* Open order: the keyboard first, then the terminal's keys, pads,
 	 * GPIO lines. */
 	const struct slot_kind k[] = {
-		{ &in_evdev, c ? c->input.evdev : NULL, 1, 1 },
+		{ &in_evdev, c ? c->input.evdev : NULL, SLOT_EVDEV_AUTO, 1 },
 		{ &in_tty, NULL, 0, 1 },
 		{ &in_hid, c ? c->input.hid : NULL, SLOT_HID_AUTO, 0 },
 		{ &in_gpio, c ? c->input.gpio : NULL, 0, 0 },
@@ -73,7 +76,7 @@ int slot_add(struct slot_set *set, const struct slot_kind *kinds, int kind, cons
 		 * device that is unplugged): keep the slot and retry once a
 		 * second. */
 		if (!quiet)
-			say("input %s: %s; retrying as devices appear, and every second", be->name,
+			say_warn("input %s: %s; retrying as devices appear, and every second", be->name,
 			    why[0] ? why : strerror(-rc));
 		s->dev = NULL;
 		s->retry_ns = set->now() + SLOT_REOPEN_NS;
@@ -93,7 +96,7 @@ static void slot_add_list(struct slot_set *set, const struct slot_kind *kinds, i
 	snprintf(buf, sizeof(buf), "%s", list);
 	for (char *tok = strtok_r(buf, " \t", &save); tok; tok = strtok_r(NULL, " \t", &save)) {
 		if (set->n >= SLOT_MAX) {
-			say("input %s: more than %d devices; %s ignored", kinds[kind].be->name, SLOT_MAX,
+			say_warn("input %s: more than %d devices; %s ignored", kinds[kind].be->name, SLOT_MAX,
 			    tok);
 			return;
 		}
@@ -115,15 +118,31 @@ static void slot_watch(struct slot_set *set, const struct slot_kind *kinds, int 
 				break;
 			}
 	if (hp_open(nodes, nn, HP_INOTIFY | HP_LIBUSB, &set->hp, why, sizeof(why)) < 0)
-		say("input hotplug: %s; devices are looked for every second", why);
+		say_warn("input hotplug: %s; devices are looked for every second", why);
+	else if (!hp_complete(set->hp))
+		say_warn("input hotplug: %s", hp_sources(set->hp));
 	else
 		say("input hotplug: %s", hp_sources(set->hp));
+}
+
+/* in_backend.set_bound's function: the hook, with the set's context. */
+static int slot_bound(void *u, const struct in_ident *id, int code)
+{
+	const struct slot_set *set = u;
+
+	return set->h->bound(set->ctx, id, code);
 }
 
 void slot_open(struct slot_set *set, const struct slot_kind *kinds, int n,
 	       const struct dp_backend *display)
 {
 	const char *keys = display ? display->input : NULL;
+
+	set->kinds = kinds;
+	set->nkinds = n;
+	for (int k = 0; k < n; k++)
+		if (kinds[k].be->set_bound)
+			kinds[k].be->set_bound(set->h->bound ? slot_bound : NULL, set);
 
 	for (int k = 0; k < n; k++) {
 		const struct slot_kind *kd = &kinds[k];
@@ -139,15 +158,16 @@ void slot_open(struct slot_set *set, const struct slot_kind *kinds, int n,
 			/* Where the display reads the keyboard, taking it would
 			 * take the developer's own keyboard away from every
 			 * other window: only a device the configuration names
-			 * is opened. Several auto slots (pads) each take a
-			 * device no other slot has, retried quietly: they may
-			 * be plugged in later. */
+			 * is opened. Several auto slots (keyboards, pads) each
+			 * take a device no other slot has; only the first says
+			 * when it found none, the others are retried quietly:
+			 * their devices may be plugged in later. */
 			if (keys && (kd->be->flags & IN_AUTO_TAKES_KEYBOARD))
-				say("input %s: not auto-detected while the display (%s) reads the "
+				say_warn("input %s: not auto-detected while the display (%s) reads the "
 				    "keyboard (set input.%s)", kd->be->name, display->name, kd->be->name);
 			else
 				for (int i = 0; i < kd->autos; i++)
-					slot_add(set, kinds, k, NULL, kd->autos > 1);
+					slot_add(set, kinds, k, NULL, i > 0);
 		} else if (kd->whole) {
 			slot_add(set, kinds, k, v, 0);
 		} else {
@@ -155,7 +175,7 @@ void slot_open(struct slot_set *set, const struct slot_kind *kinds, int n,
 		}
 	}
 	if (set->n == 0) {
-		say("no input device configured: the game runs, but nothing controls it");
+		say_warn("no input device configured: the game runs, but nothing controls it");
 		return;
 	}
 	slot_watch(set, kinds, n);
@@ -168,7 +188,7 @@ void slot_drop(struct slot_set *set, struct slot *s)
 			set->h->released(set->ctx, s, code);
 	memset(s->down, 0, sizeof(s->down));
 	set->h->gone(set->ctx, s);
-	say("input %s: %s went away; its controls are released", s->be->name,
+	say_warn("input %s: %s went away; its controls are released", s->be->name,
 	    s->be->describe(s->dev));
 	s->be->close(s->dev);
 	s->dev = NULL;
@@ -194,16 +214,39 @@ static void slot_key(struct slot_set *set, struct slot *s, const struct in_event
 	set->h->key(set->ctx, s, e->code, down, e->time_ns);
 }
 
+/* What the last hotplug poll saw, for the log: USB arrivals and
+ * departures always (an operator's view of what was plugged), node
+ * notices with log_nodes. */
+static void slot_log_notices(const struct slot_set *set)
+{
+	const struct hp_notice *n;
+	int k = hp_notices(set->hp, &n);
+
+	for (int i = 0; i < k; i++) {
+		if (n[i].what == HP_USB_ARRIVED)
+			say("input hotplug: libusb: USB device %04x:%04x arrived on port %s", n[i].vid,
+			    n[i].pid, n[i].name);
+		else if (n[i].what == HP_USB_LEFT)
+			say("input hotplug: libusb: USB device %04x:%04x left port %s", n[i].vid,
+			    n[i].pid, n[i].name);
+		else if (set->log_nodes)
+			say("input hotplug: inotify: %s %s", n[i].name, n[i].how);
+	}
+}
+
 void slot_read(struct slot_set *set)
 {
 	struct in_event ev[64];
 	uint64_t now = 0;
 
 	/* A device node appeared or changed (udev grants access right after
-	 * the kernel creates it): every closed slot tries now. */
-	if (hp_poll(set->hp))
+	 * the kernel creates it), a USB device arrived: every closed slot
+	 * tries now. */
+	if (hp_poll(set->hp)) {
+		slot_log_notices(set);
 		for (int i = 0; i < set->n; i++)
 			set->s[i].retry_ns = 0;
+	}
 
 	for (int i = 0; i < set->n; i++) {
 		struct slot *s = &set->s[i];
@@ -246,4 +289,10 @@ void slot_close(struct slot_set *set)
 		if (set->s[i].dev)
 			set->s[i].be->close(set->s[i].dev);
 	set->n = 0;
+	/* the backends keep no pointer to the set past its life */
+	for (int k = 0; k < set->nkinds; k++)
+		if (set->kinds[k].be->set_bound)
+			set->kinds[k].be->set_bound(NULL, NULL);
+	set->kinds = NULL;
+	set->nkinds = 0;
 }

@@ -24,7 +24,7 @@
 #include "config/cfg.h"
 #include "input/in.h"
 
-#define SLOT_MAX 8                 /* slots in all */
+#define SLOT_MAX 16                /* slots in all */
 #define SLOT_KINDS 8               /* backends in the registry, at most */
 #define SLOT_KEYS 1024             /* key codes tracked per device (KEY_CNT is 768) */
 #define SLOT_REOPEN_NS 1000000000ull
@@ -65,12 +65,19 @@ struct slot_hooks {
 	void (*released)(void *ctx, struct slot *s, int code);
 	/* s went away; its controls are released, it closes next. */
 	void (*gone)(void *ctx, struct slot *s);
+	/* Whether control code of the device id is bound (does something):
+	 * what auto-detection looks for (in_backend.set_bound). NULL: every
+	 * code counts. */
+	int (*bound)(void *ctx, const struct in_ident *id, int code);
 };
 
 struct slot_set {
 	struct slot s[SLOT_MAX];
 	int n;
 	struct hp *hp;             /* hotplug notices, NULL: periodic retries only */
+	const struct slot_kind *kinds;   /* slot_open's registry, NULL before */
+	int nkinds;
+	int log_nodes;             /* log every device node notice too (input.log) */
 	const struct slot_hooks *h;
 	void *ctx;
 	uint64_t (*now)(void);     /* the clock of retries: in_now_ns */
@@ -87,9 +94,11 @@ void slot_init(struct slot_set *set, const struct slot_hooks *h, void *ctx);
 /* Opens the slots that kinds[0..n) name: per kind its devices setting
  * ("none": no slot; "auto": autos slots, retried quietly when more than
  * one; otherwise one slot per device), and the kind whose backend reads
- * the keys of display (dp_backend.input; display may be NULL). Then
- * starts the hotplug notices of the slots' backends. Everything is
- * logged; a device that does not open keeps its slot. */
+ * the keys of display (dp_backend.input; display may be NULL). First
+ * every backend that auto-detects by the bindings (in_backend.set_bound)
+ * is told the bound hook. Then starts the hotplug notices of the slots'
+ * backends. Everything is logged; a device that does not open keeps its
+ * slot. kinds must stay valid until slot_close. */
 void slot_open(struct slot_set *set, const struct slot_kind *kinds, int n,
 	       const struct dp_backend *display);
 
@@ -102,7 +111,9 @@ int slot_add(struct slot_set *set, const struct slot_kind *kinds, int kind, cons
 
 /* Once per tick, before the command is built: closed slots whose time
  * has come (all of them after a hotplug notice) retry their open, and
- * every open device is read, its key changes going to the hooks. */
+ * every open device is read, its key changes going to the hooks. USB
+ * devices arriving and leaving (libusb) are logged, and with log_nodes
+ * every device node notice. */
 void slot_read(struct slot_set *set);
 
 /* s's device went away: releases every control it held (hooks), closes

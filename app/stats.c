@@ -9,6 +9,7 @@
 #include <string.h>
 #include <sys/resource.h>
 
+#include "app/say.h"
 #include "input/in.h"
 
 void stats_init(struct stats *s, const char *const *names, int n)
@@ -79,25 +80,25 @@ void stats_print(const struct stats *s)
 	uint64_t el = in_now_ns() - s->start_ns;
 
 	getrusage(RUSAGE_SELF, &ru);
-	fprintf(stderr, "arcaded: summary: %" PRIu64 " ticks, %" PRIu64 " frames in %" PRIu64
+	say("summary: %" PRIu64 " ticks, %" PRIu64 " frames in %" PRIu64
 		".%03" PRIu64 " s (%.1f frames/s), %" PRIu64 " ticks dropped, peak RSS %ld KiB, "
-		"%d open fds\n",
+		"%d open fds",
 		s->ticks, s->frames, el / 1000000000u, el / 1000000u % 1000u,
 		el ? (double)s->frames * 1e9 / (double)el : 0.0, s->dropped, ru.ru_maxrss,
 		count_fds());
 	lat_format(&s->frame_time, "frame time (render+present)", line, sizeof(line));
-	fprintf(stderr, "arcaded: summary: %s\n", line);
+	say("summary: %s", line);
 	lat_format(&s->latency, "input-to-present latency", line, sizeof(line));
-	fprintf(stderr, "arcaded: summary: %s\n", line);
+	say("summary: %s", line);
 	lat_format(&s->sound, "input-to-sound latency", line, sizeof(line));
-	fprintf(stderr, "arcaded: summary: %s; sound output: %" PRIu64 " underruns, %" PRIu64
-		" frames dropped\n", line, s->underruns, s->audio_dropped);
+	say("summary: %s; sound output: %" PRIu64 " underruns, %" PRIu64 " frames dropped", line,
+	    s->underruns, s->audio_dropped);
 	for (int k = 0; k < s->nsrc; k++) {
 		char name[64];
 		if (!s->src[k].count)
 			continue;   /* only the kinds that gave input */
 		snprintf(name, sizeof(name), "input-to-present latency (%s)", s->src_name[k]);
 		lat_format(&s->src[k], name, line, sizeof(line));
-		fprintf(stderr, "arcaded: summary: %s\n", line);
+		say("summary: %s", line);
 	}
 }

@@ -40,7 +40,7 @@ int tape_replay_open(struct tape *t, const char *path, struct rec_run *run)
 	int rc = rec_reader_open(path, &t->rep, err, sizeof(err));
 
 	if (rc < 0) {
-		say("%s", err[0] ? err : strerror(-rc));
+		say_err("%s", err[0] ? err : strerror(-rc));
 		return rc;
 	}
 	t->replay = path;
@@ -62,7 +62,7 @@ int tape_replay_check(struct tape *t, struct rec_run *run, int verify, struct si
 	rc = verify ? rec_check_run(rh, run, err, sizeof(err))
 		    : rec_check(rh, run->map_hash, err, sizeof(err));
 	if (rc < 0) {
-		say("%s: refused: %s", t->replay, err);
+		say_err("%s: refused: %s", t->replay, err);
 		return rc;
 	}
 	if (verify) {
@@ -86,7 +86,7 @@ int tape_replay_restore(struct tape *t, struct sim *s)
 	 * the cabinet was in */
 	rc = sim_restore(s, rh->snapshot, rh->snapshot_len);
 	if (rc < 0)
-		say("%s: refused: its start state does not fit this build's game", t->replay);
+		say_err("%s: refused: its start state does not fit this build's game", t->replay);
 	return rc;
 }
 
@@ -95,7 +95,7 @@ int tape_record_open(struct tape *t, const char *path, const struct rec_header *
 	int rc = rec_writer_open(path, h, &t->rec);
 
 	if (rc < 0) {
-		say("%s: %s", path, strerror(-rc));
+		say_err("%s: %s", path, strerror(-rc));
 		t->rec = NULL;
 		return rc;
 	}
@@ -113,7 +113,7 @@ int tape_next(struct tape *t, uint32_t tick, struct rec_tick *rt)
 	int rc = rec_reader_next_tick(t->rep, rt);
 
 	if (rc < 0)
-		say("%s: tick %u: %s", t->replay, tick,
+		say_err("%s: tick %u: %s", t->replay, tick,
 		    rc == -EIO ? "the recording ends before its header's count" : strerror(-rc));
 	return rc > 0;
 }
@@ -136,7 +136,7 @@ void tape_hashes(struct tape *t, uint32_t tick, const struct rec_tick *rt, const
 		rec_verify_tick(&t->verify, tick, rt, &nt);
 	if (t->rec) {
 		if (rec_writer_put_tick(t->rec, &nt) < 0) {
-			say("%s: write failed; recording stopped", t->record);
+			say_err("%s: write failed; recording stopped", t->record);
 			rec_writer_close(t->rec);
 			t->rec = NULL;
 		}
@@ -151,7 +151,10 @@ int tape_verdict(struct tape *t)
 	if (!t->verifying)
 		return 0;
 	bad = rec_verify_summary(&t->verify, sum, sizeof(sum));
-	say("%s: %s", t->replay, sum);
+	if (bad)
+		say_err("%s: %s", t->replay, sum);
+	else
+		say("%s: %s", t->replay, sum);
 	return bad != 0;
 }
 
@@ -160,7 +163,7 @@ void tape_close(struct tape *t)
 	if (t->rec) {
 		int rc = rec_writer_close(t->rec);
 		if (rc < 0)
-			say("%s: %s", t->record, strerror(-rc));
+			say_err("%s: %s", t->record, strerror(-rc));
 		t->rec = NULL;
 	}
 	rec_reader_close(t->rep);

@@ -74,6 +74,31 @@ int dp_open(const struct dp_config *cfg, const struct dp_backend **be, struct dp
 	return -ENOMEM;
 }
 
+int dp_nodes(const char **out, int max)
+{
+	int n = 0;
+
+	for (size_t i = 0; i < DP_NBACKENDS && n < max; i++)
+		if (dp_backends[i]->node)
+			out[n++] = dp_backends[i]->node;
+	return n;
+}
+
+int dp_open_stand_in(const struct dp_config *cfg, const struct dp_backend **be, struct dp **out)
+{
+	char why[64];
+
+	*be = NULL;
+	*out = NULL;
+	for (size_t i = 0; i < DP_NBACKENDS; i++)
+		if ((dp_backends[i]->flags & DP_SHOWS_NOTHING) &&
+		    dp_backends[i]->open(cfg, out, why, sizeof(why)) == 0) {
+			*be = dp_backends[i];
+			return 0;
+		}
+	return -ENOMEM;
+}
+
 void dp_emergency_restore(void)
 {
 	dp_fbdev_emergency();

@@ -51,9 +51,32 @@ struct dp_backend {
 	 * that reads the keys typed at this display, which the app opens with
 	 * it: dp_term's terminal is also the keyboard ("tty"). */
 	const char *input;
+	/* Optional (NULL: none): where this backend's device nodes appear, a
+	 * directory and a name prefix ("/dev/fb"; a DRM backend's would be
+	 * "/dev/dri/card"). A node created or changed there (a driver that
+	 * loaded late, udev granting access) is when a display that was
+	 * missing is worth trying again (the app watches these, input/hp.h). */
+	const char *node;
+	unsigned flags;          /* DP_* below */
+};
+
+/* dp_backend.flags. */
+enum {
+	/* Frames go nowhere (dp_null): a stand-in. Chosen by "auto" only when
+	 * every real display failed, in which case the app keeps looking for
+	 * one; named in the configuration, it is what was asked for. */
+	DP_SHOWS_NOTHING = 1,
 };
 
 extern const struct dp_backend dp_fbdev, dp_file, dp_term, dp_null;
+
+/* The node patterns (dp_backend.node) of the backends "auto" tries, in
+ * its order, into out[0..max); returns how many. */
+int dp_nodes(const char **out, int max);
+
+/* Opens the display that shows nothing (DP_SHOWS_NOTHING), to stand in
+ * for a missing one; *be is it. 0 or -ENOMEM. */
+int dp_open_stand_in(const struct dp_config *cfg, const struct dp_backend **be, struct dp **out);
 
 /* Opens the backend named by cfg->backend, or with "auto"/NULL the first of
  * fbdev (if the device opens), term (if stdout is a terminal), file (if

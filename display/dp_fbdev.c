@@ -352,4 +352,5 @@ const struct dp_backend dp_fbdev = {
 	.present = fbdev_present,
 	.close = fbdev_close,
 	.describe = fbdev_describe,
+	.node = "/dev/fb",
 };

@@ -57,4 +57,5 @@ const struct dp_backend dp_null = {
 	.present = null_present,
 	.close = null_close,
 	.describe = null_describe,
+	.flags = DP_SHOWS_NOTHING,
 };

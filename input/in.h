@@ -80,14 +80,21 @@ struct in_backend {
 	 * says so). */
 	int (*list)(FILE *out, const char *(*profile)(void *u, const struct in_ident *id),
 		    void *u);
+	/* Which control codes the bindings use, for auto-detection: an
+	 * auto-detecting open takes only a device with a code for which
+	 * fn(u, id, code) is nonzero (id: that device's ident), so a device
+	 * nothing binds is left alone. Called once before the first open;
+	 * fn is asked again at every later auto-detection, so bindings the
+	 * wizard changed count. fn NULL: every code counts. */
+	void (*set_bound)(int (*fn)(void *u, const struct in_ident *id, int code), void *u);
 	unsigned flags;          /* IN_* below */
 };
 
 /* in_backend.flags. */
 enum {
-	/* "auto" takes the first keyboard for itself (evdev grabs it): not
-	 * done while the display reads the keyboard (dp_backend.input), where
-	 * it would take the developer's own keyboard from every window. */
+	/* "auto" takes keyboards for itself (evdev grabs them): not done
+	 * while the display reads the keyboard (dp_backend.input), where it
+	 * would take the developer's own keyboard from every window. */
 	IN_AUTO_TAKES_KEYBOARD = 1,
 	/* Its controls are not keys the default bindings cover (a HID pad's
 	 * BTN_TRIGGER_HAPPYn, BTN_DPAD_*): a device no bindings section and no
@@ -96,28 +103,10 @@ enum {
 	IN_NEEDS_BINDINGS = 2,
 };
 
-/* in_hid: HID devices through hidapi (input/in_hid.h); in_gpio: switches
+/* in_evdev: keyboards and encoders through libevdev (input/in_evdev.h);
+ * in_hid: HID devices through hidapi (input/in_hid.h); in_gpio: switches
  * and coin lines on GPIO through libgpiod (input/in_gpio.h). */
 extern const struct in_backend in_evdev, in_tty, in_hid, in_gpio;
-
-/* in_evdev's auto-detection over DIR/event* instead of /dev/input/event*
- * (in_evdev.open with a NULL path is this with "/dev/input"); for tests.
- * The rule is in in_evdev.c and docs/input.md. */
-int in_evdev_open_dir(const char *dir, struct in_dev **out, char *why, size_t whylen);
-
-/* One evdev device as `arcaded devices` lists it. */
-struct in_evdev_info {
-	char node[64];           /* /dev/input/eventN */
-	int opened;              /* 0: could not be opened (why says why) */
-	int keyboard;            /* auto-detection would take it (a keyboard) */
-	struct in_ident id;
-	char why[160];
-};
-
-/* Every DIR/event* (NULL: /dev/input), in number order, opened briefly to
- * read its name, ids and USB port (never grabbed). *out is malloc'd (free
- * it). 0 or -errno when DIR cannot be listed. */
-int in_evdev_list(const char *dir, struct in_evdev_info **out, size_t *count);
 
 /* Key code by name: "KEY_UP", "up", "w", "space", "enter", "BTN_SOUTH", ...
  * (case-insensitive; a bare letter or digit is that key). -1 if unknown. */

@@ -1,16 +1,11 @@
 /*
  * in_evdev: keys and axes from a Linux input device (/dev/input/eventN)
- * through libevdev.
+ * through libevdev (contract in in_evdev.h and in.h).
  *
  * Auto-detection (open with a NULL path) takes the first of
- * /dev/input/event0, event1, ... (numeric order) that opens and looks like
- * one of:
- *   - a keyboard: EV_KEY with every key KEY_A..KEY_Z, and KEY_ENTER or
- *     KEY_SPACE;
- *   - a keyboard-style arcade encoder: KEY_UP, KEY_DOWN, KEY_LEFT and
- *     KEY_RIGHT, and one of KEY_LEFTCTRL, KEY_1, KEY_5 (the MAME layout
- *     those encoders ship with: ctrl fires, 1 starts, 5 adds a coin).
- * Power buttons, lid switches, mice and touchpads match neither.
+ * /dev/input/event0, event1, ... (numeric order) that opens, is not open
+ * in this process already, and has a key or button the bindings use for
+ * it (in_evdev_bound_keys); each auto slot so gets a device of its own.
  *
  * The device is grabbed (EVIOCGRAB) so its keys do not also reach the
  * console or another program; a failed grab is not fatal and shows in
@@ -18,7 +13,7 @@
  * (EVIOCSCLOCKID), the clock of in_now_ns; if it refuses, events are
  * stamped with in_now_ns at the read.
  */
-#include "input/in.h"
+#include "input/in_evdev.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -27,6 +22,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -37,37 +33,55 @@
 struct in_dev {
 	struct libevdev *ev;
 	int fd;
+	dev_t rdev;              /* the node's device number: open in this process */
 	int grab_err;            /* 0: grabbed; else the errno of the failed grab */
 	int stamp_now;           /* the kernel keeps another clock: stamp at the read */
 	int syncing;             /* draining the sync events after a SYN_DROPPED */
 	struct in_ident id;      /* VID:PID, USB port, name: per-device bindings */
 	char desc[320];
+	struct in_dev *next;     /* evdev_open_devs */
 };
 
-static int has_key(const struct libevdev *ev, unsigned code)
+/* What the bindings use (in_evdev.set_bound); NULL: every key counts. Set
+ * from the main thread before the slots open. */
+static int (*evdev_bound)(void *u, const struct in_ident *id, int code);
+static void *evdev_bound_u;
+/* The devices open in this process (taken over): auto-detection passes
+ * over them, so two auto slots get two devices and never share one. Used
+ * by the thread that opens and closes (the main loop's). */
+static struct in_dev *evdev_open_devs;
+
+static void evdev_set_bound(int (*fn)(void *u, const struct in_ident *id, int code), void *u)
 {
-	return libevdev_has_event_code(ev, EV_KEY, code);
+	evdev_bound = fn;
+	evdev_bound_u = u;
 }
 
-/* The auto-detection rule (file comment). */
-static int looks_like_keyboard(const struct libevdev *ev)
+static int rdev_in_use(dev_t rdev)
 {
-	static const unsigned letters[26] = {
-		KEY_A, KEY_B, KEY_C, KEY_D, KEY_E, KEY_F, KEY_G, KEY_H, KEY_I,
-		KEY_J, KEY_K, KEY_L, KEY_M, KEY_N, KEY_O, KEY_P, KEY_Q, KEY_R,
-		KEY_S, KEY_T, KEY_U, KEY_V, KEY_W, KEY_X, KEY_Y, KEY_Z,
-	};
-	int all_letters = 1;
+	for (const struct in_dev *o = evdev_open_devs; o; o = o->next)
+		if (o->rdev == rdev)
+			return 1;
+	return 0;
+}
+
+int in_evdev_bound_keys(const struct libevdev *ev, const struct in_ident *id, int *codes,
+			int max)
+{
+	int n = 0;
 
 	if (!libevdev_has_event_type(ev, EV_KEY))
 		return 0;
-	for (size_t i = 0; i < sizeof(letters) / sizeof(letters[0]); i++)
-		all_letters = all_letters && has_key(ev, letters[i]);
-	if (all_letters && (has_key(ev, KEY_ENTER) || has_key(ev, KEY_SPACE)))
-		return 1;
-	return has_key(ev, KEY_UP) && has_key(ev, KEY_DOWN) && has_key(ev, KEY_LEFT) &&
-	       has_key(ev, KEY_RIGHT) &&
-	       (has_key(ev, KEY_LEFTCTRL) || has_key(ev, KEY_1) || has_key(ev, KEY_5));
+	for (int c = 0; c <= KEY_MAX; c++) {
+		if (!libevdev_has_event_code(ev, EV_KEY, (unsigned)c))
+			continue;
+		if (evdev_bound && !evdev_bound(evdev_bound_u, id, c))
+			continue;
+		if (codes && n < max)
+			codes[n] = c;
+		n++;
+	}
+	return n;
 }
 
 /* Opens path as an evdev device into a new d (not yet grabbed). On failure
@@ -88,6 +102,11 @@ static int probe(const char *path, struct in_dev **out, char *why, size_t whylen
 		in_say(why, whylen, "%s: %s", path, strerror(-rc));
 		goto fail;
 	}
+	{
+		struct stat st;
+		if (fstat(d->fd, &st) == 0)
+			d->rdev = st.st_rdev;
+	}
 	rc = libevdev_new_from_fd(d->fd, &d->ev);
 	if (rc < 0) {
 		in_say(why, whylen, "%s: not an input event device (%s)", path, strerror(-rc));
@@ -107,6 +126,11 @@ static void evdev_close(struct in_dev *d)
 {
 	if (!d)
 		return;
+	for (struct in_dev **p = &evdev_open_devs; *p; p = &(*p)->next)
+		if (*p == d) {
+			*p = d->next;
+			break;
+		}
 	if (d->ev) {
 		if (d->grab_err == 0)
 			libevdev_grab(d->ev, LIBEVDEV_UNGRAB);
@@ -132,9 +156,6 @@ static void identify(struct in_dev *d, const char *path, const char *name)
 	if (strncmp(base, "event", 5) == 0 &&
 	    snprintf(link, sizeof(link), "/sys/class/input/%s/device", base) < (int)sizeof(link))
 		in_usb_port(link, 2, d->id.port, sizeof(d->id.port));
-	if (d->id.port[0])
-		in_say(d->desc, sizeof(d->desc), ", %04x:%04x port %s", d->id.vid, d->id.pid,
-		       d->id.port);
 }
 
 static void evdev_ident(struct in_dev *d, struct in_ident *id)
@@ -142,7 +163,8 @@ static void evdev_ident(struct in_dev *d, struct in_ident *id)
 	*id = d->id;
 }
 
-/* Grabs d and switches its clock; fills describe. */
+/* Grabs d (identified) and switches its clock; fills describe; counts it
+ * as open in this process. */
 static void take_over(struct in_dev *d, const char *path)
 {
 	const char *name = libevdev_get_name(d->ev);
@@ -152,11 +174,15 @@ static void take_over(struct in_dev *d, const char *path)
 	rc = libevdev_grab(d->ev, LIBEVDEV_GRAB);
 	d->grab_err = rc < 0 ? -rc : 0;
 	snprintf(d->desc, sizeof(d->desc), "%s (%s)", name ? name : "unnamed", path);
-	identify(d, path, name);
+	if (d->id.port[0])
+		in_say(d->desc, sizeof(d->desc), ", %04x:%04x port %s", d->id.vid, d->id.pid,
+		       d->id.port);
 	if (d->grab_err)
 		in_say(d->desc, sizeof(d->desc), ", not grabbed: %s", strerror(d->grab_err));
 	if (d->stamp_now)
 		in_say(d->desc, sizeof(d->desc), ", stamped at read");
+	d->next = evdev_open_devs;
+	evdev_open_devs = d;
 }
 
 static int cmp_uint(const void *a, const void *b)
@@ -224,19 +250,26 @@ int in_evdev_open_dir(const char *dir, struct in_dev **out, char *why, size_t wh
 		free(nums);
 		return -ENODEV;
 	}
-	in_say(why, whylen, "no keyboard among %s/event*: ", dir);
+	in_say(why, whylen, "no device with a bound key among %s/event*: ", dir);
 	for (size_t i = 0; i < n; i++) {
 		struct in_dev *d;
+		struct stat st;
+		const char *name;
 
 		snprintf(path, sizeof(path), "%s/event%u", dir, nums[i]);
 		if (i > 0)
 			in_say(why, whylen, "; ");
+		if (stat(path, &st) == 0 && S_ISCHR(st.st_mode) && rdev_in_use(st.st_rdev)) {
+			in_say(why, whylen, "%s: already open", path);
+			continue;
+		}
 		if (probe(path, &d, why, whylen) < 0)
 			continue;
-		if (!looks_like_keyboard(d->ev)) {
-			const char *name = libevdev_get_name(d->ev);
-
-			in_say(why, whylen, "%s (%s): not a keyboard", path, name ? name : "unnamed");
+		name = libevdev_get_name(d->ev);
+		identify(d, path, name);
+		if (in_evdev_bound_keys(d->ev, &d->id, NULL, 0) == 0) {
+			in_say(why, whylen, "%s (%s): none of its keys is bound", path,
+			       name ? name : "unnamed");
 			evdev_close(d);
 			continue;
 		}
@@ -278,9 +311,10 @@ int in_evdev_list(const char *dir, struct in_evdev_info **out, size_t *count)
 			continue;
 		}
 		l[i].opened = 1;
-		l[i].keyboard = looks_like_keyboard(d->ev);
 		identify(d, l[i].node, libevdev_get_name(d->ev));
 		l[i].id = d->id;
+		l[i].nbound = in_evdev_bound_keys(d->ev, &d->id, l[i].bound,
+						  (int)(sizeof(l[i].bound) / sizeof(l[i].bound[0])));
 		evdev_close(d);   /* never grabbed */
 	}
 	free(nums);
@@ -302,6 +336,7 @@ static int evdev_open(const char *path, struct in_dev **out, char *why, size_t w
 	rc = probe(path, &d, why, whylen);
 	if (rc < 0)
 		return rc;
+	identify(d, path, libevdev_get_name(d->ev));
 	take_over(d, path);
 	*out = d;
 	return 0;
@@ -363,8 +398,9 @@ static const char *evdev_describe(struct in_dev *d)
 	return d->desc;
 }
 
-/* in_evdev.list: every event node, whether auto-detection would take it,
- * the bindings sections that name it and its profile. */
+/* in_evdev.list: every event node, whether auto-detection takes it (the
+ * bound keys it has), the bindings sections that name it and its
+ * profile. */
 static int evdev_list_out(FILE *out, const char *(*profile)(void *u, const struct in_ident *id),
 			  void *u)
 {
@@ -375,6 +411,7 @@ static int evdev_list_out(FILE *out, const char *(*profile)(void *u, const struc
 	fprintf(out, "evdev devices (/dev/input): %zu%s\n", n, rc < 0 ? " (listing failed)" : "");
 	for (size_t i = 0; i < n; i++) {
 		const struct in_ident *id = &ev[i].id;
+		int shown = ev[i].nbound < 8 ? ev[i].nbound : 8;
 		const char *p;
 
 		if (!ev[i].opened) {
@@ -382,10 +419,22 @@ static int evdev_list_out(FILE *out, const char *(*profile)(void *u, const struc
 			continue;
 		}
 		p = profile(u, id);
-		fprintf(out, "  %s  %04x:%04x  \"%s\"  port %s  %s\n    bindings section: ",
-			ev[i].node, id->vid, id->pid, id->name, id->port[0] ? id->port : "-",
-			ev[i].keyboard ? "keyboard (input.evdev = auto takes the first)"
-				       : "not a keyboard");
+		fprintf(out, "  %s  %04x:%04x  \"%s\"  port %s\n    ", ev[i].node, id->vid, id->pid,
+			id->name, id->port[0] ? id->port : "-");
+		if (ev[i].nbound) {
+			fprintf(out, "in use with input.evdev = auto: %d bound key(s):", ev[i].nbound);
+			for (int k = 0; k < shown; k++) {
+				const char *kn = in_key_name(ev[i].bound[k]);
+				if (kn)
+					fprintf(out, " %s", kn);
+				else
+					fprintf(out, " %d", ev[i].bound[k]);
+			}
+			fprintf(out, "%s\n", ev[i].nbound > shown ? " ..." : "");
+		} else {
+			fprintf(out, "not used by input.evdev = auto: none of its keys is bound\n");
+		}
+		fprintf(out, "    bindings section: ");
 		if (id->port[0])
 			fprintf(out, "[device \"usb-%s\"] or ", id->port);
 		fprintf(out, "[device \"%04x:%04x\"], else [keyboard]; profile: %s\n", id->vid,
@@ -405,5 +454,6 @@ const struct in_backend in_evdev = {
 	.ident = evdev_ident,
 	.node = "/dev/input/event",
 	.list = evdev_list_out,
+	.set_bound = evdev_set_bound,
 	.flags = IN_AUTO_TAKES_KEYBOARD,
 };

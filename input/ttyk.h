@@ -31,13 +31,17 @@
  *     forward while tapping turn keeps going forward); the terminal stops
  *     repeating them, so their state is unknown from then on.
  *   - When the newest key's hold-off expires, every held key is released:
- *     first_hold_ns after its press if no repeat came (bridges the
- *     terminal's initial autorepeat delay), else repeat_hold_ns after its
- *     last repeat (a few missed repeat intervals).
+ *     first_hold_ns after its press if no repeat came (shorter than the
+ *     menu's repeat delay, so a tap moves its cursor once; see
+ *     TTYK_FIRST_HOLD_NS), else repeat_hold_ns after its last repeat (a
+ *     few missed repeat intervals). The first repeat of a key released so
+ *     is its press again.
  *   - At most TTYK_HELD keys are down; a press beyond that releases the
  *     oldest first.
- * Consequence: a tap reads as a press of about first_hold_ns; a key held
- * while another is tapped is released with the tapped one.
+ * Consequence: a tap reads as a press of about first_hold_ns; a held key
+ * reads as a press, a release between first_hold_ns and the terminal's
+ * first repeat, and a press again; a key held while another is tapped is
+ * released with the tapped one.
  *
  * A lone ESC is ambiguous with the start of a sequence split across reads:
  * it stays pending, and becomes KEY_ESC when no byte continued it within
@@ -56,8 +60,13 @@
 
 #include "input/in.h"
 
-#define TTYK_FIRST_HOLD_NS  550000000u   /* 550 ms: initial autorepeat delays are 250-500 ms
-					  * on the Linux console, GNOME and most terminals */
+/* 200 ms: a tap must read as a press shorter than the service menu's
+ * repeat delay (20 ticks, 333 ms, engine/game/sim.c), with room for a late
+ * tick or two, so that one tap moves the cursor once. Terminals start
+ * repeating a held key later (250 ms on the Linux console, 500 ms in
+ * GNOME): a held key reads as a press of 200 ms, a release, and a press
+ * again from its first repeat on. */
+#define TTYK_FIRST_HOLD_NS  200000000u
 #define TTYK_REPEAT_HOLD_NS 150000000u   /* 150 ms: repeat intervals are 30-100 ms */
 #define TTYK_ESC_WAIT_NS     50000000u   /* 50 ms: bytes of one key arrive together */
 

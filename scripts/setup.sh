@@ -1,13 +1,15 @@
 #!/bin/sh
 # Installs the Debian 12 packages that arcaded's build, run and tests need,
-# when any is missing: one `apt-get update`, then one install. Run by
-# `make run` and `make test`; safe to run again (it then does nothing).
+# when any is missing: one `apt-get update`, then one install. Safe to run
+# again (it then does nothing).
+#   scripts/setup.sh        what building and running need (`make run`)
+#   scripts/setup.sh test   that and what the tests, the package and the
+#                           image need (`make test`, `make deb`, `make image`)
 set -eu
 
 PACKAGES="
 build-essential
 pkg-config
-clang
 libevdev-dev
 libhidapi-dev
 libgpiod-dev
@@ -16,12 +18,15 @@ libasound2-dev
 libpng-dev
 libosmesa6-dev
 libsystemd-dev
-libcmocka-dev
 systemd
 udev
+freedoom
+"
+TEST_PACKAGES="
+clang
+libcmocka-dev
 tmux
 valgrind
-freedoom
 gcc-aarch64-linux-gnu
 libc6-dev-arm64-cross
 qemu-user-static
@@ -30,7 +35,20 @@ busybox-static
 cpio
 kmod
 xz-utils
+debhelper
+lintian
+mmdebstrap
+ovmf
+mtools
+dosfstools
+fdisk
+e2fsprogs
 "
+case ${1:-run} in
+run) ;;
+test) PACKAGES="$PACKAGES $TEST_PACKAGES" ;;
+*) echo "usage: scripts/setup.sh [run|test]" >&2; exit 2 ;;
+esac
 
 missing=""
 for p in $PACKAGES; do

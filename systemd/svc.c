@@ -6,8 +6,12 @@
  */
 #include "systemd/svc.h"
 
+#include <errno.h>
+#include <inttypes.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <sys/stat.h>
 
 #include <systemd/sd-daemon.h>
 
@@ -48,4 +52,18 @@ uint64_t svc_watchdog_interval_ns(void)
 	if (sd_watchdog_enabled(0, &usec) <= 0)
 		return 0;
 	return usec * 1000u / 2;
+}
+
+int svc_journal_fd(int fd)
+{
+	const char *e = getenv("JOURNAL_STREAM");
+	uintmax_t dev, ino;
+	struct stat st;
+	int used = 0;
+
+	if (!e || sscanf(e, "%ju:%ju%n", &dev, &ino, &used) != 2 || e[used] != '\0')
+		return 0;
+	if (fstat(fd, &st) != 0)
+		return -errno;
+	return (uintmax_t)st.st_dev == dev && (uintmax_t)st.st_ino == ino;
 }

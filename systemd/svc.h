@@ -7,8 +7,8 @@
  * or thread, so a hung loop stops the pings and gets restarted) at least
  * every svc_watchdog_interval_ns; svc_stopping when shutting down.
  *
- * Every call is a no-op returning 0 when the process does not run under
- * systemd (NOTIFY_SOCKET unset). Sending returns a positive value; a
+ * Every notification is a no-op returning 0 when the process does not run
+ * under systemd (NOTIFY_SOCKET unset). Sending returns a positive value; a
  * failure -errno. Nothing here logs, blocks or keeps state.
  */
 #ifndef ARCADED_SYSTEMD_SVC_H
@@ -32,5 +32,13 @@ int svc_watchdog_ping(void);
 /* How often to ping: half of WATCHDOG_USEC, in ns; 0 when the watchdog is
  * off for this process (unset, or WATCHDOG_PID names another process). */
 uint64_t svc_watchdog_interval_ns(void);
+
+/* Whether fd is the stream systemd connected to the journal: the device
+ * and inode in JOURNAL_STREAM ("DEV:INO", set by the service manager for
+ * StandardOutput=/StandardError=journal) are fd's. 1 yes, 0 no (unset, a
+ * terminal, a file or a pipe of our own: a child inherits the variable
+ * with other fds), -errno when fd cannot be looked at. Lines written to
+ * such a stream may start with a "<N>" priority prefix (app/say.h). */
+int svc_journal_fd(int fd);
 
 #endif

@@ -15,8 +15,9 @@
 #   floating point and no mutable file-scope state (no .data/.bss symbols
 #   in the objects); engine/gl/ is exempt from these three: it is the only
 #   code with floating point and with OSMesa or GL headers (in rgl.c);
-# - outside engine/, only backend files include Linux or device-library
-#   headers;
+# - outside engine/, only the files listed below (backends, the thread
+#   pool, the plugin loader, screenshots, hotplug) include Linux,
+#   device-library or other platform headers, each only the ones it needs;
 # - every exported symbol of shipped code starts with its file's prefix
 #   (the name up to the first '_': in_evdev.c exports in_*, hidr.c hidr_*).
 # BUILD (default build) names the build whose objects are checked.
@@ -144,14 +145,44 @@ if [ -n "$bad" ]; then
 fi
 
 # ---- platform headers only in backends --------------------------------
-allowed_platform='^(audio/au_alsa\.c|display/dp_fbdev\.c|display/dp_term\.c|input/in_evdev\.c|input/in_tty\.c|input/ttyk\.c|input/in_keys\.c|input/hidr\.c|input/in_hid\.c|input/in_gpio\.c|systemd/svc\.c)$'
-for f in $(grep -lE '#[[:space:]]*include[[:space:]]*<(linux/|sys/ioctl|sys/kd|termios|libevdev|systemd/|hidapi|gpiod|alsa/)' \
-	app/*.c app/*.h input/*.c input/*.h display/*.c display/*.h audio/*.c audio/*.h \
-	config/*.c config/*.h 2>/dev/null); do
-	if ! echo "$f" | grep -qE "$allowed_platform"; then
-		echo "FAIL $f includes a platform header but is not a backend"; fail=1
+# Every file outside engine/ that includes a Linux, device-library or
+# other platform header, the headers it may include (an extended regex on
+# the name inside <>) and why. A platform header in a file not listed, or
+# one its entry does not allow, fails; so does an entry whose file no
+# longer includes any (the list names exactly the files that need them).
+platform='alsa/|linux/|sys/ioctl|sys/kd|sys/inotify|termios|libevdev|systemd/|hidapi|gpiod|libusb|png\.h|pthread|dlfcn'
+cat > "$tmp/platform" <<'EOT'
+audio/au_alsa.c	alsa/asoundlib\.h	the ALSA backend: libasound
+display/dp_fbdev.c	linux/fb\.h|linux/kd\.h|sys/ioctl\.h	the fbdev backend: FBIOGET_*, the console's graphics mode
+display/dp_term.c	sys/ioctl\.h|termios\.h	the terminal backend: the window size, raw mode
+display/shot.c	png\.h	PNG screenshots are written with libpng
+input/in_evdev.c	libevdev/libevdev\.h	the evdev backend reads keyboards through libevdev
+input/in_keys.c	libevdev/libevdev\.h	key names are libevdev's
+input/ttyk.c	linux/input-event-codes\.h	terminal keys become the kernel's key codes
+input/hidr.c	linux/input-event-codes\.h	HID usages become the kernel's key codes
+input/in_hid.c	hidapi\.h|pthread\.h	the HID backend: hidapi, read in a thread (hid_read blocks; no fd to poll)
+input/in_gpio.c	gpiod\.h|linux/input-event-codes\.h	the GPIO backend: libgpiod lines as key codes
+input/hp.c	sys/inotify\.h|libusb\.h	hotplug notices: inotify on /dev, libusb's hotplug callbacks
+app/pool.c	pthread\.h	the render thread pool
+app/glr.c	dlfcn\.h	loads the OSMesa renderer plugin (arcaded-gl.so) with dlopen
+systemd/svc.c	systemd/sd-daemon\.h	sd_notify through libsystemd
+EOT
+grep -nE "#[[:space:]]*include[[:space:]]*<($platform)" app/*.c app/*.h input/*.c input/*.h \
+	audio/*.c audio/*.h display/*.c display/*.h config/*.c config/*.h systemd/*.c systemd/*.h 2>/dev/null |
+	sed -E 's#^([^:]*):([0-9]+):.*<([^>]*)>.*#\1 \2 \3#' > "$tmp/pinc"
+while read -r f line hdr; do
+	allow=$(awk -F '\t' -v f="$f" '$1 == f { print $2 }' "$tmp/platform")
+	if [ -z "$allow" ]; then
+		echo "FAIL $f:$line includes <$hdr>, a platform header, but is not a backend listed in tests/check_layers.sh"; fail=1
+	elif ! echo "$hdr" | grep -qxE "$allow"; then
+		echo "FAIL $f:$line includes <$hdr>; its entry allows only: $allow"; fail=1
 	fi
-done
+done < "$tmp/pinc"
+while IFS='	' read -r f allow why; do
+	if ! awk -v f="$f" '$1 == f { found = 1 } END { exit !found }' "$tmp/pinc"; then
+		echo "FAIL $f is listed for platform headers ($why) but includes none"; fail=1
+	fi
+done < "$tmp/platform"
 
 # ---- exported names match their files ----------------------------------
 shipped=""

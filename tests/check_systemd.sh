@@ -4,6 +4,8 @@
 #   - the unit passes `systemd-analyze verify` with no message at all, once
 #     @BINDIR@ points at a stand-in executable in a temporary directory;
 #   - its `systemd-analyze security --offline` exposure is at most MAX_EXPOSURE;
+#   - the boot waits neither for a framebuffer nor for READY=1, and libusb
+#     can hear udev (AF_NETLINK, no private network namespace, no IP);
 #   - the sysusers.d and tmpfiles.d entries apply to an empty temporary root
 #     (users, then directories with their owners and modes);
 #   - the udev rules are well-formed (udevadm of systemd 252 has no verify,
@@ -69,6 +71,40 @@ else
 		fail "security exposure $score > $MAX_EXPOSURE; the items that cost:"
 		printf '%s\n' "$out" | grep '✗' | sed 's/   */  /g; s/^/    /'
 	fi
+fi
+
+# --- unit: what the daemon's design needs of it -----------------------------
+# The boot never waits for a display (it may never come: nomodeset), and
+# READY=1, sent after the first frame on one, does not hold multi-user
+# (DefaultDependencies=no, the service's usual dependencies spelled out)
+# nor time out the start.
+ok=1
+for dep in Wants After Requires BindsTo; do
+	if unit_get "$dep" | grep -q 'dev-fb[0-9]*\.device'; then
+		ok=0; echo "    $dep= names a framebuffer device unit: the boot would wait for it"
+	fi
+done
+[ "$(unit_get DefaultDependencies)" = no ] || { ok=0; echo "    DefaultDependencies=no missing: multi-user.target would wait for READY=1"; }
+[ "$(unit_get TimeoutStartSec)" = infinity ] || { ok=0; echo "    TimeoutStartSec=infinity missing: a cabinet without a display would be killed at start"; }
+grep -q '^Requires=sysinit.target$' "$UNIT" && grep -q '^After=sysinit.target basic.target$' "$UNIT" &&
+	grep -q '^Conflicts=shutdown.target$' "$UNIT" && grep -q '^Before=shutdown.target$' "$UNIT" ||
+	{ ok=0; echo "    the usual service dependencies (sysinit, basic, shutdown) are not all spelled out"; }
+if [ $ok -eq 1 ]; then
+	pass "the boot does not wait for the display or for READY=1; the start does not time out"
+else
+	fail "display and start-up dependencies (above)"
+fi
+# libusb's hotplug needs udev's netlink messages: the host's network
+# namespace and AF_NETLINK; IP is denied outright.
+ok=1
+[ "$(unit_get PrivateNetwork)" != yes ] || { ok=0; echo "    PrivateNetwork=yes: udev's netlink messages never reach libusb"; }
+fams=$(unit_get RestrictAddressFamilies | tr ' ' '\n' | sort | tr '\n' ' ')
+[ "$fams" = "AF_NETLINK AF_UNIX " ] || { ok=0; echo "    RestrictAddressFamilies=$fams (want AF_UNIX AF_NETLINK only)"; }
+[ "$(unit_get IPAddressDeny)" = any ] || { ok=0; echo "    IPAddressDeny=any missing"; }
+if [ $ok -eq 1 ]; then
+	pass "network: AF_UNIX and AF_NETLINK (udev's messages for libusb) only, IP denied"
+else
+	fail "network settings (above)"
 fi
 
 # --- sysusers ---------------------------------------------------------------

@@ -811,6 +811,12 @@ static int grid_build(struct grid_p *p, const struct grid_lines *L, struct map *
 int grid_parse(const char *text, size_t len, const char *name, const struct grid_names *names,
 	       struct map **out, char *err, size_t errlen)
 {
+	return grid_parse_lim(text, len, name, names, NULL, out, err, errlen);
+}
+
+int grid_parse_lim(const char *text, size_t len, const char *name, const struct grid_names *names,
+		   const struct lim_stop *stop, struct map **out, char *err, size_t errlen)
+{
 	struct grid_p *p = calloc(1, sizeof *p);
 	struct grid_lines L = { NULL, 0, 0 };
 	struct map *m = NULL;
@@ -839,8 +845,14 @@ int grid_parse(const char *text, size_t len, const char *name, const struct grid
 	if (!r)
 		r = grid_build(p, &L, &m);
 	if (!r) {
-		r = map_finish(m, err, errlen);
-		if (r == -EINVAL) {
+		r = map_finish_lim(m, stop, err, errlen);
+		if (r == -E2BIG || r == -ECANCELED) {
+			/* the node builder's limits and stop: "name: node builder: ..." */
+			char why[160] = "";
+			msg_cat(why, sizeof why, err ? err : "");
+			grid_fail(p, 0, 0, "");
+			msg_cat(err, errlen, why);
+		} else if (r == -EINVAL) {
 			/* the import only makes valid maps: reaching this is a bug,
 			 * reported with the finisher's message behind the name */
 			char why[160] = "";

@@ -20,6 +20,7 @@
 
 #include <stddef.h>
 
+struct lim_stop;
 struct map;
 struct tex_set;
 
@@ -49,8 +50,12 @@ void grid_names_from_tex(struct grid_names *n, const struct tex_set *t);
  * messages, e.g. the file name) into a new finished map. names may be NULL.
  * Returns 0, -EINVAL with err holding "name:line:column: what is wrong"
  * (line and column 1-based; "name: ..." for whole-map errors such as a
- * missing player start), or -ENOMEM. err may be NULL. The map is the
- * caller's: map_free. */
+ * missing player start), -E2BIG or -ECANCELED (the node builder's limits,
+ * nb.h, and the stop hook, lim.h, which may be NULL) or -ENOMEM. err may
+ * be NULL. The map is the caller's: map_free. grid_parse is
+ * grid_parse_lim without a stop hook. */
+int grid_parse_lim(const char *text, size_t len, const char *name, const struct grid_names *names,
+		   const struct lim_stop *stop, struct map **out, char *err, size_t errlen);
 int grid_parse(const char *text, size_t len, const char *name, const struct grid_names *names,
 	       struct map **out, char *err, size_t errlen);
 

@@ -46,6 +46,7 @@
 
 #include "engine/core/fx.h"
 
+struct lim_stop;
 struct map;
 struct map_thing;
 
@@ -54,6 +55,20 @@ struct map_thing;
 #define LMAP_GRID_MAX 65536            /* texels per surface before coarsening */
 #define LMAP_TEXELS_MAX (16u << 20)    /* texels in all before coarsening all */
 #define LMAP_RADIUS_MAX 2048           /* map units */
+
+/* Limits on one lmap_new (issue 13 item 8): 30,000 lights took 60 s
+ * without them. A step is one test of whether a light reaches a surface,
+ * one blockmap cell filled or crossed by a ray, one line tested against a
+ * ray, and a texel's own work counts 8 (its five distances): about 10 ns
+ * a step both on Freedoom and on the hostile maps, so the limit is about
+ * 2 s. Freedoom's most lit maps: freedoom2 MAP28 has 116 lights (35 times
+ * fewer than LMAP_MAX_LIGHTS), MAP18 takes the most steps, 15.7 million
+ * (13 times fewer than LMAP_MAX_STEPS). LMAP_MAX_CELL_LINES bounds the
+ * blockmap's lists (long lines over a big map cross many cells; 16 MB at
+ * the limit). */
+#define LMAP_MAX_LIGHTS 4096
+#define LMAP_MAX_STEPS ((uint64_t)200 << 20)
+#define LMAP_MAX_CELL_LINES (1u << 22)
 
 /* Lights come from map things (lmap_lights_from_map): arcaded's light
  * thing (th.h: types TH_LIGHT_FIRST..TH_LIGHT_LAST encode radius 64..512,
@@ -94,8 +109,14 @@ struct lmap;
 
 /* Computes the light maps of finished map m (borrowed only during the
  * call) for n lights (n 0 gives an empty, valid lmap). Returns 0, -EINVAL
- * (a light with intensity or radius out of range, n < 0) or -ENOMEM.
- * Owned by the caller: lmap_free. */
+ * (a light with intensity or radius out of range, n < 0), -E2BIG (more
+ * than LMAP_MAX_LIGHTS lights, LMAP_MAX_STEPS steps or
+ * LMAP_MAX_CELL_LINES blockmap entries; err says which and the limit),
+ * -ECANCELED (stop said so; stop may be NULL, lim.h) or -ENOMEM. err may
+ * be NULL. Owned by the caller: lmap_free. lmap_new is lmap_new_lim
+ * without a stop hook or message. */
+int lmap_new_lim(const struct map *m, const struct lmap_light *lights, int n,
+		 const struct lim_stop *stop, struct lmap **out, char *err, size_t errlen);
 int lmap_new(const struct map *m, const struct lmap_light *lights, int n, struct lmap **out);
 
 /* NULL-safe. */

@@ -107,6 +107,16 @@ static int map_check_level(const struct map *m, char *err, size_t errlen)
 	}
 	for (i = 0; i < m->num_sectors; i++) {
 		const struct map_sector *s = &m->sectors[i];
+		if (s->floor_h < -MAP_HEIGHT_MAX || s->floor_h > MAP_HEIGHT_MAX ||
+		    s->ceil_h < -MAP_HEIGHT_MAX || s->ceil_h > MAP_HEIGHT_MAX) {
+			map_bad(err, errlen, "sector", i);
+			msg_cat(err, errlen, "floor ");
+			msg_fx(err, errlen, s->floor_h);
+			msg_cat(err, errlen, " or ceiling ");
+			msg_fx(err, errlen, s->ceil_h);
+			msg_cat(err, errlen, " out of range (+/-16383 units)");
+			return -EINVAL;
+		}
 		if (s->ceil_h < s->floor_h) {
 			map_bad(err, errlen, "sector", i);
 			msg_cat(err, errlen, "ceiling ");
@@ -203,6 +213,56 @@ static int map_check_segs(const struct map *m, char *err, size_t errlen)
 	return 0;
 }
 
+/* The nodes reached from the root must form a tree: a node or subsector
+ * reached twice makes every walk that visits both parents' sides
+ * exponential in the number of such nodes (a 66 KB file held 2^1200
+ * paths). One walk with an explicit stack, each child checked when first
+ * reached; children come before parents (checked above), so it ends.
+ * Nodes no path reaches are left alone. */
+static int map_check_tree(const struct map *m, char *err, size_t errlen)
+{
+	uint8_t *seen;
+	uint32_t *stack, top = 0;
+	int r = 0;
+
+	if (m->num_nodes == 0)
+		return 0;
+	seen = calloc((size_t)m->num_nodes + m->num_subsectors, 1);
+	stack = malloc((size_t)m->num_nodes * sizeof *stack);
+	if (!seen || !stack) {
+		free(seen);
+		free(stack);
+		return -ENOMEM;
+	}
+	stack[top++] = m->num_nodes - 1;
+	seen[m->num_nodes - 1] = 1;
+	while (top && !r) {
+		uint32_t n = stack[--top];
+
+		for (int c = 0; c < 2 && !r; c++) {
+			uint32_t ch = m->nodes[n].child[c];
+			int sub = (ch & MAP_NF_SUBSECTOR) != 0;
+			size_t k = sub ? (size_t)m->num_nodes + (ch & ~MAP_NF_SUBSECTOR) : ch;
+
+			if (seen[k]) {
+				map_bad(err, errlen, "node", n);
+				msg_cat(err, errlen, c ? "child[1] " : "child[0] ");
+				msg_cat(err, errlen, sub ? "subsector " : "node ");
+				msg_int(err, errlen, ch & ~MAP_NF_SUBSECTOR);
+				msg_cat(err, errlen, " is reached a second time: the BSP is not a tree");
+				r = -EINVAL;
+				break;
+			}
+			seen[k] = 1;
+			if (!sub)
+				stack[top++] = ch;
+		}
+	}
+	free(seen);
+	free(stack);
+	return r;
+}
+
 static int map_check_bsp(const struct map *m, char *err, size_t errlen)
 {
 	uint32_t i;
@@ -251,7 +311,7 @@ static int map_check_bsp(const struct map *m, char *err, size_t errlen)
 			}
 		}
 	}
-	return 0;
+	return map_check_tree(m, err, errlen);
 }
 
 /* FNV-1a over the level as given: counts, then every field of every vertex,
@@ -313,6 +373,11 @@ static uint64_t map_content_hash(const struct map *m)
 
 int map_finish(struct map *m, char *err, size_t errlen)
 {
+	return map_finish_lim(m, NULL, err, errlen);
+}
+
+int map_finish_lim(struct map *m, const struct lim_stop *stop, char *err, size_t errlen)
+{
 	int r;
 
 	if (err && errlen)
@@ -322,7 +387,7 @@ int map_finish(struct map *m, char *err, size_t errlen)
 		return r;
 	m->content_hash = map_content_hash(m);
 	if (m->num_nodes == 0 && m->num_subsectors == 0) {
-		r = nb_build(m, err, errlen);
+		r = nb_build(m, stop, err, errlen);
 		if (r)
 			return r;
 	}

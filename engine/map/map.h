@@ -37,6 +37,14 @@
  * coordinates then fit fx_t and cross products of differences fit int64, so
  * every geometric test is exact 64-bit arithmetic. map_finish enforces it. */
 #define MAP_COORD_MAX ((fx_t)((1 << 30) - 1))
+
+/* Largest floor and ceiling height magnitude: 16383 map units (Freedoom's
+ * heights stay within -1072..1984). The difference of two heights plus the
+ * view height (41) and a thing's height then fits fx_t, which the sim's
+ * eye height (viewz = floor + 41) and the renderer's height differences
+ * need; Doom's int16 heights go up to 32767 and would overflow them.
+ * map_finish enforces it; grid maps have the same bound. */
+#define MAP_HEIGHT_MAX (16383 * FX_ONE)
 #define MAP_NF_SUBSECTOR 0x80000000u  /* node child flag: a subsector index */
 
 /* Line flags, Doom values. */
@@ -48,6 +56,8 @@
 
 /* Bounding box order, Doom's. */
 enum { BOX_TOP, BOX_BOTTOM, BOX_LEFT, BOX_RIGHT };
+
+struct lim_stop;
 
 struct map_vertex {
 	fx_t x, y;
@@ -129,19 +139,25 @@ int map_alloc(struct map **out, uint32_t vertices, uint32_t sectors, uint32_t si
 
 /* Validates every index and value (naming the first bad entry in err, e.g.
  * "line 12: side[1] 40 out of range (32 sides)"): at least one sector and
- * line; vertex and thing coordinates within MAP_COORD_MAX; no ceiling below
- * its floor; side sectors; line vertices, zero length, side indices, and
- * ML_TWOSIDED set exactly when side[1] exists. Then computes content_hash
- * (see below), builds the BSP with nb_build when the map has neither nodes
- * nor subsectors, and validates the BSP (seg vertices, lines, sides and
+ * line; vertex and thing coordinates within MAP_COORD_MAX; floor and
+ * ceiling heights within MAP_HEIGHT_MAX, no ceiling below its floor; side
+ * sectors; line vertices, zero length, side indices, and ML_TWOSIDED set
+ * exactly when side[1] exists. Then computes content_hash (see below),
+ * builds the BSP with nb_build when the map has neither nodes nor
+ * subsectors, and validates the BSP (seg vertices, lines, sides and
  * sectors; subsector seg ranges and sectors; node partitions, and children
  * that are subsectors or nodes listed before their parent, so the root is
- * the last node; no nodes means exactly one subsector). err may be NULL.
- * Returns 0, -EINVAL (err says why) or -ENOMEM.
+ * the last node; no node or subsector reached twice from the root, so the
+ * BSP is a tree and every walk of it is linear; no nodes means exactly one
+ * subsector). err may be NULL. Returns 0, -EINVAL (err says why), -E2BIG
+ * or -ECANCELED (the node builder's limits and stop hook: nb.h) or
+ * -ENOMEM. stop (may be NULL) is polled by the node builder; map_finish
+ * is map_finish_lim without one.
  *
  * content_hash: FNV-1a (hash.h) of the counts, then every field of every
  * vertex, sector, side, line and thing in that order, taken before the node
  * builder appends split vertices. Not the name, not the BSP. */
+int map_finish_lim(struct map *m, const struct lim_stop *stop, char *err, size_t errlen);
 int map_finish(struct map *m, char *err, size_t errlen);
 
 /* NULL-safe. Frees the map and all of its arrays. */

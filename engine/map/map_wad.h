@@ -26,19 +26,30 @@
 #include <stddef.h>
 #include <stdint.h>
 
+struct lim_stop;
 struct map;
 struct tex_set;
 struct wad;
 
+/* Records a map lump may hold (THINGS ... SECTORS): Doom's 16-bit indices
+ * reach no further, and Freedoom's largest lump holds a few ten thousand. */
+#define MW_MAX_RECORDS 65536
+
 /* Loads map `name` (case-insensitive). 0, -ENOENT (no such map: err
- * lists the maps there are), -EINVAL (err says what is wrong) or -ENOMEM.
- * The map is the caller's (map_free) and owns all its data: the WADs may
- * be freed after loading. */
+ * lists the maps there are), -EINVAL (err says what is wrong), -E2BIG (a
+ * limit: MW_MAX_RECORDS, or the node builder's, nb.h; err names the file,
+ * map, lump and limit), -ECANCELED (stop said so, while the node builder
+ * ran; stop may be NULL, lim.h) or -ENOMEM. The map is the caller's
+ * (map_free) and owns all its data: the WADs may be freed after loading.
+ * map_load_wad is map_load_wad_lim without a stop hook. */
+int map_load_wad_lim(const struct wad *w, const struct tex_set *t, const char *name,
+		     const struct lim_stop *stop, struct map **out, char *err, size_t errlen);
 int map_load_wad(const struct wad *w, const struct tex_set *t, const char *name,
 		 struct map **out, char *err, size_t errlen);
 
 /* Stores up to max map names found in w (in lump order, each once) into
- * names; returns how many there are in all. */
+ * names; returns how many there are in all, or -ENOMEM. O(n log n) in the
+ * number of markers. */
 int map_list_wad(const struct wad *w, char (*names)[9], int max);
 
 /* Writes n maps (names[i], up to 8 chars, e.g. "MAP01") into one new PWAD

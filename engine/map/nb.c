@@ -25,6 +25,13 @@
  * and the recursion terminates (each directed line group partitions at most
  * once on any path; NB_MAX_DEPTH is a guard that turns a pathological set
  * into a leaf).
+ *
+ * Bounds (nb.h): every classification and every split-list link walked is
+ * a step of b->lim (which also polls the caller's stop hook); every array
+ * the builder holds is charged to b->bytes when it is allocated or grown
+ * and refunded when freed, so a map whose splits explode fails early
+ * with -E2BIG instead of running for minutes or taking the machine's
+ * memory.
  */
 #include "engine/map/nb.h"
 
@@ -32,6 +39,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/lim.h"
 #include "engine/core/msg.h"
 #include "engine/core/tab.h"
 #include "engine/map/map.h"
@@ -73,7 +81,24 @@ struct nb {
 	struct map_subsector *subs;
 	struct map_node *nodes;
 	uint32_t num_segs, seg_cap, num_subs, sub_cap, num_nodes, node_cap;
+	struct lim lim;                /* steps (nb.h) and the stop hook */
+	uint64_t links;                /* split-list links walked, not yet taken */
+	uint64_t bytes, peak;          /* held now, and at most (NB_MAX_BYTES) */
+	int over_bytes;                /* -E2BIG came from NB_MAX_BYTES */
 };
+
+/* Charges (add > 0) or refunds (add < 0) bytes; -E2BIG past NB_MAX_BYTES. */
+static int nb_bytes(struct nb *b, int64_t add)
+{
+	if (add > 0 && (uint64_t)add > NB_MAX_BYTES - b->bytes) {
+		b->over_bytes = 1;
+		return -E2BIG;
+	}
+	b->bytes = add < 0 ? b->bytes - (uint64_t)-add : b->bytes + (uint64_t)add;
+	if (b->bytes > b->peak)
+		b->peak = b->bytes;
+	return 0;
+}
 
 /* New capacity of at least need items (doubling from *cap), or 0 if it
  * would not fit uint32_t. */
@@ -89,21 +114,29 @@ static uint32_t nb_cap(uint32_t cap, uint32_t need)
 	return n;
 }
 
-/* Returns p with room for need items of elem bytes (updating *cap), or NULL
- * on failure (p is then untouched and still owned by the caller). */
-static void *nb_grow(void *p, uint32_t *cap, uint32_t need, size_t elem)
+/* Returns p with room for need items of elem bytes (updating *cap and
+ * charging the growth to b), or NULL on failure (p is then untouched and
+ * still owned by the caller; *r says why: -ENOMEM or -E2BIG). */
+static void *nb_grow(struct nb *b, void *p, uint32_t *cap, uint32_t need, size_t elem, int *r)
 {
 	uint32_t n;
 	void *q;
 
 	if (p && need <= *cap)
 		return p;
+	*r = -ENOMEM;
 	n = nb_cap(*cap, need);
 	if (!n)
 		return NULL;
+	if (nb_bytes(b, (int64_t)((uint64_t)(n - (p ? *cap : 0)) * elem))) {
+		*r = -E2BIG;
+		return NULL;
+	}
 	q = realloc(p, (size_t)n * elem);
 	if (q)
 		*cap = n;
+	else
+		nb_bytes(b, -(int64_t)((uint64_t)(n - (p ? *cap : 0)) * elem));
 	return q;
 }
 
@@ -199,11 +232,13 @@ static int64_t nb_cross(const struct nb *b, const struct nb_part *p, uint32_t v)
 	return (int64_t)p->dx * ((int64_t)q->y - p->y) - (int64_t)p->dy * ((int64_t)q->x - p->x);
 }
 
-static uint32_t nb_find_split(const struct nb *b, uint32_t line, uint32_t group)
+/* The split vertex of line made on group, or MAP_NONE. Each link walked is
+ * counted in b->links: mutually crossing lines make the lists long. */
+static uint32_t nb_find_split(struct nb *b, uint32_t line, uint32_t group)
 {
 	uint32_t i;
 
-	for (i = b->split_head[line]; i != MAP_NONE; i = b->splits[i].next)
+	for (i = b->split_head[line]; i != MAP_NONE; i = b->splits[i].next, b->links++)
 		if (b->splits[i].group == group)
 			return b->splits[i].vertex;
 	return MAP_NONE;
@@ -228,7 +263,7 @@ static fx_t nb_lerp(fx_t v, int64_t d, uint64_t num, uint64_t den)
  * line's original (exact) end points, so both sides of a two-sided line and
  * all pieces of a line split at the same place. Returns 1 and fills *at
  * (and *vertex, MAP_NONE for a new point). */
-static int nb_intersect(const struct nb *b, const struct nb_part *p, const struct nb_seg *s,
+static int nb_intersect(struct nb *b, const struct nb_part *p, const struct nb_seg *s,
 			struct map_vertex *at, uint32_t *vertex)
 {
 	const struct map *m = b->m;
@@ -265,7 +300,7 @@ static int nb_intersect(const struct nb *b, const struct nb_part *p, const struc
 }
 
 /* NB_FRONT, NB_BACK or NB_SPLIT (then *at, *vertex: see nb_intersect). */
-static int nb_classify(const struct nb *b, const struct nb_part *p, const struct nb_seg *s,
+static int nb_classify(struct nb *b, const struct nb_part *p, const struct nb_seg *s,
 		       struct map_vertex *at, uint32_t *vertex)
 {
 	const struct map *m = b->m;
@@ -297,15 +332,23 @@ static int nb_classify(const struct nb *b, const struct nb_part *p, const struct
 	return c2 < 0 ? NB_FRONT : NB_BACK;
 }
 
-/* Picks the best partition for set[0..n), or returns 0 if the set is convex. */
+/* Picks the best partition for set[0..n): 1, 0 if the set is convex, or a
+ * negative errno. Steps taken: n per candidate tried, and the links walked
+ * meanwhile. */
 static int nb_choose(struct nb *b, const struct nb_seg *set, uint32_t n, struct nb_part *best)
 {
-	uint32_t *cand = malloc((size_t)n * sizeof *cand);
+	uint32_t *cand;
 	uint32_t nc = 0, i, j, step;
 	int64_t best_score = -1;
+	int r = nb_bytes(b, (int64_t)n * (int64_t)sizeof *cand);
 
-	if (!cand)
+	if (r)
+		return r;
+	cand = malloc((size_t)n * sizeof *cand);
+	if (!cand) {
+		nb_bytes(b, -(int64_t)n * (int64_t)sizeof *cand);
 		return -ENOMEM;
+	}
 	b->gen++;
 	for (i = 0; i < n; i++) {
 		struct nb_part p;
@@ -322,6 +365,10 @@ static int nb_choose(struct nb *b, const struct nb_seg *set, uint32_t n, struct 
 		for (i = 0; i < nc; i += step) {
 			struct nb_part p;
 			int64_t front = 0, back = 0, splits = 0, score;
+			r = lim_take(&b->lim, n + b->links);
+			b->links = 0;
+			if (r)
+				goto out;
 			nb_part_of(b, set[cand[i]].line, set[cand[i]].side, &p);
 			for (j = 0; j < n; j++) {
 				struct map_vertex at;
@@ -344,8 +391,11 @@ static int nb_choose(struct nb *b, const struct nb_seg *set, uint32_t n, struct 
 			break;
 		step = 1;      /* the sample found nothing: decide convexity on all */
 	}
+	r = best_score >= 0;
+out:
 	free(cand);
-	return best_score >= 0;
+	nb_bytes(b, -(int64_t)n * (int64_t)sizeof *cand);
+	return r;
 }
 
 static int nb_new_vertex(struct nb *b, uint32_t line, uint32_t group, struct map_vertex at,
@@ -353,6 +403,7 @@ static int nb_new_vertex(struct nb *b, uint32_t line, uint32_t group, struct map
 {
 	struct map *m = b->m;
 	struct nb_split *sp;
+	int r;
 
 	if (m->num_vertices + 1 > b->vcap) {
 		/* map.vertices and vrec always share one capacity */
@@ -361,6 +412,8 @@ static int nb_new_vertex(struct nb *b, uint32_t line, uint32_t group, struct map
 		uint32_t *rec;
 		if (!n)
 			return -ENOMEM;
+		if (nb_bytes(b, (int64_t)(n - b->vcap) * (int64_t)(sizeof *v + sizeof *rec)))
+			return -E2BIG;
 		v = realloc(m->vertices, (size_t)n * sizeof *v);
 		if (!v)
 			return -ENOMEM;
@@ -371,9 +424,9 @@ static int nb_new_vertex(struct nb *b, uint32_t line, uint32_t group, struct map
 		b->vrec = rec;
 		b->vcap = n;
 	}
-	sp = nb_grow(b->splits, &b->split_cap, b->num_splits + 1, sizeof *sp);
+	sp = nb_grow(b, b->splits, &b->split_cap, b->num_splits + 1, sizeof *sp, &r);
 	if (!sp)
-		return -ENOMEM;
+		return r;
 	b->splits = sp;
 	*out = m->num_vertices++;
 	m->vertices[*out] = at;
@@ -409,16 +462,17 @@ static int nb_leaf(struct nb *b, const struct nb_seg *set, uint32_t n, uint32_t 
 	const struct map *m = b->m;
 	struct map_subsector *ss;
 	uint32_t i;
+	int r;
 
-	struct map_seg *sg = nb_grow(b->segs, &b->seg_cap, b->num_segs + n, sizeof *sg);
+	struct map_seg *sg = nb_grow(b, b->segs, &b->seg_cap, b->num_segs + n, sizeof *sg, &r);
 	struct map_subsector *sb;
 
 	if (!sg)
-		return -ENOMEM;
+		return r;
 	b->segs = sg;
-	sb = nb_grow(b->subs, &b->sub_cap, b->num_subs + 1, sizeof *sb);
+	sb = nb_grow(b, b->subs, &b->sub_cap, b->num_subs + 1, sizeof *sb, &r);
 	if (!sb)
-		return -ENOMEM;
+		return r;
 	b->subs = sb;
 	nb_box_clear(box);
 	for (i = 0; i < n; i++) {
@@ -463,6 +517,13 @@ static int nb_node(struct nb *b, const struct nb_seg *set, uint32_t n, int depth
 		return r;
 	if (r == 0)
 		return nb_leaf(b, set, n, child, box);
+	/* each side holds at most n pieces: a split seg puts one in each */
+	r = nb_bytes(b, 2 * (int64_t)n * (int64_t)sizeof *side[0]);
+	if (r)
+		return r;
+	r = lim_take(&b->lim, n);
+	if (r)
+		goto out;
 	side[0] = malloc((size_t)n * sizeof *side[0]);
 	side[1] = malloc((size_t)n * sizeof *side[1]);
 	r = -ENOMEM;
@@ -477,8 +538,12 @@ static int nb_node(struct nb *b, const struct nb_seg *set, uint32_t n, int depth
 			side[c][count[c]++] = s;
 			continue;
 		}
-		if (v == MAP_NONE && nb_new_vertex(b, s.line, p.group, at, &v))
-			goto out;
+		if (v == MAP_NONE) {
+			r = nb_new_vertex(b, s.line, p.group, at, &v);
+			if (r)
+				goto out;
+			r = -ENOMEM;
+		}
 		t = s;
 		s.v2 = v;
 		t.v1 = v;
@@ -492,8 +557,7 @@ static int nb_node(struct nb *b, const struct nb_seg *set, uint32_t n, int depth
 		if (r)
 			goto out;
 	}
-	r = -ENOMEM;
-	nd = nb_grow(b->nodes, &b->node_cap, b->num_nodes + 1, sizeof *nd);
+	nd = nb_grow(b, b->nodes, &b->node_cap, b->num_nodes + 1, sizeof *nd, &r);
 	if (!nd)
 		goto out;
 	b->nodes = nd;
@@ -517,6 +581,7 @@ static int nb_node(struct nb *b, const struct nb_seg *set, uint32_t n, int depth
 out:
 	free(side[0]);
 	free(side[1]);
+	nb_bytes(b, -2 * (int64_t)n * (int64_t)sizeof *side[0]);
 	return r;
 }
 
@@ -561,7 +626,21 @@ static int nb_check(const struct map *m, char *err, size_t errlen)
 	return 0;
 }
 
-int nb_build(struct map *m, char *err, size_t errlen)
+/* "node builder: <lines> lines need more than <limit> <what> (<NAME>)" */
+static void nb_over(char *err, size_t errlen, const struct map *m, uint64_t limit,
+		    const char *what, const char *name)
+{
+	msg_cat(err, errlen, "node builder: ");
+	msg_int(err, errlen, m->num_lines);
+	msg_cat(err, errlen, " lines need more than ");
+	msg_int(err, errlen, (int64_t)limit);
+	msg_cat(err, errlen, what);
+	msg_cat(err, errlen, " (limit ");
+	msg_cat(err, errlen, name);
+	msg_cat(err, errlen, ")");
+}
+
+int nb_build(struct map *m, const struct lim_stop *stop, char *err, size_t errlen)
 {
 	struct nb b;
 	struct nb_seg *set = NULL;
@@ -585,6 +664,15 @@ int nb_build(struct map *m, char *err, size_t errlen)
 	memset(&b, 0, sizeof b);
 	b.m = m;
 	b.vcap = m->num_vertices;
+	lim_init(&b.lim, stop, NB_MAX_STEPS);
+	/* the per-line and per-vertex arrays below, nb_groups' keys and the
+	 * candidate stamps (at most two per line) */
+	r = nb_bytes(&b, (int64_t)m->num_lines * (int64_t)(sizeof *b.group + sizeof *b.orient +
+						      sizeof *b.split_head + 2 * sizeof *set +
+						      sizeof(struct nb_key) + 2 * sizeof *b.stamp) +
+			     (int64_t)(b.vcap + 1) * (int64_t)sizeof *b.vrec);
+	if (r)
+		goto out;
 	r = -ENOMEM;
 	b.group = malloc((size_t)m->num_lines * sizeof *b.group);
 	b.orient = malloc((size_t)m->num_lines * sizeof *b.orient);
@@ -625,8 +713,16 @@ int nb_build(struct map *m, char *err, size_t errlen)
 out:
 	if (r) {
 		m->num_vertices = orig_vertices;
-		if (err && errlen && !err[0])
-			msg_cat(err, errlen, "node builder: out of memory");
+		if (err && errlen && !err[0]) {
+			if (r == -E2BIG && b.over_bytes)
+				nb_over(err, errlen, m, NB_MAX_BYTES, " bytes", "NB_MAX_BYTES");
+			else if (r == -E2BIG)
+				nb_over(err, errlen, m, NB_MAX_STEPS, " steps", "NB_MAX_STEPS");
+			else if (r == -ECANCELED)
+				msg_cat(err, errlen, "node builder: stopped");
+			else
+				msg_cat(err, errlen, "node builder: out of memory");
+		}
 	}
 	free(set);
 	free(b.group);

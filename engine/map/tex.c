@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "engine/core/le.h"
+#include "engine/core/lim.h"
 #include "engine/map/tex_local.h"
 #include "engine/map/wad.h"
 
@@ -83,9 +84,10 @@ int tex_pic_header(const uint8_t *d, size_t len, int *w, int *h, int *left, int 
 }
 
 /* Draws one column's posts, starting at byte ofs of the lump, into column
- * px of p (already clipped to 0..w-1); y is the picture's top in p. */
-static void tex_pic_column(struct tex_pic *p, const uint8_t *d, size_t len, size_t ofs, int px,
-			   int y)
+ * px of p (already clipped to 0..w-1); y is the picture's top in p. 0 or
+ * lim's error. */
+static int tex_pic_column(struct tex_pic *p, const uint8_t *d, size_t len, size_t ofs, int px,
+			  int y, struct lim *lim)
 {
 	int top = -1;
 	uint8_t *col = p->px + (size_t)px * (size_t)p->h;
@@ -99,6 +101,8 @@ static void tex_pic_column(struct tex_pic *p, const uint8_t *d, size_t len, size
 		top = delta <= top ? top + delta : delta;
 		if (ofs + 3 + (size_t)n > len)
 			n = ofs + 3 > len ? 0 : (int)(len - ofs - 3);
+		if (lim && lim_take(lim, 1 + (uint64_t)n))
+			return lim->err;
 		for (int k = 0; k < n; k++) {
 			int ty = y + top + k;
 
@@ -111,9 +115,10 @@ static void tex_pic_column(struct tex_pic *p, const uint8_t *d, size_t len, size
 		}
 		ofs += 4 + (size_t)d[ofs + 1];
 	}
+	return 0;
 }
 
-int tex_pic_draw(struct tex_pic *p, const uint8_t *d, size_t len, int x, int y)
+int tex_pic_draw(struct tex_pic *p, const uint8_t *d, size_t len, int x, int y, struct lim *lim)
 {
 	int w, h, left, top;
 
@@ -123,9 +128,12 @@ int tex_pic_draw(struct tex_pic *p, const uint8_t *d, size_t len, int x, int y)
 		int px = x + c;
 		size_t ofs = (size_t)(uint32_t)le_s32(d + 8 + 4 * (size_t)c);
 
+		if (lim && lim_take(lim, 1))
+			return lim->err;
 		if (px < 0 || px >= p->w || ofs >= len)
 			continue;
-		tex_pic_column(p, d, len, ofs, px, y);
+		if (tex_pic_column(p, d, len, ofs, px, y, lim))
+			return lim->err;
 	}
 	return 0;
 }
@@ -192,6 +200,8 @@ void tex_free(struct tex_set *t)
 	free(t->tex_xlat);
 	free(t->flat_xlat);
 	free(t->anims);
+	free(t->tex_by_name);
+	free(t->flat_by_name);
 	free(t);
 }
 
@@ -215,7 +225,9 @@ int tex_wall_index(const struct tex_set *t, uint16_t num)
 /* The index of name among entries first .. n - 1 of an array of stride
  * bytes at base whose first member is a name of at most len (8 or 4)
  * characters in tex_name's form; -1 if none, or when name is empty or
- * longer than len. The one lookup of textures, flats and sprites. */
+ * longer than len. The scan that defines every lookup of textures, flats
+ * and sprites (textures and flats use their name index when they have
+ * one, which finds the same entry: the first of that name). */
 static int tex_find_in(const void *base, size_t stride, int first, int n, size_t len,
 		       const char *name)
 {
@@ -230,16 +242,96 @@ static int tex_find_in(const void *base, size_t stride, int first, int n, size_t
 	return -1;
 }
 
+/* The name of picture or flat i of t (flat 1: flats, else textures). */
+static const char *tex_name_of(const struct tex_set *t, int flat, int i)
+{
+	return flat ? t->flats[i].name : t->textures[i].name;
+}
+
+/* The first index in by[0..n) (sorted by name, then index) whose name is
+ * name, or -1 (also for an empty name or one of more than 8 characters). */
+static int tex_bsearch(const struct tex_set *t, int flat, const uint16_t *by, int n,
+		       const char *name)
+{
+	char key[9];
+	int lo = 0, hi = n;
+
+	if (!name[0] || strlen(name) > 8)
+		return -1;
+	tex_name(key, name);
+	while (lo < hi) {
+		int mid = lo + (hi - lo) / 2;
+
+		if (memcmp(tex_name_of(t, flat, by[mid]), key, 9) < 0)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo < n && memcmp(tex_name_of(t, flat, by[lo]), key, 9) == 0 ? by[lo] : -1;
+}
+
 int tex_find(const struct tex_set *t, const char *name)
 {
 	if (strcmp(name, "-") == 0)
 		return 0;
+	if (t->tex_by_name)
+		return t->num_textures > 1 ? tex_bsearch(t, 0, t->tex_by_name, t->num_textures - 1, name)
+					   : -1;
 	return tex_find_in(t->textures, sizeof(*t->textures), 1, t->num_textures, 8, name);
 }
 
 int tex_find_flat(const struct tex_set *t, const char *name)
 {
+	if (t->flat_by_name)
+		return tex_bsearch(t, 1, t->flat_by_name, t->num_flats, name);
 	return tex_find_in(t->flats, sizeof(*t->flats), 0, t->num_flats, 8, name);
+}
+
+/* Sorts by[0..n) (indices of textures, or flats) by name, then index: a
+ * bottom-up merge sort through a scratch array, stable (equal names keep
+ * index order) and n log n whatever the names. */
+static void tex_sort_names(const struct tex_set *t, int flat, uint16_t *by, uint16_t *tmp, int n)
+{
+	for (int width = 1; width < n; width *= 2) {
+		for (int lo = 0; lo < n; lo += 2 * width) {
+			int mid = lo + width < n ? lo + width : n;
+			int hi = lo + 2 * width < n ? lo + 2 * width : n;
+			int i = lo, j = mid, k = lo;
+
+			while (i < mid && j < hi)
+				tmp[k++] = memcmp(tex_name_of(t, flat, by[j]),
+						  tex_name_of(t, flat, by[i]), 9) < 0 ? by[j++] : by[i++];
+			while (i < mid)
+				tmp[k++] = by[i++];
+			while (j < hi)
+				tmp[k++] = by[j++];
+		}
+		memcpy(by, tmp, (size_t)n * sizeof *by);
+	}
+}
+
+/* tex_by_name and flat_by_name. */
+static int tex_index(struct tex_set *t)
+{
+	int nt = t->num_textures > 1 ? t->num_textures - 1 : 0;
+	int n = nt > t->num_flats ? nt : t->num_flats;
+	uint16_t *tmp = malloc((size_t)(n ? n : 1) * sizeof *tmp);
+
+	t->tex_by_name = malloc((size_t)(nt ? nt : 1) * sizeof *t->tex_by_name);
+	t->flat_by_name = malloc((size_t)(t->num_flats ? t->num_flats : 1) *
+				 sizeof *t->flat_by_name);
+	if (!tmp || !t->tex_by_name || !t->flat_by_name) {
+		free(tmp);
+		return -ENOMEM;
+	}
+	for (int i = 0; i < nt; i++)
+		t->tex_by_name[i] = (uint16_t)(i + 1);
+	for (int i = 0; i < t->num_flats; i++)
+		t->flat_by_name[i] = (uint16_t)i;
+	tex_sort_names(t, 0, t->tex_by_name, tmp, nt);
+	tex_sort_names(t, 1, t->flat_by_name, tmp, t->num_flats);
+	free(tmp);
+	return 0;
 }
 
 int tex_find_sprite(const struct tex_set *t, const char *name)
@@ -357,11 +449,14 @@ static void tex_spr_set(struct tex_sprframe *f, int rot, uint16_t pic, uint8_t f
 	}
 }
 
-/* One sprite: every picture whose name starts with its 4 chars. */
-static int tex_sprite_build(struct tex_set *t, struct tex_sprite *s)
+/* One sprite: every picture whose name starts with its 4 chars. Takes a
+ * step per picture looked at (twice). */
+static int tex_sprite_build(struct tex_set *t, struct tex_sprite *s, struct lim *lim)
 {
 	int frames = 0;
 
+	if (lim && lim_take(lim, 2 * (uint64_t)t->num_sprpics))
+		return lim->err;
 	for (int i = 1; i < t->num_sprpics; i++) {
 		const char *n = t->sprpics[i].name;
 
@@ -392,17 +487,19 @@ static int tex_sprite_build(struct tex_set *t, struct tex_sprite *s)
 	return 0;
 }
 
-static int tex_sprites(struct tex_set *t)
+static int tex_sprites(struct tex_set *t, struct lim *lim)
 {
 	t->sprites = calloc((size_t)t->num_sprpics, sizeof *t->sprites);
 	if (!t->sprites)
 		return -ENOMEM;
 	for (int i = 1; i < t->num_sprpics; i++) {
 		const char *n = t->sprpics[i].name;
-		int seen = 0;
+		int seen = 0, r;
 
 		if (!tex_spr_valid(n))
 			continue;
+		if (lim && lim_take(lim, (uint64_t)t->num_sprites))
+			return lim->err;
 		for (int k = 0; k < t->num_sprites && !seen; k++)
 			seen = memcmp(t->sprites[k].name, n, 4) == 0;
 		if (seen)
@@ -410,16 +507,19 @@ static int tex_sprites(struct tex_set *t)
 		memcpy(t->sprites[t->num_sprites].name, n, 4);
 		t->sprites[t->num_sprites].name[4] = '\0';
 		t->num_sprites++;
-		if (tex_sprite_build(t, &t->sprites[t->num_sprites - 1]))
-			return -ENOMEM;
+		r = tex_sprite_build(t, &t->sprites[t->num_sprites - 1], lim);
+		if (r)
+			return r;
 	}
 	return 0;
 }
 
-int tex_set_finish(struct tex_set *t)
+int tex_set_finish(struct tex_set *t, struct lim *lim)
 {
-	int r = tex_sprites(t);
+	int r = tex_sprites(t, lim);
 
+	if (!r)
+		r = tex_index(t);
 	if (!r)
 		r = tex_anims(t);
 	if (r)

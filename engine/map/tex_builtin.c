@@ -387,7 +387,7 @@ int tex_builtin(struct tex_set **out)
 	if (!r)
 		r = tex_bspr_make(&t->sprpics[1], &budget);
 	if (!r)
-		r = tex_set_finish(t);
+		r = tex_set_finish(t, NULL);
 	if (r) {
 		tex_free(t);
 		return r < 0 && r != -ENOMEM ? -ENOMEM : r;

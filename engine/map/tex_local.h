@@ -15,6 +15,8 @@
 
 #include "engine/map/tex.h"
 
+struct lim;
+
 /* Limits that keep a hostile WAD from asking for unbounded memory: a side
  * of a picture, and the bytes of all pictures of one set together (px plus
  * opaque masks). Freedoom 2 needs about 30 MB. Past them a picture becomes
@@ -43,8 +45,12 @@ int tex_pic_new(struct tex_pic *p, const char *name, int w, int h, uint64_t *bud
  * left at (x, y), clipped to p; marks drawn pixels opaque. Columns whose
  * posts run past the lump are cut there. Tall patches: a post whose
  * topdelta is not above the previous one continues from it (DeePsea).
- * 0, or -EINVAL when the header or column table is bad (nothing drawn). */
-int tex_pic_draw(struct tex_pic *p, const uint8_t *d, size_t len, int x, int y);
+ * Takes from lim (may be NULL: unbounded, for the built-in set) one step
+ * per column and per post and one per pixel of a post: a lump whose
+ * columns all share one long column costs its width times its posts.
+ * 0, -EINVAL when the header or column table is bad (nothing drawn), or
+ * lim's error (-E2BIG, -ECANCELED; the picture is then partly drawn). */
+int tex_pic_draw(struct tex_pic *p, const uint8_t *d, size_t len, int x, int y, struct lim *lim);
 
 /* Size and offsets from a picture header; -EINVAL when bad (size <= 0 or
  * past TEX_MAX_SIDE, or the column table past the lump). */
@@ -69,8 +75,11 @@ void tex_flat_checker(struct tex_flat *f, const char *name, uint8_t a, uint8_t b
  * entries. Rotations and frames without a picture point at picture 0,
  * counted in t->missing. Then the animation table, identity tex_xlat /
  * flat_xlat, sky_flat (F_SKY1) and sky_tex (SKY1, else fallback_tex).
- * fallback_tex / fallback_flat must be set. 0 or -ENOMEM. */
-int tex_set_finish(struct tex_set *t);
+ * Then the name indexes of tex_find and tex_find_flat. fallback_tex /
+ * fallback_flat must be set. Sprite building compares every picture name
+ * with every sprite's: it takes a step per comparison from lim (may be
+ * NULL). 0, -ENOMEM, or lim's error. */
+int tex_set_finish(struct tex_set *t, struct lim *lim);
 
 /* The built-in set's sprite pictures (tex_bspr.c): how many there are,
  * and making them into pics[0 .. count-1] (names, pixels, offsets),

@@ -15,6 +15,10 @@
  * Lump lookups go through wad_find, so the last file wins (a PWAD's
  * TEXTURE1 replaces the whole list, as in Doom); flats and sprites are
  * gathered from every file's ranges in order.
+ *
+ * Bounded (tex.h TEX_MAX_STEPS): composing, flat replacement and sprite
+ * frames take steps from one count, which also polls the stop hook. The
+ * lump being worked on when the count runs out is named in the message.
  */
 #include "engine/map/tex.h"
 
@@ -23,6 +27,7 @@
 #include <string.h>
 
 #include "engine/core/le.h"
+#include "engine/core/lim.h"
 #include "engine/core/msg.h"
 #include "engine/map/map.h"
 #include "engine/map/tex_local.h"
@@ -35,6 +40,8 @@ struct tw {
 	const uint8_t *tl[2];          /* TEXTURE1, TEXTURE2 lumps (or NULL) */
 	size_t tlen[2];
 	int tcount[2];
+	int tlump[2];                  /* their lump numbers, for messages */
+	struct lim lim;                /* TEX_MAX_STEPS and the stop hook */
 	int *patches;                  /* PNAMES entry -> lump, -1 if none */
 	int num_patches;
 	uint8_t check_a, check_b;      /* fallback colours */
@@ -56,6 +63,34 @@ static int tw_fail(struct tw *c, const char *lump, const char *what, int64_t a, 
 		msg_cat(c->err, c->errlen, " bytes)");
 	}
 	return -EINVAL;
+}
+
+/* The message of a limit or stop while working on lump `lump` (entry
+ * `entry` of it and its name, when entry >= 0):
+ * "<file>: <LUMP>[ entry <i> (<name>)]: more than N steps (limit
+ * TEX_MAX_STEPS)" or "...: stopped". Returns the count's error. */
+static int tw_over(struct tw *c, int lump, int entry, const char *name)
+{
+	if (c->err && c->errlen)
+		c->err[0] = '\0';
+	msg_cat(c->err, c->errlen, wad_file(c->w, lump));
+	msg_cat(c->err, c->errlen, ": ");
+	msg_cat(c->err, c->errlen, wad_name(c->w, lump));
+	if (entry >= 0) {
+		msg_cat(c->err, c->errlen, " entry ");
+		msg_int(c->err, c->errlen, entry);
+		msg_cat(c->err, c->errlen, " (");
+		msg_cat(c->err, c->errlen, name);
+		msg_cat(c->err, c->errlen, ")");
+	}
+	if (c->lim.err == -ECANCELED) {
+		msg_cat(c->err, c->errlen, ": stopped");
+	} else {
+		msg_cat(c->err, c->errlen, ": the textures need more than ");
+		msg_int(c->err, c->errlen, (int64_t)TEX_MAX_STEPS);
+		msg_cat(c->err, c->errlen, " steps to compose (limit TEX_MAX_STEPS)");
+	}
+	return c->lim.err;
 }
 
 static int tw_palette(struct tw *c, struct pal *p)
@@ -107,6 +142,7 @@ static int tw_lists(struct tw *c)
 		c->tl[k] = d;
 		c->tlen[k] = len;
 		c->tcount[k] = le_s32(d);
+		c->tlump[k] = i;
 	}
 	if ((int64_t)c->tcount[0] + c->tcount[1] > UINT16_MAX - 2)
 		return tw_fail(c, "TEXTURE1", "too many textures: ",
@@ -133,10 +169,13 @@ static int tw_lists(struct tw *c)
 	return 0;
 }
 
-/* Texture entry k of list d (len bytes) into p; a bad entry, missing patch
- * or a picture over budget makes the fallback checker, counted. */
-static int tw_texture(struct tw *c, struct tex_pic *p, const uint8_t *d, size_t len, int k)
+/* Texture entry k of list `list` into p; a bad entry, missing patch or a
+ * picture over budget makes the fallback checker, counted. The step count
+ * running out is an error (tw_over). */
+static int tw_texture(struct tw *c, struct tex_pic *p, int list, int k)
 {
+	const uint8_t *d = c->tl[list];
+	size_t len = c->tlen[list];
 	int32_t ofs = le_s32(d + 4 + 4 * (size_t)k);
 	const uint8_t *e = d + ofs;
 	char name[9] = "";
@@ -168,7 +207,12 @@ static int tw_texture(struct tw *c, struct tex_pic *p, const uint8_t *d, size_t 
 		if (pn >= c->num_patches || c->patches[pn] < 0)
 			goto fallback;
 		pd = wad_data(c->w, c->patches[pn], &plen);
-		if (tex_pic_draw(p, pd, plen, le_s16(pp), le_s16(pp + 2)))
+		r = tex_pic_draw(p, pd, plen, le_s16(pp), le_s16(pp + 2), &c->lim);
+		if (r == -E2BIG || r == -ECANCELED) {
+			tex_pic_clear(p);
+			return tw_over(c, c->tlump[list], k, p->name);
+		}
+		if (r)
 			goto fallback;
 	}
 	tex_pic_seal(p);
@@ -253,6 +297,8 @@ static int tw_flat(struct tw *c, int lump)
 
 	if (len != TEX_FLAT_SIZE * TEX_FLAT_SIZE)
 		return 0;
+	if (lim_take(&c->lim, (uint64_t)t->num_flats + 1))
+		return tw_over(c, lump, -1, NULL);
 	tex_name(name, wad_name(c->w, lump));
 	for (k = 0; k < t->num_flats; k++)
 		if (memcmp(t->flats[k].name, name, 9) == 0)
@@ -286,7 +332,11 @@ static int tw_sprite(struct tw *c, int lump)
 		if (r)
 			return r;
 	} else {
-		tex_pic_draw(p, d, len, 0, 0);
+		r = tex_pic_draw(p, d, len, 0, 0, &c->lim);
+		if (r == -E2BIG || r == -ECANCELED) {
+			tex_pic_clear(p);
+			return tw_over(c, lump, -1, NULL);
+		}
 		tex_pic_seal(p);
 		p->left = (int16_t)left;
 		p->top = (int16_t)top;
@@ -317,7 +367,7 @@ static int tw_load(struct tw *c, struct pal *pal)
 	r = tex_pic_new(&t->textures[0], "-", 1, 1, &c->budget);
 	for (int k = 0, i = 1; !r && k < 2; k++)
 		for (int e = 0; !r && e < c->tcount[k]; e++)
-			r = tw_texture(c, &t->textures[i++], c->tl[k], c->tlen[k], e);
+			r = tw_texture(c, &t->textures[i++], k, e);
 	if (r)
 		return r;
 	t->fallback_tex = ntex - 1;
@@ -338,10 +388,25 @@ static int tw_load(struct tw *c, struct pal *pal)
 		r = tw_range(c, tw_spr_start, tw_spr_end, tw_sprite);
 	if (r < 0)
 		return r;
-	return tex_set_finish(t);
+	r = tex_set_finish(t, &c->lim);
+	if (r == -E2BIG || r == -ECANCELED) {
+		/* sprite frames: name the last sprite lump, S_END's range */
+		int last = wad_count(c->w) - 1;
+
+		while (last > 0 && !tw_spr_end(wad_name(c->w, last)))
+			last--;
+		return tw_over(c, last, -1, NULL);
+	}
+	return r;
 }
 
 int tex_load_wad(const struct wad *w, struct tex_set **out, char *err, size_t errlen)
+{
+	return tex_load_wad_lim(w, NULL, out, err, errlen);
+}
+
+int tex_load_wad_lim(const struct wad *w, const struct lim_stop *stop, struct tex_set **out,
+		     char *err, size_t errlen)
 {
 	struct tw c;
 	struct pal pal;
@@ -350,6 +415,7 @@ int tex_load_wad(const struct wad *w, struct tex_set **out, char *err, size_t er
 	*out = NULL;
 	memset(&c, 0, sizeof c);
 	c.w = w;
+	lim_init(&c.lim, stop, TEX_MAX_STEPS);
 	c.budget = TEX_BUDGET;
 	c.err = err;
 	c.errlen = errlen;

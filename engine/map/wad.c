@@ -7,6 +7,11 @@
  * overlap each other or the directory are tolerated (Doom tools write them:
  * shared data, markers with odd offsets); a lump of size 0 is a marker and
  * its offset is not checked.
+ *
+ * Lookups by name go through an index of (name, lump) pairs sorted once
+ * per wad_add, so a loader that looks up every name of a long list (PNAMES)
+ * does O(log n) work per name, not a scan of the directory; the number of
+ * lumps is bounded by WAD_MAX_LUMPS (wad.h).
  */
 #include "engine/map/wad.h"
 
@@ -29,12 +34,46 @@ struct wad_lump {
 	int file;
 };
 
+/* An index entry: a lump's name and number. */
+struct wad_key {
+	char name[9];
+	int lump;
+};
+
 struct wad {
 	char **files;
 	int num_files;
 	struct wad_lump *lumps;
 	int num_lumps;
+	struct wad_key *index;         /* num_lumps entries, by name then lump */
 };
+
+static int wad_key_cmp(const void *pa, const void *pb)
+{
+	const struct wad_key *a = pa, *b = pb;
+	int c = memcmp(a->name, b->name, 9);
+
+	return c ? c : (a->lump > b->lump) - (a->lump < b->lump);
+}
+
+/* The first index entry not below (name, lump). */
+static int wad_lower(const struct wad *w, const char name[9], int lump)
+{
+	int lo = 0, hi = w->num_lumps;
+	struct wad_key k;
+
+	memcpy(k.name, name, 9);
+	k.lump = lump;
+	while (lo < hi) {
+		int mid = lo + (hi - lo) / 2;
+
+		if (wad_key_cmp(&w->index[mid], &k) < 0)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo;
+}
 
 /* Upper-cases up to 8 chars of a name into out (NUL-padded to 9 bytes);
  * stops at a NUL. Returns 0, or -1 when src has more than 8 chars and
@@ -87,6 +126,7 @@ int wad_add(struct wad *w, const uint8_t *data, size_t len, const char *name, ch
 {
 	int32_t count, dir;
 	struct wad_lump *lumps;
+	struct wad_key *index;
 	char **files;
 	char *fname;
 	size_t nlen = strlen(name);
@@ -109,8 +149,14 @@ int wad_add(struct wad *w, const uint8_t *data, size_t len, const char *name, ch
 		msg_cat(err, errlen, ")");
 		return -EINVAL;
 	}
-	if (count > INT_MAX - w->num_lumps)
-		return wad_fail(err, errlen, name, "too many lumps");
+	if (count > WAD_MAX_LUMPS - w->num_lumps) {
+		wad_fail(err, errlen, name, "");
+		msg_int(err, errlen, count);
+		msg_cat(err, errlen, " lumps, more than the limit of ");
+		msg_int(err, errlen, WAD_MAX_LUMPS);
+		msg_cat(err, errlen, " in all files (WAD_MAX_LUMPS)");
+		return -E2BIG;
+	}
 	for (int32_t i = 0; i < count; i++) {
 		const uint8_t *e = data + dir + (size_t)i * WAD_ENTRY;
 		int32_t ofs = le_s32(e), size = le_s32(e + 4);
@@ -139,7 +185,10 @@ int wad_add(struct wad *w, const uint8_t *data, size_t len, const char *name, ch
 	lumps = realloc(w->lumps, ((size_t)w->num_lumps + (size_t)count + 1) * sizeof *lumps);
 	if (lumps)
 		w->lumps = lumps;
-	if (!fname || !files || !lumps) {
+	index = realloc(w->index, ((size_t)w->num_lumps + (size_t)count + 1) * sizeof *index);
+	if (index)
+		w->index = index;
+	if (!fname || !files || !lumps || !index) {
 		free(fname);
 		return -ENOMEM;
 	}
@@ -154,9 +203,12 @@ int wad_add(struct wad *w, const uint8_t *data, size_t len, const char *name, ch
 		l->data = size > 0 ? data + le_s32(e) : data;
 		l->file = w->num_files;
 		wad_norm(l->name, (const char *)e + 8, 8, 1);
+		memcpy(w->index[w->num_lumps + i].name, l->name, 9);
+		w->index[w->num_lumps + i].lump = w->num_lumps + i;
 	}
 	w->num_files++;
 	w->num_lumps += count;
+	qsort(w->index, (size_t)w->num_lumps, sizeof *w->index, wad_key_cmp);
 	return 0;
 }
 
@@ -168,25 +220,24 @@ int wad_count(const struct wad *w)
 int wad_find(const struct wad *w, const char *name)
 {
 	char key[9];
+	int i;
 
 	if (wad_norm(key, name, SIZE_MAX, 0))
 		return -1;
-	for (int i = w->num_lumps - 1; i >= 0; i--)
-		if (memcmp(w->lumps[i].name, key, 9) == 0)
-			return i;
-	return -1;
+	/* the last entry of the name: the one before the first past it */
+	i = wad_lower(w, key, INT_MAX) - 1;
+	return i >= 0 && memcmp(w->index[i].name, key, 9) == 0 ? w->index[i].lump : -1;
 }
 
 int wad_find_from(const struct wad *w, const char *name, int from)
 {
 	char key[9];
+	int i;
 
 	if (wad_norm(key, name, SIZE_MAX, 0))
 		return -1;
-	for (int i = from < 0 ? 0 : from; i < w->num_lumps; i++)
-		if (memcmp(w->lumps[i].name, key, 9) == 0)
-			return i;
-	return -1;
+	i = wad_lower(w, key, from < 0 ? 0 : from);
+	return i < w->num_lumps && memcmp(w->index[i].name, key, 9) == 0 ? w->index[i].lump : -1;
 }
 
 const uint8_t *wad_data(const struct wad *w, int i, size_t *len)
@@ -217,5 +268,6 @@ void wad_free(struct wad *w)
 		free(w->files[i]);
 	free(w->files);
 	free(w->lumps);
+	free(w->index);
 	free(w);
 }

@@ -21,10 +21,16 @@ struct wad;
 /* A new, empty set. 0 or -ENOMEM. Owned by the caller: wad_free. */
 int wad_new(struct wad **out);
 
+/* Lumps in all files of a set: Freedoom 2 has 3,649; the bound keeps a
+ * directory that claims millions of entries from taking the memory and
+ * time of one (issue 13 item 8). */
+#define WAD_MAX_LUMPS (1 << 18)
+
 /* Adds one WAD image. data must stay valid and unchanged until wad_free
  * (borrowed). name is for messages (a file name). Returns 0, or -EINVAL
  * with err naming the file and the problem ("doom.wad: lump 12 (E1M1)
- * ends at 9000, past the end of the file (8000)"), or -ENOMEM. */
+ * ends at 9000, past the end of the file (8000)"), -E2BIG past
+ * WAD_MAX_LUMPS (err names the file and the limit), or -ENOMEM. */
 int wad_add(struct wad *w, const uint8_t *data, size_t len, const char *name, char *err,
 	    size_t errlen);
 
@@ -32,11 +38,12 @@ int wad_add(struct wad *w, const uint8_t *data, size_t len, const char *name, ch
 int wad_count(const struct wad *w);
 
 /* Index of the last lump called name (case-insensitive; a name of more
- * than 8 chars matches nothing), or -1. */
+ * than 8 chars matches nothing), or -1. O(log n). */
 int wad_find(const struct wad *w, const char *name);
 
 /* Index of the first lump called name at or after index from, or -1 (for
- * the lumps that follow a map marker, and F_START/F_END ranges). */
+ * the lumps that follow a map marker, and F_START/F_END ranges).
+ * O(log n). */
 int wad_find_from(const struct wad *w, const char *name, int from);
 
 /* Lump data and size; NULL and 0 for a bad index. */

@@ -17,11 +17,11 @@
 #include "engine/map/th.h"
 #include "engine/render/r_main.h"
 
-#define G_ANIM 8                       /* ticks per frame of standing and walking cycles */
-#define G_DEATH_TICKS 6                /* ticks per frame of a death */
-#define G_PUFF_TICKS 8
+#define R_ANIM 8                       /* ticks per frame of standing and walking cycles */
+#define R_DEATH_TICKS 6                /* ticks per frame of a death */
+#define R_PUFF_TICKS 8
 
-struct g_out {
+struct r_out {
 	const struct tex_set *t;
 	struct r_sprite *out;
 	int n, max;
@@ -30,7 +30,7 @@ struct g_out {
 /* Sprite number for name, else for the class's stand-in (the project's
  * own set has few sprites), else one past the end (the renderer draws its
  * fallback checker there and counts it). */
-static int g_sprite_index(const struct tex_set *t, const char *name, const char *standin)
+static int r_sprite_index(const struct tex_set *t, const char *name, const char *standin)
 {
 	int i = name[0] ? tex_find_sprite(t, name) : -1;
 
@@ -41,7 +41,7 @@ static int g_sprite_index(const struct tex_set *t, const char *name, const char 
 
 /* Adds a sprite; a frame the sprite lacks is drawn as frame A unless
  * need_frame (then nothing is drawn: a corpse must not stand up). */
-static void g_put(struct g_out *o, fx_t x, fx_t y, fx_t z, ang_t a, int spr, int frame,
+static void r_put(struct r_out *o, fx_t x, fx_t y, fx_t z, ang_t a, int spr, int frame,
 		  int bright, int need_frame)
 {
 	struct r_sprite *r;
@@ -63,16 +63,16 @@ static void g_put(struct g_out *o, fx_t x, fx_t y, fx_t z, ang_t a, int spr, int
 	r->flags = bright ? R_SPR_FULLBRIGHT : 0;
 }
 
-static void g_put_enemy(struct g_out *o, const struct g_enemy *e)
+static void r_put_enemy(struct r_out *o, const struct g_enemy *e)
 {
 	struct g_thing_info ti;
 	int spr, frame = 0, bright = 0, need = 0;
 
 	g_thing_info(e->type, &ti);
-	spr = g_sprite_index(o->t, ti.sprite, "POSS");
+	spr = r_sprite_index(o->t, ti.sprite, "POSS");
 	switch (e->state) {
 	case G_E_CHASE:
-		frame = ti.frames ? e->anim / G_ANIM % ti.frames : 0;
+		frame = ti.frames ? e->anim / R_ANIM % ti.frames : 0;
 		break;
 	case G_E_ATTACK:
 		frame = ti.attack + (e->flash ? 1 : 0);
@@ -82,7 +82,7 @@ static void g_put_enemy(struct g_out *o, const struct g_enemy *e)
 		frame = ti.pain;
 		break;
 	case G_E_DEAD:
-		frame = ti.death0 + e->anim / G_DEATH_TICKS;
+		frame = ti.death0 + e->anim / R_DEATH_TICKS;
 		if (frame > ti.death1)
 			frame = ti.death1;
 		need = 1;
@@ -90,27 +90,27 @@ static void g_put_enemy(struct g_out *o, const struct g_enemy *e)
 	default:
 		break;
 	}
-	g_put(o, e->x, e->y, e->z, e->angle, spr, frame, bright, need);
+	r_put(o, e->x, e->y, e->z, e->angle, spr, frame, bright, need);
 }
 
 int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite *out, int max)
 {
 	const struct map *m = s->map;
-	struct g_out o = { t, out, 0, max };
+	struct r_out o = { t, out, 0, max };
 
 	if (!t || !m)
 		return 0;
 	for (int i = 0; i < s->g.num_enemies; i++)
-		g_put_enemy(&o, &s->g.en[i]);
+		r_put_enemy(&o, &s->g.en[i]);
 	for (int i = 0; i < s->g.num_pickups; i++) {
 		const struct g_pickup *p = &s->g.pk[i];
 		struct g_thing_info ti;
 		if (p->taken)
 			continue;
 		g_thing_info(p->type, &ti);
-		g_put(&o, p->x, p->y, p->z, 0,
-		      g_sprite_index(t, ti.sprite, p->kind == G_P_HEALTH ? "MEDI" : "CLIP"),
-		      ti.stand + (ti.frames > 1 ? (int)(s->tick / G_ANIM % ti.frames) : 0),
+		r_put(&o, p->x, p->y, p->z, 0,
+		      r_sprite_index(t, ti.sprite, p->kind == G_P_HEALTH ? "MEDI" : "CLIP"),
+		      ti.stand + (ti.frames > 1 ? (int)(s->tick / R_ANIM % ti.frames) : 0),
 		      ti.bright, 0);
 	}
 	for (uint32_t i = 0; i < m->num_things; i++) {
@@ -119,15 +119,15 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite
 		g_thing_info(th->type, &ti);
 		if ((ti.cls != G_C_LIGHT && ti.cls != G_C_DECOR) || !ti.sprite[0])
 			continue;
-		g_put(&o, th->x, th->y, m->sectors[map_point_sector(m, th->x, th->y)].floor_h,
-		      th->angle, g_sprite_index(t, ti.sprite, ti.cls == G_C_LIGHT ? "COLU" : "BAR1"),
-		      ti.stand + (ti.frames > 1 ? (int)(s->tick / G_ANIM % ti.frames) : 0),
+		r_put(&o, th->x, th->y, m->sectors[map_point_sector(m, th->x, th->y)].floor_h,
+		      th->angle, r_sprite_index(t, ti.sprite, ti.cls == G_C_LIGHT ? "COLU" : "BAR1"),
+		      ti.stand + (ti.frames > 1 ? (int)(s->tick / R_ANIM % ti.frames) : 0),
 		      ti.bright, 0);
 	}
-	if ((s->g.shot == G_SHOT_WALL || s->g.shot == G_SHOT_ENEMY) && s->g.shot_t < G_PUFF_TICKS) {
+	if ((s->g.shot == G_SHOT_WALL || s->g.shot == G_SHOT_ENEMY) && s->g.shot_t < R_PUFF_TICKS) {
 		int spr = tex_find_sprite(t, s->g.shot == G_SHOT_WALL ? "PUFF" : "BLUD");
 		if (spr >= 0)
-			g_put(&o, s->g.shot_x, s->g.shot_y, s->g.shot_z - 8 * FX_ONE, 0, spr,
+			r_put(&o, s->g.shot_x, s->g.shot_y, s->g.shot_z - 8 * FX_ONE, 0, spr,
 			      s->g.shot_t / 2, s->g.shot == G_SHOT_WALL, 1);
 	}
 	return o.n;

@@ -20,7 +20,7 @@ void r_game_view(const struct sim *s, struct r_view *v);
  * r_render: enemies (frames by state: standing A, walking, attacking with
  * a full-bright firing frame, pain, dying into the corpse), pickups not
  * taken, the map's lights and decorations (cycling their frames), and the
- * puff (PUFF) or blood (BLUD) of the last shot for G_PUFF ticks. Sprite
+ * puff (PUFF) or blood (BLUD) of the last shot for R_PUFF_TICKS ticks. Sprite
  * numbers come from t by Doom's names; a name t lacks is drawn as a
  * stand-in of t (POSS for enemies, MEDI, CLIP, COLU, BAR1), and failing
  * that as a number past t's sprites (the renderer's fallback checker); a

@@ -4,7 +4,10 @@
 # renders every built-in level, the built-in grid map and every Freedoom map
 # (freedoom1 and freedoom2) from 20 seeded viewpoints each with both
 # renderers, and fails when a view's surface ids agree on less than 99.5% of
-# its pixels, naming the difference image (under BUILD/crosscheck/diff/).
+# its pixels, naming the difference image (under BUILD/crosscheck/diff/),
+# or when either renderer's id buffer is (nearly) empty (surfaces on fewer
+# than 99% of the pixels: two empty buffers agree everywhere). First a
+# self-test: with the id buffers cleared (--blank-ids) xcheck must fail.
 # Usage: tests/crosscheck/run.sh [BUILD] [xcheck options...]
 #   BUILD: the folder holding libarcaded.a (default build); further
 #   arguments replace the default content and views (e.g. --wad F --map M).
@@ -26,6 +29,13 @@ $CC -I. -D_GNU_SOURCE -std=c11 -O2 -g -Wall -Wextra -Werror -Wshadow -Wvla \
 if [ $# -gt 0 ]; then
 	exec "$out/xcheck" --diff "$out/diff" "$@"
 fi
+if "$out/xcheck" --builtin --views 2 --size 80x50 --blank-ids >"$out/blank.log" 2>&1 ||
+	! grep -q "empty id buffer proves nothing" "$out/blank.log"; then
+	cat "$out/blank.log"
+	echo "crosscheck: FAIL self-test: empty id buffers were not caught"
+	exit 1
+fi
+echo "crosscheck: PASS self-test: empty id buffers fail ($(grep -c '^FAIL' "$out/blank.log") views)"
 for w in freedoom1 freedoom2; do
 	if [ ! -f "$WADS/$w.wad" ]; then
 		echo "crosscheck: $WADS/$w.wad missing (Debian package freedoom)"

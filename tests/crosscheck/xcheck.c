@@ -28,6 +28,13 @@
  * disagreeing pixels by kind. Exit status 0
  * when every view reaches --min (default 99.5), 1 otherwise, 2 on bad
  * arguments or content.
+ *
+ * Two empty id buffers agree everywhere, which would prove nothing: a view
+ * fails too when either renderer gave fewer than --cover PCT (default 99)
+ * of its pixels a surface (id kind other than "none"); every view from
+ * inside a closed map shows some surface at every pixel. --blank-ids
+ * clears both buffers after rendering, a self-test of that rule
+ * (tests/crosscheck/run.sh expects it to fail).
  */
 #include <errno.h>
 #include <stdint.h>
@@ -66,6 +73,8 @@ struct xc_opts {
 	int nsets;
 	int views, w, h, sprites, verbose, diff_all;
 	int only_view;                  /* --view K: only view K of each map, or -1 */
+	int blank;                      /* --blank-ids: clear the id buffers (self-test) */
+	double cover;                   /* --cover PCT: least share of pixels with a surface */
 	int probe_x, probe_y;           /* --probe X,Y: print both ids there, or -1 */
 	uint64_t seed;
 	double min;
@@ -84,6 +93,7 @@ struct xc_run {
 	long views, failed;
 	double set_min, set_sum;
 	long set_views;
+	double cover_min;               /* the least surface coverage of any view, % */
 	uint64_t kinds[R_IDK_COUNT][R_IDK_COUNT];   /* disagreements: sw kind, gl kind */
 };
 
@@ -289,8 +299,8 @@ static double xc_map(struct xc_run *x, const struct map *m, const struct tex_set
 	nspr = o->sprites ? r_map_sprites(m, t, spr) : 0;
 	for (int k = 0; k < o->views; k++) {
 		struct r_view v;
-		long same = 0, csame = 0;
-		double pct, t0;
+		long same = 0, csame = 0, sur_sw = 0, sur_gl = 0;
+		double pct, t0, cover;
 
 		if (xc_view(m, &rng, o->h, &v) < 0) {
 			printf("%-28s no viewpoint found\n", name);
@@ -305,6 +315,25 @@ static double xc_map(struct xc_run *x, const struct map *m, const struct tex_set
 		t0 = xc_now();
 		rgl_render(x->gl, m, t, &v, spr, nspr, &x->fg);
 		x->t_gl += xc_now() - t0;
+		if (o->blank) {
+			memset(x->ids_sw, 0, npx * sizeof(*x->ids_sw));
+			memset(x->ids_gl, 0, npx * sizeof(*x->ids_gl));
+		}
+		for (size_t p = 0; p < npx; p++) {
+			sur_sw += r_id_kind(x->ids_sw[p]) != R_IDK_NONE;
+			sur_gl += r_id_kind(x->ids_gl[p]) != R_IDK_NONE;
+		}
+		cover = 100.0 * (double)(sur_sw < sur_gl ? sur_sw : sur_gl) / (double)npx;
+		if (cover < x->cover_min)
+			x->cover_min = cover;
+		if (cover < o->cover) {
+			printf("FAIL %s view %d at (%.1f, %.1f): surfaces on %.3f%% of the software "
+			       "and %.3f%% of the OSMesa pixels, < %.2f%%: an (almost) empty id "
+			       "buffer proves nothing\n",
+			       name, k, v.x / 65536.0, v.y / 65536.0, 100.0 * (double)sur_sw / (double)npx,
+			       100.0 * (double)sur_gl / (double)npx, o->cover);
+			x->failed++;
+		}
 		for (size_t p = 0; p < npx; p++) {
 			uint32_t a = xc_norm(x->ids_sw[p], cf, cc, m->num_sectors);
 			uint32_t b = xc_norm(x->ids_gl[p], cf, cc, m->num_sectors);
@@ -501,6 +530,7 @@ static int xc_args(int argc, char **argv, struct xc_opts *o)
 	o->min = 99.5;
 	o->seed = 1;
 	o->only_view = -1;
+	o->cover = 99;
 	o->probe_x = o->probe_y = -1;
 	for (int i = 1; i < argc; i++) {
 		const char *a = argv[i], *b = i + 1 < argc ? argv[i + 1] : NULL;
@@ -538,6 +568,10 @@ static int xc_args(int argc, char **argv, struct xc_opts *o)
 		} else if (!strcmp(a, "--probe") && b) {
 			if (sscanf(argv[++i], "%d,%d", &o->probe_x, &o->probe_y) != 2)
 				return -1;
+		} else if (!strcmp(a, "--blank-ids")) {
+			o->blank = 1;
+		} else if (!strcmp(a, "--cover") && b) {
+			o->cover = atof(argv[++i]);
 		} else if (!strcmp(a, "--no-sprites")) {
 			o->sprites = 0;
 		} else if (!strcmp(a, "--verbose")) {
@@ -567,11 +601,12 @@ int main(int argc, char **argv)
 		fprintf(stderr, "usage: xcheck [--builtin] [--grid builtin|FILE] [--wad FILE "
 				"[--map NAME]]... [--views N] [--seed S] [--size WxH] [--min PCT] "
 				"[--diff DIR] [--diff-all] [--no-sprites] [--verbose] [--view K] "
-				"[--probe X,Y]\n");
+				"[--probe X,Y] [--cover PCT] [--blank-ids]\n");
 		return 2;
 	}
 	memset(&x, 0, sizeof(x));
 	x.o = &o;
+	x.cover_min = 100;
 	npx = (size_t)o.w * (size_t)o.h;
 	x.fs.w = x.fg.w = x.fs.pitch = x.fg.pitch = o.w;
 	x.fs.h = x.fg.h = o.h;
@@ -611,9 +646,9 @@ int main(int argc, char **argv)
 					printf("  %-8s -> %-8s %10llu\n", kname[a], kname[b],
 					       (unsigned long long)x.kinds[a][b]);
 	}
-	printf("xcheck: %ld views, %ld failed; render time software %.2f s, OSMesa %.2f s "
-	       "(both passes); total %.1f s\n",
-	       x.views, x.failed, x.t_sw, x.t_gl, xc_now() - t0);
+	printf("xcheck: %ld views, %ld failed; least surface coverage %.3f%%; render time "
+	       "software %.2f s, OSMesa %.2f s (both passes); total %.1f s\n",
+	       x.views, x.failed, x.cover_min, x.t_sw, x.t_gl, xc_now() - t0);
 	r_free(x.sw);
 	rgl_free(x.gl);
 	free(x.fs.px);

@@ -7,7 +7,10 @@
 #    working directory, a fresh temporary one) and is a PNG,
 #  - stdout (snapshot lines) equals NAME.out when that file exists,
 #  - when the run ended normally, the file framebuffer (640x480 xrgb8888)
-#    has its full size and holds a picture (not all one value).
+#    has its full size and is, byte for byte, the frame stored for the
+#    script: its SHA-256 in tests/script/frames.sha256. Those were written
+#    by tests/script/regen.sh, which also writes each frame as a PNG to
+#    look at before committing; a script without a stored frame fails.
 # Then the sound: tests/script/sound/shots.scr played with --audio wav:FILE
 # at 48000 Hz and at 22050 Hz (ticks of 367 or 368 frames): the pistol's
 # sound, found in the file by correlation with its own samples
@@ -51,9 +54,14 @@ EOT
 	done
 	if [ "$rc" -eq 0 ]; then
 		size=$(stat -c %s "$tmp/fb" 2>/dev/null || echo 0)
-		values=$(od -An -tx4 -v "$tmp/fb" 2>/dev/null | tr -s ' ' '\n' | sort -u | wc -l)
-		if [ "$size" -ne $((640 * 480 * 4)) ] || [ "$values" -lt 4 ]; then
-			echo "$name: file framebuffer size $size, $values distinct pixel values"; ok=0
+		got=$(sha256sum < "$tmp/fb" 2>/dev/null | cut -d' ' -f1)
+		want=$(awk -v n="$name" '$2 == n { print $1 }' tests/script/frames.sha256)
+		if [ "$size" -ne $((640 * 480 * 4)) ]; then
+			echo "$name: file framebuffer size $size, not 640x480x4"; ok=0
+		elif [ -z "$want" ]; then
+			echo "$name: no frame stored in tests/script/frames.sha256 (tests/script/regen.sh)"; ok=0
+		elif [ "$got" != "$want" ]; then
+			echo "$name: the last frame differs from the stored one ($got, stored $want)"; ok=0
 		fi
 	fi
 	if [ -f "tests/script/$name.out" ] && ! diff -u "tests/script/$name.out" "$tmp/out"; then

@@ -2,7 +2,7 @@
  * Test fixture: the HID descriptor and report captures in tests/data/hid/
  * (formats in its README: hex bytes separated by blanks, one report per
  * line). Paths are relative to the repository root, where the test runners
- * start the tests. Shared by test_hid_desc and test_hid_dec.
+ * start the tests. Shared by test_hidd and test_hidr.
  */
 #ifndef ARCADED_TESTS_HID_FIXTURE_H
 #define ARCADED_TESTS_HID_FIXTURE_H

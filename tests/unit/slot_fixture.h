@@ -8,7 +8,7 @@
  * what fake_key queued, then -ENODEV once fk.gone is set; fake_lines is
  * the same with outputs, which return fk.outputs_rc. The slots' clock is
  * clock_ns. Hooks append "opened VVVV:PID ", "key CODE DOWN ", "released
- * CODE ", "gone " to seen.
+ * CODE ", "gone " to seen; the bound hook binds KEY_1 only.
  */
 #ifndef ARCADED_TESTS_SLOT_FIXTURE_H
 #define ARCADED_TESTS_SLOT_FIXTURE_H
@@ -174,8 +174,16 @@ static inline void fake_gone(void *ctx, struct slot *s)
 	fake_seen("gone ");
 }
 
+/* The bindings: KEY_1 is bound, nothing else. */
+static inline int fake_bound(void *ctx, const struct in_ident *id, int code)
+{
+	(void)ctx;
+	(void)id;
+	return code == 2;   /* KEY_1 */
+}
+
 __attribute__((unused)) static const struct slot_hooks fake_hooks = {
-	fake_opened, fake_changed, fake_released, fake_gone,
+	fake_opened, fake_changed, fake_released, fake_gone, fake_bound,
 };
 
 /* cmocka set-up and tear-down: everything fresh, the clock at 1 s. */

@@ -168,12 +168,35 @@ static void keys_go_to_actions_or_to_the_wizard_alone(void **state)
 	assert_int_equal(st.pending_ns, 0);
 }
 
+/* Auto-detection asks ctl which codes do something: the defaults' keys for
+ * any device, a device's own section's for it alone. */
+static void the_bound_hook_is_what_the_bindings_use(void **state)
+{
+	static const char text[] = "[device \"usb-1-1\"]\nfire = BTN_TRIGGER\n";
+	struct in_ident kbd = { .vid = 1, .pid = 1 }, joy = { .port = "1-1", .vid = 0x79 };
+
+	(void)state;
+	start(NULL);
+	assert_int_equal(bind_load_text(&c.binds, text, strlen(text), "t.ini", NULL, NULL), 0);
+	assert_int_equal(ctl_hooks.bound(&c, &kbd, KEY_5), 1);          /* coin */
+	assert_int_equal(ctl_hooks.bound(&c, &kbd, KEY_LEFTCTRL), 1);   /* fire */
+	assert_int_equal(ctl_hooks.bound(&c, &kbd, KEY_POWER), 0);
+	assert_int_equal(ctl_hooks.bound(&c, &kbd, BTN_TRIGGER), 0);
+	/* the pad's own section replaces [keyboard] for it */
+	assert_int_equal(ctl_hooks.bound(&c, &joy, BTN_TRIGGER), 1);
+	assert_int_equal(ctl_hooks.bound(&c, &joy, KEY_5), 0);
+	/* ctl_bound on a table of its own, as `arcaded devices` uses it */
+	assert_int_equal(ctl_bound(&c.binds, &joy, BTN_TRIGGER), 1);
+	assert_int_equal(ctl_bound(&c.binds, &kbd, KEY_1), 1);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(a_profile_configures_the_device_through_its_table),
 		cmocka_unit_test(a_first_boot_asks_for_a_pad_nothing_names),
 		cmocka_unit_test(keys_go_to_actions_or_to_the_wizard_alone),
+		cmocka_unit_test(the_bound_hook_is_what_the_bindings_use),
 	};
 
 	return cmocka_run_group_tests(tests, NULL, NULL);

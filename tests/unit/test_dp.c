@@ -12,6 +12,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
+#include <sys/stat.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include "display/dp.h"
@@ -183,15 +186,59 @@ static void unknown_backend_is_einval(void **state)
 	assert_non_null(strstr(why, "\"sdl\""));
 }
 
+/* Open file descriptors of this process. */
+static int open_fds(void)
+{
+	DIR *d = opendir("/proc/self/fd");
+	struct dirent *e;
+	int n = 0;
+
+	assert_non_null(d);
+	while ((e = readdir(d)))
+		n += e->d_name[0] != '.';
+	closedir(d);
+	return n - 1;                  /* the directory's own fd */
+}
+
+/* With no display ever opened, the crash handler's restore and the
+ * backends' close of NULL change nothing a user could see: no byte is
+ * written to stdout or stderr (the terminal backend's restore writes an
+ * escape sequence when it is active), no descriptor is opened or closed,
+ * and the terminal's mode (when stdin is one) is unchanged. */
 static void emergency_restore_without_display_is_harmless(void **state)
 {
+	char path[] = "/tmp/test_dp.XXXXXX";
+	int fd = mkstemp(path), out = dup(1), err = dup(2), fds, tty;
+	struct termios before, after;
+	struct stat st;
 	(void)state;
+	assert_true(fd >= 0 && out >= 0 && err >= 0);
+	unlink(path);
+	tty = tcgetattr(0, &before) == 0;
+	fflush(stdout);
+	fflush(stderr);
+	assert_true(dup2(fd, 1) == 1 && dup2(fd, 2) == 2);
+	fds = open_fds();
 	dp_emergency_restore();
 	dp_emergency_restore();
 	dp_null.close(NULL);
 	dp_file.close(NULL);
 	dp_fbdev.close(NULL);
 	dp_term.close(NULL);
+	assert_int_equal(open_fds(), fds);
+	fflush(stdout);
+	fflush(stderr);
+	dup2(out, 1);
+	dup2(err, 2);
+	close(out);
+	close(err);
+	assert_int_equal(fstat(fd, &st), 0);
+	close(fd);
+	assert_int_equal(st.st_size, 0);
+	if (tty) {
+		assert_int_equal(tcgetattr(0, &after), 0);
+		assert_memory_equal(&before, &after, sizeof before);
+	}
 }
 
 int main(void)

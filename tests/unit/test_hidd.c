@@ -471,28 +471,127 @@ static void test_fields_and_spans_are_bounded(void **state)
 	parse_fails(b, n, -E2BIG, want);
 }
 
-static void test_random_bytes_never_crash(void **state)
+static uint32_t rnd(uint32_t *x)
+{
+	*x = *x * 1103515245u + 12345u;
+	return *x >> 16;
+}
+
+/* Random descriptor bytes: every other round plain random bytes (which
+ * rarely parse), else a usage page, report size and count, then a random
+ * run of well-formed short items (usages, logical ranges, report sizes,
+ * counts and ids, inputs, outputs, balanced collections) with small
+ * values, one byte of it replaced one time in four, so that many parse
+ * and have fields. Returns the length. */
+static size_t random_descriptor(uint8_t *b, size_t max, int round, uint32_t *x)
+{
+	static const uint8_t tags[] = { 0x04, 0x08, 0x08, 0x14, 0x24, 0x74, 0x94, 0x84, 0x80,
+					0x80, 0x80, 0xA0, 0xC0, 0x18, 0x28, 0x90 };
+	size_t n = 0;
+	int depth = 0;
+
+	if (round % 2) {
+		n = (size_t)(round % (int)max);
+		for (size_t i = 0; i < n; i++)
+			b[i] = (uint8_t)rnd(x);
+		return n;
+	}
+	/* a usage page, a report size and count to start from */
+	b[n++] = 0x05; b[n++] = 0x09;
+	b[n++] = 0x75; b[n++] = (uint8_t)(1 + rnd(x) % 8);
+	b[n++] = 0x95; b[n++] = (uint8_t)(1 + rnd(x) % 8);
+	for (int items = (int)(rnd(x) % 40) + 1; items > 0 && n + 3 + (size_t)depth <= max; items--) {
+		uint8_t tag = tags[rnd(x) % sizeof tags];
+		uint32_t r = rnd(x);
+		uint32_t v = tag == 0x74 ? 1 + r % 16 : tag == 0x94 ? 1 + r % 8
+			   : tag == 0x84 ? 1 + r % 3 : tag == 0xA0 ? r % 3 : r % 256;
+
+		if (tag == 0xC0) {
+			if (depth > 0) {
+				b[n++] = tag;      /* End Collection has no data */
+				depth--;
+			}
+			continue;
+		}
+		depth += tag == 0xA0;
+		if (r % 4 == 0 && tag != 0xA0) {
+			b[n++] = (uint8_t)(tag | 2);
+			b[n++] = (uint8_t)v;
+			b[n++] = (uint8_t)(v >> 8);
+		} else {
+			b[n++] = (uint8_t)(tag | 1);
+			b[n++] = (uint8_t)v;
+		}
+	}
+	while (depth-- > 0)
+		b[n++] = 0xC0;
+	if (n && rnd(x) % 4 == 0) {
+		size_t at = rnd(x) % n;
+
+		b[at] = (uint8_t)rnd(x);
+	}
+	return n;
+}
+
+/* 20,000 random descriptors (random_descriptor). Each parse either fails with
+ * a message at an offset inside the descriptor ("offset N: ...", N < the
+ * length; N == the length only for what is found missing at the end), or
+ * succeeds with every field inside its report: a report of that id exists,
+ * the field's last bit lies within the report's bits, the report's length
+ * is its bits rounded up to bytes (plus the id byte), and the field's
+ * usages lie inside the usage table. A fair share must parse with fields,
+ * or the invariant is not exercised. */
+static void test_random_bytes_fail_at_an_offset_or_fit_their_reports(void **state)
 {
 	static uint8_t b[512];
 	uint32_t x = 12345;
+	int with_fields = 0, failed = 0;
 
 	(void)state;
 	for (int round = 0; round < 20000; round++) {
-		size_t n = (size_t)(round % 512);
+		size_t n = random_descriptor(b, sizeof b, round, &x);
 		struct hidd_desc *d;
-		char err[100];
+		char err[100] = "";
+		int r;
 
-		for (size_t i = 0; i < n; i++) {
-			x = x * 1103515245u + 12345u;
-			b[i] = (uint8_t)(x >> 16);
+		r = hidd_parse(b, n, &d, err, sizeof(err));
+		if (r != 0) {
+			long off = -1;
+
+			assert_true(r == -EINVAL || r == -E2BIG);
+			if (sscanf(err, "offset %ld:", &off) != 1 || off < 0 || (size_t)off > n ||
+			    ((size_t)off == n && !strstr(err, "at the end")))
+				fail_msg("round %d, %zu bytes: \"%s\" is not at an offset inside the "
+					 "descriptor", round, n, err);
+			failed++;
+			continue;
 		}
-		if (hidd_parse(b, n, &d, err, sizeof(err)) == 0) {
-			for (size_t i = 0; i < d->nfield; i++)
-				for (uint32_t k = 0; k < d->field[i].count && k < 4; k++)
-					(void)hidd_usage(d, &d->field[i], k);
-			hidd_free(d);
+		with_fields += d->nfield > 0;
+		for (size_t i = 0; i < d->nfield; i++) {
+			const struct hidd_field *f = &d->field[i];
+			size_t k;
+
+			for (k = 0; k < d->nreport; k++)
+				if (d->report[k].id == f->report_id)
+					break;
+			if (k == d->nreport)
+				fail_msg("round %d: field %zu is in report %u, which the descriptor "
+					 "does not have", round, i, f->report_id);
+			if ((uint64_t)f->bit + (uint64_t)f->size * f->count > d->report[k].bits)
+				fail_msg("round %d: field %zu (bits %u + %u x %u) runs past report %u "
+					 "(%u bits)", round, i, f->bit, f->size, f->count, f->report_id,
+					 d->report[k].bits);
+			assert_int_equal(hidd_report_len(d, f->report_id),
+					 (d->report[k].bits + 7) / 8 + (d->has_ids ? 1 : 0));
+			assert_true((uint64_t)f->span0 + f->nspan <= d->nspan);
+			for (uint32_t u = 0; u < f->count && u < 4; u++)
+				(void)hidd_usage(d, f, u);
 		}
+		hidd_free(d);
 	}
+	print_message("random descriptors: %d refused at an offset, %d parsed with fields\n",
+		      failed, with_fields);
+	assert_true(with_fields >= 1000);
 }
 
 static void test_describe_lists_each_field(void **state)
@@ -535,7 +634,7 @@ int main(void)
 		cmocka_unit_test(test_size_and_count_limits_are_refused),
 		cmocka_unit_test(test_ten_thousand_pushes_pops_or_collections_are_refused),
 		cmocka_unit_test(test_fields_and_spans_are_bounded),
-		cmocka_unit_test(test_random_bytes_never_crash),
+		cmocka_unit_test(test_random_bytes_fail_at_an_offset_or_fit_their_reports),
 		cmocka_unit_test(test_describe_lists_each_field),
 	};
 

@@ -2,8 +2,10 @@
  * hp: hotplug notices. The inotify source is driven with plain files in a
  * temporary directory (inotify reports them as it reports devtmpfs nodes):
  * the names input backends open raise HP_NODE on creation, mode change and
- * removal, each only in its own directory; other names raise nothing;
- * nothing pending reads 0 at once.
+ * removal, each only in its own directory, with a notice naming the node
+ * and what happened; other names raise nothing; nothing pending reads 0 at
+ * once; a directory that does not exist yet is watched for and then
+ * watched.
  * libusb is real USB, tested in the VM (tests/vm/guest.sh): here only that
  * its absence or failure is named and never fatal.
  */
@@ -215,9 +217,84 @@ static void missing_directories_are_named(void **state)
 	/* one directory of two is enough; the other is named */
 	assert_int_equal(hp_open(one, 2, HP_INOTIFY, &h, why, sizeof(why)), 0);
 	assert_non_null(strstr(hp_sources(h), "/nonexistent/hp-a"));
+	assert_int_equal(hp_complete(h), 0);
 	assert_non_null(strstr(hp_sources(h), dir));
 	touch(dir, "hidraw0");
 	assert_int_equal(hp_poll(h), HP_NODE);
+	hp_close(h);
+}
+
+static void notices_say_which_node_and_what(void **state)
+{
+	struct hp *h = open_dirs();
+	const struct hp_notice *n;
+	char p[160], want[160];
+
+	(void)state;
+	touch(dir, "hidraw3");
+	path(p, sizeof(p), dir, "hidraw3");
+	assert_int_equal(chmod(p, 0660), 0);
+	assert_int_equal(unlink(p), 0);
+	touch(dir, "tty9");                 /* not wanted: no notice */
+	assert_int_equal(hp_poll(h), HP_NODE);
+	assert_int_equal(hp_notices(h, &n), 3);
+	snprintf(want, sizeof(want), "%s/hidraw3", dir);
+	for (int i = 0; i < 3; i++) {
+		assert_int_equal(n[i].what, HP_NODE);
+		assert_string_equal(n[i].name, want);
+		assert_true(n[i].time_ns > 0);
+	}
+	assert_string_equal(n[0].how, "created");
+	assert_string_equal(n[1].how, "changed");
+	assert_string_equal(n[2].how, "removed");
+	/* each poll starts afresh */
+	assert_int_equal(hp_poll(h), 0);
+	assert_int_equal(hp_notices(h, &n), 0);
+	hp_close(h);
+}
+
+/* A DRM driver creates /dev/dri when it loads: a pattern whose directory
+ * is missing is watched for in the parent, and from its creation on. */
+static void a_directory_that_appears_later_is_watched(void **state)
+{
+	char later[128], fbpat[96], cardpat[160], p[200], want[200];
+	const char *pats[2] = { fbpat, cardpat };
+	const struct hp_notice *n;
+	struct hp *h = NULL;
+	char why[128] = "";
+
+	(void)state;
+	snprintf(later, sizeof(later), "%s/dri", dir);
+	snprintf(fbpat, sizeof(fbpat), "%s/fb", dir);
+	snprintf(cardpat, sizeof(cardpat), "%s/card", later);
+	assert_int_equal(hp_open(pats, 2, HP_INOTIFY, &h, why, sizeof(why)), 0);
+	snprintf(want, sizeof(want), "(%s: not there yet)", later);
+	assert_non_null(strstr(hp_sources(h), want));
+	assert_int_equal(hp_complete(h), 1);
+	/* other directories and names in the parent: nothing */
+	snprintf(p, sizeof(p), "%s/drx", dir);
+	assert_int_equal(mkdir(p, 0700), 0);
+	touch(dir, "card0");
+	assert_int_equal(hp_poll(h), 0);
+	/* the parent's own pattern keeps its changes (the masks add up) */
+	touch(dir, "fb0");
+	path(p, sizeof(p), dir, "fb0");
+	assert_int_equal(chmod(p, 0660), 0);
+	assert_int_equal(hp_poll(h), HP_NODE);
+	assert_int_equal(hp_notices(h, &n), 2);
+	assert_string_equal(n[1].how, "changed");
+	/* the directory appears: a notice, and its nodes count from now on */
+	assert_int_equal(mkdir(later, 0755), 0);
+	assert_int_equal(hp_poll(h), HP_NODE);
+	assert_int_equal(hp_notices(h, &n), 1);
+	assert_string_equal(n[0].name, later);
+	touch(later, "card0");
+	assert_int_equal(hp_poll(h), HP_NODE);
+	assert_int_equal(hp_notices(h, &n), 1);
+	snprintf(want, sizeof(want), "%s/card0", later);
+	assert_string_equal(n[0].name, want);
+	touch(later, "renderD128");
+	assert_int_equal(hp_poll(h), 0);
 	hp_close(h);
 }
 
@@ -251,6 +328,9 @@ int main(void)
 		cmocka_unit_test_setup_teardown(the_fd_wakes_a_poll, setup, teardown),
 		cmocka_unit_test_setup_teardown(many_notices_at_once_are_one_answer, setup, teardown),
 		cmocka_unit_test_setup_teardown(missing_directories_are_named, setup, teardown),
+		cmocka_unit_test_setup_teardown(notices_say_which_node_and_what, setup, teardown),
+		cmocka_unit_test_setup_teardown(a_directory_that_appears_later_is_watched, setup,
+						teardown),
 		cmocka_unit_test_setup_teardown(libusb_is_optional, setup, teardown),
 	};
 

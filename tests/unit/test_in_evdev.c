@@ -4,9 +4,11 @@
  * Without a device: auto-detection over directories of non-devices, and
  * opens of files that are not input devices. With /dev/uinput (the VM
  * tests): real virtual keyboards and encoders built with libevdev's uinput
- * helpers: detection rule, numeric order, grab, CLOCK_MONOTONIC stamps,
- * autorepeat filtered, state after SYN_DROPPED, unplug. Those tests are
- * skipped, with the reason printed, where /dev/uinput is missing.
+ * helpers: detection by bound keys (every such device, each once),
+ * numeric order, grab, CLOCK_MONOTONIC stamps, autorepeat filtered, state
+ * after SYN_DROPPED, unplug. Those tests are skipped, with the reason
+ * printed, where /dev/uinput is missing. The detection rule itself is
+ * tested on in-memory libevdev devices, which need no /dev/uinput.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -29,13 +31,16 @@
 #include <libevdev/libevdev-uinput.h>
 #include <libevdev/libevdev.h>
 
-#include "input/in.h"
+#include "input/in_evdev.h"
 
 static char tmpdir[PATH_MAX];
+
+static int test_bound(void *u, const struct in_ident *id, int code);
 
 static int make_tmpdir(void **state)
 {
 	(void)state;
+	in_evdev.set_bound(test_bound, NULL);
 	snprintf(tmpdir, sizeof(tmpdir), "/tmp/test_in_evdev.XXXXXX");
 	return mkdtemp(tmpdir) ? 0 : -1;
 }
@@ -45,6 +50,7 @@ static int remove_tmpdir(void **state)
 	char cmd[PATH_MAX + 16];
 
 	(void)state;
+	in_evdev.set_bound(NULL, NULL);
 	if (snprintf(cmd, sizeof(cmd), "rm -rf '%s'", tmpdir) >= (int)sizeof(cmd))
 		return -1;
 	return system(cmd) == 0 ? 0 : -1;
@@ -193,6 +199,91 @@ static void test_close_null_is_safe(void **state)
 	in_evdev.close(NULL);
 }
 
+/* The bindings of these tests: the default keyboard's keys (arrows, W S A
+ * D, ctrl, space, 1, 5, 9), and for the device 1209:00f0 only its
+ * BTN_TRIGGER (a [device] section of its own replaces [keyboard]). */
+static int test_bound(void *u, const struct in_ident *id, int code)
+{
+	static const int keys[] = { KEY_UP, KEY_DOWN, KEY_LEFT, KEY_RIGHT, KEY_W, KEY_S, KEY_A,
+				    KEY_D, KEY_LEFTCTRL, KEY_SPACE, KEY_1, KEY_5, KEY_9 };
+
+	(void)u;
+	if (id->vid == 0x1209 && id->pid == 0x00f0)
+		return code == BTN_TRIGGER;
+	for (size_t i = 0; i < sizeof(keys) / sizeof(keys[0]); i++)
+		if (keys[i] == code)
+			return 1;
+	return 0;
+}
+
+/* An in-memory device description with the given keys (0-terminated). */
+static struct libevdev *described(const char *name, const unsigned *keys)
+{
+	struct libevdev *ev = libevdev_new();
+
+	assert_non_null(ev);
+	libevdev_set_name(ev, name);
+	libevdev_enable_event_type(ev, EV_KEY);
+	for (; *keys; keys++)
+		libevdev_enable_event_code(ev, EV_KEY, *keys, NULL);
+	return ev;
+}
+
+static void test_bound_keys_decide_auto_detection(void **state)
+{
+	static const unsigned encoder[] = { KEY_UP, KEY_DOWN, KEY_LEFT, KEY_RIGHT, KEY_LEFTCTRL,
+					    KEY_LEFTALT, KEY_1, KEY_5, 0 };
+	static const unsigned power[] = { KEY_POWER, 0 };
+	static const unsigned mouse[] = { BTN_LEFT, BTN_RIGHT, 0 };
+	static const unsigned media[] = { KEY_VOLUMEUP, KEY_VOLUMEDOWN, KEY_MUTE, 0 };
+	static const unsigned pad[] = { BTN_TRIGGER, BTN_THUMB, 0 };
+	unsigned keyboard[KEY_KPDOT - KEY_ESC + 2];
+	struct in_ident any = { .vid = 1, .pid = 1 }, padid = { .vid = 0x1209, .pid = 0x00f0 };
+	struct libevdev *ev;
+	int codes[16];
+
+	(void)state;
+	for (unsigned c = KEY_ESC; c <= KEY_KPDOT; c++)
+		keyboard[c - KEY_ESC] = c;
+	keyboard[KEY_KPDOT - KEY_ESC + 1] = 0;
+
+	/* ESC..KPDOT: of the bound keys W S A D, ctrl, space, 1, 5, 9 */
+	ev = described("AT keyboard", keyboard);
+	assert_int_equal(in_evdev_bound_keys(ev, &any, codes, 16), 9);
+	libevdev_free(ev);
+	/* an encoder: the arrows, ctrl, 1 and 5 are bound, alt is not */
+	ev = described("encoder", encoder);
+	assert_int_equal(in_evdev_bound_keys(ev, &any, codes, 16), 7);
+	assert_int_equal(codes[0], KEY_1);     /* in code order */
+	assert_int_equal(codes[2], KEY_LEFTCTRL);
+	assert_int_equal(in_evdev_bound_keys(ev, &any, NULL, 0), 7);
+	libevdev_free(ev);
+	/* nothing binds these: passed over */
+	ev = described("Power Button", power);
+	assert_int_equal(in_evdev_bound_keys(ev, &any, codes, 16), 0);
+	in_evdev.set_bound(NULL, NULL);     /* no bindings given: every key counts */
+	assert_int_equal(in_evdev_bound_keys(ev, &any, codes, 16), 1);
+	in_evdev.set_bound(test_bound, NULL);
+	libevdev_free(ev);
+	ev = described("mouse", mouse);
+	assert_int_equal(in_evdev_bound_keys(ev, &any, codes, 16), 0);
+	libevdev_free(ev);
+	ev = described("Consumer Control", media);
+	assert_int_equal(in_evdev_bound_keys(ev, &any, codes, 16), 0);
+	libevdev_free(ev);
+	/* a device's own section: the pad's BTN_TRIGGER counts for it only */
+	ev = described("pad", pad);
+	assert_int_equal(in_evdev_bound_keys(ev, &any, codes, 16), 0);
+	assert_int_equal(in_evdev_bound_keys(ev, &padid, codes, 16), 1);
+	assert_int_equal(codes[0], BTN_TRIGGER);
+	libevdev_free(ev);
+	/* no keys at all */
+	ev = libevdev_new();
+	assert_non_null(ev);
+	assert_int_equal(in_evdev_bound_keys(ev, &any, codes, 16), 0);
+	libevdev_free(ev);
+}
+
 /* uinput part. */
 
 static void need_uinput(void)
@@ -204,7 +295,7 @@ static void need_uinput(void)
 	}
 }
 
-enum kind { KEYBOARD, ENCODER, ARROWS_ONLY, MOUSE };
+enum kind { KEYBOARD, ENCODER, ARROWS_ONLY, MOUSE, POWER };
 
 /* A virtual device of the given kind; its node is uinput_devnode(). */
 static struct libevdev_uinput *make_device(enum kind kind, const char *name)
@@ -221,7 +312,9 @@ static struct libevdev_uinput *make_device(enum kind kind, const char *name)
 		for (unsigned c = KEY_ESC; c <= KEY_KPDOT; c++)
 			libevdev_enable_event_code(ev, EV_KEY, c, NULL);
 	}
-	if (kind != MOUSE) {
+	if (kind == POWER)
+		libevdev_enable_event_code(ev, EV_KEY, KEY_POWER, NULL);
+	if (kind != MOUSE && kind != POWER) {
 		libevdev_enable_event_code(ev, EV_KEY, KEY_UP, NULL);
 		libevdev_enable_event_code(ev, EV_KEY, KEY_DOWN, NULL);
 		libevdev_enable_event_code(ev, EV_KEY, KEY_LEFT, NULL);
@@ -386,31 +479,57 @@ static void test_uinput_autodetect_numeric_order(void **state)
 	libevdev_uinput_destroy(first);
 }
 
-static void test_uinput_autodetect_encoder_rule(void **state)
+/* A cabinet with a PS/2 keyboard and a keyboard encoder (and a power
+ * button, and a mouse): auto-detection takes both keyboards, one per
+ * open, never one twice, and leaves the rest; a closed device is taken
+ * again. */
+static void test_uinput_autodetect_takes_every_bound_device(void **state)
 {
-	struct libevdev_uinput *arrows, *encoder;
-	struct in_dev *d;
-	char dir[PATH_MAX], why[1024];
+	struct libevdev_uinput *power, *kbd, *mouse, *encoder;
+	struct in_dev *a, *b, *c = NULL;
+	char dir[PATH_MAX], why[2048];
 
 	(void)state;
 	need_uinput();
-	arrows = make_device(ARROWS_ONLY, "arcaded test arrows");
+	power = make_device(POWER, "arcaded test power");
+	kbd = make_device(KEYBOARD, "arcaded test keyboard");
+	mouse = make_device(MOUSE, "arcaded test mouse");
 	encoder = make_device(ENCODER, "arcaded test encoder");
-	subdir("encoder", dir, sizeof(dir));
-	dir_link(dir, "event0", libevdev_uinput_get_devnode(arrows));
-	dir_link(dir, "event1", libevdev_uinput_get_devnode(encoder));
-	assert_int_equal(in_evdev_open_dir(dir, &d, why, sizeof(why)), 0);
-	assert_non_null(strstr(in_evdev.describe(d), "arcaded test encoder"));
-	in_evdev.close(d);
-	libevdev_uinput_destroy(encoder);
+	subdir("cabinet", dir, sizeof(dir));
+	dir_link(dir, "event0", libevdev_uinput_get_devnode(power));
+	dir_link(dir, "event1", libevdev_uinput_get_devnode(kbd));
+	dir_link(dir, "event2", libevdev_uinput_get_devnode(mouse));
+	dir_link(dir, "event3", libevdev_uinput_get_devnode(encoder));
+	assert_int_equal(in_evdev_open_dir(dir, &a, why, sizeof(why)), 0);
+	assert_non_null(strstr(in_evdev.describe(a), "arcaded test keyboard"));
+	assert_int_equal(in_evdev_open_dir(dir, &b, why, sizeof(why)), 0);
+	assert_non_null(strstr(in_evdev.describe(b), "arcaded test encoder"));
+	assert_int_equal(in_evdev_open_dir(dir, &c, why, sizeof(why)), -ENODEV);
+	assert_null(c);
+	assert_non_null(strstr(why, "/event0 (arcaded test power): none of its keys is bound"));
+	assert_non_null(strstr(why, "/event1: already open"));
+	assert_non_null(strstr(why, "/event2 (arcaded test mouse): none of its keys is bound"));
+	assert_non_null(strstr(why, "/event3: already open"));
+	/* both deliver */
+	{
+		struct in_event ev[4];
 
-	/* Arrows alone are not enough. */
-	subdir("arrows", dir, sizeof(dir));
-	dir_link(dir, "event0", libevdev_uinput_get_devnode(arrows));
-	assert_int_equal(in_evdev_open_dir(dir, &d, why, sizeof(why)), -ENODEV);
-	assert_non_null(strstr(why, "arcaded test arrows"));
-	assert_non_null(strstr(why, "not a keyboard"));
-	libevdev_uinput_destroy(arrows);
+		emit(kbd, KEY_1, 1);
+		emit(encoder, KEY_5, 1);
+		assert_int_equal(read_events(a, ev, 1), 1);
+		assert_int_equal(ev[0].code, KEY_1);
+		assert_int_equal(read_events(b, ev, 1), 1);
+		assert_int_equal(ev[0].code, KEY_5);
+	}
+	in_evdev.close(a);
+	assert_int_equal(in_evdev_open_dir(dir, &c, why, sizeof(why)), 0);
+	assert_non_null(strstr(in_evdev.describe(c), "arcaded test keyboard"));
+	in_evdev.close(c);
+	in_evdev.close(b);
+	libevdev_uinput_destroy(encoder);
+	libevdev_uinput_destroy(mouse);
+	libevdev_uinput_destroy(kbd);
+	libevdev_uinput_destroy(power);
 }
 
 static void test_uinput_state_true_after_dropped_events(void **state)
@@ -483,11 +602,12 @@ int main(void)
 		cmocka_unit_test(test_open_non_evdev_file_fails_cleanly),
 		cmocka_unit_test(test_autodetect_system_gives_device_or_enodev),
 		cmocka_unit_test(test_close_null_is_safe),
+		cmocka_unit_test(test_bound_keys_decide_auto_detection),
 		cmocka_unit_test(test_uinput_press_release_monotonic_no_repeat),
 		cmocka_unit_test(test_uinput_second_open_reports_not_grabbed),
 		cmocka_unit_test(test_uinput_autodetect_skips_mouse_takes_keyboard),
 		cmocka_unit_test(test_uinput_autodetect_numeric_order),
-		cmocka_unit_test(test_uinput_autodetect_encoder_rule),
+		cmocka_unit_test(test_uinput_autodetect_takes_every_bound_device),
 		cmocka_unit_test(test_uinput_state_true_after_dropped_events),
 		cmocka_unit_test(test_uinput_unplug_is_enodev),
 	};

@@ -3,7 +3,7 @@
  * terminal: bytes written to the master come out as keys, releases are
  * synthesized with no byte arriving, standard input keeps its flags, a
  * hang-up is -ENODEV. The decoding rules themselves are tested in
- * test_in_ttykeys.c.
+ * test_ttyk.c.
  */
 #include <errno.h>
 #include <fcntl.h>

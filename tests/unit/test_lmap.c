@@ -14,10 +14,14 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include "engine/core/lim.h"
 #include "engine/map/grid.h"
 #include "engine/map/lmap.h"
 #include "engine/map/map.h"
+#include "engine/map/map_wad.h"
 #include "engine/map/tex.h"
+#include "engine/map/wad.h"
+#include "hostile_fixture.h"
 #include "engine/render/r_main.h"
 
 static struct map *grid(const char *text)
@@ -433,6 +437,75 @@ static void renderer_applies_light_maps(void **state)
 	free(lit);
 }
 
+/* MAP01 of hostile image img (freed here), loaded as "hostile.wad". */
+static struct map *load_hostile(uint8_t *img, size_t len)
+{
+	struct wad *w;
+	struct tex_set *t;
+	struct map *m;
+	char err[200];
+
+	assert_int_equal(wad_new(&w), 0);
+	assert_int_equal(wad_add(w, img, len, "hostile.wad", err, sizeof err), 0);
+	assert_int_equal(tex_load_wad(w, &t, err, sizeof err), 0);
+	if (map_load_wad(w, t, "MAP01", &m, err, sizeof err))
+		fail_msg("%s", err);
+	tex_free(t);
+	wad_free(w);
+	free(img);
+	return m;
+}
+
+/* lmap_new_lim on every light of m (LMAP_DECOR) with stop hook `stop`. */
+static int light_all(const struct map *m, const struct lim_stop *stop, char *err, size_t errlen)
+{
+	int n = lmap_lights_from_map(m, LMAP_DECOR, NULL, 0), r;
+	struct lmap_light *l = calloc((size_t)n + 1, sizeof *l);
+	struct lmap *lm = NULL;
+
+	assert_non_null(l);
+	lmap_lights_from_map(m, LMAP_DECOR, l, n);
+	r = lmap_new_lim(m, l, n, stop, &lm, err, errlen);
+	if (r)
+		assert_null(lm);
+	lmap_free(lm);
+	free(l);
+	return r;
+}
+
+/* Issue 13 item 8: 30,000 lights took 60 s; more than LMAP_MAX_LIGHTS are
+ * refused before any work. Lights whose rays cross many blocking lines
+ * stop at LMAP_MAX_STEPS; the stop hook ends the work at its next poll. */
+static void lights_past_the_limits_are_refused(void **state)
+{
+	struct hf_polls halt = { 0, 3 };
+	uint64_t steps = 0;
+	struct lim_stop count = { NULL, NULL, &steps }, stop = { hf_poll, &halt, NULL };
+	struct map *m;
+	size_t len;
+	uint8_t *img;
+	char err[200];
+
+	(void)state;
+	img = hf_lights(30000, &len);
+	m = load_hostile(img, len);
+	assert_int_equal(light_all(m, &count, err, sizeof err), -E2BIG);
+	assert_string_equal(err, "30000 lights, more than the limit of 4096 (LMAP_MAX_LIGHTS)");
+	assert_true(steps == 0);
+	map_free(m);
+	img = hf_lit_lines(4096, 1000, &len);
+	m = load_hostile(img, len);
+	assert_int_equal(light_all(m, &count, err, sizeof err), -E2BIG);
+	assert_string_equal(err, "light maps need more than 209715200 steps (limit "
+				 "LMAP_MAX_STEPS)");
+	/* past the limit by at most one ray's or one light's steps */
+	assert_true(steps > LMAP_MAX_STEPS && steps < LMAP_MAX_STEPS + 1000000);
+	assert_int_equal(light_all(m, &stop, err, sizeof err), -ECANCELED);
+	assert_string_equal(err, "light maps: stopped");
+	assert_int_equal(halt.polls, 3);
+	map_free(m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -443,6 +516,7 @@ int main(void)
 		cmocka_unit_test(same_map_gives_same_bytes),
 		cmocka_unit_test(lights_come_from_things_half_way_up),
 		cmocka_unit_test(no_lights_and_bad_lights),
+		cmocka_unit_test(lights_past_the_limits_are_refused),
 		cmocka_unit_test(only_surfaces_facing_a_light_get_grids),
 		cmocka_unit_test(huge_surfaces_get_coarser_texels),
 		cmocka_unit_test(renderer_applies_light_maps),

@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <errno.h>
 #include <stdlib.h>
+#include <string.h>
 #include <cmocka.h>
 
 #include "engine/core/msg.h"
@@ -84,7 +85,7 @@ static void bad_bsp_is_refused(void **state)
 	assert_non_null(m);
 	/* a hand-made BSP: one node whose child points at itself */
 	m->segs = calloc(1, sizeof *m->segs);
-	m->subsectors = calloc(1, sizeof *m->subsectors);
+	m->subsectors = calloc(2, sizeof *m->subsectors);
 	m->nodes = calloc(1, sizeof *m->nodes);
 	assert_true(m->segs && m->subsectors && m->nodes);
 	m->num_segs = m->num_subsectors = m->num_nodes = 1;
@@ -111,9 +112,66 @@ static void bad_bsp_is_refused(void **state)
 	assert_int_equal(map_finish(m, err, sizeof err), -EINVAL);
 	assert_string_equal(err, "seg 0: front/back sectors differ from its line's sides");
 	m->segs[0].front = 0;
+	/* both children the same subsector: a walk reaches it twice */
+	assert_int_equal(map_finish(m, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "node 0: child[1] subsector 0 is reached a second time: the BSP "
+				 "is not a tree");
+	m->subsectors[1] = m->subsectors[0];
+	m->num_subsectors = 2;
+	m->nodes[0].child[1] = MAP_NF_SUBSECTOR | 1;
 	assert_int_equal(map_finish(m, err, sizeof err), 0);   /* given BSP is kept */
 	assert_int_equal(m->num_nodes, 1);
 	map_free(m);
+}
+
+/* Issue 13 item 7: nodes that share children make a walk exponential. The
+ * first node or subsector reached twice from the root is named; a node no
+ * path reaches is left alone. */
+static void bsp_that_is_not_a_tree_is_refused(void **state)
+{
+	struct map *m = fix_build(&two, NULL, 0);
+	char err[128];
+	(void)state;
+	assert_non_null(m);
+	assert_int_equal(m->num_nodes, 1);
+	/* nodes 0 (as built), 1 and 2 over it: 2 -> {1, 1} */
+	m->nodes = realloc(m->nodes, 3 * sizeof *m->nodes);
+	assert_non_null(m->nodes);
+	m->nodes[1] = m->nodes[0];
+	m->nodes[1].child[0] = 0;
+	m->nodes[1].child[1] = 0;
+	m->nodes[2] = m->nodes[0];
+	m->nodes[2].child[0] = 1;
+	m->nodes[2].child[1] = 1;
+	m->num_nodes = 3;
+	assert_int_equal(map_finish(m, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "node 2: child[1] node 1 is reached a second time: the BSP is "
+				 "not a tree");
+	/* 2 -> {1, 0}, 1 -> {0, 0}: node 0 reached from 1 and from 2 */
+	m->nodes[2].child[1] = 0;
+	assert_int_equal(map_finish(m, err, sizeof err), -EINVAL);
+	assert_non_null(strstr(err, "node 0 is reached a second time"));
+	/* 2 -> {0 as built}: node 1 is unreachable and harmless */
+	m->nodes[2] = m->nodes[0];
+	assert_int_equal(map_finish(m, err, sizeof err), 0);
+	map_free(m);
+}
+
+static void far_floor(struct map *m) { m->sectors[1].floor_h = fx_from_int(-16384); }
+static void far_ceiling(struct map *m) { m->sectors[0].ceil_h = fx_from_int(16384); }
+
+/* Issue 13 item 9: heights beyond +/-16383 units are refused (the eye
+ * height and the renderer's height differences must fit 16.16). */
+static void heights_beyond_the_bound_are_refused(void **state)
+{
+	char err[128];
+	(void)state;
+	assert_int_equal(finish_broken(far_floor, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "sector 1: floor -16384 or ceiling 112 out of range (+/-16383 "
+				 "units)");
+	assert_int_equal(finish_broken(far_ceiling, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "sector 0: floor 0 or ceiling 16384 out of range (+/-16383 "
+				 "units)");
 }
 
 static void content_hash_covers_geometry_not_name(void **state)
@@ -304,6 +362,8 @@ int main(void)
 		cmocka_unit_test(validation_names_the_bad_entry),
 		cmocka_unit_test(error_message_truncates_safely),
 		cmocka_unit_test(bad_bsp_is_refused),
+		cmocka_unit_test(bsp_that_is_not_a_tree_is_refused),
+		cmocka_unit_test(heights_beyond_the_bound_are_refused),
 		cmocka_unit_test(content_hash_covers_geometry_not_name),
 		cmocka_unit_test(point_on_side_is_exact_with_ties_in_front),
 		cmocka_unit_test(builtin_levels_are_listed),

@@ -1,7 +1,11 @@
 /* Tests for engine/map/map_wad.c: the two-room fixture read field by field, a
  * corpus of corrupted maps each naming map, lump and entry, BSP rebuild,
- * normalisations, layering, and every map of Freedoom (skipped loudly when
- * the freedoom package is not installed). Fixture: wad_fixture.h. */
+ * normalisations, layering, the hostile maps of issue 13 (a BSP that is a
+ * DAG, heights the view cannot hold, lumps over the record limit, 40,000
+ * map markers, the node builder's limit and stop), and every map of
+ * Freedoom, with the work each loader needs far below its limit (skipped
+ * loudly when the freedoom package is not installed). Fixtures:
+ * wad_fixture.h, hostile_fixture.h. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -14,11 +18,15 @@
 #include <cmocka.h>
 
 #include "app/ct.h"
+#include "engine/core/lim.h"
+#include "engine/map/lmap.h"
 #include "engine/map/lvl_builtin.h"
 #include "engine/map/map.h"
 #include "engine/map/map_wad.h"
+#include "engine/map/nb.h"
 #include "engine/map/tex.h"
 #include "engine/map/wad.h"
+#include "hostile_fixture.h"
 #include "wad_fixture.h"
 
 /* The fixture graphics plus map MAP01 changed by fix (NULL: as is), and E1M1
@@ -494,6 +502,29 @@ static uint32_t unreachable_sectors(const struct map *m)
 	return bad;
 }
 
+/* The light maps of every light of m, counted through hook; fails when
+ * they come near a limit. */
+static void light_up(const struct map *m, const struct lim_stop *hook, const char *path,
+		     const char *name)
+{
+	int n = lmap_lights_from_map(m, LMAP_DECOR, NULL, 0);
+	struct lmap_light *l = calloc((size_t)n + 1, sizeof *l);
+	struct lmap *lm;
+	char err[200];
+
+	assert_non_null(l);
+	if (n > LMAP_MAX_LIGHTS / 8)
+		fail_msg("%s %s: %d lights, within 8 times LMAP_MAX_LIGHTS", path, name, n);
+	lmap_lights_from_map(m, LMAP_DECOR, l, n);
+	if (lmap_new_lim(m, l, n, hook, &lm, err, sizeof err))
+		fail_msg("%s %s: %s", path, name, err);
+	if (*hook->steps > LMAP_MAX_STEPS / 8)
+		fail_msg("%s %s: the light maps take %llu steps, within 8 times LMAP_MAX_STEPS",
+			 path, name, (unsigned long long)*hook->steps);
+	lmap_free(lm);
+	free(l);
+}
+
 static void check_freedoom(const char *path, const char *first, const char *last, int count)
 {
 	size_t len = 0;
@@ -502,6 +533,8 @@ static void check_freedoom(const char *path, const char *first, const char *last
 	struct tex_set *t;
 	char err[256], names[64][9];
 	clock_t t0 = clock();
+	uint64_t steps = 0, most[3] = { 0, 0, 0 };
+	struct lim_stop hook = { NULL, NULL, &steps };
 	int n;
 
 	if (!d) {
@@ -511,7 +544,12 @@ static void check_freedoom(const char *path, const char *first, const char *last
 	}
 	assert_int_equal(wad_new(&w), 0);
 	assert_int_equal(wad_add(w, d, len, path, err, sizeof err), 0);
-	assert_int_equal(tex_load_wad(w, &t, err, sizeof err), 0);
+	assert_int_equal(tex_load_wad_lim(w, &hook, &t, err, sizeof err), 0);
+	/* the limits are far above what Freedoom needs (issue 13 item 8) */
+	if (steps > TEX_MAX_STEPS / 8)
+		fail_msg("%s: the textures take %llu steps, within 8 times TEX_MAX_STEPS", path,
+			 (unsigned long long)steps);
+	most[0] = steps;
 	assert_int_equal(t->missing, 0);
 	assert_true(t->num_textures > 100);
 	assert_true(t->num_flats > 100);
@@ -550,14 +588,194 @@ static void check_freedoom(const char *path, const char *first, const char *last
 		if (unreachable_sectors(m))
 			fail_msg("%s %s: %u sectors not found by point location", path, names[i],
 				 unreachable_sectors(m));
+		/* the node builder and the light maps on it, counted */
+		steps = 0;
+		if (nb_build(m, &hook, err, sizeof err))
+			fail_msg("%s %s: %s", path, names[i], err);
+		if (steps > NB_MAX_STEPS / 8)
+			fail_msg("%s %s: rebuilding the BSP takes %llu steps, within 8 times "
+				 "NB_MAX_STEPS", path, names[i], (unsigned long long)steps);
+		most[1] = steps > most[1] ? steps : most[1];
+		steps = 0;
+		light_up(m, &hook, path, names[i]);
+		most[2] = steps > most[2] ? steps : most[2];
 		map_free(m);
 	}
+	print_message("%s: most steps: textures %llu, node builder %llu, light maps %llu\n", path,
+		      (unsigned long long)most[0], (unsigned long long)most[1],
+		      (unsigned long long)most[2]);
 	print_message("%s: palette, %d textures, %d flats, %d sprites and %d maps in %ld ms\n",
 		      path, t->num_textures, t->num_flats, t->num_sprites, n,
 		      (long)((clock() - t0) * 1000 / CLOCKS_PER_SEC));
 	tex_free(t);
 	wad_free(w);
 	free(d);
+}
+
+/* Loads MAP01 of the hostile image img (freed here) as "hostile.wad" with
+ * stop hook `stop` (may be NULL); returns map_load_wad_lim's result, *out
+ * the map or NULL. */
+static int hostile_load(uint8_t *img, size_t len, const struct lim_stop *stop, struct map **out,
+			char *err, size_t errlen)
+{
+	struct wad *w;
+	struct tex_set *t;
+	int r;
+
+	assert_int_equal(wad_new(&w), 0);
+	assert_int_equal(wad_add(w, img, len, "hostile.wad", err, errlen), 0);
+	assert_int_equal(tex_load_wad(w, &t, err, errlen), 0);
+	r = map_load_wad_lim(w, t, "MAP01", stop, out, err, errlen);
+	if (r)
+		assert_null(*out);
+	tex_free(t);
+	wad_free(w);
+	free(img);
+	return r;
+}
+
+/* Issue 13 item 7: 1,200 nodes, each with both children the node before
+ * it, are 2^1200 paths for a walk: the loader refuses the DAG (it used to
+ * load, and the renderer then never finished a frame). One node is a
+ * tree and loads. */
+static void bsp_dag_is_refused(void **state)
+{
+	struct map *m;
+	char err[200];
+	size_t len;
+	uint8_t *img;
+
+	(void)state;
+	img = hf_dag(1200, &len);
+	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "MAP01: node 1199: child[1] node 1198 is reached a second "
+				 "time: the BSP is not a tree");
+	img = hf_dag(1, &len);
+	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), 0);
+	assert_int_equal(m->num_nodes, 1);
+	map_free(m);
+}
+
+/* Issue 13 item 9: a floor above 32,726 makes the eye height (floor + 41)
+ * overflow 16.16; heights beyond MAP_HEIGHT_MAX are refused, naming the
+ * lump and entry. The bound itself loads. */
+static void heights_the_view_cannot_hold_are_refused(void **state)
+{
+	struct map *m;
+	char err[200];
+	size_t len;
+	uint8_t *img;
+
+	(void)state;
+	img = hf_heights(32730, 32760, &len);
+	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), -EINVAL);
+	assert_string_equal(err, "MAP01: SECTORS entry 0: floor 32730 out of range (+/-16383 "
+				 "units: the view's fixed point holds no more)");
+	img = hf_heights(-16384, 0, &len);
+	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), -EINVAL);
+	assert_non_null(strstr(err, "SECTORS entry 0: floor -16384 out of range"));
+	img = hf_heights(0, 16384, &len);
+	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), -EINVAL);
+	assert_non_null(strstr(err, "SECTORS entry 0: ceiling 16384 out of range"));
+	img = hf_heights(-16383, 16383, &len);
+	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), 0);
+	assert_true(m->sectors[0].floor_h == -MAP_HEIGHT_MAX && m->sectors[0].ceil_h == MAP_HEIGHT_MAX);
+	map_free(m);
+}
+
+static void many_things(struct wbuf *l)
+{
+	l[L_THINGS].n = 0;
+	for (int i = 0; i < MW_MAX_RECORDS + 1; i++) {
+		wb_16(&l[L_THINGS], 64);
+		wb_16(&l[L_THINGS], 64);
+		wb_16(&l[L_THINGS], 0);
+		wb_16(&l[L_THINGS], 1);
+		wb_16(&l[L_THINGS], 7);
+	}
+}
+
+/* A lump holding more records than 16-bit indices reach is refused with
+ * the file, map, lump and limit. */
+static void lumps_over_the_record_limit_are_refused(void **state)
+{
+	char err[200];
+
+	(void)state;
+	assert_int_equal(load_fixed(many_things, err, sizeof err), -E2BIG);
+	assert_string_equal(err, "fix.wad: MAP01: THINGS: 65537 entries, more than the limit of "
+				 "65536 (MW_MAX_RECORDS)");
+}
+
+/* 40,000 markers more (distinct names), plus repeated names: each name is
+ * listed once, at its first marker, in lump order. The listing sorts the
+ * markers (it compared each with every lump before it: 8.7 s here). */
+static void forty_thousand_markers_are_listed_once_each(void **state)
+{
+	char names[4][9], err[200];
+	size_t len;
+	uint8_t *img = hf_markers(40000, &len);
+	struct wad *w;
+	struct wfix f;
+	uint8_t *img2;
+	size_t len2;
+
+	(void)state;
+	assert_int_equal(wad_new(&w), 0);
+	assert_int_equal(wad_add(w, img, len, "markers.wad", err, sizeof err), 0);
+	assert_int_equal(map_list_wad(w, names, 4), 40001);
+	assert_string_equal(names[0], "MAP01");
+	assert_string_equal(names[1], "M0000000");
+	assert_string_equal(names[3], "M0000002");
+	/* a second file repeating two names and adding one: listed once each,
+	 * the new one last */
+	wf_init(&f);
+	wf_lump(&f, "M0000001", NULL, 0);
+	wf_lump(&f, "THINGS", NULL, 0);
+	wf_lump(&f, "ZZZ", NULL, 0);
+	wf_lump(&f, "THINGS", NULL, 0);
+	wf_lump(&f, "MAP01", NULL, 0);
+	wf_lump(&f, "THINGS", NULL, 0);
+	img2 = wf_finish(&f, "PWAD", &len2);
+	assert_int_equal(wad_add(w, img2, len2, "more.wad", err, sizeof err), 0);
+	assert_int_equal(map_list_wad(w, names, 1), 40002);
+	assert_string_equal(names[0], "MAP01");
+	wad_free(w);
+	free(img);
+	free(img2);
+}
+
+/* Issue 13 item 8: 2,004 lines that all cross each other took the node
+ * builder 57 s and 180 MB. It now stops at NB_MAX_STEPS (the stop hook,
+ * called every LIM_POLL steps, shows how far it went), naming the file,
+ * map and limit; and a stop hook that says stop ends it at its next poll. */
+static void crossing_lines_stop_at_the_node_builders_limit(void **state)
+{
+	struct hf_polls count = { 0, UINT64_MAX }, halt = { 0, 3 };
+	uint64_t steps = 0;
+	struct lim_stop hook = { hf_poll, &count, &steps }, stop = { hf_poll, &halt, NULL };
+	struct map *m;
+	char err[200];
+	size_t len;
+	uint8_t *img;
+
+	(void)state;
+	img = hf_crossing(2004, &len);
+	assert_int_equal(hostile_load(img, len, &hook, &m, err, sizeof err), -E2BIG);
+	assert_string_equal(err, "hostile.wad: MAP01: NODES (built here): node builder: 2008 "
+				 "lines need more than 268435456 steps (limit NB_MAX_STEPS)");
+	/* it went to the limit and one chunk past it, no further */
+	assert_true(steps > NB_MAX_STEPS && steps < NB_MAX_STEPS + 10 * 1000 * 1000);
+	assert_true(count.polls >= 1 && count.polls <= NB_MAX_STEPS / LIM_POLL + 1);
+	img = hf_crossing(2004, &len);
+	assert_int_equal(hostile_load(img, len, &stop, &m, err, sizeof err), -ECANCELED);
+	assert_string_equal(err, "hostile.wad: MAP01: NODES (built here): node builder: stopped");
+	assert_int_equal(halt.polls, 3);
+	/* a few crossing lines build */
+	img = hf_crossing(40, &len);
+	assert_int_equal(hostile_load(img, len, NULL, &m, err, sizeof err), 0);
+	assert_true(m->num_segs > 2 * 44);
+	map_free(m);
 }
 
 static void freedoom1_every_map_loads(void **state)
@@ -584,6 +802,11 @@ int main(void)
 		cmocka_unit_test(pwad_overrides_a_map),
 		cmocka_unit_test(other_formats_and_missing_lumps_are_refused),
 		cmocka_unit_test(builtin_levels_round_trip_through_a_wad),
+		cmocka_unit_test(bsp_dag_is_refused),
+		cmocka_unit_test(heights_the_view_cannot_hold_are_refused),
+		cmocka_unit_test(lumps_over_the_record_limit_are_refused),
+		cmocka_unit_test(forty_thousand_markers_are_listed_once_each),
+		cmocka_unit_test(crossing_lines_stop_at_the_node_builders_limit),
 		cmocka_unit_test(freedoom1_every_map_loads),
 		cmocka_unit_test(freedoom2_every_map_loads),
 	};

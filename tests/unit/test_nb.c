@@ -617,7 +617,7 @@ static void zero_length_line_is_refused(void **state)
 	(void)state;
 	assert_non_null(m);
 	m->vertices[2] = m->vertices[1];
-	assert_int_equal(nb_build(m, err, sizeof err), -EINVAL);
+	assert_int_equal(nb_build(m, NULL, err, sizeof err), -EINVAL);
 	assert_string_equal(err, "line 1: zero length");
 	assert_int_equal(m->num_segs, 0);
 	assert_int_equal(m->num_nodes, 0);
@@ -631,7 +631,7 @@ static void rebuild_replaces_the_bsp(void **state)
 	uint32_t segs = m->num_segs, nodes = m->num_nodes;
 	char err[64];
 	(void)state;
-	assert_int_equal(nb_build(m, err, sizeof err), 0);
+	assert_int_equal(nb_build(m, NULL, err, sizeof err), 0);
 	assert_int_equal(m->num_segs, segs);
 	assert_int_equal(m->num_nodes, nodes);
 	map_free(m);

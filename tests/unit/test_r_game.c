@@ -5,6 +5,7 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
 
@@ -16,6 +17,7 @@
 #include "engine/render/r_game.h"
 #include "engine/render/r_main.h"
 #include "g_fixture.h"
+#include "map_fixture.h"
 
 static const struct sim_settings play = { 1, 0, 1, 1, 3, 100, 1 };
 
@@ -139,11 +141,74 @@ static void builtin_monsters_have_every_frame_the_game_shows(void **state)
 	tex_free(ts);
 }
 
+/* Issue 13 item 9: heights at the bound map_finish allows (+/-16383
+ * units) play and draw with no overflow: the eye height, the renderer's
+ * height differences, sight and shots between a floor at the bottom and a
+ * ceiling at the top. Run by the sanitizer build, where any signed
+ * overflow aborts the test. Two rooms (a portal at x = 128), the player in
+ * one and a zombieman in the other, once with the player low and once
+ * high; 120 ticks walking forward and firing, each drawn. */
+static void heights_at_the_bound_play_and_draw_without_overflow(void **state)
+{
+	static const int v[][2] = {
+		{ 0, 0 }, { 0, 128 }, { 128, 128 }, { 128, 0 }, { 256, 128 }, { 256, 0 },
+	};
+	static const struct fix_line l[] = {
+		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
+		{ 2, 4, 1, -1 }, { 4, 5, 1, -1 }, { 5, 3, 1, -1 },
+	};
+	static const struct fix_sector low[] = { { -16383, 16383, 160 }, { 16300, 16383, 200 } };
+	static const struct fix_sector high[] = { { 16300, 16383, 160 }, { -16383, 16383, 200 } };
+	const struct fix_sector *sets[2] = { low, high };
+	struct tex_set *ts;
+	struct r_ctx *r;
+	struct r_frame f = { 0 };
+	(void)state;
+	assert_int_equal(tex_builtin(&ts), 0);
+	assert_int_equal(r_new(160, 120, &r), 0);
+	f.w = 160;
+	f.h = 120;
+	f.pitch = 160;
+	f.px = malloc(160 * 120);
+	assert_non_null(f.px);
+	for (int k = 0; k < 2; k++) {
+		struct fix_map fm = { v, 6, sets[k], 2, l, 7, 32, 64, 0 };
+		char err[160];
+		struct map *m = fix_alloc(&fm);
+		struct sim s;
+
+		assert_non_null(m);
+		/* a zombieman in the second room, facing the player */
+		m->num_things = 1;
+		assert_int_equal(map_finish(m, err, sizeof err), 0);
+		m->things = realloc(m->things, 2 * sizeof *m->things);
+		assert_non_null(m->things);
+		m->things[1] = (struct map_thing){ fx_from_int(200), fx_from_int(64), ANG180, 3004, 7 };
+		m->num_things = 2;
+		sim_init(&s, m, &play);
+		for (int t = 0; t < 120; t++) {
+			struct sim_cmd c = { 40, 0, (int16_t)(t % 40 < 20 ? 200 : -200),
+					     (uint8_t)(t % 10 == 0), 0 };
+			struct r_view rv;
+
+			sim_tick(&s, &c);
+			r_game_view(&s, &rv);
+			r_render(r, m, ts, &rv, NULL, 0, &f);
+		}
+		assert_true(s.pl.viewz == s.pl.z + SIM_VIEW_HEIGHT || s.pl.health <= 0);
+		map_free(m);
+	}
+	free(f.px);
+	r_free(r);
+	tex_free(ts);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(sprites_follow_the_state),
 		cmocka_unit_test(builtin_monsters_have_every_frame_the_game_shows),
+		cmocka_unit_test(heights_at_the_bound_play_and_draw_without_overflow),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -183,10 +183,10 @@ static void settings_open_the_slots_they_name(void **state)
 	slot_close(&set);
 	/* more devices than slots are left out */
 	slot_init(&set, &fake_hooks, NULL);
-	k[2].devices = "1 2 3 4 5 6 7 8 9 10";
+	k[2].devices = "1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20";
 	slot_open(&set, &k[2], 1, NULL);
 	assert_int_equal(set.n, SLOT_MAX);
-	assert_string_equal(set.s[SLOT_MAX - 1].path, "8");
+	assert_string_equal(set.s[SLOT_MAX - 1].path, "16");
 	/* "auto" is a device name to a backend without auto slots */
 	slot_close(&set);
 	slot_init(&set, &fake_hooks, NULL);
@@ -233,6 +233,58 @@ static void a_display_that_reads_keys_opens_them_and_spares_the_keyboard(void **
 	slot_close(&set);
 }
 
+/* What a backend that auto-detects by the bindings was told. */
+static int (*told_fn)(void *u, const struct in_ident *id, int code);
+static void *told_u;
+static int told_calls;
+
+static void fake_set_bound(int (*fn)(void *u, const struct in_ident *id, int code), void *u)
+{
+	told_fn = fn;
+	told_u = u;
+	told_calls++;
+}
+
+static void auto_detection_asks_the_bindings(void **state)
+{
+	static struct in_backend kbd, plain;
+	struct slot_kind k[] = {
+		{ &kbd, "auto", 4, 1 },
+		{ &plain, "auto", 2, 0 },
+	};
+	struct slot_hooks no_bound = fake_hooks;
+	struct in_ident id = { .vid = 1, .pid = 1 };
+
+	(void)state;
+	kbd = plain = fake_be;
+	kbd.name = "fakekbd";
+	kbd.set_bound = fake_set_bound;
+	plain.name = "fakeplain";
+	told_calls = 0;
+	slot_open(&set, k, 2, NULL);
+	/* told before its slots opened: every auto slot its own device */
+	assert_int_equal(told_calls, 1);
+	assert_int_equal(set.n, 6);
+	for (int i = 0; i < 4; i++)
+		assert_int_equal(set.s[i].dev->n, i + 1);
+	/* the function it was given asks the slots' bound hook */
+	assert_non_null(told_fn);
+	assert_int_equal(told_fn(told_u, &id, 2), 1);    /* KEY_1 */
+	assert_int_equal(told_fn(told_u, &id, 3), 0);
+	/* and the backend forgets it when the slots close */
+	slot_close(&set);
+	assert_int_equal(told_calls, 2);
+	assert_null(told_fn);
+	assert_null(told_u);
+	/* hooks without a bound hook: every code counts (NULL) */
+	no_bound.bound = NULL;
+	slot_init(&set, &no_bound, NULL);
+	slot_open(&set, k, 1, NULL);
+	assert_int_equal(told_calls, 3);
+	assert_null(told_fn);
+	slot_close(&set);
+}
+
 static void the_registry_has_every_backend_once(void **state)
 {
 	struct slot_kind k[SLOT_KINDS];
@@ -248,6 +300,13 @@ static void the_registry_has_every_backend_once(void **state)
 		for (int j = 0; j < i; j++)
 			assert_string_not_equal(k[i].be->name, k[j].be->name);
 	}
+	/* the backend that auto-detects keyboards takes several (a PS/2
+	 * keyboard does not keep an encoder out), by the bindings */
+	for (int i = 0; i < n; i++)
+		if (k[i].be->flags & IN_AUTO_TAKES_KEYBOARD) {
+			assert_true(k[i].autos > 1);
+			assert_non_null(k[i].be->set_bound);
+		}
 	/* the terminal preview's keys are a registered backend */
 	int found = 0;
 	for (int i = 0; i < n; i++)
@@ -266,6 +325,7 @@ int main(void)
 		T(a_hotplug_notice_retries_at_once),
 		T(settings_open_the_slots_they_name),
 		T(a_display_that_reads_keys_opens_them_and_spares_the_keyboard),
+		T(auto_detection_asks_the_bindings),
 		cmocka_unit_test(the_registry_has_every_backend_once),
 	};
 

@@ -4,6 +4,8 @@
  * watchdog interval from the environment, and no-ops outside systemd.
  */
 #include <errno.h>
+#include <fcntl.h>
+#include <inttypes.h>
 #include <limits.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -13,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/un.h>
 #include <unistd.h>
 
@@ -178,6 +181,43 @@ static void test_unreachable_socket_is_an_error(void **state)
 	setenv("NOTIFY_SOCKET", n->path, 1);
 }
 
+/* JOURNAL_STREAM names the device and inode of the stream systemd gave
+ * the service: only that fd is the journal. */
+static void test_journal_fd_matches_only_journal_stream(void **state)
+{
+	char path[] = "/tmp/test_svc_journal.XXXXXX", env[64];
+	int fd = mkstemp(path), other = open("/dev/null", O_WRONLY | O_CLOEXEC);
+	struct stat st;
+
+	(void)state;
+	assert_true(fd >= 0);
+	assert_true(other >= 0);
+	assert_int_equal(fstat(fd, &st), 0);
+	unsetenv("JOURNAL_STREAM");
+	assert_int_equal(svc_journal_fd(fd), 0);
+	snprintf(env, sizeof(env), "%ju:%ju", (uintmax_t)st.st_dev, (uintmax_t)st.st_ino);
+	setenv("JOURNAL_STREAM", env, 1);
+	assert_int_equal(svc_journal_fd(fd), 1);
+	assert_int_equal(svc_journal_fd(other), 0);
+	/* the same device, another inode; a malformed value */
+	snprintf(env, sizeof(env), "%ju:%ju", (uintmax_t)st.st_dev, (uintmax_t)st.st_ino + 1);
+	setenv("JOURNAL_STREAM", env, 1);
+	assert_int_equal(svc_journal_fd(fd), 0);
+	snprintf(env, sizeof(env), "%ju:%ju:", (uintmax_t)st.st_dev, (uintmax_t)st.st_ino);
+	setenv("JOURNAL_STREAM", env, 1);
+	assert_int_equal(svc_journal_fd(fd), 0);
+	setenv("JOURNAL_STREAM", "x", 1);
+	assert_int_equal(svc_journal_fd(fd), 0);
+	assert_int_equal(svc_journal_fd(-1), 0);
+	snprintf(env, sizeof(env), "%ju:%ju", (uintmax_t)st.st_dev, (uintmax_t)st.st_ino);
+	setenv("JOURNAL_STREAM", env, 1);
+	assert_int_equal(svc_journal_fd(-1), -EBADF);
+	unsetenv("JOURNAL_STREAM");
+	close(other);
+	close(fd);
+	unlink(path);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -193,6 +233,7 @@ int main(void)
 						sock_teardown),
 		cmocka_unit_test_setup_teardown(test_no_notify_socket_is_a_noop, sock_setup,
 						sock_teardown),
+		cmocka_unit_test(test_journal_fd_matches_only_journal_stream),
 		cmocka_unit_test_setup_teardown(test_unreachable_socket_is_an_error, sock_setup,
 						sock_teardown),
 	};

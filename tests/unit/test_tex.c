@@ -1,6 +1,8 @@
 /* Tests for engine/map/tex*.c: palette and light maps, texture composition from
  * patches, flats, sprites and their rotations, animation, fallbacks,
- * layering, and the built-in set. Fixture values: wad_fixture.h. */
+ * layering, the built-in set, name lookup by index, and the work bound of
+ * composing (issue 13 item 8). Fixture values: wad_fixture.h,
+ * hostile_fixture.h. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -11,8 +13,10 @@
 #include <string.h>
 #include <cmocka.h>
 
+#include "engine/core/lim.h"
 #include "engine/map/tex.h"
 #include "engine/map/wad.h"
+#include "hostile_fixture.h"
 #include "wad_fixture.h"
 
 struct fx {
@@ -409,6 +413,87 @@ static void no_playpal_is_an_error(void **state)
 	free(img);
 }
 
+/* Loads img (freed here) as "hostile.wad" with stop hook `stop`; returns
+ * tex_load_wad_lim's result (the set is freed). */
+static int load_hostile(uint8_t *img, size_t len, const struct lim_stop *stop, char *err,
+			size_t errlen)
+{
+	struct wad *w;
+	struct tex_set *t = NULL;
+	int r;
+
+	assert_int_equal(wad_new(&w), 0);
+	assert_int_equal(wad_add(w, img, len, "hostile.wad", err, errlen), 0);
+	r = tex_load_wad_lim(w, stop, &t, err, errlen);
+	if (r)
+		assert_null(t);
+	tex_free(t);
+	wad_free(w);
+	free(img);
+	return r;
+}
+
+/* Issue 13 item 8: one texture of 2,000 patches whose 4,096 columns share
+ * one column of 6,000 posts (5e10 posts to walk, 77 s and more) stops at
+ * TEX_MAX_STEPS, naming the file, lump, entry and limit; the stop hook
+ * ends it at its next poll; a small one composes. */
+static void a_texture_past_the_step_limit_is_refused(void **state)
+{
+	struct hf_polls halt = { 0, 2 };
+	uint64_t steps = 0;
+	struct lim_stop count = { NULL, NULL, &steps }, stop = { hf_poll, &halt, NULL };
+	size_t len;
+	uint8_t *img;
+	char err[200];
+
+	(void)state;
+	img = hf_tall_texture(2000, 6000, &len);
+	assert_int_equal(load_hostile(img, len, &count, err, sizeof err), -E2BIG);
+	assert_string_equal(err, "hostile.wad: TEXTURE1 entry 0 (HOSTILE): the textures need more "
+				 "than 268435456 steps to compose (limit TEX_MAX_STEPS)");
+	assert_true(steps > TEX_MAX_STEPS && steps < TEX_MAX_STEPS + 10000);
+	img = hf_tall_texture(2000, 6000, &len);
+	assert_int_equal(load_hostile(img, len, &stop, err, sizeof err), -ECANCELED);
+	assert_string_equal(err, "hostile.wad: TEXTURE1 entry 0 (HOSTILE): stopped");
+	assert_int_equal(halt.polls, 2);
+	/* 2 patches of 10 one-pixel posts: per patch, a step per column (4,096)
+	 * and per column 10 posts of 2 steps (the post and its pixel); the rest
+	 * of the set (flats, sprites) takes a few hundred */
+	steps = 0;
+	img = hf_tall_texture(2, 10, &len);
+	assert_int_equal(load_hostile(img, len, &count, err, sizeof err), 0);
+	assert_true(steps >= 2 * (4096 + 4096 * 10 * 2) && steps < 2 * (4096 + 4096 * 10 * 2) + 5000);
+}
+
+/* tex_find and tex_find_flat go through a sorted index once the set is
+ * finished: every name finds the first entry of that name, as a scan
+ * would. */
+static void lookup_by_index_agrees_with_a_scan(void **state)
+{
+	struct fx f = load_fixture(1);
+	struct tex_set *t = f.t;
+	(void)state;
+	assert_non_null(t->tex_by_name);
+	assert_non_null(t->flat_by_name);
+	for (int i = 1; i < t->num_textures; i++) {
+		int first = i;
+		for (int k = 1; k < i; k++)
+			if (memcmp(t->textures[k].name, t->textures[i].name, 9) == 0) {
+				first = k;
+				break;
+			}
+		if (t->textures[i].name[0])
+			assert_int_equal(tex_find(t, t->textures[i].name), first);
+	}
+	for (int i = 0; i < t->num_flats; i++)
+		if (t->flats[i].name[0])
+			assert_int_equal(tex_find_flat(t, t->flats[i].name), i);
+	assert_int_equal(tex_find(t, "nosuch"), -1);
+	assert_int_equal(tex_find(t, "solid"), tex_find(t, "SOLID"));
+	assert_int_equal(tex_find_flat(t, "ZZZZ"), -1);
+	unload(&f);
+}
+
 static void builtin_set_is_complete_and_deterministic(void **state)
 {
 	struct tex_set *a, *b;
@@ -514,6 +599,8 @@ int main(void)
 		cmocka_unit_test(pwad_overrides_a_texture_and_a_flat),
 		cmocka_unit_test(bad_palette_and_lists_are_errors),
 		cmocka_unit_test(no_playpal_is_an_error),
+		cmocka_unit_test(a_texture_past_the_step_limit_is_refused),
+		cmocka_unit_test(lookup_by_index_agrees_with_a_scan),
 		cmocka_unit_test(builtin_set_is_complete_and_deterministic),
 		cmocka_unit_test(builtin_set_has_pickups_effects_and_the_pistol),
 	};

@@ -2,18 +2,23 @@
  * Tests of the terminal key decoder (input/ttyk.c): bytes and times
  * in, key presses and synthesized releases out. Expected key codes are the
  * kernel's KEY_* values; expected times follow from the hold-off rules in
- * ttyk.h (550 ms after a press, 150 ms after a repeat, 50 ms ESC
+ * ttyk.h (200 ms after a press, 150 ms after a repeat, 50 ms ESC
  * wait).
  */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <cmocka.h>
 #include <linux/input-event-codes.h>
 
+#include "engine/game/menu.h"
+#include "engine/game/sim.h"
+#include "engine/map/map.h"
+#include "g_fixture.h"
 #include "input/ttyk.h"
 
 #define MS(x) ((uint64_t)(x) * 1000000u)
@@ -273,12 +278,12 @@ static void test_tap_released_after_first_hold(void **state)
 	(void)state;
 	ttyk_init(&k);
 	feed(&k, "\x1b[A", T0, &o);
-	assert_int_equal(ttyk_deadline(&k), T0 + MS(550));
-	expire(&k, T0 + MS(549), &o);
+	assert_int_equal(ttyk_deadline(&k), T0 + MS(200));
+	expire(&k, T0 + MS(199), &o);
 	assert_int_equal(o.n, 1);
-	expire(&k, T0 + MS(550), &o);
+	expire(&k, T0 + MS(200), &o);
 	assert_int_equal(o.n, 2);
-	assert_ev(&o, 1, KEY_UP, 0, T0 + MS(550));
+	assert_ev(&o, 1, KEY_UP, 0, T0 + MS(200));
 	assert_int_equal(ttyk_deadline(&k), 0);
 }
 
@@ -290,19 +295,40 @@ static void test_held_key_repeats_then_released_after_repeat_hold(void **state)
 	(void)state;
 	ttyk_init(&k);
 	feed(&k, "w", T0, &o);
-	/* Initial autorepeat delay 500 ms, then every 33 ms. */
-	feed(&k, "w", T0 + MS(500), &o);
-	feed(&k, "w", T0 + MS(533), &o);
-	expire(&k, T0 + MS(560), &o);        /* past the first hold: repeats keep it */
-	feed(&k, "w", T0 + MS(566), &o);
+	/* Initial autorepeat delay 180 ms (inside the first hold), then
+	 * every 33 ms. */
+	feed(&k, "w", T0 + MS(180), &o);
+	feed(&k, "w", T0 + MS(213), &o);
+	expire(&k, T0 + MS(240), &o);        /* past the first hold: repeats keep it */
+	feed(&k, "w", T0 + MS(246), &o);
 	assert_int_equal(o.n, 1);
-	assert_int_equal(ttyk_deadline(&k), T0 + MS(566 + 150));
-	expire(&k, T0 + MS(715), &o);
+	assert_int_equal(ttyk_deadline(&k), T0 + MS(246 + 150));
+	expire(&k, T0 + MS(395), &o);
 	assert_int_equal(o.n, 1);
-	expire(&k, T0 + MS(716), &o);
+	expire(&k, T0 + MS(396), &o);
 	assert_int_equal(o.n, 2);
 	assert_ev(&o, 0, KEY_W, 1, T0);
-	assert_ev(&o, 1, KEY_W, 0, T0 + MS(716));
+	assert_ev(&o, 1, KEY_W, 0, T0 + MS(396));
+}
+
+static void test_hold_with_long_repeat_delay_is_pressed_again(void **state)
+{
+	struct ttyk k;
+	struct out o = { .n = 0 };
+
+	(void)state;
+	ttyk_init(&k);
+	/* GNOME: the first repeat 500 ms after the press, then every 33 ms. */
+	feed(&k, "w", T0, &o);
+	expire(&k, T0 + MS(200), &o);        /* no repeat within the first hold: a tap */
+	assert_int_equal(o.n, 2);
+	assert_ev(&o, 1, KEY_W, 0, T0 + MS(200));
+	feed(&k, "w", T0 + MS(500), &o);     /* the first repeat presses it again */
+	feed(&k, "w", T0 + MS(533), &o);
+	feed(&k, "w", T0 + MS(566), &o);
+	assert_int_equal(o.n, 3);
+	assert_ev(&o, 2, KEY_W, 1, T0 + MS(500));
+	assert_int_equal(ttyk_deadline(&k), T0 + MS(566 + 150));
 }
 
 static void test_other_key_keeps_first_down_until_newest_released(void **state)
@@ -313,19 +339,19 @@ static void test_other_key_keeps_first_down_until_newest_released(void **state)
 	(void)state;
 	ttyk_init(&k);
 	feed(&k, "\x1b[A", T0, &o);                   /* hold up */
-	feed(&k, "\x1b[A", T0 + MS(500), &o);
-	feed(&k, "\x1b[D", T0 + MS(520), &o);         /* tap left */
-	expire(&k, T0 + MS(700), &o);                 /* up's own hold-off (650) passed */
+	feed(&k, "\x1b[A", T0 + MS(180), &o);
+	feed(&k, "\x1b[D", T0 + MS(200), &o);         /* tap left */
+	expire(&k, T0 + MS(340), &o);                 /* up's own hold-off (330) passed */
 	assert_int_equal(o.n, 2);
 	assert_ev(&o, 0, KEY_UP, 1, T0);
-	assert_ev(&o, 1, KEY_LEFT, 1, T0 + MS(520));
-	expire(&k, T0 + MS(520 + 549), &o);
+	assert_ev(&o, 1, KEY_LEFT, 1, T0 + MS(200));
+	expire(&k, T0 + MS(200 + 199), &o);
 	assert_int_equal(o.n, 2);
-	expire(&k, T0 + MS(520 + 550), &o);
+	expire(&k, T0 + MS(200 + 200), &o);
 	/* Both released, newest first. */
 	assert_int_equal(o.n, 4);
-	assert_ev(&o, 2, KEY_LEFT, 0, T0 + MS(1070));
-	assert_ev(&o, 3, KEY_UP, 0, T0 + MS(1070));
+	assert_ev(&o, 2, KEY_LEFT, 0, T0 + MS(400));
+	assert_ev(&o, 3, KEY_UP, 0, T0 + MS(400));
 }
 
 static void test_older_held_key_again_becomes_newest(void **state)
@@ -339,11 +365,11 @@ static void test_older_held_key_again_becomes_newest(void **state)
 	feed(&k, "a", T0 + MS(100), &o);
 	feed(&k, "w", T0 + MS(200), &o);    /* no new press: W is down */
 	assert_int_equal(o.n, 2);
-	assert_int_equal(ttyk_deadline(&k), T0 + MS(750));
-	expire(&k, T0 + MS(750), &o);
+	assert_int_equal(ttyk_deadline(&k), T0 + MS(400));
+	expire(&k, T0 + MS(400), &o);
 	assert_int_equal(o.n, 4);
-	assert_ev(&o, 2, KEY_W, 0, T0 + MS(750));
-	assert_ev(&o, 3, KEY_A, 0, T0 + MS(750));
+	assert_ev(&o, 2, KEY_W, 0, T0 + MS(400));
+	assert_ev(&o, 3, KEY_A, 0, T0 + MS(400));
 }
 
 static void test_late_read_releases_before_new_press(void **state)
@@ -407,6 +433,91 @@ static void test_long_paste_fills_queue_and_resumes(void **state)
 	}
 }
 
+/* ---- taps and holds as the service menu sees them ------------------------
+ * The terminal preview's keys drive the same sim as a cabinet's: a held
+ * direction repeats in the menu after some ticks (engine/game/sim.c). What
+ * counts is the outcome: how often the cursor moves when the decoder's
+ * events, sampled once per 60 Hz tick as the app does, are the sim's
+ * commands. */
+
+#define TICK_NS 16666667u
+
+/* The times bytes of one key arrive, ms after T0, ending with -1. */
+static int menu_moves(const int *arrive_ms, int ticks)
+{
+	static const struct gf_thing th[] = { { 100, 100, 0, 1, 0 } };
+	static const struct sim_settings set = { 1, 0, 0, 1, 3, 100, 1 };
+	struct map *m = gf_room(512, 512, th, 1, NULL, 0);
+	struct sim *s = calloc(1, sizeof(*s));
+	struct ttyk k;
+	struct out o;
+	int down = 0, moves = 0, next = 0;
+	uint8_t cursor;
+
+	assert_non_null(m);
+	assert_non_null(s);
+	sim_init(s, m, &set);
+	sim_tick(s, &(struct sim_cmd){ .buttons = SIM_BT_SERVICE });
+	sim_tick(s, &(struct sim_cmd){ 0 });
+	assert_int_equal(s->mode, SIM_SERVICE);
+	cursor = s->menu.cursor;
+	ttyk_init(&k);
+	for (int t = 0; t < ticks; t++) {
+		uint64_t now = T0 + (uint64_t)t * TICK_NS;
+		struct sim_cmd c = { 0 };
+
+		o.n = 0;
+		/* the bytes that came since the last tick, read now */
+		while (arrive_ms[next] >= 0 && T0 + MS(arrive_ms[next]) <= now) {
+			feed(&k, "\x1b[B", now, &o);
+			next++;
+		}
+		expire(&k, now, &o);
+		for (int i = 0; i < o.n; i++)
+			if (o.ev[i].code == KEY_DOWN)
+				down = o.ev[i].value;
+		c.forward = (int8_t)(down ? -127 : 0);
+		sim_tick(s, &c);
+		if (s->menu.cursor != cursor)
+			moves++;
+		cursor = s->menu.cursor;
+	}
+	free(s);
+	map_free(m);
+	return moves;
+}
+
+static void test_tap_moves_the_menu_cursor_once(void **state)
+{
+	static const int tap[] = { 0, -1 };
+	static const int two_taps[] = { 0, 1000, -1 };
+
+	(void)state;
+	assert_int_equal(menu_moves(tap, 120), 1);
+	assert_int_equal(menu_moves(two_taps, 180), 2);
+}
+
+static void test_held_key_still_repeats_in_the_menu(void **state)
+{
+	/* A terminal's autorepeat: the first repeat after 250 ms (the Linux
+	 * console) or 500 ms (GNOME), then every 33 ms, for 1.5 s. */
+	int console[64], gnome[64], n = 0;
+
+	(void)state;
+	console[n++] = 0;
+	for (int t = 250; t <= 1500; t += 33)
+		console[n++] = t;
+	console[n] = -1;
+	n = 0;
+	gnome[n++] = 0;
+	for (int t = 500; t <= 1500; t += 33)
+		gnome[n++] = t;
+	gnome[n] = -1;
+	/* Held for 1.5 s, a direction moves the cursor several times. */
+	assert_true(menu_moves(console, 150) >= 4);
+	assert_true(menu_moves(gnome, 150) >= 4);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -425,11 +536,14 @@ int main(void)
 		cmocka_unit_test(test_stale_partial_sequence_is_dropped),
 		cmocka_unit_test(test_tap_released_after_first_hold),
 		cmocka_unit_test(test_held_key_repeats_then_released_after_repeat_hold),
+		cmocka_unit_test(test_hold_with_long_repeat_delay_is_pressed_again),
 		cmocka_unit_test(test_other_key_keeps_first_down_until_newest_released),
 		cmocka_unit_test(test_older_held_key_again_becomes_newest),
 		cmocka_unit_test(test_late_read_releases_before_new_press),
 		cmocka_unit_test(test_ninth_key_releases_oldest),
 		cmocka_unit_test(test_long_paste_fills_queue_and_resumes),
+		cmocka_unit_test(test_tap_moves_the_menu_cursor_once),
+		cmocka_unit_test(test_held_key_still_repeats_in_the_menu),
 	};
 
 	return cmocka_run_group_tests_name("ttyk", tests, NULL, NULL);

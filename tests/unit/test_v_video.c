@@ -109,14 +109,34 @@ static void a_glyph_is_its_art(void **state)
 	assert_int_equal(v_text_width("AB C", 3), 4 * 8 * 3);
 }
 
+/* Text partly outside the frame draws exactly the part inside: the same
+ * text drawn unclipped into a larger frame (the small frame's window at
+ * (80, 60) of it) has the same pixels in that window, and some of them
+ * are set (the text is not simply dropped). */
 static void text_past_the_edges_is_clipped(void **state)
 {
+	static uint8_t big[200 * 150];
+	struct r_frame bf = { big, 200, 150, 200 };
 	struct fb b;
+	int drawn;
 	(void)state;
 	fb_init(&b);
+	memset(big, 0, sizeof big);
 	v_text(&b.f, -12, -3, 1, 4, "HI THERE");
 	v_text(&b.f, 30, 25, 2, 4, "WW");
-	count(&b, 4);                          /* guards intact */
+	v_text(&bf, 80 - 12, 60 - 3, 1, 4, "HI THERE");
+	v_text(&bf, 80 + 30, 60 + 25, 2, 4, "WW");
+	drawn = count(&b, 4);                  /* guards intact */
+	for (int y = 0; y < H; y++)
+		for (int x = 0; x < W; x++)
+			if (px(&b, x, y) != big[(60 + y) * 200 + 80 + x])
+				fail_msg("pixel (%d, %d): %d clipped, %d unclipped", x, y, px(&b, x, y),
+					 big[(60 + y) * 200 + 80 + x]);
+	assert_true(drawn > 20);
+	/* and the unclipped text has more pixels, outside the window: it was cut */
+	for (size_t i = 0; i < sizeof big; i++)
+		drawn -= big[i] == 4;
+	assert_true(drawn < 0);
 }
 
 static void lines_are_inclusive_and_clipped(void **state)

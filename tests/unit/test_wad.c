@@ -1,5 +1,6 @@
 /* Tests for engine/map/wad.c: header and directory checks, names, lookups and
- * layering. */
+ * layering, the lookup index against a plain scan, and the limit on lumps
+ * (issue 13 item 8). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -207,8 +208,104 @@ static void free_accepts_null(void **state)
 	wad_free(NULL);
 }
 
+/* A directory claiming more lumps than WAD_MAX_LUMPS (each entry really
+ * there) is refused with the file and the limit, before anything is kept;
+ * exactly the limit is fine, and one more in a second file is refused. */
+static void lumps_over_the_limit_are_refused(void **state)
+{
+	struct wad *w;
+	struct wfix f;
+	uint8_t *img, *one;
+	size_t len, len1;
+	char err[160];
+
+	(void)state;
+	wf_init(&f);
+	for (int i = 0; i < WAD_MAX_LUMPS + 1; i++)
+		wf_lump(&f, "M", NULL, 0);
+	img = wf_finish(&f, "PWAD", &len);
+	assert_int_equal(wad_new(&w), 0);
+	assert_int_equal(wad_add(w, img, len, "many.wad", err, sizeof err), -E2BIG);
+	assert_string_equal(err, "many.wad: 262145 lumps, more than the limit of 262144 in all "
+				 "files (WAD_MAX_LUMPS)");
+	assert_int_equal(wad_count(w), 0);
+	/* the same directory less one entry: exactly the limit */
+	wb_put32(&(struct wbuf){ img, len, len }, 4, WAD_MAX_LUMPS);
+	assert_int_equal(wad_add(w, img, len, "many.wad", err, sizeof err), 0);
+	assert_int_equal(wad_count(w), WAD_MAX_LUMPS);
+	wf_init(&f);
+	wf_lump(&f, "X", NULL, 0);
+	one = wf_finish(&f, "PWAD", &len1);
+	assert_int_equal(wad_add(w, one, len1, "one.wad", err, sizeof err), -E2BIG);
+	assert_non_null(strstr(err, "one.wad: 1 lumps, more than the limit"));
+	wad_free(w);
+	free(img);
+	free(one);
+}
+
+/* Last and first-from lookups by a linear scan, the definition the index
+ * must agree with. */
+static int scan_last(const struct wad *w, const char *name)
+{
+	for (int i = wad_count(w) - 1; i >= 0; i--)
+		if (strcmp(wad_name(w, i), name) == 0)
+			return i;
+	return -1;
+}
+
+static int scan_from(const struct wad *w, const char *name, int from)
+{
+	for (int i = from < 0 ? 0 : from; i < wad_count(w); i++)
+		if (strcmp(wad_name(w, i), name) == 0)
+			return i;
+	return -1;
+}
+
+/* Three files of 500 lumps named from a small alphabet (many repeats):
+ * every name's wad_find and wad_find_from at every start equal the scan's. */
+static void index_lookups_equal_a_scan(void **state)
+{
+	static const char *const pool[] = { "A", "B", "THINGS", "E1M1", "F_START", "ZZZZZZZZ",
+					    "b2", "MAP01" };
+	uint8_t *img[3];
+	struct wad *w;
+	uint32_t seed = 12345;
+	char err[160];
+
+	(void)state;
+	assert_int_equal(wad_new(&w), 0);
+	for (int k = 0; k < 3; k++) {
+		struct wfix f;
+		size_t len;
+
+		wf_init(&f);
+		for (int i = 0; i < 500; i++) {
+			seed = seed * 1103515245u + 12345u;
+			wf_lump(&f, pool[(seed >> 16) % 8], NULL, 0);
+		}
+		img[k] = wf_finish(&f, "PWAD", &len);
+		assert_int_equal(wad_add(w, img[k], len, "r.wad", err, sizeof err), 0);
+	}
+	for (int p = 0; p < 8; p++) {
+		char up[9] = "";
+
+		for (int c = 0; c < 8 && pool[p][c]; c++)
+			up[c] = (char)(pool[p][c] >= 'a' && pool[p][c] <= 'z' ? pool[p][c] - 32
+									      : pool[p][c]);
+		assert_int_equal(wad_find(w, pool[p]), scan_last(w, up));
+		for (int from = -1; from <= wad_count(w); from++)
+			assert_int_equal(wad_find_from(w, pool[p], from), scan_from(w, up, from));
+	}
+	assert_int_equal(wad_find(w, "NONE"), -1);
+	assert_int_equal(wad_find_from(w, "NONE", 0), -1);
+	wad_free(w);
+	for (int k = 0; k < 3; k++)
+		free(img[k]);
+}
+
 /* The committed files (tests/data/wad/, written by mkfixtures.c) are the
- * images the tests build; run from the repository root. */
+ * images the tests build. They are part of the repository: a missing one is
+ * a failure, not a skip (the suite runs from the repository root). */
 static void fixtures_on_disk_match_generator(void **state)
 {
 	static const char *const names[2] = { "tests/data/wad/fixture.wad",
@@ -220,10 +317,9 @@ static void fixtures_on_disk_match_generator(void **state)
 		FILE *f = fopen(names[i], "rbe");
 
 		if (!f) {
-			print_message("SKIPPED: %s not found (run from the repository root)\n",
-				      names[i]);
 			free(want);
-			skip();
+			fail_msg("%s not found: it is part of the repository (run the test from "
+				 "the repository root)", names[i]);
 		}
 		got = malloc(len + 1);
 		assert_non_null(got);
@@ -246,6 +342,8 @@ int main(void)
 		cmocka_unit_test(every_truncation_is_refused_or_bounded),
 		cmocka_unit_test(free_accepts_null),
 		cmocka_unit_test(fixtures_on_disk_match_generator),
+		cmocka_unit_test(lumps_over_the_limit_are_refused),
+		cmocka_unit_test(index_lookups_equal_a_scan),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

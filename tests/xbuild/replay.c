@@ -24,6 +24,10 @@
  *     --rehash OUT      write the recording again as format 3 with the
  *                       state, frame and audio hashes of this replay
  *     --bench           print ticks per second to stderr
+ *     --modes           print to stderr, at the end, how many times the
+ *                       game entered each mode ("modes: attract 3 play 2
+ *                       gameover 2 initials 1 service 0"): the soak test's
+ *                       proof that its input went through the whole flow
  *   replay --make-random OUT TICKS SEED
  *     writes a format 3 recording without hashes for built-in level 1,
  *     volume 100 and attract sound on: a coin and START,
@@ -84,7 +88,7 @@ struct rp_opts {
 	const char *file, *rehash;
 	const char *wads[CT_MAX_WADS], *map;
 	int nwads;
-	int render, quiet, verify, bench;
+	int render, quiet, verify, bench, modes;
 	int w, h, level;
 	int64_t until;
 };
@@ -92,7 +96,7 @@ struct rp_opts {
 static int rp_usage(void)
 {
 	fprintf(stderr, "usage: replay [--no-render] [--size WxH] [--level N] [--wad F --map M] [--until T] "
-			"[--quiet] [--verify] [--rehash OUT] [--bench] FILE\n");
+			"[--quiet] [--verify] [--rehash OUT] [--bench] [--modes] FILE\n");
 	return 2;
 }
 
@@ -113,6 +117,8 @@ static int rp_args(int argc, char **argv, struct rp_opts *o)
 			o->verify = 1;
 		} else if (strcmp(a, "--bench") == 0) {
 			o->bench = 1;
+		} else if (strcmp(a, "--modes") == 0) {
+			o->modes = 1;
 		} else if (strcmp(a, "--size") == 0 && v) {
 			if (sscanf(v, "%dx%d", &o->w, &o->h) != 2 || o->w < 1 || o->h < 1 ||
 			    o->w > 4096 || o->h > 4096)
@@ -314,7 +320,8 @@ int main(int argc, char **argv)
 	static struct hear hear;
 	struct sim sim;
 	char err[512];
-	uint32_t t = 0;
+	uint32_t t = 0, entered[SIM_MODE_COUNT] = { 0 };
+	enum sim_mode mode;
 	double t0;
 	int rc, code = 2;
 
@@ -419,6 +426,7 @@ int main(int argc, char **argv)
 
 	code = 0;
 	t0 = rp_now();
+	entered[sim.mode]++;
 	for (;; t++) {
 		struct rec_tick rt, mine;
 
@@ -429,7 +437,10 @@ int main(int argc, char **argv)
 			fprintf(stderr, "replay: %s: tick %u: %s\n", o.file, t, strerror(-rc));
 		if (rc <= 0)
 			break;
+		mode = sim.mode;
 		sim_tick(&sim, &rt.cmd);
+		if (sim.mode != mode && (unsigned)sim.mode < SIM_MODE_COUNT)
+			entered[sim.mode]++;
 		demo_tick(&demo, &sim);
 		/* the daemon's own mixing (app/hear.c) */
 		hear_tick(&hear, &sim, demo_under(&demo, &sim));
@@ -461,6 +472,12 @@ int main(int argc, char **argv)
 		fprintf(stderr, "replay: %u ticks in %.3f s: %.0f ticks/s (%s)\n", t, el,
 			el > 0 ? t / el : 0.0,
 			o.render ? "rendering" : "no rendering");
+	}
+	if (o.modes) {
+		fprintf(stderr, "modes:");
+		for (int k = 0; k < SIM_MODE_COUNT; k++)
+			fprintf(stderr, " %s %u", sim_mode_name((enum sim_mode)k), entered[k]);
+		fprintf(stderr, "\n");
 	}
 	if (o.verify) {
 		rc = rec_verify_summary(&ver, err, sizeof(err));

@@ -23,8 +23,15 @@
 # the daemon's hashes for those ticks of the whole recording, stored
 # hashes verify, and a damaged snapshot or a cut on the attract DEMO page
 # is refused.
-# The aarch64 part is skipped, loudly, only when qemu-user cannot run a
-# static aarch64 program here; a missing cross compiler is a failure
+# The daemon's renderer draws with a pool of threads (app/pool.c): the
+# daemon's own replays with game.render_threads 1, 2 and 3 must print the
+# same hashes.
+# Every script must record (except those refused at set-up on purpose,
+# "# expect-exit: 2"), and every comparison named here runs: a recording
+# or committed file that is missing is a failure, never a silent skip.
+# The aarch64 part is skipped, loudly ("SKIP" lines: the suite counts the
+# step as skipped, not passed), only when qemu-user cannot run a static
+# aarch64 program here; a missing cross compiler is a failure
 # (scripts/setup.sh installs it).
 # Usage: tests/xbuild/run.sh [path/to/arcaded]    (default build/arcaded)
 set -u
@@ -45,16 +52,11 @@ if grep -nE '\b(float|double)\b|<math\.h>' engine/core/*.c engine/core/*.h engin
 else
 	ok "no floating point in the engine (-ffp-contract cannot matter)"
 fi
-if grep -nE 'pthread|<threads\.h>' engine/core/*.c engine/core/*.h engine/map/*.c engine/map/*.h engine/game/*.c engine/game/*.h engine/render/*.c engine/render/*.h engine/ui/*.c engine/ui/*.h >/dev/null 2>&1; then
-	THREADS=1
-else
-	THREADS=0
-fi
 
 # ---- builds --------------------------------------------------------------
 WARN="-std=c11 -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes"
 FLAGS="$WARN -fno-strict-aliasing -I. -D_GNU_SOURCE"
-SRC="tests/xbuild/replay.c $(ls engine/core/*.c engine/map/*.c engine/sound/*.c engine/game/*.c engine/render/*.c engine/ui/*.c | tr '\n' ' ') input/rec.c input/rec_check.c input/scr.c input/act.c input/io.c input/txt.c app/ct.c app/view.c app/demo.c app/cmd.c app/hear.c"
+SRC=$(sh tests/xbuild/src.sh)
 build() { # $1 name; rest: compiler and flags
 	name=$1; shift
 	# shellcheck disable=SC2086
@@ -105,23 +107,31 @@ say "builds: $BUILDS"
 # ---- recordings ----------------------------------------------------------
 common="--config-dir $tmp/etc --state-dir $tmp/state"
 mkdir -p "$tmp/rec"
-for f in tests/replay/*.rec; do
-	[ -e "$f" ] && cp "$f" "$tmp/rec/committed-$(basename "$f")"
+for g in golden-attract golden-game golden-walk; do
+	if [ -f "tests/replay/$g.rec" ]; then
+		cp "tests/replay/$g.rec" "$tmp/rec/committed-$g.rec"
+	else
+		bad "tests/replay/$g.rec is missing (a committed golden)"
+	fi
 done
 record() { # $1 script, $2 output name, rest: daemon options
 	s=$1; n=$2; shift 2
-	"$BIN" $common "$@" --script "$s" --record "$tmp/rec/$n.rec" >/dev/null 2>&1
-	# expect_fails.scr and friends fail on purpose: keep what recorded
-	[ -s "$tmp/rec/$n.rec" ] || rm -f "$tmp/rec/$n.rec"
+	"$BIN" $common "$@" --script "$s" --record "$tmp/rec/$n.rec" >/dev/null 2>"$tmp/record.err"
+	# expect_fails.scr fails on purpose and records; a script refused at
+	# set-up on purpose (expect-exit 2) records nothing; any other script
+	# that records nothing is a failure
+	if [ ! -s "$tmp/rec/$n.rec" ]; then
+		rm -f "$tmp/rec/$n.rec"
+		grep -q '^# expect-exit: *2' "$s" ||
+			bad "$s recorded nothing: $(head -n 1 "$tmp/record.err")"
+	fi
 }
 for s in tests/replay/*.scr tests/script/*.scr; do
 	record "$s" "$(basename "$(dirname "$s")")-$(basename "$s" .scr)"
 done
-[ -e tests/replay/game.scr ] && record tests/replay/game.scr settings-game \
-	--set game.coins_per_credit=3 --set game.freeplay=1
+record tests/replay/game.scr settings-game --set game.coins_per_credit=3 --set game.freeplay=1
 # a rate that 60 does not divide: the mixer carries the remainder
-[ -e tests/replay/game.scr ] && record tests/replay/game.scr rate22050-game \
-	--set audio.rate=22050 --set game.volume=100
+record tests/replay/game.scr rate22050-game --set audio.rate=22050 --set game.volume=100
 FIRST=$(echo "$BUILDS" | awk '{print $1}')
 for seed in 1 20261121; do
 	"$tmp/run-$FIRST" --make-random "$tmp/rec/random-$seed.rec" 3000 "$seed" ||
@@ -170,12 +180,35 @@ if [ -f "$W" ]; then
 else
 	bad "$W missing: run scripts/setup.sh (package freedoom)"
 fi
-if [ -e "$tmp/rec/replay-game.rec" ]; then
-	compare replay-game "$tmp/rec/replay-game.rec" 200x150
-	compare replay-game "$tmp/rec/replay-game.rec" 640x480
-fi
+compare replay-game "$tmp/rec/replay-game.rec" 200x150
+compare replay-game "$tmp/rec/replay-game.rec" 640x480
 [ "$fail" -eq "$before" ] &&
 	ok "every build prints the daemon's state, frame and audio hashes for every recording ($ticks build-ticks compared)"
+
+# ---- the daemon's render threads ------------------------------------------
+# $1 label, $2 recording, $3 WxH, rest: content options: the daemon's
+# replays with 1, 2 and 3 render threads print the same hashes, and the
+# pools really started (no "drawing on one").
+threads() {
+	label=$1; rec=$2; size=$3; shift 3
+	for n in 1 2 3; do
+		"$BIN" $common "$@" --size "$size" --set game.render_threads=$n \
+			--replay "$rec" >"$tmp/thr-$n" 2>"$tmp/thr-$n.err"
+	done
+	if [ ! -s "$tmp/thr-1" ]; then
+		bad "threads $label: the daemon did not replay it: $(head -n 1 "$tmp/thr-1.err")"
+	elif grep -q "drawing on one" "$tmp/thr-2.err" "$tmp/thr-3.err"; then
+		bad "threads $label: a pool did not start: $(grep -h "drawing on one" "$tmp"/thr-*.err | head -n 1)"
+	elif ! cmp -s "$tmp/thr-1" "$tmp/thr-2" || ! cmp -s "$tmp/thr-1" "$tmp/thr-3"; then
+		bad "threads $label $size: 1, 2 and 3 render threads differ"
+		diff "$tmp/thr-1" "$tmp/thr-2" | head -n 4
+	else
+		ok "threads $label $size: 1, 2 and 3 render threads print the same hashes ($(wc -l <"$tmp/thr-1") ticks)"
+	fi
+}
+threads replay-game "$tmp/rec/replay-game.rec" 640x480
+threads golden-walk "$tmp/rec/committed-golden-walk.rec" 320x240
+[ -f "$W" ] && threads freedoom-e1m1 tests/replay/freedoom/golden-e1m1.rec 320x240 --wad "$W" --map E1M1
 
 # ---- hashes stored in a recording: --verify ------------------------------
 src=$tmp/rec/random-1.rec
@@ -258,9 +291,8 @@ cticks=0
 before=$fail
 cut_compare random-1 "$tmp/rec/random-1.rec" 1500
 cut_compare random-20261121 "$tmp/rec/random-20261121.rec" 2200
-[ -e "$tmp/rec/replay-game.rec" ] && cut_compare replay-game "$tmp/rec/replay-game.rec" 700
-[ -e "$tmp/rec/committed-golden-game.rec" ] &&
-	cut_compare golden-game "$tmp/rec/committed-golden-game.rec" 900
+cut_compare replay-game "$tmp/rec/replay-game.rec" 700
+cut_compare golden-game "$tmp/rec/committed-golden-game.rec" 900
 [ "$fail" -eq "$before" ] &&
 	ok "every build replays recordings that start from a snapshot to the daemon's hashes ($cticks build-ticks compared)"
 if [ -e "$tmp/v2.rec" ] && "$tmp/run-$FIRST" --cut "$tmp/v2.rec" 1000 "$tmp/v2cut.rec" 2>"$tmp/cut.err"; then
@@ -285,19 +317,13 @@ if [ -e "$tmp/v2.rec" ] && "$tmp/run-$FIRST" --cut "$tmp/v2.rec" 1000 "$tmp/v2cu
 else
 	bad "cut the recording with hashes: $(cat "$tmp/cut.err" 2>/dev/null)"
 fi
-if [ -e "$tmp/rec/committed-golden-attract.rec" ]; then
-	"$tmp/run-$FIRST" --cut "$tmp/rec/committed-golden-attract.rec" 1000 "$tmp/demo.rec" \
-		2>"$tmp/cut.err"
-	rc=$?
-	if [ "$rc" -eq 2 ] && grep -q "DEMO page" "$tmp/cut.err"; then
-		ok "a cut on the attract DEMO page is refused: $(cat "$tmp/cut.err")"
-	else
-		bad "a cut on the DEMO page (exit $rc): $(cat "$tmp/cut.err")"
-	fi
-fi
-
-if [ "$THREADS" -eq 0 ]; then
-	say "NOTE the renderer has no threads yet: the 1-thread / 2-thread comparison starts when it does"
+"$tmp/run-$FIRST" --cut "$tmp/rec/committed-golden-attract.rec" 1000 "$tmp/demo.rec" \
+	2>"$tmp/cut.err"
+rc=$?
+if [ "$rc" -eq 2 ] && grep -q "DEMO page" "$tmp/cut.err"; then
+	ok "a cut on the attract DEMO page is refused: $(cat "$tmp/cut.err")"
+else
+	bad "a cut on the DEMO page (exit $rc): $(cat "$tmp/cut.err")"
 fi
 [ -n "$A64" ] || say "NOTE aarch64 was NOT compared (see SKIP above)"
 say "xbuild: $pass passed, $fail failed"
