@@ -20,7 +20,8 @@
 # -noblit (no present); dsda-doom's figure includes its SDL present.
 #
 # Run as root, the measured processes get nice -20 (less disturbed by other
-# load). Output: a table on stdout, build/bench/bench.csv, build/bench/bench.png.
+# load). The mixer's cost per tick with 16 busy channels (tests/bench/mbench.c)
+# is reported too. Output: a table on stdout, build/bench/bench.csv, build/bench/bench.png.
 # Usage: tests/bench.sh path/to/arcaded   (BENCH_SECONDS: timed seconds per
 # run, default 1; BENCH_PEERS=0 skips the peers)
 set -eu
@@ -55,6 +56,7 @@ $CC $CFL -o "$tmp/rbench" tests/bench/rbench.c "$B/libarcaded.a" $LIBS
 $CC $CFL -o "$tmp/chart" tests/bench/chart.c "$B/libarcaded.a" $LIBS
 $CC $CFL -o "$tmp/demo" tests/bench/demo.c
 $CC $CFL -o "$tmp/runstat" tests/bench/runstat.c
+$CC $CFL -o "$tmp/mbench" tests/bench/mbench.c "$B/libarcaded.a"
 gl=0
 if [ -f engine/gl/rgl.h ] && pkg-config --exists osmesa &&
 	$CC $CFL -DRBENCH_GL -o "$tmp/rbench-gl" tests/bench/rbench.c engine/gl/*.c \
@@ -250,6 +252,12 @@ function target(what, a, b, want) {
 	if (a == "-" || b == "-") { printf "  %-52s %9s         >= %.1fx   not measured\n", what, "-", want; return }
 	printf "  %-52s %8.1fx         >= %.1fx   %s\n", what, a / b, want, (a / b >= want ? "met" : "NOT MET")
 }' "$CSV"
+# the mixer: one tick of 16 busy channels at 48000 Hz, one core
+mix=$($PRIO "$tmp/mbench" "${BENCH_SECONDS:-1}")
+mms=$(echo "$mix" | awk '{ print $2 }')
+printf '  %-52s %9s ms      <= 0.1     %s\n' "mixer: one tick, 16 busy channels, 48000 Hz" "$mms" \
+	"$(awk -v m="$mms" 'BEGIN { print (m <= 0.1 ? "met" : "NOT MET") }')"
+echo "mixer_ms_per_tick,$mms" > "$OUT/mixer.csv"
 echo
 echo "machine: $NCPU threads of pure integer work ran ${cap}x as fast as one during this run;"
 echo "  below ${NCPU}x, other load (or a CPU share, or hyperthread siblings) caps every thread figure"
