@@ -8,7 +8,7 @@ BUILD ?= build
 CC ?= cc
 OPT ?= -O2 -g
 SAN ?=
-PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod libusb-1.0 alsa
+PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod libusb-1.0 libdrm alsa
 TEST_PKGS := cmocka
 
 WARN := -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes
@@ -57,7 +57,7 @@ TMPFILESDIR ?= /usr/lib/tmpfiles.d
 
 .PHONY: all setup setup-test run test deb image test-image test-pkg test-unit test-asan test-script \
 	test-replay test-clang check-layers check-state check-tables check-systemd check-install \
-	check-levels test-vm docs-shots fuzz fuzzers bench install clean tests tools
+	check-levels test-vm docs-shots docs-pinout check-docs fuzz fuzzers bench bench-pacing install clean tests tools
 
 all: $(BIN) $(GL_SO) tools
 
@@ -135,6 +135,12 @@ $(BUILD)/tools/%: tools/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< -lm
 
+# pinout draws with the daemon's own code (the GPIO spec parser, v_video,
+# the PNG writer): linked with the library.
+$(BUILD)/tools/pinout: tools/pinout.c $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 # libFuzzer targets (tests/fuzz/fuzz_<parser>.c, each defining
 # LLVMFuzzerTestOneInput), linked against the library built for fuzzing.
 $(BUILD)/fuzz/%: tests/fuzz/%.c $(LIB)
@@ -179,10 +185,25 @@ check-systemd:
 check-install: $(BIN)
 	@tests/check_install.sh
 
-# The screenshots in docs/ are made by the daemon's own screenshot command.
-docs-shots: $(BIN)
+# The screenshots in docs/ are made by the daemon's own screenshot command
+# (maps, the game flow, every service menu page) and tools/pinout.
+docs-shots: $(BIN) docs-pinout
 	@scripts/docs-shots.sh $(BIN)
 	@scripts/game-shots.sh $(BIN)
+	@scripts/service-shots.sh $(BIN)
+
+# The GPIO wiring picture of docs/operator.md: the example spec of the
+# shipped config/arcaded.ini (its `; gpio:gpiochip0:...` line; the shipped
+# default is gpio = none) drawn on a Raspberry Pi's 40-pin header.
+PINOUT_SPEC = $(shell sed -n 's/^; *\(gpio:gpiochip0:[^ ]*\)$$/\1/p' config/arcaded.ini)
+docs-pinout: $(BUILD)/tools/pinout
+	@test -n "$(PINOUT_SPEC)" || { echo "docs-pinout: no '; gpio:gpiochip0:...' line in config/arcaded.ini"; exit 1; }
+	$(BUILD)/tools/pinout '$(PINOUT_SPEC)' docs/images/gpio-pinout.png
+
+# docs/operator.md names only images, options, keys, targets, pages and
+# profiles that exist.
+check-docs: $(BIN)
+	@BIN=$(BIN) tests/check_docs.sh
 
 # engine/map/lvl_wad.c is exactly what tools/mklevels makes of levels/*.txt.
 check-levels: $(BUILD)/tools/mklevels
@@ -190,6 +211,12 @@ check-levels: $(BUILD)/tools/mklevels
 
 bench: all
 	@tests/bench.sh $(BIN)
+
+# Frame pacing: 10 minutes of play replayed in real time at 1920x1080
+# (PACING_SECONDS to change it); figures and targets, not a test.
+PACING_SECONDS ?= 600
+bench-pacing: all
+	@tests/bench/pacing.sh $(BIN) $(PACING_SECONDS)
 
 install: $(BIN) $(GL_SO)
 	install -D -m 0755 $(BIN) $(DESTDIR)$(PREFIX)/bin/arcaded

@@ -24,6 +24,7 @@
 #include "app/slot.h"
 #include "app/stats.h"
 #include "app/tape.h"
+#include "display/dp.h"
 #include "display/shot.h"
 #include "engine/game/menu.h"
 #include "engine/game/sim.h"
@@ -58,6 +59,36 @@ struct app {
 	int ready;
 };
 
+/* The display's completed page flips into the statistics. */
+static void app_flips(void *ctx)
+{
+	struct app *a = ctx;
+	struct dp_flip done[8];
+	int n;
+
+	do {
+		n = scene_flips(&a->scene, done, 8);
+		for (int i = 0; i < n; i++)
+			stats_flip(&a->stats, done[i].presented_ns, done[i].shown_ns);
+	} while (n == 8);
+}
+
+/* Whether the loop follows the 60 Hz clock: live, or --realtime. */
+static int app_paced(const struct app *a)
+{
+	return !a->o->fast && (!a->headless || a->o->realtime);
+}
+
+/* The summary, and the display's counters when it has some. */
+static void app_summary(struct app *a)
+{
+	const char *st = scene_status(&a->scene);
+
+	stats_print(&a->stats);
+	if (st)
+		say("summary: display: %s", st);
+}
+
 /* ---- the steps of a tick (their order is loop.c's) -------------------- */
 
 static int step_begin(void *ctx, struct loop_tick *k)
@@ -69,7 +100,7 @@ static int step_begin(void *ctx, struct loop_tick *k)
 		return 0;
 	}
 	if (sig_summary())
-		stats_print(&a->stats);
+		app_summary(a);
 	if (a->o->ticks && k->t >= a->o->ticks)
 		return 0;
 	if (k->t == a->hang_at || sig_fault())
@@ -81,8 +112,10 @@ static void step_wait(void *ctx, struct loop_tick *k)
 {
 	struct app *a = ctx;
 
-	if (!a->o->fast && !a->headless)
-		a->stats.dropped += pace_wait(&a->pace, k->t);
+	struct pace_fd w = { scene_wait_fd(&a->scene), app_flips, a };
+
+	if (app_paced(a))
+		a->stats.dropped += pace_wait(&a->pace, k->t, &w);
 }
 
 static int step_input(void *ctx, struct loop_tick *k)
@@ -194,7 +227,9 @@ static void step_present(void *ctx, struct loop_tick *k)
 		app_status_no_display(a);
 	scene_show(&a->scene, &a->sim, demo_under(&a->demo, &a->sim),
 		   a->ctl.wiz_on ? &a->ctl.wiz : NULL);
-	stats_presented(&a->stats, t0, in_now_ns());
+	stats_presented(&a->stats, t0, in_now_ns(),
+			app_paced(a) ? pace_due(&a->pace, k->t + 1) : 0);
+	app_flips(a);
 }
 
 static void step_hashes(void *ctx, struct loop_tick *k)
@@ -448,8 +483,9 @@ static int finish(struct app *a)
 	}
 	/* The summary while everything is still open: its fd count is the
 	 * running daemon's (the soak test compares runs by it). */
-	if (a->stats.ticks && ((!o->replay && !o->script) || getenv("ARCADED_SUMMARY")))
-		stats_print(&a->stats);
+	if (a->stats.ticks &&
+	    ((!o->replay && !o->script) || o->realtime || getenv("ARCADED_SUMMARY")))
+		app_summary(a);
 	return code;
 }
 

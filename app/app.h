@@ -25,6 +25,7 @@ struct app_opts {
 	const char *config_dir;  /* /etc/arcaded: every *.ini, in name order */
 	uint32_t ticks;          /* stop after this many ticks (0: no limit) */
 	int fast;                /* do not wait for the tick clock */
+	int realtime;            /* a script or replay follows the tick clock too */
 	int no_render;           /* replay without rendering (state hashes only) */
 	int quiet;               /* replay without printing per-tick hashes */
 	int verify;              /* replay: compare with the recording's stored hashes */

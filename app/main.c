@@ -31,7 +31,7 @@ static void usage(FILE *f)
 	      "  --config-dir DIR   read DIR/*.ini in name order (default /etc/arcaded)\n"
 	      "  --state-dir DIR    state directory (default $STATE_DIRECTORY or /var/lib/arcaded)\n"
 	      "  --set S.K=V        set one configuration key (repeatable; last layer)\n"
-	      "  --display NAME     auto, fbdev, file, term or null (= --set display.backend=NAME)\n"
+	      "  --display NAME     auto, kms, fbdev, file, term or null (= --set display.backend=NAME)\n"
 	      "  --audio SPEC       sound output: auto, alsa, alsa:DEVICE, wav:FILE or null\n"
 	      "                     (= --set audio.output=SPEC; scripts and replays: none by default)\n"
 	      "  --level N          built-in level N (= --set game.level=N)\n"
@@ -54,6 +54,8 @@ static void usage(FILE *f)
 	      "  --quiet            with --replay: print no per-tick hashes (benchmarks)\n"
 	      "  --ticks N          stop after N ticks\n"
 	      "  --fast             do not wait for the 60 Hz clock\n"
+	      "  --realtime         with --replay or --script: follow the 60 Hz clock as\n"
+	      "                     live play does (pacing tests); prints the summary\n"
 	      "  --screenshot FILE  write the last frame as PNG at exit\n"
 	      "  --print-config     print the effective configuration and exit\n"
 	      "  --version, --help\n"
@@ -122,7 +124,7 @@ int main(int argc, char **argv)
 	enum { O_CONFIG_DIR = 256, O_STATE_DIR, O_SET, O_DISPLAY, O_AUDIO, O_LEVEL, O_PLAY, O_BINDINGS,
 	       O_SCRIPT, O_RECORD, O_REPLAY, O_NO_RENDER, O_QUIET, O_TICKS, O_FAST, O_SCREENSHOT,
 	       O_PRINT_CONFIG, O_VERSION, O_HELP, O_WAD, O_MAP, O_GRID, O_NO_LIGHTS, O_VERIFY,
-	       O_UNTIL, O_SIZE, O_RENDERER };
+	       O_UNTIL, O_SIZE, O_RENDERER, O_REALTIME };
 	static const struct option opts[] = {
 		{ "config-dir", required_argument, NULL, O_CONFIG_DIR },
 		{ "state-dir", required_argument, NULL, O_STATE_DIR },
@@ -139,6 +141,7 @@ int main(int argc, char **argv)
 		{ "quiet", no_argument, NULL, O_QUIET },
 		{ "ticks", required_argument, NULL, O_TICKS },
 		{ "fast", no_argument, NULL, O_FAST },
+		{ "realtime", no_argument, NULL, O_REALTIME },
 		{ "screenshot", required_argument, NULL, O_SCREENSHOT },
 		{ "print-config", no_argument, NULL, O_PRINT_CONFIG },
 		{ "wad", required_argument, NULL, O_WAD },
@@ -212,6 +215,7 @@ int main(int argc, char **argv)
 			break;
 		}
 		case O_FAST: o.fast = 1; break;
+		case O_REALTIME: o.realtime = 1; break;
 		case O_SCREENSHOT: o.screenshot = optarg; break;
 		case O_PRINT_CONFIG: print_config = 1; break;
 		case O_WAD:

@@ -4,6 +4,7 @@
 #include "app/pace.h"
 
 #include <errno.h>
+#include <poll.h>
 #include <time.h>
 
 #include "app/sig.h"
@@ -23,12 +24,45 @@ static void pace_sleep_until(uint64_t deadline_ns)
 			break;
 }
 
+/* Until deadline, calling w->ready whenever w->fd is readable. */
+static void pace_poll_until(uint64_t deadline_ns, const struct pace_fd *w)
+{
+	struct pollfd pf = { .fd = w->fd, .events = POLLIN };
+
+	for (;;) {
+		uint64_t now = in_now_ns(), left;
+		struct timespec ts;
+		int rc;
+
+		if (now >= deadline_ns)
+			return;
+		left = deadline_ns - now;
+		ts.tv_sec = (time_t)(left / 1000000000u);
+		ts.tv_nsec = (long)(left % 1000000000u);
+		rc = ppoll(&pf, 1, &ts, NULL);
+		if (rc < 0 && errno == EINTR && sig_stop())
+			return;
+		if (rc <= 0)
+			continue;
+		if (pf.revents & (POLLERR | POLLHUP | POLLNVAL)) {
+			pace_sleep_until(deadline_ns);
+			return;
+		}
+		w->ready(w->ctx);
+	}
+}
+
 void pace_start(struct pace *p, uint64_t now)
 {
 	p->base = now;
 }
 
-uint64_t pace_wait(struct pace *p, uint32_t t)
+uint64_t pace_due(const struct pace *p, uint32_t t)
+{
+	return p->base + PACE_TICK_NS(t);
+}
+
+uint64_t pace_wait(struct pace *p, uint32_t t, const struct pace_fd *w)
 {
 	uint64_t deadline = p->base + PACE_TICK_NS(t), now = in_now_ns(), dropped = 0;
 
@@ -38,7 +72,10 @@ uint64_t pace_wait(struct pace *p, uint32_t t)
 		dropped = (now - deadline) / PACE_TICK_NS(1);
 		p->base = now - PACE_TICK_NS(t);
 	} else if (now < deadline) {
-		pace_sleep_until(deadline);
+		if (w && w->fd >= 0)
+			pace_poll_until(deadline, w);
+		else
+			pace_sleep_until(deadline);
 	}
 	return dropped;
 }

@@ -28,8 +28,10 @@
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <time.h>
 #include <unistd.h>
 
+#include "display/px.h"
 #include "engine/render/r_main.h"
 
 /* Polls before sleeping, between batches and while waiting for the last
@@ -214,7 +216,23 @@ void pool_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
 		pool_chunk(p, base, n - base < POOL_CHUNK ? n - base : POOL_CHUNK, job, arg);
 }
 
+uint64_t pool_now(void)
+{
+	struct timespec ts;
+
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (uint64_t)ts.tv_sec * 1000000000u + (uint64_t)ts.tv_nsec;
+}
+
 void pool_r_par(struct pool *p, struct r_par *out)
+{
+	out->run = pool_run;
+	out->pool = p;
+	out->threads = pool_threads(p);
+	out->now = pool_now;
+}
+
+void pool_px_par(struct pool *p, struct px_par *out)
 {
 	out->run = pool_run;
 	out->pool = p;

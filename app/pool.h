@@ -13,7 +13,10 @@
 #ifndef ARCADED_APP_POOL_H
 #define ARCADED_APP_POOL_H
 
+#include <stdint.h>
+
 struct pool;
+struct px_par;
 struct r_par;
 
 /* Largest pool. */
@@ -39,8 +42,14 @@ int pool_threads(const struct pool *p);
  * struct pool * (void * to fit struct r_par). */
 void pool_run(void *p, int n, void (*job)(void *arg, int i), void *arg);
 
+/* CLOCK_MONOTONIC in ns (the renderer measures its strips with it). */
+uint64_t pool_now(void);
+
 /* The renderer's view of the pool: out->run = pool_run, out->pool = p,
- * out->threads = pool_threads(p). */
+ * out->threads = pool_threads(p), out->now = pool_now. */
 void pool_r_par(struct pool *p, struct r_par *out);
+
+/* The same for the display's present (display/px.h). */
+void pool_px_par(struct pool *p, struct px_par *out);
 
 #endif

@@ -47,6 +47,8 @@ int scene_init(struct scene *s, const struct cfg *c, const struct ct *ct, int gl
 			s->pool = NULL;
 		} else {
 			pool_r_par(s->pool, &s->par);
+			pool_px_par(s->pool, &s->ppar);
+			s->view.par = &s->par;
 		}
 	}
 	return scene_resize(s, w, h);
@@ -111,6 +113,9 @@ static void scene_dp_config(const struct scene *s, int headless, struct dp_confi
 	if (headless && strcmp(dc->backend, "auto") == 0)
 		dc->backend = c->display.file[0] ? "file" : "null";
 	dc->device = c->display.device;
+	dc->card = c->display.card;
+	dc->mode = c->display.mode;
+	dc->buffers = c->display.buffers;
 	dc->tty = c->display.tty;
 	dc->file = c->display.file;
 	dc->file_w = c->display.file_width;
@@ -121,6 +126,7 @@ static void scene_dp_config(const struct scene *s, int headless, struct dp_confi
 	dc->scale = c->display.fill ? DP_SCALE_FILL : DP_SCALE_INTEGER;
 	dc->render_w = s->frame.w;
 	dc->render_h = s->frame.h;
+	dc->par = s->pool ? &s->ppar : NULL;
 }
 
 /* Whether a display be opened for dc is a stand-in for a missing one:
@@ -267,6 +273,28 @@ int scene_show(struct scene *s, const struct sim *sim, const struct sim *under,
 	if (rc == 0 && !s->waiting)
 		s->shown++;
 	return rc;
+}
+
+int scene_wait_fd(struct scene *s)
+{
+	return s->dpb && s->dpb->wait_fd ? s->dpb->wait_fd(s->dp) : -1;
+}
+
+int scene_flips(struct scene *s, struct dp_flip *done, int max)
+{
+	int n;
+
+	if (!s->dpb || !s->dpb->event)
+		return 0;
+	n = s->dpb->event(s->dp, done, max);
+	if (n < 0 && s->event_errors++ == 0)
+		say_warn("display %s: %s", s->dpb->name, strerror(-n));
+	return n < 0 ? 0 : n;
+}
+
+const char *scene_status(struct scene *s)
+{
+	return s->dpb && s->dpb->status ? s->dpb->status(s->dp) : NULL;
 }
 
 void scene_close_display(struct scene *s)

@@ -24,10 +24,14 @@
 #include "app/glr.h"
 #include "app/view.h"
 #include "config/cfg.h"
+#include "display/px.h"
 #include "engine/render/r_main.h"
 
 struct ct;
 struct hp;
+struct dp;
+struct dp_backend;
+struct dp_flip;
 struct pool;
 struct sim;
 struct wiz;
@@ -39,6 +43,7 @@ struct scene {
 	struct r_ctx *r;
 	struct pool *pool;         /* render worker threads, NULL: one thread */
 	struct r_par par;
+	struct px_par ppar;        /* the same pool for the display's present */
 	int use_gl;                /* --renderer gl */
 	struct glr glr;
 	struct rgl_ctx *gl;
@@ -49,10 +54,11 @@ struct scene {
 	int present_errors;
 	/* The display is missing: the null display stands in (see above). */
 	int waiting;
-	char missing[512];         /* why, as the log and the status say it */
+	char missing[1200];        /* why, as the log and the status say it */
 	struct hp *hp;             /* display node notices while waiting, NULL none */
 	uint64_t retry_ns;         /* the next periodic try */
 	uint64_t shown;            /* frames presented on the display asked for */
+	int event_errors;          /* the display's event entry failed (flips) */
 };
 
 #define SCENE_RETRY_NS 1000000000ull
@@ -96,6 +102,17 @@ void scene_follow_menu(struct scene *s, const struct sim *sim);
  * shown. 0 or the present's -errno (the first failure is logged). */
 int scene_show(struct scene *s, const struct sim *sim, const struct sim *under,
 	       const struct wiz *wiz);
+
+/* The display's fd to watch between ticks (dp_backend.wait_fd), -1 none. */
+int scene_wait_fd(struct scene *s);
+
+/* Serves the display's fd (dp_backend.event) without blocking: up to max
+ * page flips completed since the last call into done; their count (0
+ * for a display without events; an error is logged once and counts 0). */
+int scene_flips(struct scene *s, struct dp_flip *done, int max);
+
+/* The display's counters (dp_backend.status) or NULL. */
+const char *scene_status(struct scene *s);
 
 /* Closes the display (the console back in text mode, the terminal
  * restored); NULL-safe state. */

@@ -18,6 +18,7 @@ void stats_init(struct stats *s, const char *const *names, int n)
 	lat_reset(&s->frame_time);
 	lat_reset(&s->latency);
 	lat_reset(&s->sound);
+	lat_reset(&s->flip);
 	s->nsrc = n < STATS_SRCS ? n : STATS_SRCS;
 	for (int k = 0; k < s->nsrc; k++) {
 		s->src_name[k] = names[k];
@@ -41,9 +42,11 @@ void stats_sound(struct stats *s, uint64_t heard_ns)
 		lat_add_ns(&s->sound, heard_ns - s->pending_ns);
 }
 
-void stats_presented(struct stats *s, uint64_t t0, uint64_t t1)
+void stats_presented(struct stats *s, uint64_t t0, uint64_t t1, uint64_t due)
 {
 	s->frames++;
+	if (due && t1 > due)
+		s->late++;
 	lat_add_ns(&s->frame_time, t1 - t0);
 	if (s->pending_ns) {
 		if (t1 > s->pending_ns)
@@ -57,6 +60,11 @@ void stats_presented(struct stats *s, uint64_t t0, uint64_t t1)
 			lat_add_ns(&s->src[k], t1 - s->src_pending_ns[k]);
 		s->src_pending_ns[k] = 0;
 	}
+}
+
+void stats_flip(struct stats *s, uint64_t presented, uint64_t shown)
+{
+	lat_add_ns(&s->flip, shown > presented ? shown - presented : 0);
 }
 
 /* Open file descriptors of this process (the soak test compares them). */
@@ -81,10 +89,10 @@ void stats_print(const struct stats *s)
 
 	getrusage(RUSAGE_SELF, &ru);
 	say("summary: %" PRIu64 " ticks, %" PRIu64 " frames in %" PRIu64
-		".%03" PRIu64 " s (%.1f frames/s), %" PRIu64 " ticks dropped, peak RSS %ld KiB, "
-		"%d open fds",
+		".%03" PRIu64 " s (%.1f frames/s), %" PRIu64 " ticks dropped, %" PRIu64
+		" frames late, peak RSS %ld KiB, %d open fds",
 		s->ticks, s->frames, el / 1000000000u, el / 1000000u % 1000u,
-		el ? (double)s->frames * 1e9 / (double)el : 0.0, s->dropped, ru.ru_maxrss,
+		el ? (double)s->frames * 1e9 / (double)el : 0.0, s->dropped, s->late, ru.ru_maxrss,
 		count_fds());
 	lat_format(&s->frame_time, "frame time (render+present)", line, sizeof(line));
 	say("summary: %s", line);
@@ -93,6 +101,10 @@ void stats_print(const struct stats *s)
 	lat_format(&s->sound, "input-to-sound latency", line, sizeof(line));
 	say("summary: %s; sound output: %" PRIu64 " underruns, %" PRIu64 " frames dropped", line,
 	    s->underruns, s->audio_dropped);
+	if (s->flip.count) {
+		lat_format(&s->flip, "present-to-flip", line, sizeof(line));
+		say("summary: %s", line);
+	}
 	for (int k = 0; k < s->nsrc; k++) {
 		char name[64];
 		if (!s->src[k].count)

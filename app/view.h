@@ -13,6 +13,7 @@ struct ct;
 struct map;
 struct r_ctx;
 struct r_frame;
+struct r_par;
 struct r_sprite;
 struct sim;
 struct tex_set;
@@ -34,6 +35,8 @@ struct view {
 	int spr_max;
 	const struct map *lit;     /* the stage whose light maps r has */
 	int rotate;                /* the display's rotation (service menu) */
+	const struct r_par *par;   /* optional, borrowed: threads for the HUD's large
+				    * darkened areas (the renderer's pool) */
 };
 
 /* Prepares v for the content's stages. 0 or -ENOMEM. */

@@ -42,7 +42,8 @@ struct cfg_key {
 	int nints;
 };
 
-static const char *const cfg_backends[] = { "auto", "fbdev", "file", "term", "null", NULL };
+static const char *const cfg_backends[] = { "auto", "kms", "fbdev", "file", "term", "null",
+					    NULL };
 static const char *const cfg_formats[] = { "rgb565", "bgr565", "xrgb8888", "xbgr8888", "rgb888",
 					   NULL };
 static const char *const cfg_scales[] = { "integer", "fill", NULL };
@@ -62,6 +63,9 @@ static const struct cfg_key cfg_keys[] = {
 	  .off = offsetof(struct cfg, display.backend),
 	  .size = sizeof(((struct cfg *)0)->display.backend), .names = cfg_backends },
 	CFG_STRKEY(display, device, display.device, CFG_T_STR),
+	CFG_STRKEY(display, card, display.card, CFG_T_STR),
+	CFG_STRKEY(display, mode, display.mode, CFG_T_STR),
+	CFG_INTKEY(display, buffers, display.buffers, 2, 3),
 	CFG_STRKEY(display, tty, display.tty, CFG_T_STR),
 	CFG_STRKEY(display, file, display.file, CFG_T_STR),
 	CFG_INTKEY(display, file_width, display.file_width, 1, 16384),
@@ -121,6 +125,7 @@ void cfg_defaults(struct cfg *c)
 	cfg_setstr(c->display.backend, sizeof(c->display.backend), "auto");
 	cfg_setstr(c->display.device, sizeof(c->display.device), "/dev/fb0");
 	cfg_setstr(c->display.tty, sizeof(c->display.tty), "/dev/tty0");
+	c->display.buffers = 3;
 	c->display.file_width = 640;
 	c->display.file_height = 480;
 	cfg_setstr(c->display.file_format, sizeof(c->display.file_format), "xrgb8888");

@@ -17,8 +17,11 @@
 
 struct cfg {
 	struct {
-		char backend[16];            /* auto fbdev file term null */
+		char backend[16];            /* auto kms fbdev file term null */
 		char device[CFG_PATH_MAX];   /* /dev/fb0 */
+		char card[CFG_PATH_MAX];     /* kms: "" the first connected card */
+		char mode[32];               /* kms: "" preferred, WxH or WxH@Hz */
+		int buffers;                 /* kms: 2 or 3 (3) */
 		char tty[CFG_PATH_MAX];      /* /dev/tty0; "" leaves the console alone */
 		char file[CFG_PATH_MAX];     /* file framebuffer path */
 		int file_width, file_height; /* 640x480 */

@@ -2,6 +2,7 @@
  * dp: the ordered backend list, the automatic choice and the emergency
  * restore (contracts in dp.h). Backends live in dp_<name>.c.
  */
+#include "display/con.h"
 #include "display/dp.h"
 #include "display/dp_int.h"
 
@@ -11,7 +12,8 @@
 #include <unistd.h>
 
 /* Automatic choice tries these in order. */
-static const struct dp_backend *const dp_backends[] = { &dp_fbdev, &dp_term, &dp_file, &dp_null };
+static const struct dp_backend *const dp_backends[] = { &dp_kms, &dp_fbdev, &dp_term, &dp_file,
+								     &dp_null };
 
 #define DP_NBACKENDS (sizeof(dp_backends) / sizeof(dp_backends[0]))
 
@@ -101,6 +103,6 @@ int dp_open_stand_in(const struct dp_config *cfg, const struct dp_backend **be, 
 
 void dp_emergency_restore(void)
 {
-	dp_fbdev_emergency();
+	con_emergency();
 	dp_term_emergency();
 }

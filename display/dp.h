@@ -1,13 +1,14 @@
 /*
- * dp: displays. Every backend is one file (dp_fbdev.c, dp_file.c,
+ * dp: displays. Every backend is one file (dp_kms.c, dp_fbdev.c, dp_file.c,
  * dp_term.c, dp_null.c) implementing struct dp_backend; dp.c holds the
- * ordered list and the automatic choice. Only backend files include Linux
- * headers.
+ * ordered list and the automatic choice. Only backend files (and con.c,
+ * the console helper of kms and fbdev) include Linux or libdrm headers.
  *
  * A display takes 8-bit palette-indexed frames of the game's render size,
  * converts them to the panel's pixel format through one 256-entry table
  * (px.h), scales (integer with letterbox, or fill) and rotates (0/90/180/
- * 270) in one pass, and shows them (page flip by panning where possible).
+ * 270) in one pass, and shows them (a page flip at vblank with KMS, by
+ * panning where possible with fbdev).
  */
 #ifndef ARCADED_DISPLAY_DP_H
 #define ARCADED_DISPLAY_DP_H
@@ -16,6 +17,7 @@
 #include <stdint.h>
 
 struct dp;
+struct px_par;
 
 enum dp_scale {
 	DP_SCALE_INTEGER,  /* largest integer factor, centred, black letterbox */
@@ -23,9 +25,14 @@ enum dp_scale {
 };
 
 struct dp_config {
-	const char *backend;     /* "auto" or NULL, "fbdev", "file", "term", "null" */
+	const char *backend;     /* "auto" or NULL, "kms", "fbdev", "file", "term", "null" */
+	const char *card;        /* kms: DRM card path; NULL or "": the first with a
+				  * connected connector */
+	const char *mode;        /* kms: "WxH" or "WxH@Hz"; NULL or "": preferred */
+	int buffers;             /* kms: 2 or 3 (0: 3) */
 	const char *device;      /* fbdev: device path, default /dev/fb0 */
-	const char *tty;         /* fbdev: console put in graphics mode, default /dev/tty0; "" none */
+	const char *tty;         /* kms, fbdev: console put in graphics mode, default
+				  * /dev/tty0; "" none */
 	const char *file;        /* file: path of the framebuffer file */
 	int file_w, file_h;      /* file: geometry in pixels */
 	int file_stride;         /* file: bytes per line; 0 = packed */
@@ -33,6 +40,15 @@ struct dp_config {
 	int rotate;              /* 0, 90, 180, 270 degrees clockwise */
 	enum dp_scale scale;
 	int render_w, render_h;  /* size of the frames that will be presented */
+	const struct px_par *par; /* kms, fbdev, file: threads for the present's row
+				   * ranges (display/px.h), NULL: the caller's
+				   * alone; borrowed, must outlive the display */
+};
+
+/* A frame the screen took (dp_backend.event), CLOCK_MONOTONIC. */
+struct dp_flip {
+	uint64_t presented_ns;   /* the present that drew it returned */
+	uint64_t shown_ns;       /* its page flip completed (scan-out began) */
 };
 
 struct dp_backend {
@@ -58,6 +74,17 @@ struct dp_backend {
 	 * missing is worth trying again (the app watches these, input/hp.h). */
 	const char *node;
 	unsigned flags;          /* DP_* below */
+	/* Optional (NULL: the display never waits for the screen): the fd the
+	 * loop polls while it waits for the next tick; readable means event
+	 * has work (a page flip completed). */
+	int (*wait_fd)(struct dp *d);
+	/* Optional, with wait_fd: takes what the fd has without blocking (a
+	 * frame drawn while a flip was pending gets its flip now) and copies
+	 * up to max of the flips completed since the last call into done
+	 * (older ones beyond max are dropped). Their count, or -errno. */
+	int (*event)(struct dp *d, struct dp_flip *done, int max);
+	/* Optional: one line of counters since open, for the summary. */
+	const char *(*status)(struct dp *d);
 };
 
 /* dp_backend.flags. */
@@ -68,7 +95,7 @@ enum {
 	DP_SHOWS_NOTHING = 1,
 };
 
-extern const struct dp_backend dp_fbdev, dp_file, dp_term, dp_null;
+extern const struct dp_backend dp_kms, dp_fbdev, dp_file, dp_term, dp_null;
 
 /* The node patterns (dp_backend.node) of the backends "auto" tries, in
  * its order, into out[0..max); returns how many. */
@@ -79,6 +106,7 @@ int dp_nodes(const char **out, int max);
 int dp_open_stand_in(const struct dp_config *cfg, const struct dp_backend **be, struct dp **out);
 
 /* Opens the backend named by cfg->backend, or with "auto"/NULL the first of
+ * kms (if a card opens with a connected connector and the mode is set),
  * fbdev (if the device opens), term (if stdout is a terminal), file (if
  * cfg->file is set), null. On success *be is the backend used. */
 int dp_open(const struct dp_config *cfg, const struct dp_backend **be, struct dp **out,

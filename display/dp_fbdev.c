@@ -13,23 +13,17 @@
  * vertical blank or at once; we do not wait for vblank (FBIO_WAITFORVSYNC
  * is not universal and the main loop paces itself).
  *
- * Console: the tty (default /dev/tty0, the foreground virtual terminal) is
- * put in KD_GRAPHICS so fbcon stops drawing text and the cursor over the
- * game, and its keyboard in K_OFF so key presses meant for the game (read
- * through evdev) do not reach the shell or the kernel's console handling.
- * Both are restored on close, and by dp_emergency_restore from a fatal
- * signal handler; for that the fd and the old modes also live in the
- * file-scope state below, the one place a signal handler can find them.
+ * Console: display/con.h (graphics mode, keyboard off; restored on close
+ * and by dp_emergency_restore from a fatal signal handler). VT switches
+ * are left to the kernel: fbdev has no master to hand over.
  */
+#include "display/con.h"
 #include "display/dp.h"
-#include "display/dp_int.h"
 #include "display/px.h"
 
 #include <errno.h>
 #include <fcntl.h>
 #include <linux/fb.h>
-#include <linux/kd.h>
-#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -37,14 +31,6 @@
 #include <sys/ioctl.h>
 #include <sys/mman.h>
 #include <unistd.h>
-
-/* The console this process switched, for the signal handler. Written only
- * outside signal handlers, before/after fbdev_con_active is raised/cleared;
- * one console at a time (a second fbdev display leaves the console alone). */
-static volatile sig_atomic_t fbdev_con_active;
-static volatile sig_atomic_t fbdev_con_fd = -1;
-static volatile sig_atomic_t fbdev_con_kd;      /* mode before KD_GRAPHICS */
-static volatile sig_atomic_t fbdev_con_kb = -1; /* keyboard mode before K_OFF; -1 kept */
 
 struct dp {
 	int fd;
@@ -73,82 +59,6 @@ static void fbdev_describe_update(struct dp *d)
 		 d->line_length, d->pages == 2 ? "double-buffered" : "single-buffered",
 		 d->pan_note, d->panel.layout.rotate, d->panel.layout.fill ? "fill" : "integer",
 		 d->con_note);
-}
-
-/* Console to graphics mode, keyboard off. Failures are not errors: the
- * game runs, the note says what was left as it was. */
-static void fbdev_console_enter(struct dp *d, const char *tty)
-{
-	int fd, kd, kb;
-
-	if (!tty[0]) {
-		snprintf(d->con_note, sizeof(d->con_note), "console left alone");
-		return;
-	}
-	if (fbdev_con_active) {
-		snprintf(d->con_note, sizeof(d->con_note),
-			 "console left alone (held by another display)");
-		return;
-	}
-	fd = open(tty, O_RDWR | O_CLOEXEC | O_NOCTTY);
-	if (fd < 0) {
-		snprintf(d->con_note, sizeof(d->con_note), "console %s: %s (left alone)", tty,
-			 strerror(errno));
-		return;
-	}
-	if (ioctl(fd, KDGETMODE, &kd) < 0 || ioctl(fd, KDGKBMODE, &kb) < 0 ||
-	    ioctl(fd, KDSETMODE, (unsigned long)KD_GRAPHICS) < 0) {
-		snprintf(d->con_note, sizeof(d->con_note), "console %s: %s (left alone)", tty,
-			 strerror(errno));
-		close(fd);
-		return;
-	}
-	/* A console already in graphics mode or with the keyboard off was
-	 * left so by an earlier run that was killed (SIGKILL cannot be
-	 * handled): give it back as text with a Unicode keyboard. */
-	if (kd == KD_GRAPHICS)
-		kd = KD_TEXT;
-	if (kb == K_OFF)
-		kb = K_UNICODE;
-	fbdev_con_fd = fd;
-	fbdev_con_kd = kd;
-	fbdev_con_kb = -1;
-	if (ioctl(fd, KDSKBMODE, (unsigned long)K_OFF) == 0) {
-		fbdev_con_kb = kb;
-		snprintf(d->con_note, sizeof(d->con_note), "console %s graphics, keyboard off",
-			 tty);
-	} else {
-		snprintf(d->con_note, sizeof(d->con_note),
-			 "console %s graphics, keyboard left on (%s)", tty, strerror(errno));
-	}
-	d->con = 1;
-	fbdev_con_active = 1;
-}
-
-/* Async-signal-safe: ioctl only. */
-static void fbdev_console_restore(void)
-{
-	if (fbdev_con_kb >= 0)
-		ioctl(fbdev_con_fd, KDSKBMODE, (unsigned long)fbdev_con_kb);
-	ioctl(fbdev_con_fd, KDSETMODE, (unsigned long)fbdev_con_kd);
-}
-
-void dp_fbdev_emergency(void)
-{
-	if (fbdev_con_active)
-		fbdev_console_restore();
-}
-
-static void fbdev_console_leave(struct dp *d)
-{
-	if (!d->con)
-		return;
-	fbdev_con_active = 0;
-	fbdev_console_restore();
-	close(fbdev_con_fd);
-	fbdev_con_fd = -1;
-	fbdev_con_kb = -1;
-	d->con = 0;
 }
 
 /* The panel format from the screen info; 0 or -EOPNOTSUPP. Only packed
@@ -281,6 +191,7 @@ static int fbdev_open(const struct dp_config *cfg, struct dp **out, char *why, s
 			 cfg->render_h);
 		goto fail;
 	}
+	px_panel_set_par(&d->panel, cfg->par);
 	d->mem = mmap(NULL, d->maplen, PROT_READ | PROT_WRITE, MAP_SHARED, d->fd, 0);
 	if (d->mem == MAP_FAILED) {
 		rc = -errno;
@@ -289,7 +200,7 @@ static int fbdev_open(const struct dp_config *cfg, struct dp **out, char *why, s
 	}
 	memset(d->mem, 0, d->maplen);
 	fbdev_buffering(d, &fix);
-	fbdev_console_enter(d, cfg->tty ? cfg->tty : "/dev/tty0");
+	d->con = con_enter(cfg->tty, 0, d->con_note, sizeof(d->con_note));
 	fbdev_describe_update(d);
 	*out = d;
 	return 0;
@@ -330,7 +241,8 @@ static void fbdev_close(struct dp *d)
 {
 	if (!d)
 		return;
-	fbdev_console_leave(d);
+	if (d->con)
+		con_leave();
 	if (d->pages == 2 && d->var.yoffset != d->yoffset0)
 		fbdev_pan(d, d->yoffset0);
 	if (d->mem != MAP_FAILED)

@@ -77,6 +77,7 @@ static int file_open(const struct dp_config *cfg, struct dp **out, char *why, si
 			 cfg->rotate, cfg->render_w, cfg->render_h);
 		goto fail;
 	}
+	px_panel_set_par(&d->panel, cfg->par);
 	d->len = stride * (size_t)cfg->file_h;
 	d->fd = open(cfg->file, O_RDWR | O_CREAT | O_CLOEXEC, 0644);
 	if (d->fd < 0) {

@@ -8,10 +8,10 @@
 #ifndef ARCADED_DISPLAY_DP_INT_H
 #define ARCADED_DISPLAY_DP_INT_H
 
-/* Async-signal-safe halves of dp_emergency_restore: each undoes what its
- * backend changed (console mode; terminal mode and screen) if a display of
- * that backend is open, using only ioctl, tcsetattr and write. */
-void dp_fbdev_emergency(void);
+/* Async-signal-safe part of dp_emergency_restore for the terminal preview:
+ * undoes what it changed (terminal mode and screen) if one is open, using
+ * only tcsetattr and write. The console of fbdev and KMS is con.h's
+ * (con_emergency). */
 void dp_term_emergency(void);
 
 #endif

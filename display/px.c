@@ -278,8 +278,8 @@ static void px_row16_k(uint8_t *d, const uint8_t *s, int n, int k, const uint32_
 	}
 }
 
-void px_blit(const struct px_layout *l, const struct px_table *t, const uint8_t *src,
-	     uint8_t *dst, size_t line_length)
+void px_blit_rows(const struct px_layout *l, const struct px_table *t, const uint8_t *src,
+		  uint8_t *dst, size_t line_length, int y0, int y1)
 {
 	size_t bytes = (size_t)t->bytes;
 	size_t vis = (size_t)l->panel_w * bytes;
@@ -290,21 +290,33 @@ void px_blit(const struct px_layout *l, const struct px_table *t, const uint8_t 
 	 * fw consecutive frame pixels starting at col[0]. */
 	int plain = l->rotate == 0 && l->scale > 0;
 	int fw = plain ? l->dst_w / l->scale : 0;
-	uint8_t *d = dst;
-	int y, v;
+	uint8_t *d;
+	int y;
 
 	assert(t->bytes == 2 || t->bytes == 3 || t->bytes == 4);
 	assert(line_length >= vis);
-	for (y = 0; y < l->dst_y; y++, d += line_length)
-		memset(d, 0, vis);
-	for (v = 0; v < l->dst_h; v++, d += line_length) {
-		const uint8_t *s = src + l->row[v];
+	if (y0 < 0)
+		y0 = 0;
+	if (y1 > l->panel_h)
+		y1 = l->panel_h;
+	d = dst + (size_t)y0 * line_length;
+	for (y = y0; y < y1; y++, d += line_length) {
+		int v = y - l->dst_y;
+		const uint8_t *s;
 
+		if (v < 0 || v >= l->dst_h) {
+			memset(d, 0, vis);
+			continue;
+		}
+		s = src + l->row[v];
 		if (left)
 			memset(d, 0, left);
 		if (right)
 			memset(d + left + span, 0, right);
-		if (v > 0 && l->row[v] == l->row[v - 1]) {
+		/* a repeated source line is copied from the line above, when
+		 * that line is this call's own (another call may be writing
+		 * the line above a range's first) */
+		if (y > y0 && v > 0 && l->row[v] == l->row[v - 1]) {
 			memcpy(d + left, d - line_length + left, span);
 			continue;
 		}
@@ -319,8 +331,12 @@ void px_blit(const struct px_layout *l, const struct px_table *t, const uint8_t 
 		else
 			px_row24(d + left, s, l->col, l->dst_w, t->v);
 	}
-	for (y = l->dst_y + l->dst_h; y < l->panel_h; y++, d += line_length)
-		memset(d, 0, vis);
+}
+
+void px_blit(const struct px_layout *l, const struct px_table *t, const uint8_t *src,
+	     uint8_t *dst, size_t line_length)
+{
+	px_blit_rows(l, t, src, dst, line_length, 0, l->panel_h);
 }
 
 int px_panel_init(struct px_panel *p, const struct px_format *f, int panel_w, int panel_h,
@@ -347,7 +363,33 @@ int px_panel_init(struct px_panel *p, const struct px_format *f, int panel_w, in
 	memset(&p->table, 0, sizeof(p->table));
 	p->table.bytes = f->bpp / 8;
 	p->line_length = line_length;
+	memset(&p->par, 0, sizeof(p->par));
 	return 0;
+}
+
+void px_panel_set_par(struct px_panel *p, const struct px_par *par)
+{
+	if (par && par->run && par->threads > 1)
+		p->par = *par;
+	else
+		memset(&p->par, 0, sizeof(p->par));
+}
+
+/* One row range of a parallel draw. */
+struct px_job {
+	const struct px_panel *p;
+	const uint8_t *src;
+	uint8_t *mem;
+	int n;
+};
+
+static void px_job_rows(void *arg, int i)
+{
+	const struct px_job *j = arg;
+	const struct px_layout *l = &j->p->layout;
+
+	px_blit_rows(l, &j->p->table, j->src, j->mem, j->p->line_length,
+		     (int)((int64_t)l->panel_h * i / j->n), (int)((int64_t)l->panel_h * (i + 1) / j->n));
 }
 
 void px_panel_palette(struct px_panel *p, const uint8_t rgb[256][3])
@@ -373,6 +415,12 @@ int px_panel_draw(struct px_panel *p, uint8_t *mem, const uint8_t *src, int w, i
 		if (px_layout_init(l) < 0)
 			return -EINVAL;
 	}
-	px_blit(l, &p->table, src, mem, p->line_length);
+	if (p->par.run && l->panel_h >= PX_PAR_MIN_ROWS * p->par.threads) {
+		struct px_job j = { p, src, mem, PX_JOBS_PER_THREAD * p->par.threads };
+
+		p->par.run(p->par.pool, j.n, px_job_rows, &j);
+	} else {
+		px_blit(l, &p->table, src, mem, p->line_length);
+	}
 	return 0;
 }

@@ -92,6 +92,30 @@ int px_layout_init(struct px_layout *l);
 void px_blit(const struct px_layout *l, const struct px_table *t, const uint8_t *src,
 	     uint8_t *dst, size_t line_length);
 
+/* The same for panel rows y0 <= y < y1 only (clamped to the panel): the
+ * lines px_blit writes there, byte for byte. Calls for disjoint ranges may
+ * run at once on different threads. */
+void px_blit_rows(const struct px_layout *l, const struct px_table *t, const uint8_t *src,
+		  uint8_t *dst, size_t line_length, int y0, int y1);
+
+/* A pool of threads the present may run row ranges on, provided by the
+ * caller (app/pool.h), the same contract as the renderer's struct r_par:
+ * run(pool, n, job, arg) calls job(arg, i) once for every i in 0..n-1, any
+ * number at a time, and returns when all have returned (a full barrier). */
+struct px_par {
+	void (*run)(void *pool, int n, void (*job)(void *arg, int i), void *arg);
+	void *pool;
+	int threads;             /* how many jobs the pool runs at once */
+};
+
+/* A parallel present cuts the panel into PX_JOBS_PER_THREAD row ranges
+ * per thread (the rows cost alike; two per thread still even out a thread
+ * that another process delays), and only panels of at least
+ * PX_PAR_MIN_ROWS rows per thread (below that a batch costs more than it
+ * saves). */
+#define PX_JOBS_PER_THREAD 2
+#define PX_PAR_MIN_ROWS 32
+
 /* A panel in memory as fbdev and the file framebuffer use it: format, table,
  * layout and line length. Lives inside the backend's handle (the layout's
  * tables make it about 128 KiB). */
@@ -100,6 +124,7 @@ struct px_panel {
 	struct px_table table;
 	struct px_layout layout;
 	size_t line_length;
+	struct px_par par;       /* run NULL: drawn on the calling thread */
 };
 
 /* Sets up p for a panel_w x panel_h panel of format f (checked) with
@@ -111,10 +136,16 @@ int px_panel_init(struct px_panel *p, const struct px_format *f, int panel_w, in
 		  size_t line_length, int rotate, int fill, int src_w, int src_h);
 /* Rebuilds the table for palette rgb. */
 void px_panel_palette(struct px_panel *p, const uint8_t rgb[256][3]);
+/* Draws the next frames in row ranges through par (copied; the pool must
+ * outlive its use), or on the calling thread when par is NULL or has fewer
+ * than two threads (the default after px_panel_init). The bytes written
+ * are the same either way. */
+void px_panel_set_par(struct px_panel *p, const struct px_par *par);
 /* Draws one frame (w x h indices, row stride pitch) into the panel memory
- * mem (the top-left visible pixel). A frame of another size or pitch than
- * the last one re-derives the layout first. 0 or -EINVAL (bad geometry;
- * nothing written). */
+ * mem (the top-left visible pixel), in row ranges on the pool set by
+ * px_panel_set_par if any. A frame of another size or pitch than the last
+ * one re-derives the layout first. 0 or -EINVAL (bad geometry; nothing
+ * written). */
 int px_panel_draw(struct px_panel *p, uint8_t *mem, const uint8_t *src, int w, int h,
 		  int pitch);
 

@@ -228,7 +228,7 @@ static int hp_arrived_dir(struct hp *h, int wd, const char *name)
 			struct hp_notice *n = hp_note(h, HP_NODE);
 
 			if (n) {
-				snprintf(n->name, sizeof(n->name), "%s", h->node[k].dir);
+				snprintf(n->name, sizeof(n->name), "%.63s", h->node[k].dir);
 				snprintf(n->how, sizeof(n->how), "created");
 			}
 			/* the parent's watch stays (other nodes may use it);

@@ -6,10 +6,12 @@
 # Camera paths are recorded from scripts first: the built-in level walk
 # (tests/replay/walk.scr, ARENA1) and a walk through Freedoom's E1M1
 # (tests/bench/e1m1.scr). tests/bench/rbench.c replays each at 320x240,
-# 640x480, 1280x720 and 1920x1080 and draws every frame as the daemon does
-# (world, sprites, light maps, HUD) then presents it into an xrgb8888 panel
-# in memory: frames/s on one thread and on all cores, ms per frame p50/p99,
-# peak RSS; then the same path drawn by the OSMesa renderer with
+# 640x480, 1280x720, 1920x1080 and 3840x2160 and draws every frame as the
+# daemon does (world, sprites, light maps, HUD) then presents it into an
+# xrgb8888 panel in memory (in row ranges on the same threads): frames/s on
+# one thread and on all cores, ms per frame p50/p99 and their ratio, peak
+# RSS and private memory (anonymous and private dirty pages,
+# smaps_rollup); then the same path drawn by the OSMesa renderer with
 # LP_NUM_THREADS=1 and with llvmpipe's default threads (every 8th frame),
 # when engine/gl/ and OSMesa are there. The peers, chocolate-doom and
 # dsda-doom (installed here with apt-get when missing and run as root), play
@@ -17,7 +19,14 @@
 # steady-state rate is (tics of a 1000-tic cut - tics of a 200-tic cut) /
 # (wall time difference), which removes start-up and the real-time screen
 # wipe (shared/notes/peers.md). chocolate-doom renders 320x200 only, with
-# -noblit (no present); dsda-doom's figure includes its SDL present.
+# -noblit (no present); dsda-doom's figure includes its SDL present. The
+# peers' peak RSS and private memory are measured by tests/bench/runstat.c.
+#
+# The daemon itself (tests/bench/runstat.c): its peak RSS and private
+# memory playing the E1M1 walk at 640x480 on the file framebuffer with
+# freedoom1, and the same walk on freedoom2's MAP01; and exec to its first
+# frame (READY=1, which it sends once the first frame is presented) on
+# freedoom1 E1M1, the median of five starts.
 #
 # Run as root, the measured processes get nice -20 (less disturbed by other
 # load). The mixer's cost per tick with 16 busy channels (tests/bench/mbench.c)
@@ -32,7 +41,7 @@ OUT=build/bench
 WAD=/usr/share/games/doom/freedoom1.wad
 SECS=${BENCH_SECONDS:-1}
 NCPU=$(nproc)
-SIZES="320x240 640x480 1280x720 1920x1080"
+SIZES="320x240 640x480 1280x720 1920x1080 3840x2160"
 mkdir -p "$OUT"
 tmp=$(mktemp -d)
 xpid=
@@ -89,7 +98,7 @@ content() { # path -> rbench content options
 }
 
 CSV=$OUT/bench.csv
-echo "path,size,engine,threads,frames,fps,render_fps,p50_ms,p99_ms,rss_kib,note" >"$CSV"
+echo "path,size,engine,threads,frames,fps,render_fps,p50_ms,p99_ms,rss_kib,priv_kib,note" >"$CSV"
 kv() { # key line -> value
 	echo "$2" | tr ' ' '\n' | sed -n "s/^$1=//p"
 }
@@ -115,7 +124,7 @@ for p in $paths; do
 		for t in $threads; do
 			l=$($PRIO "$tmp/rbench" --rec "$tmp/$p.rec" $(content $p) --size "$size" \
 				--threads "$t" --seconds "$SECS")
-			echo "$p,$size,arcaded,$t,$(kv frames "$l"),$(kv fps "$l"),$(kv render_fps "$l"),$(kv p50_ms "$l"),$(kv p99_ms "$l"),$(kv rss_kib "$l")," >>"$CSV"
+			echo "$p,$size,arcaded,$t,$(kv frames "$l"),$(kv fps "$l"),$(kv render_fps "$l"),$(kv p50_ms "$l"),$(kv p99_ms "$l"),$(kv rss_kib "$l"),$(kv priv_kib "$l")," >>"$CSV"
 			if [ "$t" = 1 ]; then
 				h1=$(kv hash "$l")
 			elif [ "$(kv hash "$l")" != "$h1" ]; then
@@ -127,7 +136,7 @@ for p in $paths; do
 			for t in 1 default; do
 				l=$(rgl "$t" --rec "$tmp/$p.rec" $(content $p) --size "$size" \
 					--renderer gl --stride 8 --seconds "$SECS")
-				echo "$p,$size,osmesa,$([ "$t" = 1 ] && echo 1 || echo "$NCPU"),$(kv frames "$l"),$(kv fps "$l"),$(kv render_fps "$l"),$(kv p50_ms "$l"),$(kv p99_ms "$l"),$(kv rss_kib "$l"),every 8th frame LP_NUM_THREADS=$t" >>"$CSV"
+				echo "$p,$size,osmesa,$([ "$t" = 1 ] && echo 1 || echo "$NCPU"),$(kv frames "$l"),$(kv fps "$l"),$(kv render_fps "$l"),$(kv p50_ms "$l"),$(kv p99_ms "$l"),$(kv rss_kib "$l"),$(kv priv_kib "$l"),every 8th frame LP_NUM_THREADS=$t" >>"$CSV"
 			done
 		fi
 	done
@@ -151,7 +160,8 @@ if [ "$peers" = 1 ] && { [ ! -x $DSDA ] || [ ! -x $CHOC ] || ! command -v Xvfb >
 	fi
 fi
 if [ "$peers" = 1 ] && [ -f "$WAD" ] && command -v Xvfb >/dev/null; then
-	$PRIO Xvfb -displayfd 3 -screen 0 2048x1200x24 -nolisten tcp 3>"$tmp/dpy" >/dev/null 2>&1 &
+	# room for the 3840x2160 window
+	$PRIO Xvfb -displayfd 3 -screen 0 3900x2250x24 -nolisten tcp 3>"$tmp/dpy" >/dev/null 2>&1 &
 	xpid=$!
 	for i in $(seq 50); do [ -s "$tmp/dpy" ] && break; sleep 0.1; done
 	export DISPLAY=":$(cat "$tmp/dpy")"
@@ -170,8 +180,8 @@ if [ "$peers" = 1 ] && [ -f "$WAD" ] && command -v Xvfb >/dev/null; then
 				[ "$a" = DEMO ] && a="$tmp/$cut.lmp"
 				args="$args $a"
 			done
-			r=$($PRIO "$tmp/runstat" "$tmp/$cut.out" $args)
-			eval "w_$cut=$(kv wall_ns "$r") m_$cut=$(kv rss_kib "$r")"
+			r=$($PRIO "$tmp/runstat" --every 100 "$tmp/$cut.out" $args)
+			eval "w_$cut=$(kv wall_ns "$r") m_$cut=$(kv rss_kib "$r") v_$cut=$(kv priv_kib "$r")"
 			eval "f_$cut=$(sed -n 's/.*[Tt]imed \([0-9]*\) gametics.*/\1/p' "$tmp/$cut.out" | head -1)"
 		done
 		if [ -z "$f_long" ] || [ -z "$f_short" ] || [ "$w_long" -le "$w_short" ]; then
@@ -183,7 +193,7 @@ if [ "$peers" = 1 ] && [ -f "$WAD" ] && command -v Xvfb >/dev/null; then
 			'BEGIN { printf "%.1f", (a - b) * 1e9 / (x - y) }')
 		note="DEMO1 steady state ($f_long - $f_short tics)"
 		[ "$name" = chocolate-doom ] && note="$note; 320x200 -noblit"
-		echo "demo1,$size,$name,1,$((f_long - f_short)),$fps,,,,$m_long,$note" >>"$CSV"
+		echo "demo1,$size,$name,1,$((f_long - f_short)),$fps,,,,$m_long,$v_long,$note" >>"$CSV"
 	}
 	if [ -x $DSDA ]; then
 		for size in $SIZES; do
@@ -197,34 +207,81 @@ if [ "$peers" = 1 ] && [ -f "$WAD" ] && command -v Xvfb >/dev/null; then
 	fi
 fi
 
+# ---- the daemon: memory and start-up ----------------------------------------
+# Peak RSS and private memory of `arcaded` playing the E1M1 walk script at
+# 640x480 on a file framebuffer, headless as fast as it runs (freedoom1
+# E1M1; the same walk on freedoom2 MAP01); exec to READY=1 (the first frame
+# presented) of a live start on freedoom1 E1M1, median of five.
+DCSV=$OUT/daemon.csv
+echo "what,wad,map,rss_kib,priv_kib,ready_ms" >"$DCSV"
+fbopts="--set display.backend=file --set display.file=$tmp/fb --set display.file_width=640"
+fbopts="$fbopts --set display.file_height=480 --set display.file_format=xrgb8888"
+for wm in freedoom1:E1M1 freedoom2:MAP01; do
+	wad=/usr/share/games/doom/${wm%%:*}.wad
+	map=${wm#*:}
+	[ -f "$wad" ] || { echo "bench: $wad missing: its memory figure left out"; continue; }
+	r=$($PRIO "$tmp/runstat" --every 2 "$tmp/mem.out" "$BIN" $common --wad "$wad" --map "$map" \
+		--script tests/bench/e1m1.scr --size 640x480 $fbopts)
+	echo "memory,${wm%%:*},$map,$(kv rss_kib "$r"),$(kv priv_kib "$r")," >>"$DCSV"
+done
+if [ -f "$WAD" ]; then
+	ready=""
+	for i in 1 2 3 4 5; do
+		r=$($PRIO "$tmp/runstat" --ready "$tmp/ready.out" "$BIN" $common --wad "$WAD" \
+			--map E1M1 --size 640x480 $fbopts --ticks 600)
+		ready="$ready $(kv ready_ns "$r")"
+	done
+	med=$(echo "$ready" | tr ' ' '\n' | grep . | sort -n | sed -n 3p)
+	echo "ready,freedoom1,E1M1,,,$(awk -v n="${med:-0}" 'BEGIN { printf "%.1f", n / 1e6 }')" >>"$DCSV"
+fi
+cap2=1
+[ "$NCPU" -gt 1 ] && cap2=$(kv capacity "$($PRIO "$tmp/rbench" --capacity "$NCPU")")
+
 # ---- report -----------------------------------------------------------------
 "$tmp/chart" "$CSV" "$OUT/bench.png" || echo "bench: no chart"
-awk -F, -v ncpu="$NCPU" -v identical="$identical" '
-NR == 1 { next }
-{
+# the capacity the thread figures can show: the lower of before and after
+capmin=$(awk -v a="$cap" -v b="$cap2" 'BEGIN { print (a < b ? a : b) }')
+awk -F, -v ncpu="$NCPU" -v identical="$identical" -v cap="$capmin" '
+NR == FNR && FNR == 1 { next }
+NR == FNR {
 	key = $1 SUBSEP $2 SUBSEP $3 SUBSEP ($4 == 1 ? 1 : "n")
-	fps[key] = $6; p50[key] = $8; p99[key] = $9; rss[key] = $10
+	fps[key] = $6; p50[key] = $8; p99[key] = $9; rss[key] = $10; priv[key] = $11
 	if (!($1 in seenp)) { seenp[$1] = 1; if ($1 != "demo1") order[np++] = $1 }
 	if (!($2 in seens)) { seens[$2] = 1; sizes[ns++] = $2 }
+	next
 }
+FNR == 1 { next }
+$1 == "memory" { drss[$2] = $4; dpriv[$2] = $5; dmap[$2] = $3 }
+$1 == "ready" { ready = $6 }
 function f(k) { return (k in fps) ? fps[k] : "-" }
-function ratio(a, b) { return (a == "-" || b == "-" || b == 0) ? "-" : sprintf("%.1fx", a / b) }
+function ratio(a, b) { return (a == "-" || b == "-" || b == 0) ? "-" : sprintf("%.2fx", a / b) }
+function mib(v) { return v == "" ? "-" : sprintf("%.1f", v / 1024) }
 END {
-	printf "%-7s %-10s %9s %9s %7s %15s %9s %8s %8s %9s %9s\n", "path", "size", "sw 1T", \
-		"sw " ncpu "T", "speedup", "p50/p99 ms", "RSS MiB", "gl 1T", "gl " ncpu "T", "dsda", \
-		"choc"
+	printf "%-7s %-10s %9s %9s %7s %17s %6s %5s %5s %8s %8s %8s %8s\n", "path", "size", \
+		"sw 1T", "sw " ncpu "T", "speedup", "p50/p99 ms", "p99/50", "RSS", "priv", \
+		"gl 1T", "gl " ncpu "T", "dsda", "choc"
 	for (i = 0; i < np; i++) for (j = 0; j < ns; j++) {
 		p = order[i]; s = sizes[j]
 		one = f(p SUBSEP s SUBSEP "arcaded" SUBSEP 1)
 		all = f(p SUBSEP s SUBSEP "arcaded" SUBSEP "n")
 		if (all == "-") all = one
 		k = p SUBSEP s SUBSEP "arcaded" SUBSEP (ncpu > 1 ? "n" : 1)
-		printf "%-7s %-10s %9s %9s %7s %15s %9.1f %8s %8s %9s %9s\n", p, s, one, all, \
-			ratio(all, one), p50[k] "/" p99[k], rss[k] / 1024, \
-			f(p SUBSEP s SUBSEP "osmesa" SUBSEP 1), f(p SUBSEP s SUBSEP "osmesa" SUBSEP "n"), \
+		printf "%-7s %-10s %9s %9s %7s %17s %6s %5s %5s %8s %8s %8s %8s\n", p, s, one, all, \
+			ratio(all, one), p50[k] "/" p99[k], ratio(p99[k], p50[k]), mib(rss[k]), \
+			mib(priv[k]), f(p SUBSEP s SUBSEP "osmesa" SUBSEP 1), \
+			f(p SUBSEP s SUBSEP "osmesa" SUBSEP "n"), \
 			f("demo1" SUBSEP s SUBSEP "dsda-doom" SUBSEP 1), \
 			f("demo1" SUBSEP s SUBSEP "chocolate-doom" SUBSEP 1)
 	}
+	for (s in seens) {
+		k = "demo1" SUBSEP s SUBSEP "dsda-doom" SUBSEP 1
+		if (k in fps) printf "dsda-doom %s: peak RSS %s MiB, private %s MiB\n", s, mib(rss[k]), mib(priv[k])
+	}
+	print ""
+	print "the daemon (file framebuffer 640x480, the E1M1 walk script):"
+	for (w in drss) printf "  %-10s %-6s peak RSS %5s MiB, peak private %5s MiB\n", w, dmap[w], \
+		mib(drss[w]), mib(dpriv[w])
+	printf "  exec to first frame (READY=1), freedoom1 E1M1, median of 5: %s ms\n", ready == "" ? "-" : ready
 	print ""
 	print "targets (software renderer, each path; dsda-doom on DEMO1):"
 	for (i = 0; i < np; i++) {
@@ -235,23 +292,44 @@ END {
 			all = f(p SUBSEP s SUBSEP "arcaded" SUBSEP "n")
 			d = f("demo1" SUBSEP s SUBSEP "dsda-doom" SUBSEP 1)
 			g1 = f(p SUBSEP s SUBSEP "osmesa" SUBSEP 1)
+			k = p SUBSEP s SUBSEP "arcaded" SUBSEP (ncpu > 1 ? "n" : 1)
 			if (s == "1280x720" || s == "1920x1080") {
 				target(p " " s ": all cores vs dsda-doom", all, d, 2.0)
 				target(p " " s ": one core vs dsda-doom", one, d, 1.0)
 			}
+			if (ncpu > 1 && (s == "1280x720" || s == "1920x1080" || s == "3840x2160"))
+				target(p " " s ": " ncpu " threads vs one", all, one, 1.8)
 			target(p " " s ": one core vs OSMesa one thread", one, g1, 5.0)
+			if (k in p50)
+				upto(p " " s ": p99 / p50", p99[k] / p50[k], 1.5, "x")
 			if (s == "1920x1080")
-				printf "  %-52s %9s fps   >= 60      %s\n", p " " s ": all cores", all, \
-					(all == "-" ? "not measured" : (all >= 60 ? "met" : "NOT MET"))
+				atleast(p " " s ": all cores, frames/s", all, 60)
+			if (p == "e1m1" && s == "3840x2160")
+				atleast(p " " s ": all cores, frames/s", all, 200)
 		}
 	}
+	if (ncpu > 1)
+		atleast("machine capacity (" ncpu " threads vs one)", cap, 1.9)
+	if ("freedoom1" in drss) {
+		upto("freedoom1 E1M1 640x480: private memory, MiB", dpriv["freedoom1"] / 1024, 16, "")
+		upto("freedoom1 E1M1 640x480: peak RSS, MiB", drss["freedoom1"] / 1024, 24, "")
+	}
+	if (ready != "")
+		upto("exec to first frame, freedoom1, ms", ready, 25, "")
 	printf "  %-52s %9s           %s\n", "frames identical on 1 and " ncpu " threads", "", \
 		(identical ? "met" : "NOT MET")
 }
 function target(what, a, b, want) {
 	if (a == "-" || b == "-") { printf "  %-52s %9s         >= %.1fx   not measured\n", what, "-", want; return }
-	printf "  %-52s %8.1fx         >= %.1fx   %s\n", what, a / b, want, (a / b >= want ? "met" : "NOT MET")
-}' "$CSV"
+	printf "  %-52s %8.2fx         >= %.1fx   %s\n", what, a / b, want, (a / b >= want ? "met" : "NOT MET")
+}
+function atleast(what, a, want) {
+	if (a == "-") { printf "  %-52s %9s         >= %-6s not measured\n", what, "-", want; return }
+	printf "  %-52s %9.2f         >= %-6s %s\n", what, a, want, (a + 0 >= want ? "met" : "NOT MET")
+}
+function upto(what, a, want, unit) {
+	printf "  %-52s %8.2f%1s         <= %-5s%1s %s\n", what, a, unit, want, unit, (a + 0 <= want ? "met" : "NOT MET")
+}' "$CSV" "$DCSV"
 # the mixer: one tick of 16 busy channels at 48000 Hz, one core
 mix=$($PRIO "$tmp/mbench" "${BENCH_SECONDS:-1}")
 mms=$(echo "$mix" | awk '{ print $2 }')
@@ -259,7 +337,8 @@ printf '  %-52s %9s ms      <= 0.1     %s\n' "mixer: one tick, 16 busy channels,
 	"$(awk -v m="$mms" 'BEGIN { print (m <= 0.1 ? "met" : "NOT MET") }')"
 echo "mixer_ms_per_tick,$mms" > "$OUT/mixer.csv"
 echo
-echo "machine: $NCPU threads of pure integer work ran ${cap}x as fast as one during this run;"
-echo "  below ${NCPU}x, other load (or a CPU share, or hyperthread siblings) caps every thread figure"
-echo "CSV: $CSV  chart: $OUT/bench.png"
+echo "machine: $NCPU threads of pure integer work ran ${cap}x (before) and ${cap2}x (after) as fast as"
+echo "  one during this run; below ${NCPU}x, other load (or a CPU share, or hyperthread siblings)"
+echo "  caps every thread figure. Load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "CSV: $CSV $DCSV  chart: $OUT/bench.png"
 [ "$identical" = 1 ]

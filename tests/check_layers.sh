@@ -150,9 +150,11 @@ fi
 # the name inside <>) and why. A platform header in a file not listed, or
 # one its entry does not allow, fails; so does an entry whose file no
 # longer includes any (the list names exactly the files that need them).
-platform='alsa/|linux/|sys/ioctl|sys/kd|sys/inotify|termios|libevdev|systemd/|hidapi|gpiod|libusb|png\.h|pthread|dlfcn'
+platform='alsa/|linux/|sys/ioctl|sys/kd|sys/inotify|termios|libevdev|systemd/|hidapi|gpiod|libusb|png\.h|pthread|dlfcn|xf86drm|drm'
 cat > "$tmp/platform" <<'EOT'
 audio/au_alsa.c	alsa/asoundlib\.h	the ALSA backend: libasound
+display/dp_kms.c	drm_fourcc\.h|xf86drm\.h|xf86drmMode\.h	the DRM/KMS backend: libdrm's mode setting, dumb buffers and page flips
+display/con.c	linux/kd\.h|linux/vt\.h|sys/ioctl\.h	the console under a full-screen display: graphics mode, keyboard off, VT switching
 display/dp_fbdev.c	linux/fb\.h|linux/kd\.h|sys/ioctl\.h	the fbdev backend: FBIOGET_*, the console's graphics mode
 display/dp_term.c	sys/ioctl\.h|termios\.h	the terminal backend: the window size, raw mode
 display/shot.c	png\.h	PNG screenshots are written with libpng

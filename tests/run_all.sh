@@ -53,6 +53,7 @@ step check-tables make --no-print-directory check-tables
 step check-levels make --no-print-directory check-levels
 step check-systemd make --no-print-directory check-systemd
 step check-install make --no-print-directory check-install
+step check-docs make --no-print-directory check-docs
 unit unit-gcc build
 unit unit-asan-ubsan build/asan OPT="-O1 -g -fno-omit-frame-pointer" \
 	SAN="-fsanitize=address,undefined -fno-sanitize-recover=all"

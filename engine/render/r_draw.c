@@ -122,7 +122,7 @@ void r_draw_span(const struct r_ctx *r, struct r_strip *s, const struct r_span *
 	assert(sp->y >= 0 && sp->y < r->h && x1 >= 0 && x2 < r->w);
 	p = r->px + (size_t)sp->y * (size_t)r->pitch + (size_t)x1;
 	n = x2 - x1 + 1;
-	s->written += (uint32_t)n;
+	s->spanned += (uint32_t)n;
 	if (r->ids)
 		for (int i = 0; i < n; i++)
 			r->ids[(size_t)sp->y * (size_t)r->w + (size_t)(x1 + i)] = sp->id;

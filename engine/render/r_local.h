@@ -203,7 +203,8 @@ struct r_strip {
 	int32_t *band;                  /* nbands + 1 counts */
 	int32_t *spans;                 /* indices into ctx.spans crossing it */
 	int nspans, maxspans;
-	uint32_t written, empty, masked;
+	uint32_t written, spanned, empty, masked;
+	uint64_t cost;                  /* of the last frame: ns (r_par.now) or pixels */
 };
 
 struct r_ctx {
@@ -216,6 +217,9 @@ struct r_ctx {
 	struct r_span *spans;           /* this frame's spans */
 	int nspans, maxspans;
 	struct r_par par;               /* run == NULL: strips drawn in turn */
+	int32_t *strip_order;           /* nstrips: costliest first (r_strip.c) */
+	const struct r_sprite *wspr;    /* the walk's rest (r_strip_draw_all) */
+	int wnspr, world;
 
 	/* per column: rows [ceilclip + 1, floorclip - 1] are still unwritten;
 	 * everything outside that interval has been written exactly once */
@@ -353,8 +357,11 @@ int r_plane_find(struct r_ctx *r, fx_t height, uint16_t pic, int light,
  * column of [x1, x2]; its column range then includes [x1, x2]. -1 when
  * p is -1 or none could be allocated. */
 int r_plane_check(struct r_ctx *r, int p, int x1, int x2);
-/* Records every visplane (spans; the sky by columns). */
-void r_plane_draw_all(struct r_ctx *r);
+/* Records the sky planes, by columns (before the strips draw columns). */
+void r_plane_draw_sky(struct r_ctx *r);
+/* Records the other planes, by spans (may run beside the column runs
+ * being drawn: r_strip.c). */
+void r_plane_draw_flats(struct r_ctx *r);
 
 /* r_things.c: sprites and masked middle textures */
 /* Projects the sprites and sorts them farthest first. */
@@ -387,9 +394,11 @@ void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour);
  * and y, wrapping at 64) xf, yf at x1's centre, plus xs, ys per pixel. */
 void r_rec_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat, const uint8_t *cm,
 		uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys);
-/* Draws every strip (through r->par when set) and adds their counters to
- * the frame's stats. */
-void r_strip_draw_all(struct r_ctx *r);
+/* Records the flats' spans and projects the nspr sprites of spr (when
+ * world: the walk's rest), draws every strip (through r->par when set, the
+ * walk's rest beside the column runs) and adds their counters to the
+ * frame's stats. */
+void r_strip_draw_all(struct r_ctx *r, const struct r_sprite *spr, int nspr, int world);
 
 /* r_draw.c: the only writers of frame pixels; s is the strip drawn, every
  * write stays inside its columns. With an id buffer each also writes the
@@ -398,7 +407,7 @@ void r_strip_draw_all(struct r_ctx *r);
 /* Rows c->y1..y2 of run c (y2 <= c->y2); then c->y1 is y2 + 1 and c->frac
  * the position there. Counted in written. */
 void r_draw_run(const struct r_ctx *r, struct r_strip *s, struct r_col *c, int y2);
-/* The part of span sp inside the strip. Counted in written. */
+/* The part of span sp inside the strip. Counted in spanned. */
 void r_draw_span(const struct r_ctx *r, struct r_strip *s, const struct r_span *sp);
 /* A masked column (sprites, masked middles): rows y1..y2 of column x (in
  * the strip) from picture column col, no wrapping, only texels whose op

@@ -475,10 +475,9 @@ void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	/* the walk records, then the strips draw (r_strip.c) */
 	if (m->num_subsectors > 0) {
 		r_bsp_render(r);
-		r_plane_draw_all(r);
-		r_things_project(r, spr, nspr);
+		r_plane_draw_sky(r);
 	}
-	r_strip_draw_all(r);
+	r_strip_draw_all(r, spr, nspr, m->num_subsectors > 0);
 	r->st.planes = (uint32_t)r->nplanes;
 	r->st.drawsegs = (uint32_t)r->ndsegs;
 	r->st.sprites = (uint32_t)r->nvis;

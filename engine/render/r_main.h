@@ -119,6 +119,9 @@ struct r_par {
 	void (*run)(void *pool, int n, void (*job)(void *arg, int i), void *arg);
 	void *pool;
 	int threads;                   /* how many jobs the pool runs at once */
+	/* Optional: a monotonic clock in ns, any thread; the strips' measured
+	 * cost orders the next frame's jobs. NULL: their pixel counts do. */
+	uint64_t (*now)(void);
 };
 
 /* Draws the next frames' strips through par (copied; the pool must outlive

@@ -328,16 +328,22 @@ static void r_plane_sky(struct r_ctx *r, const struct r_plane *p)
 	}
 }
 
-void r_plane_draw_all(struct r_ctx *r)
+void r_plane_draw_sky(struct r_ctx *r)
 {
 	for (int i = 0; i < r->nplanes; i++) {
 		struct r_plane *p = &r->planes[i];
 
-		if (p->minx > p->maxx)
-			continue;
-		if (p->sky)
+		if (p->minx <= p->maxx && p->sky)
 			r_plane_sky(r, p);
-		else
+	}
+}
+
+void r_plane_draw_flats(struct r_ctx *r)
+{
+	for (int i = 0; i < r->nplanes; i++) {
+		struct r_plane *p = &r->planes[i];
+
+		if (p->minx <= p->maxx && !p->sky)
 			r_plane_spans(r, p);
 	}
 }

@@ -18,6 +18,21 @@
  * The jobs run through the caller's pool (struct r_par) or one after the
  * other. A list that cannot grow makes the walk draw that run at once: the
  * frame stays whole and the same (counted in stats.degraded).
+ *
+ * With a pool the strips are drawn in two batches, so that the rest of the
+ * walk runs beside them rather than before: job 0 of the first batch
+ * records the flats' spans (r_plane_draw_flats) and projects the sprites,
+ * while the other jobs draw the strips' column runs (walls and sky, all
+ * recorded by then); the second batch draws each strip's spans, black fill
+ * and sprites. Runs, spans and the fill write disjoint pixels, so the
+ * order changes no byte. While job 0 records spans only its own fields
+ * change (ctx.spans, each strip's span list, ctx.st), and a span it must
+ * draw at once (out of memory) writes pixels no run has and counts them in
+ * the strip's spanned, not in written, which a column job counts in.
+ * Both batches hand their strips out costliest first by the previous
+ * frame's cost (the time the caller's clock measured, r_par.now, else the
+ * pixels drawn), so the last job to start is a cheap one and the threads
+ * end together.
  */
 #include <assert.h>
 #include <errno.h>
@@ -48,10 +63,16 @@ int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
 	int nbands = (r->h + (1 << band_shift) - 1) >> band_shift;
 	/* sizeof is a multiple of the 64-byte alignment */
 	struct r_strip *st = aligned_alloc(64, (size_t)n * sizeof(*st));
+	int32_t *order = malloc((size_t)n * sizeof(*order));
 
-	if (!st)
+	if (!st || !order) {
+		free(st);
+		free(order);
 		return -ENOMEM;
+	}
 	memset(st, 0, (size_t)n * sizeof(*st));
+	for (int i = 0; i < n; i++)
+		order[i] = i;
 	for (int i = 0; i < n; i++) {
 		struct r_strip *s = &st[i];
 		int x1;
@@ -62,11 +83,13 @@ int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
 		s->band = malloc((size_t)(nbands + 1) * sizeof(*s->band));
 		if (!s->band) {
 			r_strips_free(st, n);
+			free(order);
 			return -ENOMEM;
 		}
 	}
 	r_strip_free(r);
 	r->strips = st;
+	r->strip_order = order;
 	r->nstrips = n;
 	r->strip_shift = strip_shift;
 	r->band_shift = band_shift;
@@ -77,7 +100,9 @@ int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
 void r_strip_free(struct r_ctx *r)
 {
 	r_strips_free(r->strips, r->nstrips);
+	free(r->strip_order);
 	r->strips = NULL;
+	r->strip_order = NULL;
 	r->nstrips = 0;
 }
 
@@ -88,7 +113,7 @@ void r_strip_reset(struct r_ctx *r)
 		struct r_strip *s = &r->strips[i];
 
 		s->ncols = s->nspans = 0;
-		s->written = s->empty = s->masked = 0;
+		s->written = s->spanned = s->empty = s->masked = 0;
 	}
 }
 
@@ -252,31 +277,110 @@ static void r_strip_cols(const struct r_ctx *r, struct r_strip *s)
 	}
 }
 
-/* One job: everything strip i shows. */
-static void r_strip_job(void *arg, int i)
+/* What strip s draws after its column runs. */
+static void r_strip_rest(struct r_ctx *r, struct r_strip *s)
 {
-	struct r_ctx *r = arg;
-	struct r_strip *s = &r->strips[i];
-
-	r_strip_cols(r, s);
 	for (int k = 0; k < s->nspans; k++)
 		r_draw_span(r, s, &r->spans[s->spans[k]]);
 	r_draw_finish(r, s);
 	r_things_draw(r, s);
 }
 
-void r_strip_draw_all(struct r_ctx *r)
+/* The walk's second half: the flats' spans, then the sprites. */
+static void r_walk_rest(struct r_ctx *r)
 {
-	if (r->par.run && r->nstrips > 1)
-		r->par.run(r->par.pool, r->nstrips, r_strip_job, r);
-	else
+	if (r->world) {
+		r_plane_draw_flats(r);
+		r_things_project(r, r->wspr, r->wnspr);
+	}
+}
+
+/* One job without a pool: everything strip i shows. */
+static void r_strip_job(void *arg, int i)
+{
+	struct r_ctx *r = arg;
+	struct r_strip *s = &r->strips[i];
+
+	r_strip_cols(r, s);
+	r_strip_rest(r, s);
+}
+
+/* The caller's clock, or 0 without one. */
+static uint64_t r_strip_now(const struct r_ctx *r)
+{
+	return r->par.now ? r->par.now() : 0;
+}
+
+/* First batch: job 0 the walk's rest, job i the column runs of the strip
+ * i - 1 places down the costliest-first order. */
+static void r_strip_job_cols(void *arg, int i)
+{
+	struct r_ctx *r = arg;
+	struct r_strip *s;
+	uint64_t t0;
+
+	if (i == 0) {
+		r_walk_rest(r);
+		return;
+	}
+	s = &r->strips[r->strip_order[i - 1]];
+	t0 = r_strip_now(r);
+	r_strip_cols(r, s);
+	s->cost = r_strip_now(r) - t0;
+}
+
+/* Second batch: strip order[i]'s spans, fill and sprites. */
+static void r_strip_job_rest(void *arg, int i)
+{
+	struct r_ctx *r = arg;
+	struct r_strip *s = &r->strips[r->strip_order[i]];
+	uint64_t t0 = r_strip_now(r);
+
+	r_strip_rest(r, s);
+	s->cost += r_strip_now(r) - t0;
+}
+
+/* strip_order: the strips by the cost they had, costliest first (ties by
+ * position); the pool hands jobs out in index order. */
+static void r_strip_sort(struct r_ctx *r)
+{
+	int32_t *o = r->strip_order;
+
+	for (int i = 0; i < r->nstrips; i++) {
+		const struct r_strip *s = &r->strips[i];
+		int k = i;
+
+		if (!r->par.now)
+			r->strips[i].cost = (uint64_t)s->written + s->spanned + s->masked;
+		while (k > 0 && r->strips[o[k - 1]].cost < r->strips[i].cost) {
+			o[k] = o[k - 1];
+			k--;
+		}
+		o[k] = i;
+	}
+}
+
+void r_strip_draw_all(struct r_ctx *r, const struct r_sprite *spr, int nspr, int world)
+{
+	r->wspr = spr;
+	r->wnspr = nspr;
+	r->world = world;
+	if (r->par.run && r->nstrips > 1) {
+		r->par.run(r->par.pool, r->nstrips + 1, r_strip_job_cols, r);
+		r->par.run(r->par.pool, r->nstrips, r_strip_job_rest, r);
+	} else {
+		r_walk_rest(r);
 		for (int i = 0; i < r->nstrips; i++)
 			r_strip_job(r, i);
+	}
 	for (int i = 0; i < r->nstrips; i++) {
 		const struct r_strip *s = &r->strips[i];
 
-		r->st.pixels_written += s->written;
+		r->st.pixels_written += s->written + s->spanned;
 		r->st.pixels_empty += s->empty;
 		r->st.pixels_masked += s->masked;
 	}
+	/* the next frame's order, from this frame's costs */
+	if (r->par.run && r->nstrips > 1)
+		r_strip_sort(r);
 }

@@ -78,8 +78,14 @@ static void hud_minimap(const struct sim *s, const struct hud_colours *c, struct
 	m.den = (int64_t)HUD_MAP_SPAN * FX_ONE;
 	m.px = s->pl.x;
 	m.py = s->pl.y;
-	v_remap(f, m.r.x, m.r.y, size, size, c->dim);
-	v_remap(f, m.r.x, m.r.y, size, size, c->dim);
+	{
+		/* darkened twice: one pass through the composed map */
+		uint8_t dim2[256];
+
+		for (int i = 0; i < 256; i++)
+			dim2[i] = c->dim[c->dim[i]];
+		v_remap_par(f, m.r.x, m.r.y, size, size, dim2, c->par);
+	}
 	for (uint32_t i = 0; i < map->num_lines; i++) {
 		const struct map_line *l = &map->lines[i];
 		const struct map_vertex *a = &map->vertices[l->v1], *b = &map->vertices[l->v2];
@@ -264,7 +270,7 @@ static void hud_play(const struct sim *s, const struct hud_env *env, const struc
 			hud_weapon_drawn(s, c, f, y0);
 		hud_crosshair(s, c, f);
 	}
-	v_remap(f, 0, y0, f->w, bar, c->dim);
+	v_remap_par(f, 0, y0, f->w, bar, c->dim, c->par);
 	buf[0] = '\0';
 	msg_cat(buf, sizeof(buf), "HEALTH ");
 	hud_cat_num(buf, sizeof(buf), (uint64_t)(health < 0 ? 0 : health), 3, ' ');
@@ -299,6 +305,7 @@ void hud_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f)
 	struct hud_colours c;
 
 	hud_colours(env->pal, &c);
+	c.par = env->par;
 	if (!hud_world(s))
 		v_fill(f, 0, 0, f->w, f->h, c.black);
 	switch (s->mode) {

@@ -21,6 +21,7 @@ struct sim;
 struct pal;
 struct tex_set;
 struct r_frame;
+struct r_par;
 
 /* What the HUD needs besides the state; all borrowed, read only. */
 struct hud_env {
@@ -28,6 +29,8 @@ struct hud_env {
 	const struct tex_set *tex;     /* optional: weapon pictures PISG/PISF if it has them */
 	int rotate;                    /* the display's rotation in degrees, shown by the
 					* service menu's orientation screen; -1 unknown */
+	const struct r_par *par;       /* optional: threads the large darkened areas are
+					* split on (the renderer's pool); NULL: none */
 };
 
 /* The colours the HUD uses, nearest to fixed RGB values in a palette. */
@@ -35,6 +38,7 @@ struct hud_colours {
 	uint8_t white, grey, dark, black, red, orange, yellow, green, blue, cyan, purple;
 	uint8_t skin, steel;
 	const uint8_t *dim;            /* colormap that darkens the picture behind text */
+	const struct r_par *par;       /* not a colour: hud_env.par, for the darkening */
 };
 
 void hud_colours(const struct pal *pal, struct hud_colours *c);

@@ -30,7 +30,7 @@ static void hud_scores(const struct sim *s, const struct hud_colours *c, struct 
 {
 	int sc = hud_scale(f), y = f->h / 10, x = (f->w - v_text_width("10  AAA  0000000  3", sc)) / 2;
 
-	v_remap(f, 0, 0, f->w, f->h, c->dim);
+	v_remap_par(f, 0, 0, f->w, f->h, c->dim, c->par);
 	hud_text_centre(f, c, y, 2 * sc, c->yellow, "HIGH SCORES");
 	y += 28 * sc;
 	for (int i = 0; i < G_SCORES; i++, y += 12 * sc) {
@@ -67,7 +67,7 @@ void hud_page_attract(const struct sim *s, const struct hud_colours *c, struct r
 		break;
 	case SIM_PAGE_TITLE:
 	default:
-		v_remap(f, 0, f->h / 5, f->w, 12 * big, c->dim);
+		v_remap_par(f, 0, f->h / 5, f->w, 12 * big, c->dim, c->par);
 		hud_text_centre(f, c, f->h / 5 + 2 * big, big, c->red, "ARCADED");
 		hud_text_centre(f, c, f->h / 5 + 2 * big + 10 * big, sc, c->white,
 				"CLEAR THE STAGES  BEAT THE TABLE");
@@ -91,7 +91,7 @@ void hud_page_gameover(const struct sim *s, const struct hud_colours *c, struct 
 	int sc = hud_scale(f), y = f->h / 6;
 	char buf[48] = "";
 
-	v_remap(f, 0, 0, f->w, f->h, c->dim);
+	v_remap_par(f, 0, 0, f->w, f->h, c->dim, c->par);
 	hud_text_centre(f, c, y, 3 * sc, c->red, "GAME OVER");
 	msg_cat(buf, sizeof(buf), "SCORE ");
 	hud_cat_num(buf, sizeof(buf), s->g.score, 1, '0');

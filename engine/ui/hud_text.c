@@ -31,6 +31,7 @@ void hud_colours(const struct pal *pal, struct hud_colours *c)
 	c->skin = pal_nearest(pal, 200, 150, 110);
 	c->steel = pal_nearest(pal, 110, 115, 125);
 	c->dim = pal->cmap[HUD_DIM_LIGHT];
+	c->par = NULL;
 }
 
 int hud_scale(const struct r_frame *f)

@@ -79,6 +79,47 @@ void v_remap(struct r_frame *f, int x, int y, int w, int h, const uint8_t map[25
 	}
 }
 
+/* One row range of v_remap_par. */
+struct v_remap_job {
+	struct r_frame *f;
+	int x, y, w, h, n;
+	const uint8_t *map;
+};
+
+static void v_remap_rows(void *arg, int i)
+{
+	const struct v_remap_job *j = arg;
+	int y0 = j->y + (int)((int64_t)j->h * i / j->n);
+	int y1 = j->y + (int)((int64_t)j->h * (i + 1) / j->n);
+
+	v_remap(j->f, j->x, y0, j->w, y1 - y0, j->map);
+}
+
+void v_remap_par(struct r_frame *f, int x, int y, int w, int h, const uint8_t map[256],
+		 const struct r_par *par)
+{
+	int64_t x0 = x, y0 = y, x1 = (int64_t)x + w, y1 = (int64_t)y + h;
+	struct v_remap_job j;
+
+	if (w <= 0 || h <= 0 || !v_clip(f, NULL, &x0, &y0, &x1, &y1))
+		return;
+	if (!par || !par->run || par->threads < 2 || (x1 - x0) * (y1 - y0) < V_PAR_MIN ||
+	    y1 - y0 < 2 * par->threads) {
+		v_remap(f, x, y, w, h, map);
+		return;
+	}
+	/* rows of a range are whole lines of the rectangle: ranges write
+	 * disjoint bytes */
+	j.f = f;
+	j.x = (int)x0;
+	j.y = (int)y0;
+	j.w = (int)(x1 - x0);
+	j.h = (int)(y1 - y0);
+	j.n = 2 * par->threads;
+	j.map = map;
+	par->run(par->pool, j.n, v_remap_rows, &j);
+}
+
 /* Cohen-Sutherland outcodes against the inclusive box lo..hi. */
 static int v_code(int64_t x, int64_t y, int64_t lx, int64_t ly, int64_t hx, int64_t hy)
 {

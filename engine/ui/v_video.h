@@ -18,6 +18,7 @@
 #include <stdint.h>
 
 struct r_frame;
+struct r_par;
 struct tex_pic;
 
 #define V_CHAR 8                       /* font cell, pixels at scale 1 */
@@ -35,6 +36,13 @@ void v_box(struct r_frame *f, int x, int y, int w, int h, uint8_t c);
 /* Replaces every pixel p of the rectangle by map[p] (a colormap: darkening
  * behind text). */
 void v_remap(struct r_frame *f, int x, int y, int w, int h, const uint8_t map[256]);
+
+/* The same, in row ranges on par's threads (engine/render/r_main.h) when
+ * the rectangle has at least V_PAR_MIN pixels; par NULL or with fewer than
+ * two threads: v_remap. The same bytes either way. */
+void v_remap_par(struct r_frame *f, int x, int y, int w, int h, const uint8_t map[256],
+		 const struct r_par *par);
+#define V_PAR_MIN 65536
 
 /* A line from (x0, y0) to (x1, y1), both ends drawn (Bresenham), clipped
  * to clip (NULL: the frame). Endpoints may be far outside (they are

@@ -6,8 +6,9 @@
  * --map NAME), replays the recording through the sim and draws every tick's
  * frame as the daemon does (app/view.c: the world with its sprites and
  * light maps, then the HUD), then presents it into an xrgb8888 panel of the
- * same size in memory (display/px.h, the one pass fbdev uses). Only drawing
- * and presenting are timed, not the sim. The path is replayed again until
+ * same size in memory (display/px.h, the one pass fbdev and kms use; with
+ * --threads above 1 in row ranges on the same pool as the strips). Only
+ * drawing and presenting are timed, not the sim. The path is replayed again until
  * --seconds of timed frames have passed (at least once). --stride K draws
  * only every K-th tick's frame (for slow renderers: the same path, fewer
  * frames).
@@ -22,8 +23,9 @@
  *
  * Prints one line of key=value: frames, fps (draw + present), render_fps
  * (draw only), p50_ms and p99_ms (draw + present per frame), rss_kib (peak
- * resident set), hash (of every frame of the first pass: equal for any
- * --threads).
+ * resident set), priv_kib (private memory at the end: anonymous and private
+ * dirty pages, smaps_rollup), hash (of every frame of the first pass and of every 16th
+ * presented panel: equal for any --threads).
  *
  * rbench --capacity N prints capacity=X: how many times faster N threads
  * run pure integer work than one, on this machine as it is now (a check of
@@ -57,7 +59,7 @@
 static void draw_gl(struct rgl_ctx *g, struct view *v, const struct sim *s, struct r_frame *f)
 {
 	struct tex_set *tex = v->ct->tex;
-	struct hud_env env = { &tex->pal, tex, v->rotate };
+	struct hud_env env = { &tex->pal, tex, v->rotate, v->par };
 	struct r_view rv;
 
 	tex_animate(tex, s->tick);
@@ -128,6 +130,28 @@ static int capacity(int n)
 	return 0;
 }
 
+/* This process's private memory now: anonymous and private dirty pages
+ * from /proc/self/smaps_rollup, as max(Anonymous, Private_Dirty) (anonymous
+ * pages are private dirty too: their sum would count them twice); -1 when
+ * it cannot be read. */
+static long private_kib(void)
+{
+	FILE *f = fopen("/proc/self/smaps_rollup", "re");
+	char line[256];
+	long anon = -1, dirty = -1, v;
+
+	if (!f)
+		return -1;
+	while (fgets(line, sizeof(line), f)) {
+		if (sscanf(line, "Anonymous: %ld kB", &v) == 1)
+			anon = v;
+		else if (sscanf(line, "Private_Dirty: %ld kB", &v) == 1)
+			dirty = v;
+	}
+	fclose(f);
+	return anon < 0 || dirty < 0 ? -1 : anon > dirty ? anon : dirty;
+}
+
 static int cmp_u64(const void *a, const void *b)
 {
 	uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
@@ -158,6 +182,8 @@ int main(int argc, char **argv)
 	struct sim *sim;
 	struct r_ctx *r;
 	struct pool *pool = NULL;
+	struct r_par par;
+	struct px_par ppar;
 	struct view view;
 	struct r_frame f;
 	struct px_panel *panel;
@@ -271,8 +297,6 @@ int main(int argc, char **argv)
 	}
 #endif
 	if (threads > 1) {
-		struct r_par par;
-
 		rc = pool_new(threads, &pool);
 		if (rc < 0) {
 			fprintf(stderr, "rbench: pool of %d: %s\n", threads, strerror(-rc));
@@ -280,11 +304,17 @@ int main(int argc, char **argv)
 		}
 		pool_r_par(pool, &par);
 		r_set_par(r, &par);
+		view.par = &par;
 	}
 	if (px_format_by_name("xrgb8888", &fmt) < 0 ||
 	    px_panel_init(panel, &fmt, w, h, (size_t)w * 4, 0, 0, w, h) < 0)
 		return 1;
 	px_panel_palette(panel, ct.tex->pal.rgb);
+	if (pool) {
+		/* the present in row ranges on the same pool, as the daemon's */
+		pool_px_par(pool, &ppar);
+		px_panel_set_par(panel, &ppar);
+	}
 
 	for (int pass = 0; pass == 0 || (double)total < seconds * 1e9; pass++) {
 		sim_init_stages(sim, (const struct map *const *)ct.maps, ct.nmaps, &hdr.set, NULL,
@@ -316,6 +346,10 @@ int main(int argc, char **argv)
 			rtotal += t1 - t0;
 			if (pass == 0)
 				hash = frame_hash(hash, f.px, (size_t)w * (size_t)h);
+			/* and the presented panel, every 16th frame (hashing
+			 * all of them would take longer than the run) */
+			if (pass == 0 && k % 16 == 0)
+				hash = frame_hash(hash, mem, (size_t)w * (size_t)h * 4);
 		}
 	}
 	if (shot && shot_png(shot, f.px, w, h, w, ct.tex->pal.rgb) < 0)
@@ -323,10 +357,10 @@ int main(int argc, char **argv)
 	qsort(times, nt, sizeof(*times), cmp_u64);
 	getrusage(RUSAGE_SELF, &ru);
 	printf("frames=%zu fps=%.1f render_fps=%.1f p50_ms=%.3f p99_ms=%.3f rss_kib=%ld "
-	       "hash=%016" PRIx64 " threads=%d\n",
+	       "priv_kib=%ld hash=%016" PRIx64 " threads=%d\n",
 	       nt, (double)nt * 1e9 / (double)total, (double)nt * 1e9 / (double)rtotal,
 	       (double)times[nt / 2] / 1e6, (double)times[nt * 99 / 100] / 1e6, ru.ru_maxrss,
-	       hash, threads);
+	       private_kib(), hash, threads);
 #ifdef RBENCH_GL
 	rgl_free(gl);
 #endif

@@ -99,6 +99,31 @@ static void test_recorder_keys_and_their_limits(void **state)
 	assert_int_equal(e.count, 2);
 }
 
+static void test_kms_keys_and_their_limits(void **state)
+{
+	struct errs e;
+	struct cfg c;
+
+	(void)state;
+	cfg_defaults(&c);
+	assert_string_equal(c.display.card, "");
+	assert_string_equal(c.display.mode, "");
+	assert_int_equal(c.display.buffers, 3);
+	memset(&e, 0, sizeof(e));
+	assert_int_equal(cfg_set(&c, "display.backend=kms", on_err, &e), 0);
+	assert_int_equal(cfg_set(&c, "display.card=/dev/dri/card1", on_err, &e), 0);
+	assert_int_equal(cfg_set(&c, "display.mode=1920x1080@60", on_err, &e), 0);
+	assert_int_equal(cfg_set(&c, "display.buffers=2", on_err, &e), 0);
+	assert_string_equal(c.display.backend, "kms");
+	assert_string_equal(c.display.card, "/dev/dri/card1");
+	assert_string_equal(c.display.mode, "1920x1080@60");
+	assert_int_equal(c.display.buffers, 2);
+	assert_int_equal(cfg_set(&c, "display.buffers=4", on_err, &e), -EINVAL);
+	assert_int_equal(cfg_set(&c, "display.buffers=1", on_err, &e), -EINVAL);
+	assert_int_equal(c.display.buffers, 2);
+	assert_int_equal(e.count, 2);
+}
+
 static void test_state_dir_is_first_of_state_directory(void **state)
 {
 	struct cfg c;
@@ -173,7 +198,7 @@ static void test_every_error_kind_names_its_line(void **state)
 	static const char want[] =
 		"t.ini:2: rotate: 45 is not one of 0, 90, 180, 270\n"
 		"t.ini:3: unknown key 'bar' in [display]\n"
-		"t.ini:4: backend: 'vga' is not one of auto, fbdev, file, term, null\n"
+		"t.ini:4: backend: 'vga' is not one of auto, kms, fbdev, file, term, null\n"
 		"t.ini:5: scale: 'stretch' is not one of integer, fill\n"
 		"t.ini:6: unknown section [foo]\n"
 		"t.ini:9: render_width: 5000 out of range 64..4096\n"
@@ -383,13 +408,13 @@ static void test_format_round_trips_every_key(void **state)
 	assert_non_null(strstr(buf, "\n\n[game]\n"));
 	assert_non_null(strstr(buf, "\nfreeplay = yes\n"));
 	assert_non_null(strstr(buf, "\n[paths]\nstate_dir = "));
-	/* 32 keys, one line each, plus 6 section headers and 5 blank lines. */
+	/* 35 keys, one line each, plus 6 section headers and 5 blank lines. */
 	{
 		int lines = 0;
 
 		for (const char *p = buf; *p; p++)
 			lines += *p == '\n';
-		assert_int_equal(lines, 32 + 6 + 5);  /* keys, section headers, blank lines */
+		assert_int_equal(lines, 35 + 6 + 5);  /* keys, section headers, blank lines */
 	}
 	/* Reading the text back gives the same settings. */
 	memset(&b, 0x55, sizeof(b));
@@ -445,7 +470,7 @@ static void test_shipped_arcaded_ini_lists_every_key_at_its_default(void **state
 		}
 		o += (size_t)snprintf(out + o, sizeof(out) - o, "%s\n", line);
 	}
-	assert_int_equal(keys, 32);   /* every key of the schema (docs/config.md) */
+	assert_int_equal(keys, 35);   /* every key of the schema (docs/config.md) */
 	assert_int_equal(load(&c, out, &e), 0);
 	assert_memory_equal(&c, &d, sizeof(c));
 }
@@ -491,6 +516,7 @@ int main(void)
 		cmocka_unit_test(test_set_applies_and_reports_as_set_line_0),
 		cmocka_unit_test(test_format_round_trips_every_key),
 		cmocka_unit_test(test_recorder_keys_and_their_limits),
+		cmocka_unit_test(test_kms_keys_and_their_limits),
 		cmocka_unit_test(test_shipped_arcaded_ini_lists_every_key_at_its_default),
 		cmocka_unit_test(test_random_bytes_never_crash),
 	};

@@ -20,6 +20,7 @@
 #include "display/dp.h"
 
 #define NOFB "/nonexistent/fb0"
+#define NOCARD "/nonexistent/card0"
 
 struct fixture {
 	char dir[64];
@@ -56,6 +57,7 @@ static struct dp_config config(const char *backend, const char *file)
 
 	memset(&c, 0, sizeof(c));
 	c.backend = backend;
+	c.card = NOCARD;
 	c.device = NOFB;
 	c.tty = "";
 	c.file = file;
@@ -94,7 +96,8 @@ static void auto_without_fb_or_tty_picks_file(void **state)
 	assert_int_equal(open_off_tty(&c, &be, &d, why, sizeof(why)), 0);
 	assert_ptr_equal(be, &dp_file);
 	assert_non_null(d);
-	assert_string_equal(why, "fbdev: " NOFB ": No such file or directory; "
+	assert_string_equal(why, "kms: " NOCARD ": No such file or directory; fbdev: " NOFB
+				 ": No such file or directory; "
 				 "term: stdout is not a terminal");
 	be->close(d);
 }
@@ -110,7 +113,8 @@ static void auto_without_file_picks_null(void **state)
 
 	assert_int_equal(open_off_tty(&c, &be, &d, why, sizeof(why)), 0);
 	assert_ptr_equal(be, &dp_null);
-	assert_string_equal(why, "fbdev: " NOFB ": No such file or directory; "
+	assert_string_equal(why, "kms: " NOCARD ": No such file or directory; fbdev: " NOFB
+				 ": No such file or directory; "
 				 "term: stdout is not a terminal; file: no file configured");
 	assert_string_equal(be->describe(d), "null");
 	assert_int_equal(be->present(d, px, 4, 3, 4), 0);

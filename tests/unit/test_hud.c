@@ -47,7 +47,7 @@ static int teardown(void **state)
 
 static void draw(const struct sim *s)
 {
-	struct hud_env env = { &pal, NULL, 0 };
+	struct hud_env env = { &pal, NULL, 0, NULL };
 	memset(pix, BG, sizeof(pix));
 	hud_draw(s, &env, &frame);
 }
@@ -187,7 +187,7 @@ static void the_score_is_drawn(void **state)
 
 static void hud_is_a_pure_function_of_the_state(void **state)
 {
-	struct hud_env env = { &pal, NULL, 0 };
+	struct hud_env env = { &pal, NULL, 0, NULL };
 	static uint8_t a[W * H];
 	struct sim s;
 	(void)state;

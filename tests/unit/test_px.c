@@ -525,6 +525,78 @@ static void panel_draw_follows_frame_size_and_refuses_bad(void **state)
 	free(p);
 }
 
+/* A stand-in pool: runs the jobs one after the other, last first, so a
+ * range that read a line of another range would see it unwritten. */
+static int fake_jobs;
+
+static void fake_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
+{
+	(void)pool;
+	fake_jobs = n;
+	for (int i = n - 1; i >= 0; i--)
+		job(arg, i);
+}
+
+/* Row ranges in any order, and a parallel panel draw, write exactly what
+ * one pass writes: every rotation, integer and fill, letterbox rows above
+ * and below, repeated source lines, and line padding left alone. */
+static void row_ranges_write_what_one_pass_writes(void **state)
+{
+	struct px_layout *l = malloc(sizeof(*l));
+	struct px_panel *p = malloc(sizeof(*p));
+	struct px_table t;
+	struct px_format f;
+	struct px_par par = { fake_run, NULL, 2 };
+	uint8_t src[SPITCH * SH];
+	enum { PW = 23, PH = 70, LL = PW * 4 + 8 };
+	static uint8_t a[PH * LL], b[PH * LL];
+	static const int cuts[][2] = { { 0, 5 }, { 5, 6 }, { 6, 40 }, { 40, 70 } };
+	(void)state;
+
+	assert_non_null(l);
+	assert_non_null(p);
+	make_frame(src);
+	make_table(&t, 4);
+	for (int rot = 0; rot < 360; rot += 90)
+		for (int fill = 0; fill < 2; fill++) {
+			memset(l, 0, sizeof(*l));
+			l->panel_w = PW;
+			l->panel_h = PH;
+			l->rotate = rot;
+			l->fill = fill;
+			l->src_w = SW;
+			l->src_h = SH;
+			l->src_pitch = SPITCH;
+			assert_int_equal(px_layout_init(l), 0);
+			memset(a, SENTINEL, sizeof(a));
+			memset(b, SENTINEL, sizeof(b));
+			px_blit(l, &t, src, a, LL);
+			for (int k = 3; k >= 0; k--)
+				px_blit_rows(l, &t, src, b, LL, cuts[k][0], cuts[k][1]);
+			assert_memory_equal(a, b, sizeof(a));
+		}
+	/* the panel through a pool: 2 threads, PX_JOBS_PER_THREAD ranges each */
+	assert_int_equal(px_format_by_name("xrgb8888", &f), 0);
+	assert_int_equal(px_panel_init(p, &f, PW, PH, LL, 90, 0, SW, SH), 0);
+	p->table = t;
+	memset(a, SENTINEL, sizeof(a));
+	memset(b, SENTINEL, sizeof(b));
+	assert_int_equal(px_panel_draw(p, a, src, SW, SH, SPITCH), 0);
+	px_panel_set_par(p, &par);
+	fake_jobs = 0;
+	assert_int_equal(px_panel_draw(p, b, src, SW, SH, SPITCH), 0);
+	assert_int_equal(fake_jobs, 2 * PX_JOBS_PER_THREAD);
+	assert_memory_equal(a, b, sizeof(a));
+	/* one thread is no pool */
+	par.threads = 1;
+	px_panel_set_par(p, &par);
+	fake_jobs = 0;
+	assert_int_equal(px_panel_draw(p, b, src, SW, SH, SPITCH), 0);
+	assert_int_equal(fake_jobs, 0);
+	free(l);
+	free(p);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -548,6 +620,7 @@ int main(void)
 		cmocka_unit_test(blit_fill_maps_corners_to_corners),
 		cmocka_unit_test(blit_downscale_shows_whole_frame),
 		cmocka_unit_test(panel_draw_follows_frame_size_and_refuses_bad),
+		cmocka_unit_test(row_ranges_write_what_one_pass_writes),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -107,7 +107,7 @@ static void a_missing_display_is_waited_for_and_taken(void **state)
 {
 	struct scene s;
 	uint64_t t = 5000000000ull;
-	char why[600];
+	char why[sizeof(((struct scene *)0)->missing)];
 
 	(void)state;
 	config("file");

@@ -239,6 +239,49 @@ static void remap_changes_every_pixel_of_the_rectangle(void **state)
 	assert_int_equal(count(&b, 12), 1);
 }
 
+/* A stand-in pool running the jobs last first, counting them. */
+static int fake_jobs;
+
+static void fake_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
+{
+	(void)pool;
+	fake_jobs = n;
+	for (int i = n - 1; i >= 0; i--)
+		job(arg, i);
+}
+
+/* Through a pool, a large rectangle (partly off the frame) is darkened in
+ * row ranges to exactly the bytes of one v_remap; a small one is not split. */
+static void remap_in_row_ranges_is_the_same(void **state)
+{
+	enum { BW = 301, BH = 260, BP = 320 };
+	static uint8_t a[BP * BH], b[BP * BH];
+	struct r_frame fa = { a, BW, BH, BP }, fb = { b, BW, BH, BP };
+	struct r_par par = { fake_run, NULL, 3, NULL };
+	uint8_t map[256];
+	(void)state;
+
+	for (int i = 0; i < 256; i++)
+		map[i] = (uint8_t)(i * 7 + 3);
+	for (int i = 0; i < BP * BH; i++)
+		a[i] = b[i] = (uint8_t)(i * 31 + i / BP);
+	v_remap(&fa, -20, 7, 400, 251, map);
+	fake_jobs = 0;
+	v_remap_par(&fb, -20, 7, 400, 251, map, &par);
+	assert_int_equal(fake_jobs, 6);
+	assert_memory_equal(a, b, sizeof(a));
+	/* below V_PAR_MIN pixels: one v_remap */
+	fake_jobs = 0;
+	v_remap(&fa, 10, 10, 100, 100, map);
+	v_remap_par(&fb, 10, 10, 100, 100, map, &par);
+	assert_int_equal(fake_jobs, 0);
+	assert_memory_equal(a, b, sizeof(a));
+	/* no pool: the same */
+	v_remap(&fa, 0, 0, BW, BH, map);
+	v_remap_par(&fb, 0, 0, BW, BH, map, NULL);
+	assert_memory_equal(a, b, sizeof(a));
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -250,6 +293,7 @@ int main(void)
 		cmocka_unit_test(numbers_are_padded_decimal),
 		cmocka_unit_test(a_picture_draws_its_opaque_pixels_only),
 		cmocka_unit_test(remap_changes_every_pixel_of_the_rectangle),
+		cmocka_unit_test(remap_in_row_ranges_is_the_same),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

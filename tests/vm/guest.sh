@@ -93,12 +93,15 @@ phase_boot() {
 	# The daemon may have started before the driver made /dev/fb0 (the
 	# unit does not wait for it): the line that counts is the one of the
 	# display it took.
-	disp=$(echo "$journal" | grep -m 1 'arcaded: display: fbdev ' | sed 's/.*arcaded: display: //')
+	disp=$(echo "$journal" | grep -m 1 -E 'arcaded: display: (fbdev|kms) ' | sed 's/.*arcaded: display: //')
 	case $BOOT in
 	fb16) want='^fbdev /dev/fb0 .* rgb565 ' ;;
+	kms) want='^kms /dev/dri/card0 Virtual-1 .* xrgb8888 .* page flips at vblank' ;;
 	*) want='^fbdev /dev/fb0 .* xrgb8888 .* double-buffered ' ;;
 	esac
-	check display-fbdev "$disp" sh -c "echo '$disp' | grep -q -e '$want'"
+	dname=display-fbdev
+	[ "$BOOT" = kms ] && dname=display-kms
+	check "$dname" "$disp" sh -c "echo '$disp' | grep -q -e '$want'"
 
 	# Attract mode: the camera turns, two screens a second apart differ.
 	shot attract-1
@@ -180,6 +183,9 @@ phase_input() {
 	s1=$(echo "$keys" | grep -c -F 'arcaded: input: evdev 1209:0001 KEY_1 down -> start')
 	check keys-from-both "coin from the PS/2 keyboard (0001:0001 KEY_5 -> coin: $c5 line(s)), start from the encoder (1209:0001 KEY_1 -> start: $s1)" \
 		[ "$c5" = 1 -a "$s1" = 1 ]
+	# KMS: the VT switches while the start view is still the reference
+	# frame (it stays so for 30 s of game time with no input)
+	[ "$BOOT" = kms ] && phase_vt
 	# forward and a turn: the picture must change
 	echo "tap KEY_UP 600" >&3
 	echo "tap KEY_LEFT 300" >&3
@@ -908,6 +914,68 @@ phase_twin() {
 	rm -f /etc/arcaded/zz-vm-twin.ini /etc/arcaded/vm-twin.bindings
 }
 
+# --- KMS: a VT switch away and back -----------------------------------------
+# The daemon holds its terminal in VT_PROCESS mode: a switch away waits
+# until it has dropped DRM master (then fbcon can set its own mode and show
+# the other terminal's text), a switch back gives it the master again and
+# it sets its mode with the newest frame.
+phase_vt() {
+	pid=$(prop MainPID)
+	t_vt=$(now)
+	printf '\n\n   arcaded VM test: virtual terminal 2\n' > /dev/tty2
+	if sw=$("$G" chvt 2 10); then
+		pass vt-switch-away "$sw: the daemon let go of the screen"
+	else
+		fail vt-switch-away "$sw: the switch did not complete within 10 s"
+	fi
+	back=${sw#from }
+	back=${back%% *}
+	sleep 1
+	shot vt-away
+	if sw=$("$G" chvt "${back:-1}" 10); then
+		pass vt-switch-back "$sw"
+	else
+		fail vt-switch-back "$sw"
+	fi
+	shot_match vt-back 30
+	t_sum=$(now)
+	systemctl kill --kill-whom=main -s SIGUSR1 "$U"
+	sleep 1
+	st=$(log_since "$t_sum" | grep -m 1 -F 'summary: display: kms' | sed 's/.*summary: display: //')
+	figure "after the VT switches: $st"
+	check vt-master-handover "one switch away and back, the daemon's counters: $st; main PID $pid -> $(prop MainPID)" \
+		sh -c "echo '$st' | grep -q 'VT switches 1 away 1 back 0 failed' && [ '$(prop MainPID)' = '$pid' ]"
+}
+
+# --- KMS: page flips ---------------------------------------------------------
+# The game has run for a while (attract, play, the VT switches). From the
+# SIGUSR1 summary: the kernel never refused a flip as busy (refusals are
+# counted by the daemon: a flip issued while one was pending), every flip
+# completed, and the present-to-flip times are figures.
+phase_flips() {
+	sleep 5
+	t_fl=$(now)
+	systemctl kill --kill-whom=main -s SIGUSR1 "$U"
+	sleep 1
+	journal=$(log_since "$t_fl")
+	echo "$journal" > "$R/flips-journal.txt"
+	st=$(echo "$journal" | grep -m 1 -F 'summary: display: kms' | sed 's/.*summary: display: //')
+	fl=$(echo "$journal" | grep -m 1 -F 'summary: present-to-flip ' | sed 's/.*summary: //')
+	sm=$(echo "$journal" | grep -m 1 -F 'frames late' | sed 's/.*summary: //')
+	figure "$fl"
+	figure "$st"
+	figure "$sm"
+	n() { echo "$st" | sed -n "s/.* \([0-9]*\) $1.*/\1/p"; }
+	issued=$(echo "$st" | sed -n 's/^kms [^:]*: \([0-9]*\) flips issued.*/\1/p')
+	done_=$(n 'completed')
+	busy=$(n 'refused as busy')
+	overdue=$(n 'overdue (')
+	check flips-never-while-pending "the kernel refused ${busy:-?} flip(s) as busy (issued while one was pending) of ${issued:-?}; ${done_:-?} completed, ${overdue:-?} overdue" \
+		sh -c "[ '${busy:-x}' = 0 ] && [ '${issued:-0}' -ge 100 ] && [ '${overdue:-x}' = 0 ] && [ \$((${issued:-0} - ${done_:-0})) -le 1 ]"
+	check present-to-flip "${fl:-no present-to-flip line in the summary}" \
+		sh -c "echo '$fl' | grep -q '^present-to-flip p50 '"
+}
+
 # --- no framebuffer at boot: the daemon waits for it, the boot does not ------
 # The latefb boot blacklists bochs: there is no /dev/fb0 until the guest
 # loads the driver. The daemon must run (the game goes on unseen), say
@@ -1082,16 +1150,18 @@ phase_priorities() {
 # The device unit tests skip on a machine without uinput, a framebuffer,
 # uhid or gpio-sim; here all exist (the daemon is stopped: nothing holds
 # them), so nothing may skip.
+# UNITS: a name prefix of the tests to run (default all).
 unit_tests() {
-	if [ -e "$S/modules/gpio-sim-oot.ko" ]; then
+	if [ -z "${UNITS:-}" ] && [ -e "$S/modules/gpio-sim-oot.ko" ]; then
 		gpio_sim_module || fail gpio-sim-module "insmod gpio-sim-oot.ko failed"
 	fi
-	for t in "$S"/tests/test_*; do
+	for t in "$S"/tests/${UNITS:-test_}*; do
 		n=${t##*/}
-		(cd "$S/repo" && exec "$t") > "$R/$n.log" 2>&1
+		(cd "$S/repo" && ARCADED_TEST_DEVICES=1 exec "$t") > "$R/$n.log" 2>&1
 		rc=$?
-		sum=$(grep -E '^\[  (PASSED|FAILED|SKIPPED)  \] [0-9]' "$R/$n.log" | tr '\n' ' ')
-		check "unit-$n" "exit $rc: $sum" sh -c "[ $rc = 0 ] && ! grep -q '^\[  SKIPPED  \]' '$R/$n.log'"
+		# cmocka pads PASSED and FAILED to two spaces, SKIPPED to one
+		sum=$(grep -E '^\[  (PASSED|FAILED|SKIPPED) *\] [0-9]' "$R/$n.log" | tr '\n' ' ')
+		check "unit-$n" "exit $rc: $sum" sh -c "[ $rc = 0 ] && ! grep -q '^\[  SKIPPED *\]' '$R/$n.log'"
 	done
 }
 
@@ -1116,6 +1186,14 @@ fb16)
 	;;
 latefb)
 	run phase_nofb phase_latefb phase_input phase_libusb phase_gl phase_priorities
+	;;
+kms)
+	# phase_input runs phase_vt while the start view is still
+	run phase_boot phase_input phase_flips phase_sigterm
+	UNITS=test_dp_kms
+	run unit_tests
+	UNITS=test_con
+	run unit_tests
 	;;
 units) systemctl stop "$U"; unit_tests ;;
 *) fail boot "unknown boot '$BOOT'" ;;

@@ -21,6 +21,12 @@
 #           frame after coin and start); a USB gadget plug first noticed
 #           by libusb's callback; --renderer gl refused under the unit and
 #           drawing with the documented drop-in;
+#   kms     virtio-vga (virtio-gpu, a DRM driver with page-flip events) and
+#           display.backend = auto, which must take KMS: screen = the
+#           daemon's frame, page flips never issued while one is pending
+#           (the kernel's EBUSY refusals counted), present-to-flip times,
+#           a VT switch away and back (DRM master dropped and taken
+#           again), SIGTERM; then the KMS unit tests;
 #   units   only the device unit tests (quicker, to debug them).
 # Every boot keeps QEMU's PS/2 keyboard: the daemon must take the uinput
 # keyboard (an encoder) too, and coin comes from the PS/2 keyboard (QMP
@@ -30,7 +36,7 @@
 # The guest side is tests/vm/guest.sh; this script drives QEMU, serves the
 # guest's screendump requests through QMP and judges the screens.
 #
-# usage: tests/vm/run.sh [BOOT...]   (default: fb32 fb16 latefb)
+# usage: tests/vm/run.sh [BOOT...]   (default: fb32 fb16 latefb kms)
 # Environment: BUILD (build folder, default build); ARCADED_VM_ASAN (a
 # sanitizer build folder, e.g. build/asan, whose device unit tests run too);
 # ARCADED_VM_CACHE (kernel cache, default
@@ -48,7 +54,7 @@ BUILD=${BUILD:-build}
 B=$top/$BUILD/vm
 CACHE=${ARCADED_VM_CACHE:-${XDG_CACHE_HOME:-${HOME:-/root}/.cache}/arcaded-vm}
 TIMEOUT=${ARCADED_VM_TIMEOUT:-900}
-boots=${*:-fb32 fb16 latefb}
+boots=${*:-fb32 fb16 latefb kms}
 
 skip() {
 	echo "################################################################"
@@ -116,13 +122,13 @@ make --no-print-directory -s BUILD="$BUILD" install DESTDIR="$ST/destdir" > "$B/
 cp "$B/vm_guest" "$ST/bin/"
 # Unit tests that need real devices (they skip on this machine).
 mkdir -p "$ST/tests" "$ST/modules"
-for t in test_in_evdev test_dp_fbdev test_in_hid test_in_gpio; do
+for t in test_in_evdev test_con test_dp_fbdev test_dp_kms test_in_hid test_in_gpio; do
 	[ -x "$BUILD/tests/$t" ] && cp "$BUILD/tests/$t" "$ST/tests/"
 done
 # The same tests built with ASan and UBSan, when asked for (run_all.sh
 # builds them first): ARCADED_VM_ASAN=build/asan.
 if [ -n "${ARCADED_VM_ASAN:-}" ]; then
-	for t in test_in_evdev test_dp_fbdev test_in_hid test_in_gpio; do
+	for t in test_in_evdev test_con test_dp_fbdev test_dp_kms test_in_hid test_in_gpio; do
 		[ -x "$ARCADED_VM_ASAN/tests/$t" ] && cp "$ARCADED_VM_ASAN/tests/$t" "$ST/tests/$t-asan"
 	done
 fi
@@ -140,6 +146,13 @@ cp tests/vm/arcaded-vm.conf "$ST/overlay/etc/systemd/system/arcaded.service.d/vm
 # installed arcaded.ini.
 mkdir -p "$ST/overlay/etc/arcaded"
 cp tests/vm/arcaded-vm.ini "$ST/overlay/etc/arcaded/zz-vm.ini"
+# Per boot (init copies overlay-BOOT after overlay): fb32 and latefb test
+# the fbdev backend on bochs-drm, whose card auto would prefer (KMS).
+for b in fb32 latefb; do
+	mkdir -p "$ST/overlay-$b/etc/arcaded"
+	printf '; VM boot %s tests fbdev (tests/vm/run.sh)\n[display]\nbackend = fbdev\n' "$b" \
+		> "$ST/overlay-$b/etc/arcaded/zz-vm-boot.ini"
+done
 
 # The frame the daemon shows after coin and start: rendered headless by the
 # same binary with the installed configuration.
@@ -204,7 +217,14 @@ boot() {
 	# CPU's features: seconds each under emulation, of no use here.
 	base="$base modprobe.blacklist=floppy,ata_piix,pata_acpi,ata_generic,pcspkr,kvm,kvm_amd"
 	base="$base,kvm_intel,powernow_k8,acpi_cpufreq,serio_raw,i2c_piix4,joydev,evbug"
+	vga="-vga std"
 	case $name in
+	kms)
+		kernel=$kdir/vmlinux
+		append="$base"
+		# virtio-gpu: page flips complete with an event
+		vga="-vga none -device virtio-vga"
+		;;
 	fb32 | units)
 		# PVH entry of the ELF kernel: no firmware, no decompression.
 		kernel=$kdir/vmlinux
@@ -231,7 +251,7 @@ boot() {
 		echo "-device virtio-9p-pci,fsdev=$1,mount_tag=$1"
 	}
 	qargs="-nodefaults -machine pc -accel tcg,thread=multi -cpu qemu64 -smp 2 -m 512
-		-vga std -display none -no-reboot
+		$vga -display none -no-reboot
 		-serial file:$res/serial.log -qmp unix:$sock,server=on,wait=off
 		-kernel $kernel -initrd $B/initramfs.cpio
 		$(fs root "$B/rootmnt" ro) $(fs kmod "$kdir/root/lib/modules" ro)
@@ -327,7 +347,8 @@ screens_of() {
 		"gpio-fired after-stop" ;;
 	fb16) echo "attract-1 attract-2 play-start play-moved hp-before hp-turned hp-still-1" \
 		"hp-still-2 hid-replug-still-1 hid-replug-still-2 after-stop" ;;
-	latefb) echo "late-screen" ;;
+	latefb) echo "late-screen gl-screen" ;;
+	kms) echo "attract-1 attract-2 play-start play-moved vt-away vt-back after-stop" ;;
 	*) echo "" ;;
 	esac
 }
@@ -381,6 +402,11 @@ judge() {
 	has hid-replug-still-2 && screen hid-replug-no-stuck-input \
 		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/hid-replug-still-1.ppm" "$res/hid-replug-still-2.ppm"
 	has after-stop && screen sigterm-console-shows-text "$H" text "$res/after-stop.ppm"
+	# KMS: switched away, the other terminal's text is on the screen (the
+	# daemon dropped DRM master, so fbcon could set its mode); back, the
+	# game's frame again (master and mode taken back)
+	has vt-away && screen vt-away-shows-console "$H" text "$res/vt-away.ppm"
+	has vt-back && screen vt-back-screen-is-frame "$H" match "$ref" "$res/vt-back.ppm" "$bpp"
 	has late-screen && screen late-fb-picture "$H" picture "$res/late-screen.ppm" "$render_w" "$render_h"
 	has gl-screen && screen gl-picture "$H" picture "$res/gl-screen.ppm" "$render_w" "$render_h"
 	if has wd-attract-1; then

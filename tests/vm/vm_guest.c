@@ -12,6 +12,11 @@
  *                           Prints "ready /dev/input/eventN" once created.
  *   vm_guest kdmode TTY     print the console's display and keyboard mode:
  *                           "kd text|graphics kb raw|xlate|mediumraw|unicode|off"
+ *   vm_guest chvt N SECONDS switch to virtual terminal N (VT_ACTIVATE on
+ *                           /dev/tty0) and wait until it is shown: a
+ *                           process holding the current one in VT_PROCESS
+ *                           mode must let go first. Prints "from A to N
+ *                           after S s"; exit 1 if N is not shown in time
  *   vm_guest open PATH r|w|rw
  *                           open PATH; print "ok" or the errno name; exit 0
  *                           if it opened, 1 if not
@@ -104,6 +109,7 @@
 #include <linux/fb.h>
 #include <linux/kd.h>
 #include <linux/uinput.h>
+#include <linux/vt.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -118,7 +124,7 @@
 
 static int usage(void)
 {
-	fputs("usage: vm_guest kbd FIFO | kdmode TTY | open PATH r|w|rw |\n"
+	fputs("usage: vm_guest kbd FIFO | kdmode TTY | chvt N SECONDS | open PATH r|w|rw |\n"
 	      "       probe CGROUP USER PATH:MODE:WANT... | waitfd PID PATH SECONDS |\n"
 	      "       waitnofd PID PATH SECONDS | waitdev PID NAME SECONDS |\n"
 	      "       hidwrite PATH HEX | hidsend PATH HEX SECONDS | hidtap PATH DOWN UP MS |\n"
@@ -273,6 +279,31 @@ static int cmd_kdmode(const char *tty)
 	printf("kd %s kb %s\n", kd == KD_TEXT ? "text" : kd == KD_GRAPHICS ? "graphics" : "?",
 	       kb >= 0 && kb <= K_OFF ? kbn[kb] : "?");
 	return 0;
+}
+
+static int cmd_chvt(const char *n, const char *secs)
+{
+	int fd = open("/dev/tty0", O_RDWR | O_NOCTTY | O_CLOEXEC), vt = atoi(n);
+	struct vt_stat st;
+	double t0 = mono(), limit = atof(secs);
+	unsigned short from;
+
+	if (fd < 0 || ioctl(fd, VT_GETSTATE, &st) < 0) {
+		fprintf(stderr, "vm_guest: /dev/tty0: %s\n", strerror(errno));
+		return 1;
+	}
+	from = st.v_active;
+	if (ioctl(fd, VT_ACTIVATE, vt) < 0) {
+		fprintf(stderr, "vm_guest: VT_ACTIVATE %d: %s\n", vt, strerror(errno));
+		close(fd);
+		return 1;
+	}
+	/* VT_WAITACTIVE would block for good if the switch never happens */
+	while (ioctl(fd, VT_GETSTATE, &st) == 0 && st.v_active != vt && mono() - t0 < limit)
+		usleep(20000);
+	close(fd);
+	printf("from %u to %u after %.3f s\n", from, st.v_active, mono() - t0);
+	return st.v_active == vt ? 0 : 1;
 }
 
 /* Opens path with mode r|w|rw; "ok", the errno name, or NULL (bad mode). */
@@ -864,6 +895,8 @@ int main(int argc, char **argv)
 		return cmd_kbd(argv[2]);
 	if (argc == 3 && strcmp(argv[1], "kdmode") == 0)
 		return cmd_kdmode(argv[2]);
+	if (argc == 4 && strcmp(argv[1], "chvt") == 0)
+		return cmd_chvt(argv[2], argv[3]);
 	if (argc == 4 && strcmp(argv[1], "open") == 0)
 		return cmd_open(argv[2], argv[3]);
 	if (argc >= 5 && strcmp(argv[1], "probe") == 0)

@@ -1,0 +1,59 @@
+#!/bin/sh
+# Screenshots of every page of the service menu for docs/operator.md, made
+# by the daemon's own screenshot command while a script walks the menu with
+# the cabinet's controls (forward/back move the cursor, FIRE selects,
+# SERVICE goes back): the main page, the input test (FORWARD held, one coin
+# seen), the three display test patterns, game settings, bookkeeping (after
+# two coins) and the reset confirmation. The input wizard is not among them:
+# it runs only on a live cabinet, never under a script (docs/wizard.md).
+# Usage: scripts/service-shots.sh [path/to/arcaded]
+set -eu
+cd "$(dirname "$0")/.."
+BIN=$(realpath "${1:-build/arcaded}")
+out=$(pwd)/docs/images
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+mkdir -p "$out"
+# tap TICK CONTROL: press at TICK, release a tick later.
+tap() { printf '%d press %s\n%d release %s\n' "$1" "$2" $(($1 + 1)) "$2"; }
+{
+	tap 2 coin
+	tap 4 coin
+	tap 6 service
+	echo "7 expect mode == service"
+	echo "10 screenshot $out/service-main.png"
+	tap 12 fire                     # INPUT TEST
+	tap 14 coin
+	echo "16 press forward"
+	echo "18 screenshot $out/service-input.png"
+	echo "19 release forward"
+	tap 20 service                  # back to the main page, cursor on INPUT TEST
+	tap 22 back                     # DISPLAY TEST
+	tap 24 fire
+	echo "28 screenshot $out/service-display-bars.png"
+	tap 30 fire
+	echo "34 screenshot $out/service-display-grid.png"
+	tap 36 fire
+	echo "40 screenshot $out/service-display-orientation.png"
+	tap 42 service
+	tap 44 back                     # GAME SETTINGS
+	tap 46 fire
+	echo "50 screenshot $out/service-settings.png"
+	tap 52 service
+	tap 54 back                     # BOOKKEEPING
+	tap 56 fire
+	echo "60 screenshot $out/service-bookkeeping.png"
+	tap 62 fire
+	tap 64 back                     # RESET HIGH SCORES
+	tap 66 fire
+	echo "70 screenshot $out/service-reset-confirm.png"
+	tap 72 service
+	echo "74 expect menu == 0"
+} >"$tmp/service.scr"
+"$BIN" --script "$tmp/service.scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
+	--set game.render_width=640 --set game.render_height=480 >"$tmp/log" 2>&1 || {
+	cat "$tmp/log" >&2
+	echo "service-shots: failed" >&2
+	exit 1
+}
+ls -1 "$out"/service-*.png
