@@ -8,7 +8,7 @@ BUILD ?= build
 CC ?= cc
 OPT ?= -O2 -g
 SAN ?=
-PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod libusb-1.0 libdrm
+PKGS := libevdev libpng libsystemd hidapi-hidraw libgpiod libusb-1.0 libdrm alsa
 TEST_PKGS := cmocka
 
 WARN := -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes
@@ -24,8 +24,9 @@ LDLIBS += $(PKG_LIBS) -lpthread -lm -ldl
 # Every .c of the layers is part of the library the daemon and tests link,
 # except engine/gl: the OSMesa renderer is a plugin (app/glr.h), built
 # position-independent and linked with OSMesa on its own.
-ENGINE_DIRS := core map game render ui
-LIB_SRC := $(sort $(wildcard $(ENGINE_DIRS:%=engine/%/*.c) input/*.c display/*.c config/*.c systemd/*.c))
+ENGINE_DIRS := core map sound game render ui
+LIB_SRC := $(sort $(wildcard $(ENGINE_DIRS:%=engine/%/*.c) input/*.c display/*.c audio/*.c \
+	config/*.c systemd/*.c))
 GL_SRC := $(sort $(wildcard engine/gl/*.c))
 GL_OBJ := $(GL_SRC:%.c=$(BUILD)/pic/%.o)
 GL_SO := $(BUILD)/arcaded-gl.so
@@ -123,6 +124,13 @@ $(BUILD)/tests/%: tests/unit/%.c $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) $(TEST_CFLAGS) -MMD -MP -o $@ $< $(LIB) \
 		$(LDLIBS) $(TEST_LIBS)
 
+# Test tools that link the library: sndfind finds a sound in a recording of
+# what was played (the script and VM sound tests).
+TEST_TOOLS := $(BUILD)/tests/sndfind
+$(BUILD)/tests/sndfind: tests/sound/sndfind.c $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -o $@ $< $(LIB) $(LDLIBS)
+
 $(BUILD)/tools/%: tools/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< -lm
@@ -139,7 +147,7 @@ $(BUILD)/fuzz/%: tests/fuzz/%.c $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -fsanitize=fuzzer -o $@ $< $(LIB) $(LDLIBS)
 
-tests: $(TEST_BIN)
+tests: $(TEST_BIN) $(TEST_TOOLS)
 tools: $(TOOL_BIN)
 fuzzers: $(FUZZ_BIN)
 

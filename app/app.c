@@ -12,6 +12,7 @@
 #include "app/cmd.h"
 #include "app/ctl.h"
 #include "app/demo.h"
+#include "app/hear.h"
 #include "app/keep.h"
 #include "app/loop.h"
 #include "app/out.h"
@@ -29,6 +30,7 @@
 #include "engine/game/sim.h"
 #include "engine/map/map.h"
 #include "engine/map/tex.h"
+#include "engine/sound/snd.h"
 #include "systemd/svc.h"
 
 struct app {
@@ -40,6 +42,8 @@ struct app {
 	struct sim_settings set;
 	struct sim sim;
 	struct demo demo;          /* the attract mode's demo */
+	struct hear hear;          /* each tick's sound, mixed and hashed */
+	struct out_audio audio;    /* where it goes */
 	struct scene scene;        /* frame, renderers, display */
 	struct slot_kind kinds[SLOT_KINDS];
 	int nkinds;
@@ -157,11 +161,21 @@ static void step_sim(void *ctx, struct loop_tick *k)
 	a->stats.ticks++;
 }
 
+static void step_sound(void *ctx, struct loop_tick *k)
+{
+	struct app *a = ctx;
+
+	(void)k;
+	hear_tick(&a->hear, &a->sim, demo_under(&a->demo, &a->sim));
+	out_audio_play(&a->audio, &a->hear, &a->stats);
+}
+
 static void step_flight_after(void *ctx, struct loop_tick *k)
 {
 	struct app *a = ctx;
 
-	keep_flight_after(&a->keep, &a->sim, &k->rt.cmd, a->scene.frame.w, a->scene.frame.h);
+	keep_flight_after(&a->keep, &a->sim, &k->rt.cmd, a->scene.frame.w, a->scene.frame.h,
+			  a->hear.hash);
 }
 
 static void step_requests(void *ctx, struct loop_tick *k)
@@ -222,7 +236,7 @@ static void step_hashes(void *ctx, struct loop_tick *k)
 {
 	struct app *a = ctx;
 
-	tape_hashes(&a->tape, k->t, &k->rt, &a->sim, &a->scene.frame);
+	tape_hashes(&a->tape, k->t, &k->rt, &a->sim, &a->scene.frame, a->hear.hash);
 }
 
 static void step_checks(void *ctx, struct loop_tick *k)
@@ -271,6 +285,7 @@ static const struct loop_ops app_steps = {
 	.wizard = step_wizard,
 	.flight_before = step_flight_before,
 	.sim = step_sim,
+	.sound = step_sound,
 	.flight_after = step_flight_after,
 	.requests = step_requests,
 	.outputs = step_outputs,
@@ -284,8 +299,9 @@ static const struct loop_ops app_steps = {
 
 /* ---- set-up and tear-down --------------------------------------------- */
 
-/* The content, the game's settings and the replay's checks. */
-static int setup_game(struct app *a, int *rw, int *rh)
+/* The content, the game's settings and the replay's checks; *rate: the
+ * sound's output rate (a recording's own). */
+static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 {
 	const struct cfg *c = a->cfg;
 	const struct app_opts *o = a->o;
@@ -306,6 +322,9 @@ static int setup_game(struct app *a, int *rw, int *rh)
 			*rw = run.render_w;
 			*rh = run.render_h;
 		}
+		/* and the rate its audio hashes were mixed at (format 3) */
+		if (run.audio_rate)
+			*rate = run.audio_rate;
 	}
 	if (o->size_w > 0) {
 		*rw = o->size_w;
@@ -322,12 +341,16 @@ static int setup_game(struct app *a, int *rw, int *rh)
 	say("content: %s, %u sectors, %u lines, %d light(s)%s", a->ct.what, a->ct.map->num_sectors,
 	    a->ct.map->num_lines, a->ct.nlights,
 	    a->ct.map->missing_textures ? ", some textures missing (drawn as a checker)" : "");
+	if (a->ct.sound_note[0])
+		say("sounds: %s; their built-in sounds play instead", a->ct.sound_note);
 	a->map_hash = sim_stages_hash((const struct map *const *)a->ct.maps, a->ct.nmaps);
 	a->set.coins_per_credit = (uint8_t)c->game.coins_per_credit;
 	a->set.freeplay = (uint8_t)c->game.freeplay;
 	a->set.start_in_play = (uint8_t)c->game.start_in_play;
 	a->set.difficulty = (uint8_t)c->game.difficulty;
 	a->set.lives = (uint8_t)c->game.lives;
+	a->set.volume = (uint8_t)c->game.volume;
+	a->set.attract_sound = (uint8_t)c->game.attract_sound;
 	if (a->tape.rep) {
 		struct rec_run run = {
 			.map_hash = a->map_hash,
@@ -335,6 +358,8 @@ static int setup_game(struct app *a, int *rw, int *rh)
 			.render_h = (uint16_t)(o->no_render ? 0 : *rh),
 			.level = (uint8_t)(o->content.nwads || o->content.grid ? 0 : spec.level),
 			.map_name = o->content.map,
+			.audio_rate = *rate,
+			.sound_hash = a->ct.sounds->hash,
 		};
 		rc = tape_replay_check(&a->tape, &run, o->verify, &a->set);
 		if (rc < 0)
@@ -348,6 +373,7 @@ static int setup(struct app *a)
 	const struct cfg *c = a->cfg;
 	const struct app_opts *o = a->o;
 	int rw = c->game.render_width, rh = c->game.render_height;
+	uint32_t rate = (uint32_t)c->audio.rate;
 	const char *names[SLOT_KINDS + 1];
 	char err[512] = "";
 	int rc, persist;
@@ -356,7 +382,7 @@ static int setup(struct app *a)
 	a->tape.out = o->out;
 	a->tape.quiet = o->quiet;
 	a->tape.no_render = o->no_render;
-	rc = setup_game(a, &rw, &rh);
+	rc = setup_game(a, &rw, &rh, &rate);
 	if (rc < 0)
 		return rc;
 	/* Scripts and replays start from the defaults, so they replay the
@@ -368,12 +394,16 @@ static int setup(struct app *a)
 			return rc;
 	}
 	keep_start(&a->keep, c->paths.state_dir, persist, &a->sim, &a->ct, &a->set);
+	/* the sounds' lengths (a restored snapshot brings its own) */
+	sim_set_sounds(&a->sim, a->ct.sounds);
+	hear_init(&a->hear, a->ct.sounds, rate);
 	if (a->tape.rep) {
 		rc = tape_replay_restore(&a->tape, &a->sim);
 		if (rc < 0)
 			return rc;
 	}
-	keep_flight_open(&a->keep, c->recorder.keep, c->recorder.max_mb, a->map_hash, &o->content);
+	keep_flight_open(&a->keep, c->recorder.keep, c->recorder.max_mb, a->map_hash, &o->content,
+			 a->hear.rate, a->ct.sounds->hash);
 	rc = demo_init(&a->demo, &a->ct, err, sizeof(err));
 	if (rc < 0) {
 		say_err("%s", err);
@@ -382,6 +412,8 @@ static int setup(struct app *a)
 	rc = scene_init(&a->scene, c, &a->ct, o->gl, rw, rh);
 	if (rc == 0)
 		rc = scene_open_display(&a->scene, a->headless);
+	if (rc == 0)
+		rc = out_audio_open(&a->audio, c, a->hear.rate, a->headless);
 	if (rc < 0)
 		return rc;
 	if (a->scene.waiting)
@@ -401,12 +433,12 @@ static int setup(struct app *a)
 		slot_open(&a->slots, a->kinds, a->nkinds, a->scene.dpb);
 
 	if (o->record) {
-		/* Format 2: the run it was made with and every tick's state
-		 * and frame hashes, so `--verify` can prove a replay. */
+		/* Format 3: the run it was made with and every tick's state,
+		 * frame and audio hashes, so `--verify` can prove a replay. */
 		struct rec_header h;
 		tape_header(&h, a->map_hash, &a->set, a->scene.frame.w, a->scene.frame.h,
-			    &o->content);
-		h.hash_flags = REC_HAS_STATE | REC_HAS_FRAME;
+			    &o->content, a->hear.rate, a->ct.sounds->hash);
+		h.hash_flags = REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_AUDIO;
 		rc = tape_record_open(&a->tape, o->record, &h);
 		if (rc < 0)
 			return rc;
@@ -417,6 +449,7 @@ static int setup(struct app *a)
 static void teardown(struct app *a)
 {
 	slot_close(&a->slots);
+	out_audio_close(&a->audio);
 	scene_close_display(&a->scene);
 	tape_close(&a->tape);
 	script_free(&a->script);

@@ -14,6 +14,7 @@
 #include "engine/map/map_wad.h"
 #include "engine/map/tex.h"
 #include "engine/map/wad.h"
+#include "engine/sound/snd.h"
 #include "input/io.h"
 
 /* Freedoom 2 is 28 MiB; anything far larger is not a WAD meant for us. */
@@ -60,6 +61,12 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 	}
 	if (rc == 0)
 		rc = tex_load_wad_lim(w, stop, &c->tex, err, errlen);
+	if (rc == 0) {
+		/* the WADs' sounds (copied out: the images go below) */
+		rc = snd_load_wad(w, &c->sounds, c->sound_note, sizeof(c->sound_note));
+		if (rc < 0)
+			snprintf(err, errlen, "sounds: %s", strerror(-rc));
+	}
 	if (rc == 0) {
 		name = s->map;
 		if (!name) {
@@ -208,6 +215,11 @@ int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
 		rc = load_grid(c, s, hook, err, errlen);
 	else if (rc == 0 && s->nwads == 0)
 		rc = load_builtin(c, s->level, err, errlen);
+	if (rc == 0 && !c->sounds) {
+		rc = snd_builtin(&c->sounds);
+		if (rc < 0)
+			snprintf(err, errlen, "built-in sounds: %s", strerror(-rc));
+	}
 	for (int i = 0; rc == 0 && s->lights && i < c->nmaps; i++)
 		rc = load_lights(c, i, hook, err, errlen);
 	c->map = c->maps[0];
@@ -231,5 +243,6 @@ void ct_free(struct ct *c)
 		map_free(c->maps[i]);
 	}
 	tex_free(c->tex);
+	snd_free(c->sounds);
 	memset(c, 0, sizeof(*c));
 }

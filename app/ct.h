@@ -1,8 +1,10 @@
 /*
  * ct: content, what the game is played on: a map, the texture set it is drawn
- * with, and its shadowed light maps. From the built-in levels, a grid map
- * (--grid), or Doom-format WADs (--wad, repeatable, later files override
- * earlier ones; --map picks the map).
+ * with, its shadowed light maps and the sounds it plays. From the built-in
+ * levels, a grid map (--grid), or Doom-format WADs (--wad, repeatable, later
+ * files override earlier ones; --map picks the map). The sounds are the
+ * WADs' DS lumps where they have them, else the built-in synthesized set
+ * (engine/sound/snd.h).
  */
 #ifndef ARCADED_APP_CT_H
 #define ARCADED_APP_CT_H
@@ -15,6 +17,7 @@
 
 struct lmap;
 struct map;
+struct snd_set;
 struct tex_set;
 
 #define CT_MAX_WADS 8
@@ -41,8 +44,12 @@ struct ct {
 	int nmaps;
 	struct map *map;        /* = maps[0] */
 	struct tex_set *tex;
+	struct snd_set *sounds; /* one per enum sfx_id */
 	int nlights;            /* lights of the first stage */
 	char what[160];         /* "freedoom1.wad E1M1", "built-in level 1 (ARENA1)" */
+	/* malformed sound lumps, each played by its built-in sound instead:
+	 * "DSPEDTH: format 0, not 3 (Doom's digital sound)"; "" none */
+	char sound_note[512];
 	char src[160];          /* the file the maps came from, for messages */
 	char note[400];         /* what was left out and why ("" if nothing): a
 				 * map over a light-map limit is drawn without

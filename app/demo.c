@@ -91,6 +91,7 @@ void demo_tick(struct demo *d, const struct sim *m)
 		set.start_in_play = 1;
 		sim_init_stages(&d->sim, (const struct map *const *)d->ct->maps, d->ct->nmaps, &set,
 				NULL, NULL);
+		sim_set_sounds(&d->sim, d->ct->sounds);
 		d->t = 0;
 		d->running = 1;
 	}

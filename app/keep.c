@@ -109,12 +109,12 @@ void keep_start(struct keep *k, const char *dir, int on, struct sim *s, const st
 static void keep_settings(struct keep *k, const struct sim *s, int w, int h)
 {
 	const struct sim_settings *st = &s->set;
-	char ini[256];
+	char ini[320];
 	int n = snprintf(ini, sizeof(ini),
 			 "[game]\ncoins_per_credit = %u\nfreeplay = %s\ndifficulty = %u\nlives = %u\n"
-			 "render_width = %d\nrender_height = %d\n",
+			 "volume = %u\nattract_sound = %u\nrender_width = %d\nrender_height = %d\n",
 			 st->coins_per_credit, st->freeplay ? "yes" : "no", st->difficulty,
-			 st->lives, w, h);
+			 st->lives, st->volume, st->attract_sound, w, h);
 	keep_save(k, "settings.ini", NULL, ini, (size_t)n);
 }
 
@@ -149,13 +149,15 @@ void keep_tick(struct keep *k, const struct sim *s, int w, int h)
 /* ---- flight recorder ---------------------------------------------------- */
 
 void keep_flight_open(struct keep *k, int keep, int max_mb, uint64_t map_hash,
-		      const struct ct_spec *content)
+		      const struct ct_spec *content, uint32_t audio_rate, uint64_t sound_hash)
 {
 	char dir[CFG_PATH_MAX + 16], msg[512] = "";
 	int rc;
 
 	k->map_hash = map_hash;
 	k->content = content;
+	k->audio_rate = audio_rate;
+	k->sound_hash = sound_hash;
 	if (!k->on || keep <= 0)
 		return;
 	snprintf(dir, sizeof(dir), "%s/recordings", k->dir);
@@ -196,7 +198,7 @@ static void keep_flight_finish(struct keep *k)
 }
 
 void keep_flight_after(struct keep *k, const struct sim *s, const struct sim_cmd *cmd, int w,
-		       int h)
+		       int h, uint64_t audio_hash)
 {
 	if (!k->fr)
 		return;
@@ -207,10 +209,11 @@ void keep_flight_after(struct keep *k, const struct sim *s, const struct sim_cmd
 		struct rec_header hd;
 		int rc;
 
-		/* the settings as the service menu left them; state hashes
-		 * are cheap, frame hashes are not */
-		tape_header(&hd, k->map_hash, &s->set, w, h, k->content);
-		hd.hash_flags = REC_HAS_STATE;
+		/* the settings as the service menu left them; state and
+		 * audio hashes are cheap, frame hashes are not */
+		tape_header(&hd, k->map_hash, &s->set, w, h, k->content, k->audio_rate,
+			    k->sound_hash);
+		hd.hash_flags = REC_HAS_STATE | REC_HAS_AUDIO;
 		hd.snapshot = k->snap;
 		hd.snapshot_len = (uint32_t)sim_snapshot_size();
 		rc = fr_begin_game(k->fr, time(NULL), path, sizeof(path));
@@ -229,7 +232,7 @@ void keep_flight_after(struct keep *k, const struct sim *s, const struct sim_cmd
 	}
 	if (!k->game)
 		return;
-	struct rec_tick t = { *cmd, sim_hash(s), 0 };
+	struct rec_tick t = { *cmd, sim_hash(s), 0, audio_hash };
 	if (rec_writer_put_tick(k->game, &t) < 0) {
 		say_err("flight recorder: write failed; this game is not kept whole");
 		keep_flight_finish(k);

@@ -35,6 +35,8 @@ struct keep {
 	uint32_t snap_plays;       /* plays when the snapshot was taken */
 	uint64_t map_hash;         /* of every stage: what recordings are tied to */
 	const struct ct_spec *content;
+	uint32_t audio_rate;       /* the games' audio hashes: mixed at this rate */
+	uint64_t sound_hash;       /* from these sounds */
 };
 
 /* Starts sim s on the stages of ct with settings set and, when k is on,
@@ -45,19 +47,21 @@ void keep_start(struct keep *k, const char *dir, int on, struct sim *s, const st
 
 /* Opens the flight recorder when k is on and keep > 0: at most keep
  * games in at most max_mb MiB (0: no cap), recorded against content and
- * map_hash (borrowed). Failures are logged; games are then not recorded. */
+ * map_hash (borrowed), with audio hashes of sound_hash's sounds mixed at
+ * audio_rate. Failures are logged; games are then not recorded. */
 void keep_flight_open(struct keep *k, int keep, int max_mb, uint64_t map_hash,
-		      const struct ct_spec *content);
+		      const struct ct_spec *content, uint32_t audio_rate, uint64_t sound_hash);
 
 /* Before the tick of cmd: a START in attract may begin a game, so the
  * state it begins from is kept (its recording replays from there). */
 void keep_flight_before(struct keep *k, const struct sim *s, const struct sim_cmd *cmd);
 
-/* After that tick: a game that began is recorded from its snapshot, at
- * frame size w x h; the tick is added; back in attract (or in the service
- * menu) the game is over and its recording kept. */
+/* After that tick (and its sound, audio hash audio_hash): a game that
+ * began is recorded from its snapshot, at frame size w x h; the tick is
+ * added with its state and audio hashes; back in attract (or in the
+ * service menu) the game is over and its recording kept. */
 void keep_flight_after(struct keep *k, const struct sim *s, const struct sim_cmd *cmd, int w,
-		       int h);
+		       int h, uint64_t audio_hash);
 
 /* After each tick: saves the settings (also when the render size w x h
  * changed), scores and books that changed. */

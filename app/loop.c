@@ -20,6 +20,7 @@ uint32_t loop_run(const struct loop_ops *op, void *ctx)
 		op->wizard(ctx, &k);
 		op->flight_before(ctx, &k);
 		op->sim(ctx, &k);
+		op->sound(ctx, &k);
 		op->flight_after(ctx, &k);
 		op->requests(ctx, &k);
 		op->outputs(ctx, &k);

@@ -14,6 +14,8 @@
  *   wizard         the input wizard's time
  *   flight_before  a START in attract may begin a game: keep its start
  *   sim            the game's tick, then the attract demo's
+ *   sound          the tick's sounds mixed, hashed and written to the sound
+ *                  output right away
  *   flight_after   the game's recording (begun, added to, ended)
  *   requests       what the service menu asked for: the wizard, a render size
  *   outputs        coin meter and lamps follow the game
@@ -54,6 +56,7 @@ struct loop_ops {
 	loop_step *wizard;
 	loop_step *flight_before;
 	loop_step *sim;
+	loop_step *sound;
 	loop_step *flight_after;
 	loop_step *requests;
 	loop_step *outputs;

@@ -11,6 +11,7 @@
 #include "app/ctl.h"
 #include "app/say.h"
 #include "app/slot.h"
+#include "audio/au.h"
 #include "config/cfg.h"
 #include "config/prof.h"
 #include "config/st.h"
@@ -23,13 +24,16 @@ static void usage(FILE *f)
 {
 	fputs("usage: arcaded [options]\n"
 	      "       arcaded replay FILE [options]   (same as --replay FILE)\n"
-	      "       arcaded devices                 (HID, evdev, GPIO devices, their profiles)\n"
+	      "       arcaded devices                 (HID, evdev, GPIO devices, their profiles;\n"
+	      "                                        sound cards)\n"
 	      "Runs the arcade cabinet daemon: input, game, framebuffer.\n"
 	      "\n"
 	      "  --config-dir DIR   read DIR/*.ini in name order (default /etc/arcaded)\n"
 	      "  --state-dir DIR    state directory (default $STATE_DIRECTORY or /var/lib/arcaded)\n"
 	      "  --set S.K=V        set one configuration key (repeatable; last layer)\n"
 	      "  --display NAME     auto, kms, fbdev, file, term or null (= --set display.backend=NAME)\n"
+	      "  --audio SPEC       sound output: auto, alsa, alsa:DEVICE, wav:FILE or null\n"
+	      "                     (= --set audio.output=SPEC; scripts and replays: none by default)\n"
 	      "  --level N          built-in level N (= --set game.level=N)\n"
 	      "  --wad FILE         play Doom-format maps from FILE (repeatable: IWAD first,\n"
 	      "                     then PWADs, later ones override)\n"
@@ -62,7 +66,8 @@ static void usage(FILE *f)
 
 /* `arcaded devices`: every device of every input backend that can list
  * them (HID devices with their decoded report fields, evdev devices, GPIO
- * chips and lines), with the profile that would configure it. */
+ * chips and lines), with the profile that would configure it; then every
+ * sound output's devices (ALSA's cards). */
 struct list_ctx {
 	const struct prof_set *profs;
 	const char *backend;
@@ -106,6 +111,9 @@ static int list_devices(const struct cfg *c, const char *config_dir, const char 
 		if (kinds[k].be->set_bound)
 			kinds[k].be->set_bound(NULL, NULL);
 	}
+	for (int k = 0; au_backends[k]; k++)
+		if (au_backends[k]->list)
+			au_backends[k]->list(stdout);
 	free(binds);
 	free(profs);
 	return 0;
@@ -113,7 +121,7 @@ static int list_devices(const struct cfg *c, const char *config_dir, const char 
 
 int main(int argc, char **argv)
 {
-	enum { O_CONFIG_DIR = 256, O_STATE_DIR, O_SET, O_DISPLAY, O_LEVEL, O_PLAY, O_BINDINGS,
+	enum { O_CONFIG_DIR = 256, O_STATE_DIR, O_SET, O_DISPLAY, O_AUDIO, O_LEVEL, O_PLAY, O_BINDINGS,
 	       O_SCRIPT, O_RECORD, O_REPLAY, O_NO_RENDER, O_QUIET, O_TICKS, O_FAST, O_SCREENSHOT,
 	       O_PRINT_CONFIG, O_VERSION, O_HELP, O_WAD, O_MAP, O_GRID, O_NO_LIGHTS, O_VERIFY,
 	       O_UNTIL, O_SIZE, O_RENDERER, O_REALTIME };
@@ -122,6 +130,7 @@ int main(int argc, char **argv)
 		{ "state-dir", required_argument, NULL, O_STATE_DIR },
 		{ "set", required_argument, NULL, O_SET },
 		{ "display", required_argument, NULL, O_DISPLAY },
+		{ "audio", required_argument, NULL, O_AUDIO },
 		{ "level", required_argument, NULL, O_LEVEL },
 		{ "play", no_argument, NULL, O_PLAY },
 		{ "bindings", required_argument, NULL, O_BINDINGS },
@@ -164,6 +173,7 @@ int main(int argc, char **argv)
 		case O_STATE_DIR: state_dir = optarg; break;
 		case O_SET: prefix = ""; break;
 		case O_DISPLAY: prefix = "display.backend="; break;
+		case O_AUDIO: prefix = "audio.output="; break;
 		case O_LEVEL: prefix = "game.level="; break;
 		case O_PLAY: prefix = "game.start_in_play="; optarg = "1"; break;
 		case O_BINDINGS: o.bindings = optarg; break;

@@ -17,6 +17,7 @@ void stats_init(struct stats *s, const char *const *names, int n)
 	memset(s, 0, sizeof(*s));
 	lat_reset(&s->frame_time);
 	lat_reset(&s->latency);
+	lat_reset(&s->sound);
 	lat_reset(&s->flip);
 	s->nsrc = n < STATS_SRCS ? n : STATS_SRCS;
 	for (int k = 0; k < s->nsrc; k++) {
@@ -33,6 +34,12 @@ void stats_input(struct stats *s, int src, uint64_t t)
 		return;
 	if (s->src_pending_ns[src] == 0 || t < s->src_pending_ns[src])
 		s->src_pending_ns[src] = t;
+}
+
+void stats_sound(struct stats *s, uint64_t heard_ns)
+{
+	if (s->pending_ns && heard_ns > s->pending_ns)
+		lat_add_ns(&s->sound, heard_ns - s->pending_ns);
 }
 
 void stats_presented(struct stats *s, uint64_t t0, uint64_t t1, uint64_t due)
@@ -91,6 +98,9 @@ void stats_print(const struct stats *s)
 	say("summary: %s", line);
 	lat_format(&s->latency, "input-to-present latency", line, sizeof(line));
 	say("summary: %s", line);
+	lat_format(&s->sound, "input-to-sound latency", line, sizeof(line));
+	say("summary: %s; sound output: %" PRIu64 " underruns, %" PRIu64 " frames dropped", line,
+	    s->underruns, s->audio_dropped);
 	if (s->flip.count) {
 		lat_format(&s->flip, "present-to-flip", line, sizeof(line));
 		say("summary: %s", line);

@@ -13,10 +13,10 @@
 #include "engine/render/r_main.h"
 
 void tape_header(struct rec_header *h, uint64_t map_hash, const struct sim_settings *set, int w,
-		 int hgt, const struct ct_spec *content)
+		 int hgt, const struct ct_spec *content, uint32_t audio_rate, uint64_t sound_hash)
 {
 	memset(h, 0, sizeof(*h));
-	h->version = REC_VERSION_2;
+	h->version = REC_VERSION_3;
 	h->tick_rate = SIM_TICRATE;
 	h->map_hash = map_hash;
 	h->engine_version = REC_ENGINE_VERSION;
@@ -27,6 +27,9 @@ void tape_header(struct rec_header *h, uint64_t map_hash, const struct sim_setti
 	h->render_version = REC_RENDER_VERSION;
 	h->level = (uint8_t)(content->nwads || content->grid ? 0 : content->level);
 	h->start_time = (int64_t)time(NULL);
+	h->audio_rate = audio_rate;
+	h->audio_version = REC_AUDIO_VERSION;
+	h->sound_hash = sound_hash;
 	if (content->map)
 		snprintf(h->map_name, sizeof(h->map_name), "%s", content->map);
 }
@@ -120,20 +123,22 @@ int tape_next(struct tape *t, uint32_t tick, struct rec_tick *rt)
 }
 
 void tape_hashes(struct tape *t, uint32_t tick, const struct rec_tick *rt, const struct sim *s,
-		 const struct r_frame *f)
+		 const struct r_frame *f, uint64_t audio)
 {
-	uint64_t sh, fh;
+	struct rec_tick nt;
 
 	if (!t->rep && !t->rec)
 		return;
-	sh = sim_hash(s);
-	fh = t->no_render ? 0 : hash_frame(f->px, f->w, f->h, f->pitch);
+	nt.cmd = rt->cmd;
+	nt.state_hash = sim_hash(s);
+	nt.frame_hash = t->no_render ? 0 : hash_frame(f->px, f->w, f->h, f->pitch);
+	nt.audio_hash = audio;
 	if (t->rep && !t->quiet)
-		fprintf(t->out, "%u %016" PRIx64 " %016" PRIx64 "\n", tick, sh, fh);
+		fprintf(t->out, "%u %016" PRIx64 " %016" PRIx64 " %016" PRIx64 "\n", tick,
+			nt.state_hash, nt.frame_hash, nt.audio_hash);
 	if (t->verifying)
-		rec_verify_tick(&t->verify, tick, rt, sh, fh);
+		rec_verify_tick(&t->verify, tick, rt, &nt);
 	if (t->rec) {
-		struct rec_tick nt = { rt->cmd, sh, fh };
 		if (rec_writer_put_tick(t->rec, &nt) < 0) {
 			say_err("%s: write failed; recording stopped", t->record);
 			rec_writer_close(t->rec);

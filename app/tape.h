@@ -1,8 +1,9 @@
 /*
  * tape: the developer's recordings (input/rec.h). --record writes every
- * tick's command with its state and frame hashes; --replay takes the
- * commands from a recording instead of the devices and prints each tick's
- * hashes; --verify compares them with the ones the recording stores. A
+ * tick's command with its state, frame and audio hashes; --replay takes
+ * the commands from a recording instead of the devices and prints each
+ * tick's hashes ("TICK STATE FRAME AUDIO", hex); --verify compares them
+ * with the ones the recording stores. A
  * recording made by the flight recorder (app/keep.h) starts from a
  * snapshot of the sim, which a replay restores.
  */
@@ -30,11 +31,12 @@ struct tape {
 	FILE *out;                 /* per-tick hashes */
 };
 
-/* A version-2 header for a recording of this run: content hash map_hash,
- * settings set, frame size w x h, the level or map of content, the time
- * now; tick count unknown, no hash flags (the caller's), no snapshot. */
+/* A version-3 header for a recording of this run: content hash map_hash,
+ * settings set, frame size w x h, the level or map of content, sounds
+ * sound_hash mixed at audio_rate, the time now; tick count unknown, no
+ * hash flags (the caller's), no snapshot. */
 void tape_header(struct rec_header *h, uint64_t map_hash, const struct sim_settings *set, int w,
-		 int hgt, const struct ct_spec *content);
+		 int hgt, const struct ct_spec *content, uint32_t audio_rate, uint64_t sound_hash);
 
 /* Opens recording path to replay it; run gets what it asks for (level,
  * settings, frame size; rec_run_from_header). 0 or -errno (logged). */
@@ -60,11 +62,12 @@ const char *tape_recording(const struct tape *t);
  * the end of the recording (a short one is logged). */
 int tape_next(struct tape *t, uint32_t tick, struct rec_tick *rt);
 
-/* After tick `tick` ran with rt's command and frame f was drawn (unless
- * no_render): prints, verifies and records its hashes. A failed write
- * stops the recording (logged). Nothing without a recording or replay. */
+/* After tick `tick` ran with rt's command, its sound was mixed (audio
+ * hash audio) and frame f was drawn (unless no_render): prints, verifies
+ * and records its hashes. A failed write stops the recording (logged).
+ * Nothing without a recording or replay. */
 void tape_hashes(struct tape *t, uint32_t tick, const struct rec_tick *rt, const struct sim *s,
-		 const struct r_frame *f);
+		 const struct r_frame *f, uint64_t audio);
 
 /* --verify's verdict, logged: 1 when the replay differed from (or could
  * not be compared with) the recording, else 0. */

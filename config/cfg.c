@@ -87,6 +87,11 @@ static const struct cfg_key cfg_keys[] = {
 	CFG_INTKEY(game, level, game.level, 1, 99),
 	CFG_INTKEY(game, difficulty, game.difficulty, 0, 3),
 	CFG_INTKEY(game, lives, game.lives, 1, 9),
+	CFG_INTKEY(game, volume, game.volume, 0, 100),
+	CFG_INTKEY(game, attract_sound, game.attract_sound, 0, 9),
+	CFG_STRKEY(audio, output, audio.output, CFG_T_STR),
+	CFG_STRKEY(audio, device, audio.device, CFG_T_STR),
+	CFG_INTKEY(audio, rate, audio.rate, 8000, 192000),
 	CFG_STRKEY(input, evdev, input.evdev, CFG_T_DEVICE),
 	CFG_STRKEY(input, bindings, input.bindings, CFG_T_STR),
 	CFG_STRKEY(input, hid, input.hid, CFG_T_STR),
@@ -130,6 +135,11 @@ void cfg_defaults(struct cfg *c)
 	c->game.level = 1;
 	c->game.difficulty = 1;
 	c->game.lives = 3;
+	c->game.volume = 80;
+	c->game.attract_sound = 1;
+	cfg_setstr(c->audio.output, sizeof(c->audio.output), "auto");
+	cfg_setstr(c->audio.device, sizeof(c->audio.device), "default");
+	c->audio.rate = 48000;
 	c->recorder.keep = 20;
 	c->recorder.max_mb = 64;
 	cfg_setstr(c->input.evdev, sizeof(c->input.evdev), "auto");

@@ -39,7 +39,14 @@ struct cfg {
 		int level;                   /* built-in level, 1-based */
 		int difficulty;              /* 0 easy .. 3 brutal (1) */
 		int lives;                   /* 1..9 (3) */
+		int volume;                  /* master volume 0..100 percent (80) */
+		int attract_sound;           /* 0 off, 1 on, N: once every N attract cycles (1) */
 	} game;
+	struct {
+		char output[CFG_PATH_MAX];   /* auto | alsa | alsa:DEVICE | wav:FILE | null */
+		char device[CFG_PATH_MAX];   /* ALSA device for auto and alsa (default) */
+		int rate;                    /* output rate, Hz (48000) */
+	} audio;
 	struct {
 		char evdev[CFG_PATH_MAX];    /* auto | none | /dev/input/eventN */
 		char bindings[CFG_PATH_MAX]; /* extra bindings file, "" none */

@@ -8,7 +8,6 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <inttypes.h>
-#include <stdarg.h>
 #include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -34,12 +33,20 @@ static const uint8_t rec_magic[8] = { 'A', 'R', 'C', 'D', 'R', 'E', 'C', '\0' };
 size_t rec_record_size(uint8_t hash_flags)
 {
 	return REC_CMD_SIZE + (hash_flags & REC_HAS_STATE ? 8u : 0u) +
-	       (hash_flags & REC_HAS_FRAME ? 8u : 0u);
+	       (hash_flags & REC_HAS_FRAME ? 8u : 0u) + (hash_flags & REC_HAS_AUDIO ? 8u : 0u);
+}
+
+/* The fixed header of a version: where its snapshot starts. */
+static size_t rec_fixed_size(uint16_t version)
+{
+	return version >= REC_VERSION_3 ? REC_HEADER_SIZE_V3
+	       : version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2
+					  : REC_HEADER_SIZE;
 }
 
 size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 {
-	size_t size = h->version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE;
+	size_t size = rec_fixed_size(h->version);
 	uint32_t snap = size == REC_HEADER_SIZE ? 0 : h->snapshot_len;
 
 	memset(out, 0, size);
@@ -64,6 +71,15 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 	le_put32(out + 48, h->render_version);
 	memcpy(out + 56, h->map_name, strnlen(h->map_name, 8));
 	le_put64(out + 64, (uint64_t)h->start_time);
+	if (size >= REC_HEADER_SIZE_V3) {
+		out[46] = h->set.volume;
+		out[47] = h->set.attract_sound;
+		le_put32(out + 80, h->audio_rate);
+		le_put32(out + 84, h->audio_version);
+		le_put64(out + 88, h->sound_hash);
+	} else {
+		out[44] &= (uint8_t)~REC_HAS_AUDIO;
+	}
 	if (snap) {
 		out[44] |= REC_HAS_SNAPSHOT;
 		le_put32(out + 52, snap);
@@ -89,6 +105,8 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		      size_t errlen)
 {
 	struct rec_header d;
+	size_t fixed;
+	uint8_t known;
 
 	if (len < REC_HEADER_SIZE) {
 		txt_set(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
@@ -120,14 +138,14 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 			REC_VERSION_MAX);
 		return -EINVAL;
 	}
-	if (d.version >= REC_VERSION_2 && len < REC_HEADER_SIZE_V2) {
-		txt_set(err, errlen, "file too short (%zu bytes, the header needs %d)", len,
-			REC_HEADER_SIZE_V2);
+	fixed = rec_fixed_size(d.version);
+	if (len < fixed) {
+		txt_set(err, errlen, "file too short (%zu bytes, the header needs %zu)", len, fixed);
 		return -EINVAL;
 	}
-	if (d.header_size < (d.version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE)) {
-		txt_set(err, errlen, "header size %" PRIu32 " is smaller than %d", d.header_size,
-			d.version >= REC_VERSION_2 ? REC_HEADER_SIZE_V2 : REC_HEADER_SIZE);
+	if (d.header_size < fixed) {
+		txt_set(err, errlen, "header size %" PRIu32 " is smaller than %zu", d.header_size,
+			fixed);
 		return -EINVAL;
 	}
 	if (d.header_size > REC_HEADER_SIZE_MAX) {
@@ -170,11 +188,15 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		memcpy(d.map_name, buf + 56, 8);
 		d.map_name[8] = '\0';
 		d.start_time = (int64_t)le_get64(buf + 64);
-		if (d.hash_flags & ~(REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_SNAPSHOT)) {
+		known = REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_SNAPSHOT;
+		if (d.version >= REC_VERSION_3)
+			known |= REC_HAS_AUDIO;
+		if (d.hash_flags & ~known) {
 			txt_set(err, errlen, "hash flags 0x%02x unknown", d.hash_flags);
 			return -EINVAL;
 		}
-		if (rec_nonzero(buf, 46, 48, err, errlen))
+		/* 46..47: the sound settings from version 3 on */
+		if (d.version < REC_VERSION_3 && rec_nonzero(buf, 46, 48, err, errlen))
 			return -EINVAL;
 		if (!(d.hash_flags & REC_HAS_SNAPSHOT) &&
 		    (rec_nonzero(buf, 52, 56, err, errlen) || rec_nonzero(buf, 72, 80, err, errlen)))
@@ -193,7 +215,7 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 				txt_set(err, errlen, "snapshot of 0 bytes");
 				return -EINVAL;
 			}
-			if (d.snapshot_len > d.header_size - REC_HEADER_SIZE_V2) {
+			if (d.snapshot_len > d.header_size - fixed) {
 				txt_set(err, errlen,
 					"snapshot of %" PRIu32 " bytes does not fit in header size %" PRIu32,
 					d.snapshot_len, d.header_size);
@@ -217,6 +239,28 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 				txt_set(err, errlen, "map name padding is not all NUL");
 				return -EINVAL;
 			}
+		}
+	}
+	if (d.version >= REC_VERSION_3) {
+		d.set.volume = buf[46];
+		d.set.attract_sound = buf[47];
+		d.audio_rate = le_get32(buf + 80);
+		d.audio_version = le_get32(buf + 84);
+		d.sound_hash = le_get64(buf + 88);
+		if (d.set.volume > 100) {
+			txt_set(err, errlen, "volume %u out of range 0..100", d.set.volume);
+			return -EINVAL;
+		}
+		if (d.set.attract_sound > 9) {
+			txt_set(err, errlen, "attract_sound %u out of range 0..9",
+				d.set.attract_sound);
+			return -EINVAL;
+		}
+		if ((d.hash_flags & REC_HAS_AUDIO) &&
+		    (d.audio_rate < REC_AUDIO_RATE_MIN || d.audio_rate > REC_AUDIO_RATE_MAX)) {
+			txt_set(err, errlen, "audio rate %" PRIu32 " out of range %d..%d",
+				d.audio_rate, REC_AUDIO_RATE_MIN, REC_AUDIO_RATE_MAX);
+			return -EINVAL;
 		}
 	}
 	*h = d;
@@ -299,8 +343,8 @@ int rec_writer_open(const char *path, const struct rec_header *h, struct rec_wri
 	w = calloc(1, sizeof(*w));
 	if (!w)
 		return -ENOMEM;
-	w->flags = hh.hash_flags & (REC_HAS_STATE | REC_HAS_FRAME);
-	w->recsize = rec_record_size(hh.hash_flags);
+	w->flags = back.hash_flags & (REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_AUDIO);
+	w->recsize = rec_record_size(back.hash_flags);
 	w->fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
 	if (w->fd < 0) {
 		ret = -errno;
@@ -347,8 +391,12 @@ int rec_writer_put_tick(struct rec_writer *w, const struct rec_tick *t)
 		le_put64(p, t->state_hash);
 		p += 8;
 	}
-	if (w->flags & REC_HAS_FRAME)
+	if (w->flags & REC_HAS_FRAME) {
 		le_put64(p, t->frame_hash);
+		p += 8;
+	}
+	if (w->flags & REC_HAS_AUDIO)
+		le_put64(p, t->audio_hash);
 	w->n += w->recsize;
 	w->count++;
 	return 0;
@@ -410,9 +458,11 @@ static int rec_read_snapshot(struct rec_reader *r, const char *path, uint64_t si
 	uint64_t sum;
 	ssize_t got;
 
-	if (size < REC_HEADER_SIZE_V2 + (uint64_t)len) {
+	uint64_t at = rec_fixed_size(r->h.version);
+
+	if (size < at + (uint64_t)len) {
 		txt_set(err, errlen, "%s: snapshot cut short (%" PRIu64 " of %" PRIu32 " bytes)",
-			path, size > REC_HEADER_SIZE_V2 ? size - REC_HEADER_SIZE_V2 : 0, len);
+			path, size > at ? size - at : 0, len);
 		return -EINVAL;
 	}
 	r->snap = malloc(len);
@@ -420,7 +470,7 @@ static int rec_read_snapshot(struct rec_reader *r, const char *path, uint64_t si
 		txt_set(err, errlen, "%s: out of memory", path);
 		return -ENOMEM;
 	}
-	if (lseek(r->fd, REC_HEADER_SIZE_V2, SEEK_SET) < 0) {
+	if (lseek(r->fd, (off_t)at, SEEK_SET) < 0) {
 		int e = errno;
 
 		txt_set(err, errlen, "%s: %s", path, strerror(e));
@@ -563,12 +613,17 @@ int rec_reader_next_tick(struct rec_reader *r, struct rec_tick *t)
 	p += REC_CMD_SIZE;
 	t->state_hash = 0;
 	t->frame_hash = 0;
+	t->audio_hash = 0;
 	if (r->h.hash_flags & REC_HAS_STATE) {
 		t->state_hash = le_get64(p);
 		p += 8;
 	}
-	if (r->h.hash_flags & REC_HAS_FRAME)
+	if (r->h.hash_flags & REC_HAS_FRAME) {
 		t->frame_hash = le_get64(p);
+		p += 8;
+	}
+	if (r->h.hash_flags & REC_HAS_AUDIO)
+		t->audio_hash = le_get64(p);
 	r->bi += r->recsize;
 	r->pos++;
 	return 1;
@@ -591,188 +646,6 @@ void rec_reader_close(struct rec_reader *r)
 	close(r->fd);
 	free(r->snap);
 	free(r);
-}
-
-int rec_check(const struct rec_header *h, uint64_t map_hash, char *err, size_t errlen)
-{
-	char buf[256];
-	size_t n = 0;
-
-	buf[0] = '\0';
-	if (h->map_hash != map_hash)
-		n += (size_t)snprintf(buf + n, sizeof(buf) - n,
-				      "map content differs: recording 0x%016" PRIx64
-				      ", loaded 0x%016" PRIx64,
-				      h->map_hash, map_hash);
-	if (h->engine_version != REC_ENGINE_VERSION)
-		snprintf(buf + n, sizeof(buf) - n,
-			 "%sengine version differs: recording %" PRIu32 ", this build %d",
-			 n ? "; " : "", h->engine_version, REC_ENGINE_VERSION);
-	if (buf[0] == '\0')
-		return 0;
-	txt_set(err, errlen, "%s", buf);
-	return -EINVAL;
-}
-
-/* Appends "; " (unless first) and a formatted part to buf of size len at
- * *n, never past the end. */
-__attribute__((format(printf, 4, 5)))
-static void rec_join(char *buf, size_t len, size_t *n, const char *fmt, ...)
-{
-	va_list ap;
-	int w;
-
-	if (*n >= len - 1)
-		return;
-	if (*n) {
-		w = snprintf(buf + *n, len - *n, "; ");
-		*n += (size_t)w < len - *n ? (size_t)w : len - 1 - *n;
-	}
-	va_start(ap, fmt);
-	w = vsnprintf(buf + *n, len - *n, fmt, ap);
-	va_end(ap);
-	if (w > 0)
-		*n += (size_t)w < len - *n ? (size_t)w : len - 1 - *n;
-}
-
-static bool rec_frames_comparable(const struct rec_header *h, const struct rec_run *run)
-{
-	return (h->hash_flags & REC_HAS_FRAME) && run->render_w != 0;
-}
-
-int rec_check_run(const struct rec_header *h, const struct rec_run *run, char *err,
-		  size_t errlen)
-{
-	const char *name = run->map_name ? run->map_name : "";
-	char buf[512];
-	size_t n = 0;
-
-	buf[0] = '\0';
-	if (h->map_hash != run->map_hash)
-		rec_join(buf, sizeof(buf), &n,
-			 "map content differs: recording 0x%016" PRIx64 ", loaded 0x%016" PRIx64,
-			 h->map_hash, run->map_hash);
-	if (h->engine_version != REC_ENGINE_VERSION)
-		rec_join(buf, sizeof(buf), &n,
-			 "engine version differs: recording %" PRIu32 ", this build %d",
-			 h->engine_version, REC_ENGINE_VERSION);
-	/* every setting, from the settings' field list (engine/game/sim.h) */
-#define REC_SETTING_DIFFERS(kind, type, name, limit)                                     \
-	if (h->set.name != run->set.name)                                                \
-		rec_join(buf, sizeof(buf), &n,                                           \
-			 "settings differ: " #name " recording %u, this run %u",          \
-			 h->set.name, run->set.name);
-	SIM_SETTINGS_FIELDS(REC_SETTING_DIFFERS)
-#undef REC_SETTING_DIFFERS
-	if (h->level && h->level != run->level)
-		rec_join(buf, sizeof(buf), &n, "level differs: recording %u, loaded %u", h->level,
-			 run->level);
-	if (h->map_name[0] && strcmp(h->map_name, name) != 0)
-		rec_join(buf, sizeof(buf), &n, "map differs: recording %s, loaded %s", h->map_name,
-			 name[0] ? name : "(a built-in level)");
-	if (rec_frames_comparable(h, run)) {
-		if (h->render_w != run->render_w || h->render_h != run->render_h)
-			rec_join(buf, sizeof(buf), &n,
-				 "render size differs: recording %ux%u, this run %ux%u",
-				 h->render_w, h->render_h, run->render_w, run->render_h);
-		if (h->render_version != REC_RENDER_VERSION)
-			rec_join(buf, sizeof(buf), &n,
-				 "renderer version differs: recording %" PRIu32 ", this build %d",
-				 h->render_version, REC_RENDER_VERSION);
-	}
-	if (n == 0)
-		return 0;
-	txt_set(err, errlen, "%s", buf);
-	return -EINVAL;
-}
-
-void rec_run_from_header(const struct rec_header *h, struct rec_run *run)
-{
-	memset(run, 0, sizeof(*run));
-	run->set = h->set;
-	run->render_w = h->render_w;
-	run->render_h = h->render_h;
-	run->level = h->level;
-	run->map_name = h->map_name;
-}
-
-void rec_verify_init(struct rec_verify *v, const struct rec_header *h, const struct rec_run *run)
-{
-	memset(v, 0, sizeof(*v));
-	v->first_bad = -1;
-	v->compare = h->hash_flags & REC_HAS_STATE;
-	if (!(h->hash_flags & REC_HAS_FRAME))
-		return;
-	if (run->render_w == 0)
-		txt_set(v->note, sizeof(v->note), "frame hashes not compared: not rendering");
-	else if (h->render_w != run->render_w || h->render_h != run->render_h)
-		txt_set(v->note, sizeof(v->note),
-			"frame hashes not compared: recorded at %ux%u, rendering %ux%u",
-			h->render_w, h->render_h, run->render_w, run->render_h);
-	else if (h->render_version != REC_RENDER_VERSION)
-		txt_set(v->note, sizeof(v->note),
-			"frame hashes not compared: drawn by renderer version %" PRIu32
-			", this build draws version %d",
-			h->render_version, REC_RENDER_VERSION);
-	else
-		v->compare |= REC_HAS_FRAME;
-}
-
-int rec_verify_tick(struct rec_verify *v, uint32_t tick, const struct rec_tick *rec,
-		    uint64_t state, uint64_t frame)
-{
-	bool sbad = false, fbad = false;
-
-	v->ticks++;
-	if (v->compare & REC_HAS_STATE) {
-		v->state_checked++;
-		sbad = rec->state_hash != state;
-		v->state_bad += sbad;
-	}
-	if (v->compare & REC_HAS_FRAME) {
-		v->frame_checked++;
-		fbad = rec->frame_hash != frame;
-		v->frame_bad += fbad;
-	}
-	if (!sbad && !fbad)
-		return 0;
-	if (v->first_bad < 0) {
-		v->first_bad = tick;
-		if (sbad)
-			txt_set(v->first, sizeof(v->first),
-				"state hash recording 0x%016" PRIx64 ", replay 0x%016" PRIx64,
-				rec->state_hash, state);
-		else
-			txt_set(v->first, sizeof(v->first),
-				"frame hash recording 0x%016" PRIx64 ", replay 0x%016" PRIx64
-				" (state hashes equal)",
-				rec->frame_hash, frame);
-	}
-	return -EDOM;
-}
-
-int rec_verify_summary(const struct rec_verify *v, char *buf, size_t len)
-{
-	char note[sizeof(v->note) + 4] = "";
-	int ret;
-
-	if (v->note[0])
-		snprintf(note, sizeof(note), " (%s)", v->note);
-	if (v->first_bad >= 0) {
-		txt_set(buf, len,
-			"verify: FAILED: first difference at tick %" PRId64 ": %s; %" PRIu32
-			" state and %" PRIu32 " frame hashes differ of %" PRIu32 " ticks%s",
-			v->first_bad, v->first, v->state_bad, v->frame_bad, v->ticks, note);
-		return -EDOM;
-	}
-	ret = v->state_checked + v->frame_checked ? 0 : 1;
-	if (ret)
-		txt_set(buf, len, "verify: %" PRIu32 " ticks, nothing compared: the recording "
-			"holds no hashes%s", v->ticks, note);
-	else
-		txt_set(buf, len, "verify: %" PRIu32 " ticks, %" PRIu32 " state and %" PRIu32
-			" frame hashes equal%s", v->ticks, v->state_checked, v->frame_checked, note);
-	return ret;
 }
 
 int rec_repair(const char *path, uint32_t *count, char *err, size_t errlen)

@@ -4,7 +4,7 @@
  * Version 1 (all integers little-endian, explicit offsets, never struct
  * dumps):
  *   0  8  magic "ARCDREC\0"
- *   8  2  format version (1 or 2)
+ *   8  2  format version (1, 2 or 3)
  *  10  2  tick rate (60)
  *  12  4  header size in bytes (REC_HEADER_SIZE for version 1)
  *  16  8  content hash of the map (map.content_hash)
@@ -22,7 +22,8 @@
  *  44  1  flags: REC_HAS_STATE, REC_HAS_FRAME (the per-tick hashes),
  *        REC_HAS_SNAPSHOT (the recording starts from a snapshot)
  *  45  1  built-in level number 1..99, 0 for a map loaded from a file
- *  46  2  reserved 0 (difficulty and lives are bytes 31 and 36, in every version)
+ *  46  2  reserved 0 (difficulty and lives are bytes 31 and 36, in every version);
+ *        version 3: volume 0..100 (46) and attract_sound 0..9 (47)
  *  48  4  renderer version (REC_RENDER_VERSION: bumped when frames change)
  *  52  4  REC_HAS_SNAPSHOT: the snapshot's length in bytes; else reserved 0
  *  56  8  map name, NUL-padded ("MAP01"; empty for a built-in level)
@@ -39,6 +40,18 @@
  *        sim_hash after the tick ran, and hash_frame of the frame rendered
  *        after it, exactly what `arcaded --replay` prints for that tick.
  *
+ * Version 3 (sound) keeps version 2's bytes 0..79, with the two new
+ * settings at 46 and 47, and adds (header size REC_HEADER_SIZE_V3):
+ *  80  4  audio rate: the output rate (Hz) the audio hashes were mixed at;
+ *        0 without audio hashes
+ *  84  4  audio version (REC_AUDIO_VERSION: bumped when the mixer or the
+ *        built-in sounds change any sample)
+ *  88  8  sound hash: snd_set.hash (engine/sound/snd.h) of the sounds mixed
+ *  96  ... the snapshot, as in version 2 but at 96 (header size 96 + its length)
+ *  and the flag REC_HAS_AUDIO (44): each record ends with the audio hash
+ *        (8 bytes, after the frame hash): mix_hash of the tick's mixed
+ *        buffer (engine/sound/mix.h), what `arcaded --replay` prints last.
+ *
  * The writer puts 0xffffffff in the count and writes the real count only
  * when it closes, so a recording cut short (power loss, crash) is
  * recognisable and replays up to its last whole record (a partial last
@@ -50,14 +63,17 @@
  * size (a later minor addition) is skipped.
  *
  * Checks on the header beyond the ranges of its fields: reserved bytes
- * (37..39; 46..47; 52..55 and 72..79 without a snapshot) are 0, the map
+ * (37..39; 46..47 in version 2; 52..55 and 72..79 without a snapshot) are 0, the map
  * name holds nothing after its first NUL, the start time fits 32 bits.
  * The low four bytes of the start time are the only bytes no check
  * covers (format 2 has no header checksum).
  *
  * A build before snapshots refuses a recording with one ("hash flags 0x04
  * unknown") rather than replaying it from the wrong start; this build
- * reads every older file.
+ * reads every older file. A version 1 or 2 recording was made by an engine
+ * before sound (engine version 2 or older): it decodes, and rec_check then
+ * refuses it by its engine version ("engine version differs: recording 2,
+ * this build 3").
  */
 #ifndef ARCADED_INPUT_REC_H
 #define ARCADED_INPUT_REC_H
@@ -69,28 +85,38 @@
 
 #define REC_VERSION 1               /* commands only (see REC_VERSION_2) */
 #define REC_VERSION_2 2             /* run description and per-tick hashes */
-#define REC_VERSION_MAX 2           /* newest version this build reads */
-/* 2: the game: enemies, stages, modes, menu; 3: Doom's specials (the map's
- * changing parts, movers, keys, exits: engine/game/g_world.h) */
+#define REC_VERSION_3 3             /* sound: settings, audio hashes */
+#define REC_VERSION_MAX 3           /* newest version this build reads */
+/* 2: the game: enemies, stages, modes, menu; 3: sound (channels,
+ * settings) and Doom's specials (the map's changing parts, movers, keys,
+ * exits: engine/game/g_world.h), which landed together */
 #define REC_ENGINE_VERSION 3
 /* sim_snapshot_size() at REC_ENGINE_VERSION. A field added to the sim's
  * state (engine/game/sim_table.h) changes the size and every state hash:
  * raise REC_ENGINE_VERSION and set this to the new size, together
  * (test_rec fails on the size until then, as a reminder of the version). */
-#define REC_ENGINE_SNAPSHOT 96542
+#define REC_ENGINE_SNAPSHOT 96898
 /* Bumped whenever the renderer draws any frame differently (engine/render/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */
 #define REC_RENDER_VERSION 4
+/* Bumped whenever the audio of any tick changes (the mixer, the built-in
+ * sounds, a sound's lump): recorded audio hashes of another version are
+ * not compared. */
+#define REC_AUDIO_VERSION 1
 #define REC_HEADER_SIZE 40          /* version 1 */
 #define REC_HEADER_SIZE_V2 80
-#define REC_HEADER_MAX 80
+#define REC_HEADER_SIZE_V3 96
+#define REC_HEADER_MAX 96
 #define REC_CMD_SIZE 6
-#define REC_RECORD_MAX 22           /* command and both hashes */
+#define REC_RECORD_MAX 30           /* command and the three hashes */
 #define REC_COUNT_UNKNOWN 0xffffffffu
 #define REC_HAS_STATE 0x01
 #define REC_HAS_FRAME 0x02
 #define REC_HAS_SNAPSHOT 0x04
+#define REC_HAS_AUDIO 0x08          /* version 3 */
+#define REC_AUDIO_RATE_MIN 8000     /* the mixer's (engine/sound/mix.h) */
+#define REC_AUDIO_RATE_MAX 192000
 
 struct rec_header {
 	uint16_t version;
@@ -102,11 +128,15 @@ struct rec_header {
 	uint32_t count;            /* REC_COUNT_UNKNOWN while being written */
 	/* Version 2 only; 0 / "" when read from version 1. */
 	uint16_t render_w, render_h;
-	uint8_t hash_flags;        /* REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_SNAPSHOT */
+	uint8_t hash_flags;        /* REC_HAS_STATE | _FRAME | _AUDIO | _SNAPSHOT */
 	uint8_t level;             /* built-in level, 0: a map from a file */
 	uint32_t render_version;
 	char map_name[9];
 	int64_t start_time;
+	/* Version 3 only; 0 when read from an older one. */
+	uint32_t audio_rate;       /* Hz the audio hashes were mixed at, 0 none */
+	uint32_t audio_version;
+	uint64_t sound_hash;
 	/* Version 2: the sim state the recording starts from (sim_snapshot),
 	 * snapshot_len bytes; none when snapshot_len is 0. Writer: give both
 	 * (REC_HAS_SNAPSHOT follows from snapshot_len; the bytes are copied
@@ -122,17 +152,17 @@ struct rec_header {
  * so, the hashes after the tick (0 where not stored). */
 struct rec_tick {
 	struct sim_cmd cmd;
-	uint64_t state_hash, frame_hash;
+	uint64_t state_hash, frame_hash, audio_hash;
 };
 
-/* Bytes of one record for these hash flags: 6, 14 or 22. */
+/* Bytes of one record for these hash flags: 6, 14, 22 or 30. */
 size_t rec_record_size(uint8_t hash_flags);
 
-/* Writes h as the header of its version (h->version 1: 40 bytes, 2: 80
- * bytes) into out (REC_HEADER_MAX bytes); returns the size written. The
+/* Writes h as the header of its version (h->version 1: 40 bytes, 2: 80,
+ * 3: 96) into out (REC_HEADER_MAX bytes); returns the size written. The
  * header size field is that size whatever h->header_size says, plus
- * snapshot_len in version 2 (the snapshot's bytes follow the 80 written
- * here; its checksum is computed from h->snapshot, or taken from
+ * snapshot_len from version 2 on (the snapshot's bytes follow the bytes
+ * written here; its checksum is computed from h->snapshot, or taken from
  * h->snapshot_sum when snapshot is NULL). */
 size_t rec_header_encode(uint8_t *out, const struct rec_header *h);
 /* Parses and checks a header from len bytes: 0, or -EINVAL with the reason
@@ -140,9 +170,11 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h);
  * "version 7 is newer than this build (2)", "header size 8 is smaller than
  * 40", "tick rate 50 is not 60", "coins_per_credit 0 out of range 1..9",
  * "difficulty 4 out of range 0..3", "lives 10 out of range 0..9",
- * "hash flags 0x08 unknown", "render size 5000x240 out of range",
- * "snapshot of 0 bytes", "snapshot of 7000 bytes does not fit in header
- * size 6700").
+ * "volume 101 out of range 0..100", "attract_sound 10 out of range 0..9",
+ * "hash flags 0x10 unknown", "hash flags 0x08 unknown" (audio in version
+ * 2), "audio rate 100 out of range 8000..192000", "render size 5000x240
+ * out of range", "snapshot of 0 bytes", "snapshot of 7000 bytes does not
+ * fit in header size 6700").
  * The map hash and engine version are not judged here: see rec_check. */
 int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char *err,
 		      size_t errlen);
@@ -151,7 +183,8 @@ void rec_cmd_decode(const uint8_t in[REC_CMD_SIZE], struct sim_cmd *c);
 
 struct rec_writer;
 /* Creates path (truncating, mode 0644, O_CLOEXEC) and writes the header of
- * h->version (1 or 2; hash flags and a snapshot only in version 2) with
+ * h->version (1, 2 or 3; hash flags and a snapshot from version 2, audio
+ * hashes in version 3) with
  * count REC_COUNT_UNKNOWN, then the snapshot if h->snapshot_len. 0,
  * -EINVAL for a header that could not be read back (or a snapshot_len
  * without snapshot bytes, or in version 1), or -errno. */
@@ -209,24 +242,31 @@ struct rec_run {
 	uint16_t render_w, render_h;   /* frame size drawn (0: not rendering) */
 	uint8_t level;                 /* built-in level, 0: a map from a file */
 	const char *map_name;          /* for a map from a file; NULL or "" */
+	uint32_t audio_rate;           /* Hz mixed at (0: not mixing) */
+	uint64_t sound_hash;           /* snd_set.hash of the sounds loaded */
 };
 
 /* rec_check for everything a replay depends on: the map content, engine
  * version and settings always; the level (or map name) when the recording
- * names one; and, when the recording holds frame hashes and run renders,
- * the render size and renderer version. 0 if the recording replays here
- * and its hashes can be compared, else -EINVAL and every difference joined
- * by "; " ("settings differ: coins_per_credit recording 2, this run 1";
- * "render size differs: recording 320x240, this run 640x480"; "renderer
- * version differs: recording 1, this build 2"; "level differs: recording
- * 2, loaded 1"). A caller that takes the settings, level and size from the
- * recording (as it should: rec_run_from_header) is refused only for what
- * it cannot change: content and versions. */
+ * names one; when the recording holds frame hashes and run renders, the
+ * render size and renderer version; when it holds audio hashes and run
+ * mixes, the audio rate, audio version and sounds. 0 if the recording
+ * replays here and its hashes can be compared, else -EINVAL and every
+ * difference joined by "; " ("settings differ: coins_per_credit recording
+ * 2, this run 1"; "render size differs: recording 320x240, this run
+ * 640x480"; "renderer version differs: recording 1, this build 2"; "level
+ * differs: recording 2, loaded 1"; "audio rate differs: recording 48000,
+ * this run 44100"; "audio version differs: recording 1, this build 2";
+ * "sounds differ: recording 0x..., loaded 0x..."). A caller that takes the
+ * settings, level, size and rate from the recording (as it should:
+ * rec_run_from_header) is refused only for what it cannot change: content
+ * and versions. */
 int rec_check_run(const struct rec_header *h, const struct rec_run *run, char *err,
 		  size_t errlen);
 
-/* The run a recording asks for: its settings, level, map name and render
- * size (0x0 for version 1, which does not store one: keep the default).
+/* The run a recording asks for: its settings, level, map name, render
+ * size (0x0 for version 1, which does not store one: keep the default) and
+ * audio rate (0 before version 3: keep the default).
  * map_hash is left 0: the caller loads the map and fills it in. The
  * map_name pointer points into h. */
 void rec_run_from_header(const struct rec_header *h, struct rec_run *run);
@@ -236,8 +276,8 @@ void rec_run_from_header(const struct rec_header *h, struct rec_run *run);
 struct rec_verify {
 	uint8_t compare;               /* REC_HAS_* this replay compares */
 	uint32_t ticks;                /* ticks seen */
-	uint32_t state_checked, frame_checked;
-	uint32_t state_bad, frame_bad;
+	uint32_t state_checked, frame_checked, audio_checked;
+	uint32_t state_bad, frame_bad, audio_bad;
 	int64_t first_bad;             /* tick of the first difference, -1 none */
 	char first[192];               /* what differed there */
 	char note[192];                /* why something is not compared, or "" */
@@ -246,20 +286,22 @@ struct rec_verify {
 /* Prepares v for a replay of a recording with header h by run (run
  * render_w 0: no rendering). Frame hashes are compared only when the
  * recording holds them, run renders at the recorded size, and the renderer
- * version is this build's; otherwise v->note says why not. */
+ * version is this build's; audio hashes only when the recording holds
+ * them, run mixes at the recorded rate with the recorded sounds, and the
+ * audio version is this build's; otherwise v->note says why not. */
 void rec_verify_init(struct rec_verify *v, const struct rec_header *h, const struct rec_run *run);
 
 /* Compares tick `tick`'s stored hashes (rec, from rec_reader_next_tick)
- * with the replay's (after sim_tick and r_render of that tick; frame is
- * ignored when frames are not compared). 0 if equal, -EDOM if not (the
- * first difference is kept in v->first_bad and v->first). */
+ * with the replay's (run: after sim_tick, the mixing and r_render of that
+ * tick; the hashes not compared are ignored). 0 if equal, -EDOM if not
+ * (the first difference is kept in v->first_bad and v->first). */
 int rec_verify_tick(struct rec_verify *v, uint32_t tick, const struct rec_tick *rec,
-		    uint64_t state, uint64_t frame);
+		    const struct rec_tick *run);
 
-/* One line: "verify: 800 ticks, 800 state and 800 frame hashes equal" or
- * "verify: FAILED: first difference at tick 17: state hash recording
- * 0x..., replay 0x...; 3 state and 0 frame hashes differ of 800 ticks",
- * with the note appended. Returns 0 if everything compared was equal and
+/* One line: "verify: 800 ticks, 800 state, 800 frame and 800 audio hashes
+ * equal" or "verify: FAILED: first difference at tick 17: state hash
+ * recording 0x..., replay 0x...; 3 state, 0 frame and 0 audio hashes
+ * differ of 800 ticks", with the note appended. Returns 0 if everything compared was equal and
  * something was compared, 1 if nothing could be compared (no hashes
  * stored), -EDOM on a difference. */
 int rec_verify_summary(const struct rec_verify *v, char *buf, size_t len);

@@ -14,6 +14,7 @@ libevdev-dev
 libhidapi-dev
 libgpiod-dev
 libusb-1.0-0-dev
+libasound2-dev
 libdrm-dev
 libpng-dev
 libosmesa6-dev

@@ -29,7 +29,8 @@
 # freedoom1 E1M1, the median of five starts.
 #
 # Run as root, the measured processes get nice -20 (less disturbed by other
-# load). Output: a table on stdout, build/bench/bench.csv, build/bench/bench.png.
+# load). The mixer's cost per tick with 16 busy channels (tests/bench/mbench.c)
+# is reported too. Output: a table on stdout, build/bench/bench.csv, build/bench/bench.png.
 # Usage: tests/bench.sh path/to/arcaded   (BENCH_SECONDS: timed seconds per
 # run, default 1; BENCH_PEERS=0 skips the peers)
 set -eu
@@ -64,6 +65,7 @@ $CC $CFL -o "$tmp/rbench" tests/bench/rbench.c "$B/libarcaded.a" $LIBS
 $CC $CFL -o "$tmp/chart" tests/bench/chart.c "$B/libarcaded.a" $LIBS
 $CC $CFL -o "$tmp/demo" tests/bench/demo.c
 $CC $CFL -o "$tmp/runstat" tests/bench/runstat.c
+$CC $CFL -o "$tmp/mbench" tests/bench/mbench.c "$B/libarcaded.a"
 gl=0
 if [ -f engine/gl/rgl.h ] && pkg-config --exists osmesa &&
 	$CC $CFL -DRBENCH_GL -o "$tmp/rbench-gl" tests/bench/rbench.c engine/gl/*.c \
@@ -328,6 +330,12 @@ function atleast(what, a, want) {
 function upto(what, a, want, unit) {
 	printf "  %-52s %8.2f%1s         <= %-5s%1s %s\n", what, a, unit, want, unit, (a + 0 <= want ? "met" : "NOT MET")
 }' "$CSV" "$DCSV"
+# the mixer: one tick of 16 busy channels at 48000 Hz, one core
+mix=$($PRIO "$tmp/mbench" "${BENCH_SECONDS:-1}")
+mms=$(echo "$mix" | awk '{ print $2 }')
+printf '  %-52s %9s ms      <= 0.1     %s\n' "mixer: one tick, 16 busy channels, 48000 Hz" "$mms" \
+	"$(awk -v m="$mms" 'BEGIN { print (m <= 0.1 ? "met" : "NOT MET") }')"
+echo "mixer_ms_per_tick,$mms" > "$OUT/mixer.csv"
 echo
 echo "machine: $NCPU threads of pure integer work ran ${cap}x (before) and ${cap2}x (after) as fast as"
 echo "  one during this run; below ${NCPU}x, other load (or a CPU share, or hyperthread siblings)"

@@ -2,7 +2,7 @@
 # Proves the layering rules of STYLE.md and engine/README.md on the sources
 # and the compiled objects:
 # - engine/ is folders by subsystem, and calls and includes go one way
-#   between them: core < map < game < render < ui, and gl (the OSMesa
+#   between them: core < map < sound < game < render < ui, and gl (the OSMesa
 #   plugin) above render beside ui. A folder may use its own and the ones
 #   below it, never one above or a sibling. Checked twice: on the
 #   `#include "engine/..."` lines, and on the compiled objects (each
@@ -37,16 +37,17 @@ fail=0
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-DIRS="core map game render ui"
+DIRS="core map sound game render ui"
 # Folders each folder may use (itself included).
 allowed() {
 	case $1 in
 	core) echo "core" ;;
 	map) echo "core map" ;;
-	game) echo "core map game" ;;
-	render) echo "core map game render" ;;
-	ui) echo "core map game render ui" ;;
-	gl) echo "core map game render gl" ;;
+	sound) echo "core map sound" ;;
+	game) echo "core map sound game" ;;
+	render) echo "core map sound game render" ;;
+	ui) echo "core map sound game render ui" ;;
+	gl) echo "core map sound game render gl" ;;
 	*) echo "" ;;
 	esac
 }
@@ -109,7 +110,7 @@ else
 			fail=1
 		fi
 	done < "$tmp/calls"
-	for d in core map game ui; do
+	for d in core map sound game ui; do
 		awk -v d="$d" '$1 == d && $3 == d { print $2, $4 }' "$tmp/calls" | sort -u > "$tmp/edges-$d"
 		if ! tsort "$tmp/edges-$d" > /dev/null 2> "$tmp/loop-$d"; then
 			echo "FAIL modules of engine/$d call each other in a loop:"
@@ -137,7 +138,7 @@ bad=$(grep -nwE 'float|double|long double' $src || true)
 if [ -n "$bad" ]; then
 	echo "FAIL engine uses floating point:"; echo "$bad"; fail=1
 fi
-bad=$(grep -rlE '#[[:space:]]*include[[:space:]]*<(GL|EGL)/' app config display engine input \
+bad=$(grep -rlE '#[[:space:]]*include[[:space:]]*<(GL|EGL)/' app config display audio engine input \
 	systemd tests tools 2>/dev/null | grep -vx 'engine/gl/rgl.c' || true)
 if [ -n "$bad" ]; then
 	echo "FAIL OSMesa/GL headers outside engine/gl/rgl.c:"; echo "$bad"; fail=1
@@ -149,8 +150,9 @@ fi
 # the name inside <>) and why. A platform header in a file not listed, or
 # one its entry does not allow, fails; so does an entry whose file no
 # longer includes any (the list names exactly the files that need them).
-platform='linux/|sys/ioctl|sys/kd|sys/inotify|termios|libevdev|systemd/|hidapi|gpiod|libusb|png\.h|pthread|dlfcn|xf86drm|drm'
+platform='alsa/|linux/|sys/ioctl|sys/kd|sys/inotify|termios|libevdev|systemd/|hidapi|gpiod|libusb|png\.h|pthread|dlfcn|xf86drm|drm'
 cat > "$tmp/platform" <<'EOT'
+audio/au_alsa.c	alsa/asoundlib\.h	the ALSA backend: libasound
 display/dp_kms.c	drm_fourcc\.h|xf86drm\.h|xf86drmMode\.h	the DRM/KMS backend: libdrm's mode setting, dumb buffers and page flips
 display/con.c	linux/kd\.h|linux/vt\.h|sys/ioctl\.h	the console under a full-screen display: graphics mode, keyboard off, VT switching
 display/dp_fbdev.c	linux/fb\.h|linux/kd\.h|sys/ioctl\.h	the fbdev backend: FBIOGET_*, the console's graphics mode
@@ -168,7 +170,7 @@ app/glr.c	dlfcn\.h	loads the OSMesa renderer plugin (arcaded-gl.so) with dlopen
 systemd/svc.c	systemd/sd-daemon\.h	sd_notify through libsystemd
 EOT
 grep -nE "#[[:space:]]*include[[:space:]]*<($platform)" app/*.c app/*.h input/*.c input/*.h \
-	display/*.c display/*.h config/*.c config/*.h systemd/*.c systemd/*.h 2>/dev/null |
+	audio/*.c audio/*.h display/*.c display/*.h config/*.c config/*.h systemd/*.c systemd/*.h 2>/dev/null |
 	sed -E 's#^([^:]*):([0-9]+):.*<([^>]*)>.*#\1 \2 \3#' > "$tmp/pinc"
 while read -r f line hdr; do
 	allow=$(awk -F '\t' -v f="$f" '$1 == f { print $2 }' "$tmp/platform")
@@ -188,7 +190,7 @@ done < "$tmp/platform"
 shipped=""
 for d in $DIRS; do shipped="$shipped $(objs_of engine/"$d" | tr '\n' ' ')"; done
 shipped="$shipped $(objs_of engine/gl pic/ | tr '\n' ' ')"
-for d in app input display config systemd; do
+for d in app input display audio config systemd; do
 	shipped="$shipped $(objs_of "$d" | tr '\n' ' ')"
 done
 for o in $shipped; do
@@ -201,5 +203,5 @@ if [ -s "$tmp/names" ]; then
 	cat "$tmp/names"; fail=1
 fi
 
-[ "$fail" -eq 0 ] && echo "check-layers: engine folders call one way (core < map < game < render < ui, gl), no module loops outside the renderer; engine is portable and state-free; platform headers only in backends; exported names match their files"
+[ "$fail" -eq 0 ] && echo "check-layers: engine folders call one way (core < map < sound < game < render < ui, gl), no module loops outside the renderer; engine is portable and state-free; platform headers only in backends; exported names match their files"
 exit "$fail"

@@ -207,7 +207,8 @@ grep -q '^d /etc/arcaded 0755 root root -$' "$TMPFILES" ||
 	{ ok=0; echo "    $TMPFILES: /etc/arcaded differs from ConfigurationDirectory=arcaded 0755"; }
 # Every device the unit allows has a rule giving it to the group, and back.
 for pair in 'char-fb:KERNEL=="fb' 'char-drm:KERNEL=="card' 'char-input:KERNEL=="event' \
-	    'char-hidraw:KERNEL=="hidraw' 'char-gpiochip:KERNEL=="gpiochip' '/dev/tty0:KERNEL=="tty0"'; do
+	    'char-hidraw:KERNEL=="hidraw' 'char-gpiochip:KERNEL=="gpiochip' \
+	    'char-alsa:KERNEL=="pcmC' 'char-alsa:KERNEL=="controlC' '/dev/tty0:KERNEL=="tty0"'; do
 	allow=${pair%%:*}
 	match=${pair#*:}
 	grep -q "^DeviceAllow=$allow " "$UNIT" || { ok=0; echo "    unit lacks DeviceAllow=$allow"; }
@@ -215,7 +216,7 @@ for pair in 'char-fb:KERNEL=="fb' 'char-drm:KERNEL=="card' 'char-input:KERNEL=="
 		{ ok=0; echo "    $RULES lacks a $match rule for group $group"; }
 done
 nallow=$(grep -c '^DeviceAllow=' "$UNIT")
-[ "$nallow" -eq 6 ] || { ok=0; echo "    unit has $nallow DeviceAllow= lines, the rules cover 6"; }
+[ "$nallow" -eq 7 ] || { ok=0; echo "    unit has $nallow DeviceAllow= lines, the rules cover 7"; }
 if [ $ok -eq 1 ]; then
 	pass "unit, udev rules, sysusers and tmpfiles agree (user, group, directories, devices)"
 else

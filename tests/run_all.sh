@@ -88,6 +88,7 @@ case $rc in
 esac
 step build-O0 make --no-print-directory -j"$JOBS" BUILD=build/O0 OPT="-O0 -g" all
 step script-tests tests/script/run.sh build/arcaded
+step sound tests/sound/run.sh build/arcaded
 step replay-tests tests/replay/run.sh build/arcaded build/O0/arcaded
 step powercut tests/powercut/run.sh
 step xbuild tests/xbuild/run.sh build/arcaded

@@ -70,6 +70,7 @@ void g_fire(struct sim *s)
 	s->pl.refire = G_REFIRE;
 	g->shot_t = 0;
 	g_noise(s);
+	g_sound_play(s, SFX_PISTOL, G_SRC_WEAPON);
 	/* every living enemy whose circle the ray enters within range */
 	for (int i = 0; i < g->num_enemies; i++) {
 		const struct g_enemy *e = &g->en[i];
@@ -119,6 +120,8 @@ void g_fire(struct sim *s)
 		g->shot_y = (fx_t)(p->y + ((dy * t) >> FX_SHIFT));
 		g->shot_z = p->viewz;
 		g_shoot_lines(s, p->x, p->y, g->shot_x, g->shot_y);
+		if (g->shot == G_SHOT_WALL)
+			g_sound_start(s, SFX_WALLHIT, g->shot_x, g->shot_y, G_SRC_PUFF);
 	}
 }
 
@@ -169,5 +172,6 @@ void g_pickups_tick(struct sim *s)
 			g_event(s, G_EV_ITEM, MAP_NONE);
 		k->taken = 1;
 		p->bonus = G_BONUS_TICKS;
+		g_sound_play(s, SFX_PICKUP, G_SRC_ITEM);
 	}
 }

@@ -192,8 +192,10 @@ static void g_enemy_tick(struct sim *s, int i)
 	switch (e->state) {
 	case G_E_IDLE:
 		if ((s->tick + (uint32_t)i) % G_IDLE_LOOK == 0 && g_within(s, e, k->sight) &&
-		    g_sees(s, e))
+		    g_sees(s, e)) {
 			g_set_state(e, G_E_CHASE, 0);
+			g_cry(s, i, G_CRY_SIGHT);
+		}
 		return;
 	case G_E_PAIN:
 		if (e->timer)
@@ -223,6 +225,7 @@ static void g_enemy_tick(struct sim *s, int i)
 	if (e->timer == 0) {
 		e->timer = k->period;
 		e->flash = G_FLASH_TICKS;
+		g_cry(s, i, G_CRY_ATTACK);
 		g_hurt_player(s, g_enemy_damage(s, e->kind));
 	}
 }
@@ -280,8 +283,10 @@ void g_noise(struct sim *s)
 	g_flood(s, s->pl.sector, heard, queue);
 	for (int i = 0; i < s->g.num_enemies; i++) {
 		struct g_enemy *e = &s->g.en[i];
-		if (e->state == G_E_IDLE && !e->ambush && heard[e->sector])
+		if (e->state == G_E_IDLE && !e->ambush && heard[e->sector]) {
 			g_set_state(e, G_E_CHASE, 0);
+			g_cry(s, i, G_CRY_SIGHT);
+		}
 	}
 }
 

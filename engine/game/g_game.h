@@ -127,6 +127,7 @@ enum g_phase {
 #define G_CONTINUE_TICKS 600           /* 10 s continue countdown */
 #define G_INITIALS_TICKS 1800          /* 30 s to enter initials */
 #define G_STAGE_BONUS 1000             /* times the stage number, on clearing it */
+#define G_EXTRA_LIFE_SCORE 20000       /* an extra life each time the score passes a multiple */
 
 /* What the last shot did, for the HUD and the puff sprite. */
 enum g_shot { G_SHOT_NONE, G_SHOT_WALL, G_SHOT_ENEMY, G_SHOT_MISS };

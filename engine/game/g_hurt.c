@@ -13,6 +13,20 @@
 /* Chance (of 256) that a hit makes an enemy flinch, per kind. */
 static const uint8_t g_pain_chance[G_KINDS] = { 200, 80, 128 };
 
+/* Each kind's sounds, by G_CRY_* (g_local.h). */
+static const uint8_t g_cries[G_KINDS][G_CRIES] = {
+	[G_GRUNT] = { SFX_GRUNT_SIGHT, SFX_GRUNT_ATTACK, SFX_GRUNT_PAIN, SFX_GRUNT_DEATH },
+	[G_BRUTE] = { SFX_BRUTE_SIGHT, SFX_BRUTE_ATTACK, SFX_BRUTE_PAIN, SFX_BRUTE_DEATH },
+	[G_SENTRY] = { SFX_SENTRY_SIGHT, SFX_SENTRY_ATTACK, SFX_SENTRY_PAIN, SFX_SENTRY_DEATH },
+};
+
+void g_cry(struct sim *s, int i, int cry)
+{
+	const struct g_enemy *e = &s->g.en[i];
+
+	g_sound_start(s, g_cries[e->kind % G_KINDS][cry], e->x, e->y, (uint16_t)G_SRC_ENEMY(i));
+}
+
 void g_hurt_player(struct sim *s, fx_t dmg)
 {
 	if (s->g.phase != G_PH_PLAY)
@@ -23,7 +37,10 @@ void g_hurt_player(struct sim *s, fx_t dmg)
 		s->pl.health = 0;
 		s->g.phase = G_PH_DEAD;
 		s->g.phase_t = 0;
+		g_sound_play(s, SFX_PLAYER_DEATH, G_SRC_PLAYER);
+		return;
 	}
+	g_sound_play(s, SFX_PLAYER_HURT, G_SRC_PLAYER);
 }
 
 static void g_hurt_state(struct g_enemy *e, int st, uint16_t timer)
@@ -47,10 +64,14 @@ void g_hurt_enemy(struct sim *s, int i, int dmg)
 		s->g.alive--;
 		s->g.kills++;
 		s->g.score += g_kinds[e->kind].score;
+		g_cry(s, i, G_CRY_DEATH);
 		return;
 	}
-	if ((g_random(s) & 255) < g_pain_chance[e->kind])
+	if ((g_random(s) & 255) < g_pain_chance[e->kind]) {
 		g_hurt_state(e, G_E_PAIN, G_PAIN_TICKS);
-	else if (e->state == G_E_IDLE)
+		g_cry(s, i, G_CRY_PAIN);
+	} else if (e->state == G_E_IDLE) {
 		g_hurt_state(e, G_E_CHASE, 0);
+		g_cry(s, i, G_CRY_SIGHT);
+	}
 }

@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 
+#include "engine/game/g_sound.h"
 #include "engine/game/sim.h"
 
 struct map;
@@ -71,6 +72,10 @@ void g_hurt_player(struct sim *s, fx_t dmg);
 /* Damage to enemy i; kills give score. A hit may make it flinch (PAIN) or
  * wake it. */
 void g_hurt_enemy(struct sim *s, int i, int dmg);
+
+/* Enemy i's cry (G_CRY_*), where it stands; its next cry cuts this one. */
+enum { G_CRY_SIGHT, G_CRY_ATTACK, G_CRY_PAIN, G_CRY_DEATH, G_CRIES };
+void g_cry(struct sim *s, int i, int cry);
 
 /* ---- g_sight.c ------------------------------------------------------- */
 

@@ -32,6 +32,21 @@ const char *menu_difficulty_name(int d)
 	return d >= 0 && d < 4 ? names[d] : NULL;
 }
 
+const char *menu_sound_name(int i)
+{
+	if (i == MENU_SOUND_LEFT)
+		return "LEFT CHANNEL";
+	if (i == MENU_SOUND_RIGHT)
+		return "RIGHT CHANNEL";
+	return i >= 0 && i < MENU_SOUND_LEFT ? sfx_info(i + 1)->name : "";
+}
+
+/* The menu's blips (G_SRC_MENU: a new one cuts the last). */
+static void menu_blip(struct sim *s, int id)
+{
+	g_sound_play(s, id, G_SRC_MENU);
+}
+
 void menu_enter(struct menu *m)
 {
 	uint8_t res = m->res;
@@ -58,17 +73,16 @@ static uint8_t menu_step(int v, int dir, int lo, int hi)
 	return (uint8_t)v;
 }
 
-static int menu_up_down(struct menu *m, uint8_t nav, int count)
+/* Up/down steps *cursor through 0..count - 1 (wrapping), with a blip. */
+static int menu_up_down(struct sim *s, uint8_t *cursor, uint8_t nav, int count)
 {
-	if (nav & MENU_NAV_UP) {
-		m->cursor = menu_step(m->cursor, -1, 0, count - 1);
-		return 1;
-	}
-	if (nav & MENU_NAV_DOWN) {
-		m->cursor = menu_step(m->cursor, 1, 0, count - 1);
-		return 1;
-	}
-	return 0;
+	int dir = nav & MENU_NAV_UP ? -1 : nav & MENU_NAV_DOWN ? 1 : 0;
+
+	if (!dir)
+		return 0;
+	*cursor = menu_step(*cursor, dir, 0, count - 1);
+	menu_blip(s, SFX_MENU_MOVE);
+	return 1;
 }
 
 static int menu_main(struct sim *s, uint8_t pressed, uint8_t nav)
@@ -77,10 +91,11 @@ static int menu_main(struct sim *s, uint8_t pressed, uint8_t nav)
 
 	if (pressed & SIM_BT_SERVICE)
 		return 1;
-	menu_up_down(m, nav, MENU_ITEMS);
+	menu_up_down(s, &m->cursor, nav, MENU_ITEMS);
 	if (!(pressed & SIM_BT_FIRE))
 		return 0;
 	m->main_cursor = m->cursor;
+	menu_blip(s, SFX_MENU_SELECT);
 	switch (m->cursor) {
 	case MENU_I_INPUT:
 		m->page = MENU_INPUT;
@@ -89,6 +104,9 @@ static int menu_main(struct sim *s, uint8_t pressed, uint8_t nav)
 	case MENU_I_DISPLAY:
 		m->page = MENU_DISPLAY;
 		m->display = MENU_D_BARS;
+		break;
+	case MENU_I_SOUND:
+		m->page = MENU_SOUND;
 		break;
 	case MENU_I_SETTINGS:
 		m->page = MENU_SETTINGS;
@@ -133,6 +151,18 @@ static void menu_change(struct sim *s, int dir)
 	case MENU_S_FREEPLAY:
 		t->freeplay = (uint8_t)!t->freeplay;
 		break;
+	case MENU_S_VOLUME: {
+		/* no wrap: a press must never jump from silent to full */
+		int v = (t->volume > G_VOLUME_MAX ? G_VOLUME_MAX : t->volume) +
+			dir * MENU_VOLUME_STEP;
+		t->volume = (uint8_t)(v < 0 ? 0 : v > G_VOLUME_MAX ? G_VOLUME_MAX : v);
+		break;
+	}
+	case MENU_S_ATTRACT_SOUND:
+		t->attract_sound = menu_step(t->attract_sound > MENU_ATTRACT_SOUND_MAX ?
+						     MENU_ATTRACT_SOUND_MAX : t->attract_sound,
+					     dir, 0, MENU_ATTRACT_SOUND_MAX);
+		break;
 	case MENU_S_RES:
 		m->res = menu_step(m->res, dir, 0, MENU_RES_COUNT);
 		return;
@@ -140,6 +170,7 @@ static void menu_change(struct sim *s, int dir)
 		return;
 	}
 	s->set_gen++;
+	menu_blip(s, SFX_MENU_MOVE);   /* at the new volume */
 }
 
 static void menu_settings(struct sim *s, uint8_t pressed, uint8_t nav)
@@ -150,11 +181,13 @@ static void menu_settings(struct sim *s, uint8_t pressed, uint8_t nav)
 		menu_back(m);
 		return;
 	}
-	if (menu_up_down(m, nav, MENU_SETTINGS_COUNT))
+	if (menu_up_down(s, &m->cursor, nav, MENU_SETTINGS_COUNT))
 		return;
 	if (m->cursor == MENU_S_BACK) {
-		if (pressed & SIM_BT_FIRE)
+		if (pressed & SIM_BT_FIRE) {
+			menu_blip(s, SFX_MENU_SELECT);
 			menu_back(m);
+		}
 		return;
 	}
 	if (m->cursor == MENU_S_DEFAULTS) {
@@ -163,8 +196,11 @@ static void menu_settings(struct sim *s, uint8_t pressed, uint8_t nav)
 			s->set.freeplay = 0;
 			s->set.difficulty = MENU_DEFAULT_DIFFICULTY;
 			s->set.lives = G_LIVES_DEFAULT;
+			s->set.volume = MENU_DEFAULT_VOLUME;
+			s->set.attract_sound = MENU_DEFAULT_ATTRACT_SOUND;
 			m->res = 0;
 			s->set_gen++;
+			menu_blip(s, SFX_MENU_SELECT);
 		}
 		return;
 	}
@@ -201,6 +237,26 @@ static void menu_confirm(struct sim *s, uint8_t pressed, uint8_t nav)
 	menu_back(m);
 }
 
+/* The sound test: up/down choose, fire plays, service goes back. */
+static void menu_sound(struct sim *s, uint8_t pressed, uint8_t nav)
+{
+	struct menu *m = &s->menu;
+
+	if (pressed & SIM_BT_SERVICE) {
+		g_sound_stop(s, G_SRC_TEST);
+		menu_back(m);
+		return;
+	}
+	if (menu_up_down(s, &m->snd, nav, MENU_SOUNDS) || !(pressed & SIM_BT_FIRE))
+		return;
+	if (m->snd == MENU_SOUND_LEFT)
+		g_sound_pan(s, SFX_TONE, 0, G_SRC_TEST);
+	else if (m->snd == MENU_SOUND_RIGHT)
+		g_sound_pan(s, SFX_TONE, G_SND_SEP_MAX, G_SRC_TEST);
+	else
+		g_sound_play(s, m->snd + 1, G_SRC_TEST);
+}
+
 int menu_tick(struct sim *s, uint8_t pressed, uint8_t nav)
 {
 	struct menu *m = &s->menu;
@@ -222,6 +278,9 @@ int menu_tick(struct sim *s, uint8_t pressed, uint8_t nav)
 			m->display = (uint8_t)((m->display + 1) % MENU_D_COUNT);
 		if (pressed & SIM_BT_SERVICE)
 			menu_back(m);
+		break;
+	case MENU_SOUND:
+		menu_sound(s, pressed, nav);
 		break;
 	case MENU_SETTINGS:
 		menu_settings(s, pressed, nav);

@@ -19,8 +19,10 @@
  *   INPUT     input test: each control's state as the game receives it
  *   DISPLAY   display test: colour bars, convergence grid, orientation
  *             (fire steps through them)
- *   SETTINGS  difficulty, lives, coins per credit, free play, render size,
- *             factory defaults
+ *   SETTINGS  difficulty, lives, coins per credit, free play, master volume,
+ *             attract sound, render size, factory defaults
+ *   SOUND     sound test: up/down choose a sound of the set (or the left or
+ *             right channel test: a tone on that side only), fire plays it
  *   BOOKS     bookkeeping: coins, plays, play time, average, uptime
  *   CONFIRM   reset of the high scores or the bookkeeping: NO / YES
  *   WIZARD    the operator chose CONFIGURE INPUTS: a request to the app,
@@ -39,25 +41,38 @@
 #include <stdint.h>
 
 #include "engine/game/sim_table.h"
+#include "engine/sound/sfx.h"
 
 struct sim;
 struct r_frame;
 struct hud_env;
 
 enum menu_page { MENU_MAIN, MENU_INPUT, MENU_DISPLAY, MENU_SETTINGS, MENU_BOOKS, MENU_CONFIRM,
-		 MENU_WIZARD, MENU_PAGES };
+		 MENU_WIZARD, MENU_SOUND, MENU_PAGES };
 
 /* Items of the main page, in order. */
-enum menu_item { MENU_I_INPUT, MENU_I_DISPLAY, MENU_I_SETTINGS, MENU_I_BOOKS,
+enum menu_item { MENU_I_INPUT, MENU_I_DISPLAY, MENU_I_SOUND, MENU_I_SETTINGS, MENU_I_BOOKS,
 		 MENU_I_RESET_SCORES, MENU_I_RESET_BOOKS, MENU_I_WIZARD, MENU_I_EXIT, MENU_ITEMS };
 
 /* Items of the settings page. */
 enum menu_setting { MENU_S_DIFFICULTY, MENU_S_LIVES, MENU_S_COINS, MENU_S_FREEPLAY,
-		    MENU_S_RES, MENU_S_DEFAULTS, MENU_S_BACK, MENU_SETTINGS_COUNT };
+		    MENU_S_VOLUME, MENU_S_ATTRACT_SOUND, MENU_S_RES, MENU_S_DEFAULTS, MENU_S_BACK,
+		    MENU_SETTINGS_COUNT };
 
 /* The factory settings MENU_S_DEFAULTS restores: 1 coin per credit, no
- * free play, NORMAL difficulty, 3 lives, the configured render size. */
+ * free play, NORMAL difficulty, 3 lives, volume 80%, attract sound on,
+ * the configured render size. */
 #define MENU_DEFAULT_DIFFICULTY 1
+#define MENU_DEFAULT_VOLUME 80
+#define MENU_DEFAULT_ATTRACT_SOUND 1
+#define MENU_VOLUME_STEP 5             /* percent per press */
+#define MENU_ATTRACT_SOUND_MAX 9       /* once every 9 cycles at most */
+
+/* Sound test entries: each sound of sfx.h (entry i plays sound i + 1),
+ * then the left and the right channel test. */
+#define MENU_SOUND_LEFT (SFX_COUNT - 1)
+#define MENU_SOUND_RIGHT (SFX_COUNT)
+#define MENU_SOUNDS (SFX_COUNT + 1)
 
 /* Display test screens, stepped by fire. */
 enum menu_display { MENU_D_BARS, MENU_D_GRID, MENU_D_ORIENT, MENU_D_COUNT };
@@ -93,6 +108,7 @@ enum menu_display { MENU_D_BARS, MENU_D_GRID, MENU_D_ORIENT, MENU_D_COUNT };
 	X(VAL, uint16_t, done_t, SIM_ANY)         /* ticks the "done" note has shown */ \
 	/* input test: coin pulses since the page opened */ \
 	X(VAL, uint32_t, coins_seen, SIM_ANY) \
+	X(VAL, uint8_t, snd, SIM_MAX(MENU_SOUNDS - 1))        /* sound test: the entry */ \
 	X(VAL, uint32_t, t, SIM_ANY)              /* ticks since the menu was entered */
 struct menu {
 	MENU_FIELDS(SIM_MEMBER)
@@ -114,6 +130,10 @@ void menu_res_size(int i, int *w, int *h);
 /* Names for the screens: "EASY" "NORMAL" "HARD" "BRUTAL" for difficulty
  * 0..3 (NULL otherwise). */
 const char *menu_difficulty_name(int d);
+
+/* The sound test's entry i: "COIN DROP", "LEFT CHANNEL", "RIGHT CHANNEL"
+ * ("" out of range). */
+const char *menu_sound_name(int i);
 
 /* Draws the menu page for s over the whole frame (menu_draw.c), with the
  * HUD's colours and font (engine/ui/hud.h). */

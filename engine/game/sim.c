@@ -14,6 +14,8 @@
 #include "engine/core/tab.h"
 #include "engine/game/g_local.h"
 #include "engine/map/map.h"
+#include "engine/sound/snd.h"
+#include "engine/sound/syn.h"
 
 /*
  * Movement constants. Each tick: thrust from the command, move by the
@@ -32,6 +34,7 @@
 #define SIM_DEAD_VIEW (8 * FX_ONE)     /* eye height of a dead player */
 #define SIM_NAV_DELAY 20               /* ticks before a held direction repeats */
 #define SIM_NAV_REPEAT 6               /* ticks between repeats */
+#define SIM_FANFARE_AT 30              /* the stage fanfare: ticks into the CLEAR phase */
 
 /* Names as arrays, not pointers: the tables stay read-only data. */
 static const char sim_modes[SIM_MODE_COUNT][10] = {
@@ -126,6 +129,8 @@ static void sim_start_stage(struct sim *s, int i)
 	s->g.stage_t = 0;
 	s->g.shot = G_SHOT_NONE;
 	s->g.shot_t = UINT16_MAX;
+	/* a new stage: its world's sounds stop, the cabinet's play on */
+	g_sound_clear(s, 1);
 	g_spec_start(s);
 	g_spawn_stage(s);
 	sim_spawn(s);
@@ -171,6 +176,11 @@ void sim_init_stages(struct sim *s, const struct map *const *maps, int n,
 	s->num_stages = (uint8_t)n;
 	s->set = *set;
 	s->rng = SIM_RNG_SEED;
+	for (int id = 1; id < SFX_COUNT; id++) {
+		/* the built-in set's lengths until the app gives its own */
+		struct snd b = { NULL, syn_len(id), SYN_RATE };
+		s->snd.len[id] = snd_ticks(&b);
+	}
 	s->new_rank = -1;
 	s->ini_rank = -1;
 	if (scores)
@@ -183,6 +193,12 @@ void sim_init_stages(struct sim *s, const struct map *const *maps, int n,
 		sim_new_game(s);
 	else
 		sim_attract(s, SIM_PAGE_TITLE);
+}
+
+void sim_set_sounds(struct sim *s, const struct snd_set *set)
+{
+	for (int id = 1; id < SFX_COUNT; id++)
+		s->snd.len[id] = snd_ticks(&set->s[id]);
 }
 
 void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set)
@@ -250,6 +266,7 @@ static void sim_player_move(struct sim *s, const struct sim_cmd *cmd)
 static void sim_coins(struct sim *s, uint8_t coins)
 {
 	uint32_t per = s->set.coins_per_credit ? s->set.coins_per_credit : 1;
+	uint32_t credits = s->credits;
 
 	if (!coins)
 		return;
@@ -261,6 +278,10 @@ static void sim_coins(struct sim *s, uint8_t coins)
 		s->coin_rem -= per;
 		s->credits++;
 	}
+	/* the coin's clink; a credit's chime right after it */
+	g_sound_play(s, SFX_COIN, G_SRC_COIN);
+	if (s->credits != credits)
+		s->snd.credit_t = G_CREDIT_DELAY;
 }
 
 /* Spends a credit for a start or continue; 0 if there is none. */
@@ -292,6 +313,18 @@ static void sim_life_lost(struct sim *s)
 	s->mode = SIM_GAMEOVER;
 	s->mode_t = 0;
 	s->countdown = G_CONTINUE_TICKS;
+	g_sound_play(s, SFX_GAME_OVER, G_SRC_ANNOUNCE);
+}
+
+/* An extra life for every G_EXTRA_LIFE_SCORE points (up to 9 lives). */
+static void sim_extra_life(struct sim *s, uint32_t before)
+{
+	struct g_game *g = &s->g;
+
+	if (g->score / G_EXTRA_LIFE_SCORE == before / G_EXTRA_LIFE_SCORE || g->lives >= 9)
+		return;
+	g->lives++;
+	g_sound_play(s, SFX_EXTRA_LIFE, G_SRC_BONUS);
 }
 
 /* The next stage after the intermission (or a cleared stage): one loop
@@ -311,6 +344,7 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd, uint8_t pres
 {
 	struct g_game *g = &s->g;
 	struct sim_player *p = &s->pl;
+	uint32_t score = g->score;
 
 	if (g->stage_t < UINT32_MAX)
 		g->stage_t++;
@@ -338,7 +372,9 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd, uint8_t pres
 			g->score += G_STAGE_BONUS * ((uint32_t)g->stage + 1);
 			g->phase = G_PH_CLEAR;
 			g->phase_t = 0;
+			g_sound_play(s, SFX_STAGE_CLEAR, G_SRC_ANNOUNCE);
 		}
+		sim_extra_life(s, score);
 		break;
 	case G_PH_DEAD:
 		g->phase_t++;
@@ -352,6 +388,8 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd, uint8_t pres
 	case G_PH_CLEAR:
 		/* the player may walk about while the banner shows */
 		g->phase_t++;
+		if (g->phase_t == SIM_FANFARE_AT)
+			g_sound_play(s, SFX_FANFARE, G_SRC_MUSIC);
 		sim_player_move(s, cmd);
 		g_spec_tick(s);
 		if (g->phase_t >= G_CLEAR_TICKS)
@@ -384,12 +422,16 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 		sim_spawn(s);
 		s->mode = SIM_PLAY;
 		s->mode_t = 0;
+		g_sound_play(s, SFX_START, G_SRC_ANNOUNCE);
 		return;
 	}
 	if (pressed & SIM_BT_FIRE)
 		s->countdown = s->countdown > SIM_TICRATE ? (uint16_t)(s->countdown - SIM_TICRATE) : 0;
 	else if (s->countdown)
 		s->countdown--;
+	/* a tick for each whole second of the countdown */
+	if (s->countdown && s->countdown % SIM_TICRATE == 0)
+		g_sound_play(s, SFX_COUNTDOWN, G_SRC_TICKER);
 	if (s->countdown)
 		return;
 	rank = g_scores_rank(&s->scores, s->g.score);
@@ -425,7 +467,10 @@ static void sim_initials_tick(struct sim *s, uint8_t pressed, uint8_t nav)
 		*c = (uint8_t)((*c + 1) % G_ALPHABET_LEN);
 	else if (nav & (MENU_NAV_DOWN | MENU_NAV_LEFT))
 		*c = (uint8_t)((*c + G_ALPHABET_LEN - 1) % G_ALPHABET_LEN);
+	if (nav)
+		g_sound_play(s, SFX_MENU_MOVE, G_SRC_MENU);
 	if (pressed & SIM_BT_FIRE) {
+		g_sound_play(s, SFX_MENU_SELECT, G_SRC_MENU);
 		s->ini_pos++;
 		if (s->ini_pos >= G_NAME_LEN) {
 			sim_initials_done(s);
@@ -447,7 +492,13 @@ static void sim_attract_tick(struct sim *s, uint8_t pressed)
 		s->books.plays++;
 		s->books_gen++;
 		sim_new_game(s);
+		g_sound_play(s, SFX_START, G_SRC_ANNOUNCE);
 		return;
+	}
+	if (s->page == SIM_PAGE_TITLE && s->mode_t == 1) {
+		/* a new attract cycle: its jingle, when the setting has sound now */
+		s->attract_cycle++;
+		g_sound_play(s, SFX_JINGLE, G_SRC_MUSIC);
 	}
 	s->pl.angle += SIM_ATTRACT_TURN;
 	if (s->mode_t >= len[s->page % SIM_PAGE_COUNT]) {
@@ -491,11 +542,13 @@ void sim_tick(struct sim *s, const struct sim_cmd *cmd)
 	s->books.on_ticks++;
 	if (s->mode_t < UINT32_MAX)
 		s->mode_t++;
+	g_sound_age(s);
 	sim_coins(s, cmd->coins);
 	if ((pressed & SIM_BT_SERVICE) && s->mode != SIM_SERVICE) {
 		s->mode = SIM_SERVICE;
 		s->mode_t = 0;
 		menu_enter(&s->menu);
+		g_sound_clear(s, 1);
 		pressed = 0;
 	}
 	switch (s->mode) {
@@ -518,6 +571,7 @@ void sim_tick(struct sim *s, const struct sim_cmd *cmd)
 			sim_attract(s, SIM_PAGE_TITLE);
 		break;
 	}
+	g_sound_follow(s);
 	g_random(s);                   /* stepped every tick so every tick's hash covers it */
 	s->tick++;
 }

@@ -31,11 +31,13 @@
 #include "engine/core/fx.h"
 #include "engine/game/g_game.h"
 #include "engine/game/g_world.h"
+#include "engine/game/g_sound.h"
 #include "engine/game/menu.h"
 #include "engine/game/sim_table.h"
 
 struct map;
 struct r_view;
+struct snd_set;
 
 #define SIM_TICRATE 60
 
@@ -82,7 +84,11 @@ enum sim_page { SIM_PAGE_TITLE, SIM_PAGE_SCORES, SIM_PAGE_DEMO, SIM_PAGE_COUNT }
 	X(VAL, uint8_t, start_in_play, SIM_ANY) \
 	/* 0 easy, 1 normal, 2 hard, 3 brutal; above 3 counts as 3 */ \
 	X(VAL, uint8_t, difficulty, SIM_ANY) \
-	X(VAL, uint8_t, lives, SIM_ANY)             /* 1..9; 0 counts as G_LIVES_DEFAULT */
+	X(VAL, uint8_t, lives, SIM_ANY)             /* 1..9; 0 counts as G_LIVES_DEFAULT */ \
+	/* master volume, percent 0..100 (0 silent; above 100 counts as 100) */ \
+	X(VAL, uint8_t, volume, SIM_ANY) \
+	/* attract mode's sound: 0 off, 1 on, N (2..9) once every N cycles (g_sound.h) */ \
+	X(VAL, uint8_t, attract_sound, SIM_ANY)
 struct sim_settings {
 	SIM_SETTINGS_FIELDS(SIM_MEMBER)
 };
@@ -120,6 +126,8 @@ struct sim_player {
 	X(VAL, uint32_t, tick, SIM_ANY)             /* ticks simulated since sim_init */ \
 	X(ENUM, enum sim_mode, mode, SIM_MODE_COUNT) \
 	X(VAL, uint8_t, page, SIM_MAX(SIM_PAGE_COUNT - 1))  /* ATTRACT: enum sim_page */ \
+	/* attract cycles begun (TITLE pages shown) since sim_init, for attract_sound */ \
+	X(VAL, uint32_t, attract_cycle, SIM_ANY) \
 	/* ticks since the mode (or attract page) began */ \
 	X(VAL, uint32_t, mode_t, SIM_ANY) \
 	X(VAL, uint32_t, credits, SIM_ANY)          /* whole credits available */ \
@@ -135,6 +143,7 @@ struct sim_player {
 	X(SUB, sim_player, pl) \
 	X(SUB, g_game, g) \
 	X(SUB, g_world, w)                          /* the current map as the game changed it */ \
+	X(SUB, g_sound, snd)                        /* the sounds playing (g_sound.h) */ \
 	X(VAL, uint16_t, countdown, SIM_ANY)        /* GAMEOVER: ticks left to continue */ \
 	/* INITIALS: the letter being chosen, 0..2; after the third it stays 3 */ \
 	X(VAL, uint8_t, ini_pos, SIM_MAX(s->mode == SIM_INITIALS ? G_NAME_LEN - 1 : G_NAME_LEN)) \
@@ -172,6 +181,12 @@ struct sim {
 void sim_init_stages(struct sim *s, const struct map *const *maps, int n,
 		     const struct sim_settings *set, const struct g_scores *scores,
 		     const struct g_books *books);
+
+/* The lengths of the sounds of set (snd_ticks, engine/sound/snd.h) for the
+ * sim's channels, which play each sound that many ticks. sim_init_stages
+ * takes those of the built-in set; the app gives the set it loaded (a
+ * WAD's sounds differ) before the first tick. A snapshot carries them. */
+void sim_set_sounds(struct sim *s, const struct snd_set *set);
 
 /* sim_init_stages with the one map m, the default table and zero books. */
 void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set);

@@ -50,6 +50,7 @@ static void menu_main_page(struct menu_ctx *m)
 {
 	static const char items[MENU_ITEMS][20] = {
 		[MENU_I_INPUT] = "INPUT TEST", [MENU_I_DISPLAY] = "DISPLAY TEST",
+		[MENU_I_SOUND] = "SOUND TEST",
 		[MENU_I_SETTINGS] = "GAME SETTINGS", [MENU_I_BOOKS] = "BOOKKEEPING",
 		[MENU_I_RESET_SCORES] = "RESET HIGH SCORES", [MENU_I_RESET_BOOKS] = "RESET BOOKKEEPING",
 		[MENU_I_WIZARD] = "CONFIGURE INPUTS", [MENU_I_EXIT] = "EXIT",
@@ -170,7 +171,7 @@ static void menu_settings_page(struct menu_ctx *m)
 	const struct sim *s = m->s;
 	const struct menu *mn = &s->menu;
 	const char *diff = menu_difficulty_name(s->set.difficulty > 3 ? 3 : s->set.difficulty);
-	char lives[4] = "", coins[4] = "", res[24] = "";
+	char lives[4] = "", coins[4] = "", res[24] = "", vol[8] = "", attract[16] = "";
 	int w = m->f->w, h = m->f->h;
 
 	hud_cat_num(lives, sizeof(lives), s->set.lives ? s->set.lives : G_LIVES_DEFAULT, 1, '0');
@@ -183,14 +184,45 @@ static void menu_settings_page(struct menu_ctx *m)
 	hud_cat_num(res, sizeof(res), (uint64_t)h, 1, '0');
 	if (!mn->res)
 		msg_cat(res, sizeof(res), " NOW");
+	hud_cat_num(vol, sizeof(vol), s->set.volume > G_VOLUME_MAX ? G_VOLUME_MAX : s->set.volume,
+		    1, '0');
+	msg_cat(vol, sizeof(vol), "%");
+	if (s->set.attract_sound <= 1) {
+		msg_cat(attract, sizeof(attract), s->set.attract_sound ? "ON" : "OFF");
+	} else {
+		msg_cat(attract, sizeof(attract), "1 CYCLE IN ");
+		hud_cat_num(attract, sizeof(attract), s->set.attract_sound, 1, '0');
+	}
 	menu_title(m, "GAME SETTINGS", "LEFT/RIGHT CHANGE  SERVICE BACK");
 	menu_item(m, mn->cursor == MENU_S_DIFFICULTY, "DIFFICULTY", diff);
 	menu_item(m, mn->cursor == MENU_S_LIVES, "LIVES", lives);
 	menu_item(m, mn->cursor == MENU_S_COINS, "COINS PER CREDIT", coins);
 	menu_item(m, mn->cursor == MENU_S_FREEPLAY, "FREE PLAY", s->set.freeplay ? "YES" : "NO");
+	menu_item(m, mn->cursor == MENU_S_VOLUME, "VOLUME", vol);
+	menu_item(m, mn->cursor == MENU_S_ATTRACT_SOUND, "ATTRACT SOUND", attract);
 	menu_item(m, mn->cursor == MENU_S_RES, "RENDER SIZE", res);
 	menu_item(m, mn->cursor == MENU_S_DEFAULTS, "FACTORY DEFAULTS", NULL);
 	menu_item(m, mn->cursor == MENU_S_BACK, "BACK", NULL);
+}
+
+/* The sound test: a window of entries round the one chosen. */
+static void menu_sound_page(struct menu_ctx *m)
+{
+	const struct menu *mn = &m->s->menu;
+	int rows = (m->f->h - 34 * m->sc - 24 * m->sc) / (12 * m->sc), first;
+
+	if (rows < 1)
+		rows = 1;
+	if (rows > MENU_SOUNDS)
+		rows = MENU_SOUNDS;
+	first = mn->snd - rows / 2;
+	if (first > MENU_SOUNDS - rows)
+		first = MENU_SOUNDS - rows;
+	if (first < 0)
+		first = 0;
+	menu_title(m, "SOUND TEST", "UP/DOWN CHOOSE  FIRE PLAY  SERVICE BACK");
+	for (int i = first; i < first + rows; i++)
+		menu_item(m, i == mn->snd, menu_sound_name(i), NULL);
 }
 
 static void menu_books_page(struct menu_ctx *m)
@@ -255,6 +287,9 @@ void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f
 		break;
 	case MENU_CONFIRM:
 		menu_confirm_page(&m);
+		break;
+	case MENU_SOUND:
+		menu_sound_page(&m);
 		break;
 	case MENU_MAIN:
 	case MENU_WIZARD:              /* its one tick: the app draws the wizard */

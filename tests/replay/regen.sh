@@ -18,3 +18,10 @@ for rec in tests/replay/golden-*.rec; do
 	"$BIN" $common --replay "$rec" >"tests/replay/$name.hashes"
 	echo "$name: $(wc -l <"tests/replay/$name.hashes") ticks from $scr"
 done
+# the Freedoom map (its sounds are Freedoom's DS lumps)
+W=/usr/share/games/doom/freedoom1.wad
+fd="--wad $W --map E1M1"
+"$BIN" $common $fd --script tests/replay/freedoom/e1m1.scr \
+	--record tests/replay/freedoom/golden-e1m1.rec >/dev/null
+"$BIN" $common $fd replay tests/replay/freedoom/golden-e1m1.rec >tests/replay/freedoom/golden-e1m1.hashes
+echo "golden-e1m1: $(wc -l <tests/replay/freedoom/golden-e1m1.hashes) ticks from tests/replay/freedoom/e1m1.scr"

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Replay tests: determinism and refusal.
 #  1. a script's play is recorded; replaying it twice with the -O2 build and
-#     once with the -O0 build gives identical per-tick state and frame hashes;
+#     once with the -O0 build gives identical per-tick state, frame and
+#     audio hashes;
 #  2. every committed golden recording replays to its committed hashes,
 #     and without rendering to the same state hashes;
 #  3. a recording of another map, or of a newer format, is refused with a
@@ -34,6 +35,11 @@ cmp -s "$tmp/a" "$tmp/c"; check "-O2 and -O0 builds: identical hashes" $?
 distinct=$(cut -d' ' -f3 "$tmp/a" | sort -u | wc -l)
 check "frames change during the walk ($distinct distinct frame hashes)" \
 	$([ "$distinct" -gt 10 ]; echo $?)
+# the sound too: the attract jingle, the coin, the start, steps of play
+silent=$(cut -d' ' -f4 "$tmp/a" | sort | uniq -c | sort -rn | head -n 1 | awk '{ print $1 }')
+distinct=$(cut -d' ' -f4 "$tmp/a" | sort -u | wc -l)
+check "sound changes during the walk ($distinct distinct audio hashes; the commonest, silence, $silent times)" \
+	$([ "$distinct" -gt 100 ]; echo $?)
 
 for rec in tests/replay/golden-*.rec; do
 	name=$(basename "$rec" .rec)
@@ -44,12 +50,12 @@ for rec in tests/replay/golden-*.rec; do
 		check "$name replays to its committed hashes" 1
 		continue
 	fi
-	# Headless without rendering: the same state hashes, frame hash 0.
+	# Headless without rendering: the same state and audio hashes, frame hash 0.
 	$BIN $common --replay "$rec" --no-render >"$tmp/n" 2>/dev/null
-	cut -d' ' -f1,2 "$tmp/g" >"$tmp/g2"
-	cut -d' ' -f1,2 "$tmp/n" >"$tmp/n2"
+	cut -d' ' -f1,2,4 "$tmp/g" >"$tmp/g2"
+	cut -d' ' -f1,2,4 "$tmp/n" >"$tmp/n2"
 	cmp -s "$tmp/g2" "$tmp/n2" && ! cut -d' ' -f3 "$tmp/n" | grep -qv '^0000000000000000$'
-	check "$name replays to its committed hashes ($(wc -l <"$tmp/g") ticks; --no-render: same states)" $?
+	check "$name replays to its committed hashes ($(wc -l <"$tmp/g") ticks; --no-render: same states and sound)" $?
 done
 
 # a Freedoom map (when the freedoom package is installed, as setup does)
@@ -75,11 +81,18 @@ $BIN $common --replay "$tmp/newer.rec" >/dev/null 2>"$tmp/newer.err"
 rc=$?
 check "newer format refused (exit $rc): $(head -n 1 "$tmp/newer.err")" \
 	$([ "$rc" -eq 2 ] && grep -q "version" "$tmp/newer.err"; echo $?)
+# a recording of the engine before sound (engine version 2, bytes 24..27)
+cp "$tmp/walk.rec" "$tmp/old.rec"
+printf '\002' | dd of="$tmp/old.rec" bs=1 seek=24 conv=notrunc 2>/dev/null
+$BIN $common --replay "$tmp/old.rec" >/dev/null 2>"$tmp/old.err"
+rc=$?
+check "a recording of engine version 2 (before sound) refused, naming it (exit $rc): $(grep -o 'engine version differs.*' "$tmp/old.err")" \
+	$([ "$rc" -eq 2 ] && grep -q "engine version differs: recording 2, this build 3" "$tmp/old.err"; echo $?)
 
-# --record writes format 2: an 80-byte header, then per tick the 6-byte
-# command, the state hash and the frame hash (22 bytes).
-HDR=80
-TICK=22
+# --record writes format 3: a 96-byte header, then per tick the 6-byte
+# command, the state, frame and audio hashes (30 bytes).
+HDR=96
+TICK=30
 # 4. cut after 100 whole ticks and half of the next one
 head -c $((HDR + TICK * 100 + 3)) "$tmp/walk.rec" >"$tmp/cut.rec"
 $BIN $common --replay "$tmp/cut.rec" >"$tmp/cut" 2>/dev/null
@@ -108,6 +121,13 @@ $BIN $common replay "$tmp/bad.rec" --verify --quiet >/dev/null 2>"$tmp/v2.err"
 rc=$?
 check "a wrong stored hash fails --verify at its tick (exit $rc)" \
 	$([ "$rc" -eq 1 ] && grep -q "first difference at tick 300" "$tmp/v2.err"; echo $?)
+# corrupt tick 400's stored audio hash (byte 22 of its record)
+cp "$tmp/walk.rec" "$tmp/bada.rec"
+printf '\377' | dd of="$tmp/bada.rec" bs=1 seek=$((HDR + TICK * 400 + 22)) conv=notrunc 2>/dev/null
+$BIN $common replay "$tmp/bada.rec" --verify --quiet >/dev/null 2>"$tmp/va.err"
+rc=$?
+check "a wrong stored audio hash fails --verify at its tick (exit $rc)" \
+	$([ "$rc" -eq 1 ] && grep -q "first difference at tick 400: audio hash" "$tmp/va.err"; echo $?)
 # --verify at another render size is refused, saying what differs
 $BIN $common replay "$tmp/walk.rec" --verify --set game.render_width=640 \
 	--set game.render_height=480 --quiet >/dev/null 2>"$tmp/v3.err"

@@ -11,6 +11,12 @@
 #    script: its SHA-256 in tests/script/frames.sha256. Those were written
 #    by tests/script/regen.sh, which also writes each frame as a PNG to
 #    look at before committing; a script without a stored frame fails.
+# Then the sound: tests/script/sound/shots.scr played with --audio wav:FILE
+# at 48000 Hz and at 22050 Hz (ticks of 367 or 368 frames): the pistol's
+# sound, found in the file by correlation with its own samples
+# (tests/sound/sndfind.c, built next to the daemon's unit tests), begins at
+# the first frame of exactly the ticks where the script fires, and the
+# file holds exactly every tick's frames.
 # Usage: tests/script/run.sh path/to/arcaded
 set -u
 BIN=$(realpath "$1")
@@ -68,5 +74,38 @@ EOT
 		echo "FAIL script $name"; fail=$((fail + 1))
 	fi
 done
+# ---- sound -----------------------------------------------------------------
+FIND=$(dirname "$BIN")/tests/sndfind
+shots="200 260 345 420 470 482 494"
+end=520
+for rate in 48000 22050; do
+	name="sound-shots-$rate"
+	rm -rf "$tmp/run"; mkdir "$tmp/run"
+	"$BIN" --script tests/script/sound/shots.scr --config-dir "$tmp/etc" --state-dir "$tmp/state" \
+		--audio wav:"$tmp/run/shots.wav" --set audio.rate=$rate >"$tmp/out" 2>"$tmp/err"
+	rc=$?
+	if [ ! -x "$FIND" ]; then
+		echo "$name: $FIND missing (make tests builds it)"; ok=0
+	else
+		"$FIND" --min 0.9 "$tmp/run/shots.wav" PISTOL >"$tmp/found" 2>&1
+		got=$(awk '$1 == "found" { printf "%s ", $2 }' "$tmp/found")
+		want=$(for t in $shots; do printf '%s ' $((t * rate / 60)); done)
+		scores=$(awk '$1 == "found" { printf "%s ", $3 }' "$tmp/found")
+		frames=$(sed -n 's/.*frames \([0-9]*\),.*/\1/p' "$tmp/found")
+		ok=1
+		[ "$rc" -eq 0 ] || { echo "$name: exit status $rc"; ok=0; }
+		[ "$got" = "$want" ] || { echo "$name: the shot found at frames $got; fire at $want"; ok=0; }
+		# ticks 0..end: F(end + 1) frames
+		[ "$frames" = $(((end + 1) * rate / 60)) ] ||
+			{ echo "$name: $frames frames, not $(((end + 1) * rate / 60))"; ok=0; }
+	fi
+	if [ "$ok" -eq 1 ]; then
+		echo "PASS script $name: the shot at frames $got(scores $scores)"; pass=$((pass + 1))
+	else
+		cat "$tmp/found" "$tmp/err" 2>/dev/null | sed 's/^/  /'
+		echo "FAIL script $name"; fail=$((fail + 1))
+	fi
+done
+
 echo "scripts: $pass passed, $fail failed"
 [ "$fail" -eq 0 ] && [ "$pass" -gt 0 ]

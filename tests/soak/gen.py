@@ -22,7 +22,7 @@ version = struct.unpack_from('<H', raw, 8)[0]
 hsize = struct.unpack_from('<I', raw, 12)[0]
 count = struct.unpack_from('<I', raw, 32)[0]
 flags = raw[44] if version >= 2 else 0
-rsize = 6 + 8 * bin(flags & 3).count('1')
+rsize = 6 + 8 * bin(flags & 0x0b).count('1')  # state 1, frame 2, audio 8 (format 3)
 if flags & 4 or count == 0xffffffff:
     sys.exit('gen.py: %s starts from a snapshot or was not finished' % tmpl)
 prefix = [raw[hsize + i * rsize:hsize + i * rsize + 6] for i in range(count)]

@@ -58,7 +58,9 @@ version, = struct.unpack_from('<H', raw, 8)
 hsize, = struct.unpack_from('<I', raw, 12)
 count, = struct.unpack_from('<I', raw, 32)
 flags = raw[44] if version >= 2 else 0
-rsize = 6 + 8 * bin(flags & 3).count('1')
+# each hash flag adds 8 bytes: state 0x01, frame 0x02, audio 0x08 (format 3);
+# 0x04 is the snapshot, in the header
+rsize = 6 + 8 * bin(flags & 0x0b).count('1')
 n = min(count, (len(raw) - hsize) // rsize)
 fwd = turn = 0
 for i in range(n):

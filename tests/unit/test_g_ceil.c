@@ -19,7 +19,7 @@
 #include "engine/map/map.h"
 #include "map_fixture.h"
 
-static const struct sim_settings play = { 1, 0, 1, 0, 0 };
+static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1 };
 
 /* Room A (x 0..256, floor 0) | lift (256..384, floor 64, tag 1) | room B
  * (384..640, floor 64); line 2 (x = 256, front A) is an SR 62 lift switch

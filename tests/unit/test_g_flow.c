@@ -272,7 +272,7 @@ static void lose_every_life(struct flow *f)
 
 static void play_flow(struct flow *f)
 {
-	static const struct sim_settings set = { 1, 0, 0, 0, 0 };  /* what the app passes today */
+	static const struct sim_settings set = { 1, 0, 0, 0, 0, 100, 1 };  /* what the app passes today */
 	const struct map *mp[3];
 
 	memset(f, 0, sizeof(*f));
@@ -292,8 +292,8 @@ static void play_flow(struct flow *f)
 	idle(f, 2);
 	tap(f, ACT_SERVICE);
 	expect(f, "mode", "==", "service");
-	tap(f, ACT_BACK);
-	tap(f, ACT_BACK);
+	for (int i = 0; i < MENU_I_SETTINGS; i++)
+		tap(f, ACT_BACK);
 	tap(f, ACT_FIRE);
 	for (int i = 0; i < MENU_S_DEFAULTS; i++)
 		tap(f, ACT_BACK);
@@ -458,7 +458,7 @@ static void the_committed_script_is_the_flow(void **state)
 	struct scr *scr;
 	char err[256];
 	const struct map *mp[3];
-	static const struct sim_settings set = { 1, 0, 0, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 0, 0, 0, 100, 1 };
 	struct cmd_state cs;
 	struct sim s;
 	size_t len, k = 0;

@@ -4,6 +4,8 @@
  * their names. The order has reasons a change would break: the command is
  * built from the inputs read in the same tick; the flight recorder's
  * snapshot comes before the sim's tick and the recording after it; the
+ * tick's sound is written right after the tick (and its audio hash is
+ * there for the flight recorder's record); the
  * service menu's render size is followed before the frame is drawn; the
  * hashes are of the frame just presented; READY=1 follows the first
  * present. begin and input stop the loop before anything else of their
@@ -21,7 +23,7 @@
 #include "app/loop.h"
 
 /* The documented order of one whole tick. */
-#define TICK "begin wait input command wizard flight_before sim flight_after requests " \
+#define TICK "begin wait input command wizard flight_before sim sound flight_after requests " \
 	     "outputs persist present hashes checks notify "
 
 struct run {
@@ -80,6 +82,7 @@ STEP(wait)
 STEP(wizard)
 STEP(flight_before)
 STEP(sim)
+STEP(sound)
 STEP(flight_after)
 STEP(requests)
 STEP(outputs)
@@ -98,6 +101,7 @@ static const struct loop_ops ops = {
 	.wizard = wizard,
 	.flight_before = flight_before,
 	.sim = sim,
+	.sound = sound,
 	.flight_after = flight_after,
 	.requests = requests,
 	.outputs = outputs,

@@ -54,7 +54,7 @@ static void in_menu(struct sim *s, const struct sim_settings *set)
 	assert_int_equal(s->menu.cursor, MENU_I_INPUT);
 }
 
-static const struct sim_settings base = { 1, 0, 0, 1, 3 };
+static const struct sim_settings base = { 1, 0, 0, 1, 3, 100, 1 };
 
 static void the_cursor_moves_and_wraps_and_pages_open_and_close(void **state)
 {
@@ -68,9 +68,8 @@ static void the_cursor_moves_and_wraps_and_pages_open_and_close(void **state)
 	assert_int_equal(s.menu.cursor, MENU_I_EXIT);
 	press(&s, DOWN);
 	assert_int_equal(s.menu.cursor, MENU_I_INPUT);
-	press(&s, DOWN);
-	press(&s, DOWN);
-	press(&s, DOWN);
+	for (int i = 0; i < MENU_I_BOOKS; i++)
+		press(&s, DOWN);
 	press(&s, FIRE);
 	assert_int_equal(s.menu.page, MENU_BOOKS);
 	press(&s, SERVICE);                    /* back, cursor kept */
@@ -139,8 +138,8 @@ static void settings_change_with_left_and_right(void **state)
 	int w, h;
 	(void)state;
 	in_menu(&s, &base);
-	press(&s, DOWN);
-	press(&s, DOWN);
+	for (int i = 0; i < MENU_I_SETTINGS; i++)
+		press(&s, DOWN);
 	press(&s, FIRE);
 	assert_int_equal(s.menu.page, MENU_SETTINGS);
 	assert_int_equal(s.menu.cursor, MENU_S_DIFFICULTY);
@@ -163,6 +162,21 @@ static void settings_change_with_left_and_right(void **state)
 	assert_int_equal(s.set.freeplay, 1);
 	assert_int_equal(s.set_gen, 3 + 3 + 1 + 1);   /* one per change */
 	press(&s, DOWN);
+	press(&s, LEFT);                       /* volume in steps of 5 */
+	assert_int_equal(s.set.volume, 95);
+	press(&s, RIGHT);
+	press(&s, RIGHT);                      /* 100 stays 100: never a jump to silent */
+	assert_int_equal(s.set.volume, 100);
+	press(&s, DOWN);
+	press(&s, RIGHT);                      /* attract sound: on, then 1 cycle in 2 */
+	assert_int_equal(s.set.attract_sound, 2);
+	press(&s, LEFT);
+	press(&s, LEFT);
+	assert_int_equal(s.set.attract_sound, 0);
+	press(&s, LEFT);                       /* off wraps to 1 cycle in 9 */
+	assert_int_equal(s.set.attract_sound, 9);
+	assert_int_equal(s.set_gen, 8 + 3 + 4);
+	press(&s, DOWN);
 	press(&s, RIGHT);
 	assert_int_equal(s.menu.res, 1);
 	menu_res_size(s.menu.res, &w, &h);
@@ -171,7 +185,7 @@ static void settings_change_with_left_and_right(void **state)
 	press(&s, LEFT);
 	press(&s, LEFT);                       /* 0 (as configured) wraps to the last */
 	assert_int_equal(s.menu.res, MENU_RES_COUNT);
-	assert_int_equal(s.set_gen, 8);        /* the size is not a game setting */
+	assert_int_equal(s.set_gen, 15);       /* the size is not a game setting */
 	press(&s, DOWN);
 	press(&s, DOWN);
 	press(&s, FIRE);                       /* BACK */
@@ -186,12 +200,12 @@ static void settings_change_with_left_and_right(void **state)
 
 static void factory_defaults_restore_every_setting(void **state)
 {
-	static const struct sim_settings odd = { 7, 1, 0, 3, 9 };
+	static const struct sim_settings odd = { 7, 1, 0, 3, 9, 30, 0 };
 	struct sim s;
 	(void)state;
 	in_menu(&s, &odd);
-	press(&s, DOWN);
-	press(&s, DOWN);
+	for (int i = 0; i < MENU_I_SETTINGS; i++)
+		press(&s, DOWN);
 	press(&s, FIRE);
 	for (int i = 0; i < MENU_S_RES; i++)
 		press(&s, DOWN);
@@ -206,6 +220,8 @@ static void factory_defaults_restore_every_setting(void **state)
 	assert_int_equal(s.set.freeplay, 0);
 	assert_int_equal(s.set.difficulty, 1);
 	assert_int_equal(s.set.lives, 3);
+	assert_int_equal(s.set.volume, 80);
+	assert_int_equal(s.set.attract_sound, 1);
 	assert_int_equal(s.menu.res, 0);
 	assert_int_equal(s.set_gen, 1);
 	assert_int_equal(s.menu.page, MENU_SETTINGS);

@@ -146,11 +146,13 @@ static void test_header_errors(void **state)
 	assert_string_equal(err, "bad magic (not an arcaded recording)");
 	assert_int_equal(decode_patched(7, 1, 40, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "bad magic (not an arcaded recording)");
-	assert_int_equal(decode_patched(8, 3, 40, err, sizeof(err)), -EINVAL);
-	assert_string_equal(err, "version 3 is newer than this build (2)");
-	/* Version 2 needs its longer header. */
+	assert_int_equal(decode_patched(8, 4, 40, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "version 4 is newer than this build (3)");
+	/* Versions 2 and 3 need their longer headers. */
 	assert_int_equal(decode_patched(8, 2, 40, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "file too short (40 bytes, the header needs 80)");
+	assert_int_equal(decode_patched(8, 3, 40, err, sizeof(err)), -EINVAL);
+	assert_string_equal(err, "file too short (40 bytes, the header needs 96)");
 	assert_int_equal(decode_patched(8, 0, 40, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "version 0 is not a valid version");
 	assert_int_equal(decode_patched(12, 39, 40, err, sizeof(err)), -EINVAL);
@@ -391,7 +393,7 @@ static void test_reader_open_errors_name_the_file(void **state)
 	b[8] = 7;
 	write_bytes(path, b, sizeof(b));
 	assert_int_equal(rec_reader_open(path, &r, err, sizeof(err)), -EINVAL);
-	snprintf(want, sizeof(want), "%s: version 7 is newer than this build (2)", path);
+	snprintf(want, sizeof(want), "%s: version 7 is newer than this build (3)", path);
 	assert_string_equal(err, want);
 
 	memcpy(b, sample_bytes, sizeof(b));
@@ -428,6 +430,7 @@ static void test_check_names_every_difference(void **state)
 	assert_string_equal(err, "map content differs: recording 0x0102030405060708, "
 				 "loaded 0x0000000000000abc");
 
+	/* a recording made before sound (engine 2): refused, naming it */
 	h.engine_version = 2;
 	assert_int_equal(rec_check(&h, 0x0102030405060708ull, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "engine version differs: recording 2, this build 3");
@@ -764,6 +767,15 @@ static void test_check_run_names_each_difference(void **state)
 	assert_int_equal(strlen(err), 19);
 }
 
+/* rec_verify_tick with the replay's state and frame hashes s and f. */
+static int vtick(struct rec_verify *v, uint32_t tick, const struct rec_tick *t, uint64_t s,
+		 uint64_t f)
+{
+	struct rec_tick run = { .state_hash = s, .frame_hash = f };
+
+	return rec_verify_tick(v, tick, t, &run);
+}
+
 static void test_verify_finds_the_first_difference(void **state)
 {
 	struct rec_header h = sample_header_v2();
@@ -784,22 +796,22 @@ static void test_verify_finds_the_first_difference(void **state)
 			f++;
 		if (i >= 8)
 			s++;
-		assert_int_equal(rec_verify_tick(&v, i, &t, s, f), i >= 7 ? -EDOM : 0);
+		assert_int_equal(vtick(&v, i, &t, s, f), i >= 7 ? -EDOM : 0);
 	}
 	assert_int_equal(rec_verify_summary(&v, line, sizeof(line)), -EDOM);
 	assert_string_equal(line, "verify: FAILED: first difference at tick 7: frame hash "
 				  "recording 0xfffffffffffffc00, replay 0xfffffffffffffc01 "
-				  "(state hashes equal); 2 state and 1 frame hashes differ of 10 "
-				  "ticks");
+				  "(state hashes equal); 2 state, 1 frame and 0 audio hashes differ "
+				  "of 10 ticks");
 
 	rec_verify_init(&v, &h, &run);
 	for (uint32_t i = 0; i < 3; i++) {
 		struct rec_tick t = { .state_hash = nth_state(i), .frame_hash = nth_frame(i) };
 
-		assert_int_equal(rec_verify_tick(&v, i, &t, nth_state(i), nth_frame(i)), 0);
+		assert_int_equal(vtick(&v, i, &t, nth_state(i), nth_frame(i)), 0);
 	}
 	assert_int_equal(rec_verify_summary(&v, line, sizeof(line)), 0);
-	assert_string_equal(line, "verify: 3 ticks, 3 state and 3 frame hashes equal");
+	assert_string_equal(line, "verify: 3 ticks, 3 state, 3 frame and 0 audio hashes equal");
 }
 
 static void test_verify_says_why_frames_are_not_compared(void **state)
@@ -816,9 +828,9 @@ static void test_verify_says_why_frames_are_not_compared(void **state)
 	run = sample_run(&h);
 	run.render_w = run.render_h = 0;
 	rec_verify_init(&v, &h, &run);
-	assert_int_equal(rec_verify_tick(&v, 0, &t, 1, 999), 0);
+	assert_int_equal(vtick(&v, 0, &t, 1, 999), 0);
 	assert_int_equal(rec_verify_summary(&v, line, sizeof(line)), 0);
-	assert_string_equal(line, "verify: 1 ticks, 1 state and 0 frame hashes equal "
+	assert_string_equal(line, "verify: 1 ticks, 1 state, 0 frame and 0 audio hashes equal "
 				  "(frame hashes not compared: not rendering)");
 
 	run = sample_run(&h);
@@ -832,12 +844,12 @@ static void test_verify_says_why_frames_are_not_compared(void **state)
 	snprintf(want, sizeof(want), "frame hashes not compared: drawn by renderer version %d, "
 		 "this build draws version %d", REC_RENDER_VERSION + 1, REC_RENDER_VERSION);
 	assert_string_equal(v.note, want);
-	assert_int_equal(rec_verify_tick(&v, 0, &t, 5, 2), -EDOM);
+	assert_int_equal(vtick(&v, 0, &t, 5, 2), -EDOM);
 
 	/* A recording without hashes verifies nothing, and says so. */
 	h.hash_flags = 0;
 	rec_verify_init(&v, &h, &run);
-	assert_int_equal(rec_verify_tick(&v, 0, &t, 5, 6), 0);
+	assert_int_equal(vtick(&v, 0, &t, 5, 6), 0);
 	assert_int_equal(rec_verify_summary(&v, line, sizeof(line)), 1);
 	assert_string_equal(line, "verify: 1 ticks, nothing compared: the recording holds no "
 				  "hashes");

@@ -2,14 +2,15 @@
  * replay: the headless replayer of the cross-build determinism test.
  *
  * Links only the engine (every engine/ source but gl), the recording and
- * script code (input/rec.c, scr.c, act.c, with their file and message
- * helpers io.c and txt.c) and the app's content and view code (app/ct.c,
- * view.c, demo.c, cmd.c): no platform library, so it builds with any C11 compiler for any CPU
+ * script code (input/rec.c, rec_check.c, scr.c, act.c, with their file
+ * and message helpers io.c and txt.c) and the app's content, view and
+ * sound code (app/ct.c, view.c, demo.c, cmd.c, hear.c): no platform
+ * library, so it builds with any C11 compiler for any CPU
  * (tests/xbuild/run.sh builds it with gcc -O0, gcc -O3, clang -O2 and an
  * aarch64 cross gcc). It does per tick exactly what `arcaded --replay`
  * does, through the same engine functions, and prints the same lines:
- * "TICK STATEHASH FRAMEHASH" (frame hash 0 without rendering); the test
- * diffs its output with the daemon's.
+ * "TICK STATEHASH FRAMEHASH AUDIOHASH" (frame hash 0 without rendering);
+ * the test diffs its output with the daemon's.
  *
  *   replay [options] FILE
  *     --no-render       state hashes only (frame hash printed as 0)
@@ -18,23 +19,25 @@
  *     --until T         stop after tick T (ticks 0..T run)
  *     --quiet           no per-tick lines
  *     --verify          compare with the hashes stored in the recording
- *                       (format 2); print the verdict; exit 1 on a difference
- *     --rehash OUT      write the recording again as format 2 with the
- *                       state and frame hashes of this replay
+ *                       (format 2 or 3); print the verdict; exit 1 on a
+ *                       difference
+ *     --rehash OUT      write the recording again as format 3 with the
+ *                       state, frame and audio hashes of this replay
  *     --bench           print ticks per second to stderr
  *     --modes           print to stderr, at the end, how many times the
  *                       game entered each mode ("modes: attract 3 play 2
  *                       gameover 2 initials 1 service 0"): the soak test's
  *                       proof that its input went through the whole flow
  *   replay --make-random OUT TICKS SEED
- *     writes a format 1 recording for built-in level 1: a coin and START,
+ *     writes a format 3 recording without hashes for built-in level 1,
+ *     volume 100 and attract sound on: a coin and START,
  *     then TICKS ticks of random play (xorshift32 from SEED): movement,
  *     turning and strafing held for random spans, running into walls
  *   replay --cut IN K OUT
  *     writes the rest of IN from tick K on as a recording of its own that
  *     starts from a snapshot (as the flight recorder's games do): IN's
  *     ticks 0..K-1 run as a replay runs them, the sim is snapshotted
- *     (sim_snapshot), and OUT (format 2) holds that snapshot and IN's
+ *     (sim_snapshot), and OUT (format 3) holds that snapshot and IN's
  *     records from tick K (with their stored hashes). Its replay prints
  *     the hashes of IN's ticks K.. (numbered from 0). Refused when the
  *     state at the cut shows the attract DEMO page: the demo's own sim
@@ -43,18 +46,21 @@
  *
  * A recording with a snapshot starts from it: sim_init_stages on the
  * recording's content and settings, then sim_restore, before the first
- * tick (what the daemon must do too).
+ * tick (what the daemon must do too). The sound is mixed at the
+ * recording's audio rate (48000 Hz when it has none), from the content's
+ * sounds (sim_set_sounds before a restore, as the daemon).
  *
  * Exit: 0, 1 (verification failed or nothing to verify), 2 (bad usage,
  * unreadable or refused recording).
  *
- * It loads content and draws frames with the daemon's own code
- * (app/ct.c ct_load, app/view.c view_draw), and mirrors the daemon's
- * replay set-up (app/app.c, app/tape.c, app/keep.c: level, render size and
- * settings from the recording, sim_init_stages with the default tables)
- * and loop (app/loop.c's input, sim, present and hashes steps:
- * rec_reader_next_tick, sim_tick, view_draw, hash_frame). run.sh fails when
- * their hashes differ.
+ * It loads content, draws frames and mixes sound with the daemon's own
+ * code (app/ct.c ct_load, app/view.c view_draw, app/hear.c hear_tick), and
+ * mirrors the daemon's replay set-up (app/app.c, app/tape.c, app/keep.c:
+ * level, render size, audio rate and settings from the recording,
+ * sim_init_stages with the default tables) and loop (app/loop.c's input,
+ * sim, sound, present and hashes steps: rec_reader_next_tick, sim_tick,
+ * hear_tick, view_draw, hash_frame). run.sh fails when their hashes
+ * differ.
  */
 #include <errno.h>
 #include <inttypes.h>
@@ -65,15 +71,18 @@
 
 #include "app/ct.h"
 #include "app/demo.h"
+#include "app/hear.h"
 #include "app/view.h"
 #include "engine/core/hash.h"
 #include "engine/game/sim.h"
 #include "engine/map/map.h"
 #include "engine/render/r_main.h"
+#include "engine/sound/snd.h"
 #include "input/rec.h"
 
 #define RP_DEFAULT_W 320
 #define RP_DEFAULT_H 240
+#define RP_DEFAULT_RATE 48000
 
 struct rp_opts {
 	const char *file, *rehash;
@@ -164,10 +173,10 @@ static int8_t rp_axis(uint32_t *s)
 static int rp_make_random(const char *out, uint32_t ticks, uint32_t seed)
 {
 	struct rec_header h = {
-		.version = REC_VERSION,
+		.version = REC_VERSION_3,
 		.tick_rate = SIM_TICRATE,
 		.engine_version = REC_ENGINE_VERSION,
-		.set = { .coins_per_credit = 1 },
+		.set = { .coins_per_credit = 1, .volume = 100, .attract_sound = 1 },
 	};
 	struct sim_cmd c = { 0 };
 	struct ct_spec spec = { .level = 1 };
@@ -244,6 +253,7 @@ static int rp_cut(const char *in, uint32_t k, const char *out)
 		goto out;
 	}
 	sim_init_stages(&sim, (const struct map *const *)ct.maps, ct.nmaps, &h->set, NULL, NULL);
+	sim_set_sounds(&sim, ct.sounds);
 	if (h->snapshot_len && sim_restore(&sim, h->snapshot, h->snapshot_len) < 0) {
 		fprintf(stderr, "replay: %s: refused: its snapshot does not fit this build\n", in);
 		goto out;
@@ -265,7 +275,7 @@ static int rp_cut(const char *in, uint32_t k, const char *out)
 		goto out;
 	sim_snapshot(&sim, snap);
 	nh = *h;
-	nh.version = REC_VERSION_2;
+	nh.version = REC_VERSION_3;
 	nh.level = (uint8_t)spec.level;
 	nh.snapshot = snap;
 	nh.snapshot_len = (uint32_t)sim_snapshot_size();
@@ -307,6 +317,7 @@ int main(int argc, char **argv)
 	struct ct_spec spec = { .lights = 1 };
 	struct view view = { 0 };
 	struct demo demo = { 0 };
+	static struct hear hear;
 	struct sim sim;
 	char err[512];
 	uint32_t t = 0, entered[SIM_MODE_COUNT] = { 0 };
@@ -363,6 +374,9 @@ int main(int argc, char **argv)
 	run.map_hash = sim_stages_hash((const struct map *const *)ct.maps, ct.nmaps);
 	if (!o.render)
 		run.render_w = run.render_h = 0;
+	if (!run.audio_rate)
+		run.audio_rate = RP_DEFAULT_RATE;
+	run.sound_hash = ct.sounds->hash;
 	rc = o.verify ? rec_check_run(h, &run, err, sizeof(err))
 		      : rec_check(h, run.map_hash, err, sizeof(err));
 	if (rc < 0) {
@@ -371,6 +385,8 @@ int main(int argc, char **argv)
 	}
 	rec_verify_init(&ver, h, &run);
 	sim_init_stages(&sim, (const struct map *const *)ct.maps, ct.nmaps, &run.set, NULL, NULL);
+	sim_set_sounds(&sim, ct.sounds);
+	hear_init(&hear, ct.sounds, run.audio_rate);
 	if (h->snapshot_len && sim_restore(&sim, h->snapshot, h->snapshot_len) < 0) {
 		fprintf(stderr, "replay: %s: refused: its start snapshot does not fit this build "
 				"and content\n", o.file);
@@ -392,12 +408,15 @@ int main(int argc, char **argv)
 	if (o.rehash) {
 		struct rec_header nh = *h;
 
-		nh.version = REC_VERSION_2;
-		nh.hash_flags = REC_HAS_STATE | (o.render ? REC_HAS_FRAME : 0);
+		nh.version = REC_VERSION_3;
+		nh.hash_flags = REC_HAS_STATE | REC_HAS_AUDIO | (o.render ? REC_HAS_FRAME : 0);
 		nh.render_w = (uint16_t)f.w;
 		nh.render_h = (uint16_t)f.h;
 		nh.render_version = REC_RENDER_VERSION;
 		nh.level = run.level;
+		nh.audio_rate = hear.rate;
+		nh.audio_version = REC_AUDIO_VERSION;
+		nh.sound_hash = ct.sounds->hash;
 		rc = rec_writer_open(o.rehash, &nh, &wr);
 		if (rc < 0) {
 			fprintf(stderr, "replay: %s: %s\n", o.rehash, strerror(-rc));
@@ -409,8 +428,7 @@ int main(int argc, char **argv)
 	t0 = rp_now();
 	entered[sim.mode]++;
 	for (;; t++) {
-		struct rec_tick rt;
-		uint64_t sh, fh = 0;
+		struct rec_tick rt, mine;
 
 		if (o.until >= 0 && t > (uint64_t)o.until)
 			break;
@@ -424,20 +442,24 @@ int main(int argc, char **argv)
 		if (sim.mode != mode && (unsigned)sim.mode < SIM_MODE_COUNT)
 			entered[sim.mode]++;
 		demo_tick(&demo, &sim);
+		/* the daemon's own mixing (app/hear.c) */
+		hear_tick(&hear, &sim, demo_under(&demo, &sim));
+		mine.cmd = rt.cmd;
+		mine.frame_hash = 0;
 		if (o.render) {
 			/* the daemon's own drawing (app/view.c) */
 			view_draw(&view, &sim, demo_under(&demo, &sim), &f);
-			fh = hash_frame(f.px, f.w, f.h, f.pitch);
+			mine.frame_hash = hash_frame(f.px, f.w, f.h, f.pitch);
 		}
-		sh = sim_hash(&sim);
+		mine.state_hash = sim_hash(&sim);
+		mine.audio_hash = hear.hash;
 		if (!o.quiet)
-			printf("%u %016" PRIx64 " %016" PRIx64 "\n", t, sh, fh);
+			printf("%u %016" PRIx64 " %016" PRIx64 " %016" PRIx64 "\n", t,
+			       mine.state_hash, mine.frame_hash, mine.audio_hash);
 		if (o.verify)
-			rec_verify_tick(&ver, t, &rt, sh, fh);
+			rec_verify_tick(&ver, t, &rt, &mine);
 		if (wr) {
-			struct rec_tick nt = { .cmd = rt.cmd, .state_hash = sh, .frame_hash = fh };
-
-			if (rec_writer_put_tick(wr, &nt) < 0) {
+			if (rec_writer_put_tick(wr, &mine) < 0) {
 				fprintf(stderr, "replay: %s: write failed\n", o.rehash);
 				code = 2;
 				break;

@@ -8,14 +8,16 @@
 # every recording:
 #   - the committed goldens tests/replay/*.rec,
 #   - recordings made now by the daemon from tests/replay/*.scr and
-#     tests/script/*.scr (one also with other coin settings and free play),
+#     tests/script/*.scr (one also with other coin settings and free play,
+#     one mixed at 22050 Hz, a rate whose ticks are 367 or 368 frames),
 #   - two random-input recordings (replay --make-random, fixed seeds),
 #   - one game at 200x150 and 640x480 besides the default 320x240,
-# and its per-tick "TICK STATEHASH FRAMEHASH" output must equal, byte for
-# byte, what the daemon itself prints with --replay (gcc -O2). Then the
-# hashes the x86-64 replay stores in a format 2 recording are verified by
-# every build (--verify), and a recording with one changed hash must fail
-# verification at that tick. Then recordings that start from a sim
+# and its per-tick "TICK STATEHASH FRAMEHASH AUDIOHASH" output must equal,
+# byte for byte, what the daemon itself prints with --replay (gcc -O2):
+# the audio hash of every tick is the same on every build. Then the
+# hashes the x86-64 replay stores in a format 3 recording are verified by
+# every build (--verify), and a recording with one changed state or audio
+# hash must fail verification at that tick. Then recordings that start from a sim
 # snapshot (as the flight recorder's games do; replay --cut makes them
 # from the tail of a recording): every build's replay of one must print
 # the daemon's hashes for those ticks of the whole recording, stored
@@ -44,7 +46,7 @@ ok() { say "PASS $*"; pass=$((pass + 1)); }
 bad() { say "FAIL $*"; fail=$((fail + 1)); }
 
 # ---- static checks: what would make builds differ ----------------------
-if grep -nE '\b(float|double)\b|<math\.h>' engine/core/*.c engine/core/*.h engine/map/*.c engine/map/*.h engine/game/*.c engine/game/*.h engine/render/*.c engine/render/*.h engine/ui/*.c engine/ui/*.h >"$tmp/fp" 2>/dev/null; then
+if grep -nE '\b(float|double)\b|<math\.h>' engine/core/*.c engine/core/*.h engine/map/*.c engine/map/*.h engine/sound/*.c engine/sound/*.h engine/game/*.c engine/game/*.h engine/render/*.c engine/render/*.h engine/ui/*.c engine/ui/*.h >"$tmp/fp" 2>/dev/null; then
 	bad "floating point in the engine (fp contraction and x87/NEON differences):"
 	cat "$tmp/fp"
 else
@@ -128,6 +130,8 @@ for s in tests/replay/*.scr tests/script/*.scr; do
 	record "$s" "$(basename "$(dirname "$s")")-$(basename "$s" .scr)"
 done
 record tests/replay/game.scr settings-game --set game.coins_per_credit=3 --set game.freeplay=1
+# a rate that 60 does not divide: the mixer carries the remainder
+record tests/replay/game.scr rate22050-game --set audio.rate=22050 --set game.volume=100
 FIRST=$(echo "$BUILDS" | awk '{print $1}')
 for seed in 1 20261121; do
 	"$tmp/run-$FIRST" --make-random "$tmp/rec/random-$seed.rec" 3000 "$seed" ||
@@ -179,7 +183,7 @@ fi
 compare replay-game "$tmp/rec/replay-game.rec" 200x150
 compare replay-game "$tmp/rec/replay-game.rec" 640x480
 [ "$fail" -eq "$before" ] &&
-	ok "every build prints the daemon's hashes for every recording ($ticks build-ticks compared)"
+	ok "every build prints the daemon's state, frame and audio hashes for every recording ($ticks build-ticks compared)"
 
 # ---- the daemon's render threads ------------------------------------------
 # $1 label, $2 recording, $3 WxH, rest: content options: the daemon's
@@ -216,15 +220,26 @@ if "$tmp/run-$FIRST" --quiet --rehash "$tmp/v2.rec" "$src"; then
 		fi
 	done
 	[ "$fail" -eq "$before" ] && ok "every build verifies the stored hashes: $(cat "$tmp/verify.err")"
-	# Record 1000's state hash: header 80 + 1000 records of 22, then 6 bytes of command.
+	# Record 1000's state hash: header 96 + 1000 records of 30 (command,
+	# state, frame and audio hashes), then 6 bytes of command.
 	cp "$tmp/v2.rec" "$tmp/v2bad.rec"
-	printf '\125' | dd of="$tmp/v2bad.rec" bs=1 seek=$((80 + 22 * 1000 + 6)) conv=notrunc 2>/dev/null
+	printf '\125' | dd of="$tmp/v2bad.rec" bs=1 seek=$((96 + 30 * 1000 + 6)) conv=notrunc 2>/dev/null
 	"$tmp/run-$FIRST" --quiet --verify "$tmp/v2bad.rec" 2>"$tmp/verify.err"
 	rc=$?
 	if [ "$rc" -eq 1 ] && grep -q "first difference at tick 1000: state hash" "$tmp/verify.err"; then
 		ok "a changed hash fails verification at its tick: $(cat "$tmp/verify.err")"
 	else
 		bad "a changed hash (exit $rc): $(cat "$tmp/verify.err")"
+	fi
+	# Record 1200's audio hash: 22 bytes into its record.
+	cp "$tmp/v2.rec" "$tmp/v2badaudio.rec"
+	printf '\125' | dd of="$tmp/v2badaudio.rec" bs=1 seek=$((96 + 30 * 1200 + 22)) conv=notrunc 2>/dev/null
+	"$tmp/run-$FIRST" --quiet --verify "$tmp/v2badaudio.rec" 2>"$tmp/verify.err"
+	rc=$?
+	if [ "$rc" -eq 1 ] && grep -q "first difference at tick 1200: audio hash" "$tmp/verify.err"; then
+		ok "a changed audio hash fails verification at its tick: $(cat "$tmp/verify.err")"
+	else
+		bad "a changed audio hash (exit $rc): $(cat "$tmp/verify.err")"
 	fi
 	"$tmp/run-$FIRST" --quiet --verify --size 640x480 "$tmp/v2.rec" 2>"$tmp/verify.err"
 	rc=$?
@@ -289,7 +304,7 @@ if [ -e "$tmp/v2.rec" ] && "$tmp/run-$FIRST" --cut "$tmp/v2.rec" 1000 "$tmp/v2cu
 	done
 	[ "$fail" -eq "$before" ] &&
 		ok "every build verifies the hashes stored after a snapshot: $(cat "$tmp/verify.err")"
-	# The snapshot starts at byte 80: change a byte in it.
+	# The snapshot starts at byte 96 (format 3): change a byte in it.
 	cp "$tmp/v2cut.rec" "$tmp/v2cutbad.rec"
 	printf '\125' | dd of="$tmp/v2cutbad.rec" bs=1 seek=200 conv=notrunc 2>/dev/null
 	"$tmp/run-$FIRST" --quiet "$tmp/v2cutbad.rec" 2>"$tmp/cut.err"
