@@ -3,8 +3,8 @@
 # by the daemon's own screenshot command while a script walks the menu with
 # the cabinet's controls (forward/back move the cursor, FIRE selects,
 # SERVICE goes back): the main page, the input test (FORWARD held, one coin
-# seen), the three display test patterns, game settings, bookkeeping (after
-# two coins) and the reset confirmation. The input wizard is not among them:
+# seen), the three display test patterns, the sound test, game settings,
+# bookkeeping (after two coins) and the reset confirmation. The input wizard is not among them:
 # it runs only on a live cabinet, never under a script (docs/wizard.md).
 # Usage: scripts/service-shots.sh [path/to/arcaded]
 set -eu
@@ -36,19 +36,23 @@ tap() { printf '%d press %s\n%d release %s\n' "$1" "$2" $(($1 + 1)) "$2"; }
 	tap 36 fire
 	echo "40 screenshot $out/service-display-orientation.png"
 	tap 42 service
-	tap 44 back                     # GAME SETTINGS
+	tap 44 back                     # SOUND TEST
 	tap 46 fire
-	echo "50 screenshot $out/service-settings.png"
+	echo "50 screenshot $out/service-sound.png"
 	tap 52 service
-	tap 54 back                     # BOOKKEEPING
+	tap 54 back                     # GAME SETTINGS
 	tap 56 fire
-	echo "60 screenshot $out/service-bookkeeping.png"
-	tap 62 fire
-	tap 64 back                     # RESET HIGH SCORES
+	echo "60 screenshot $out/service-settings.png"
+	tap 62 service
+	tap 64 back                     # BOOKKEEPING
 	tap 66 fire
-	echo "70 screenshot $out/service-reset-confirm.png"
-	tap 72 service
-	echo "74 expect menu == 0"
+	echo "70 screenshot $out/service-bookkeeping.png"
+	tap 72 fire
+	tap 74 back                     # RESET HIGH SCORES
+	tap 76 fire
+	echo "80 screenshot $out/service-reset-confirm.png"
+	tap 82 service
+	echo "84 expect menu == 0"
 } >"$tmp/service.scr"
 "$BIN" --script "$tmp/service.scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
 	--set game.render_width=640 --set game.render_height=480 >"$tmp/log" 2>&1 || {
