@@ -78,7 +78,7 @@ for doc in ${@:-docs/operator.md}; do
 	while read -r l; do bad "$doc" "$l"; done < "$tmp/opts"
 
 	# configuration keys section.key (links to *.md are not keys)
-	grep -oE '(^|[^a-z0-9/_.-])(display|game|input|paths|recorder)\.[a-z_]+' "$doc" |
+	grep -oE '(^|[^a-z0-9/_.-])(audio|display|game|input|paths|recorder)\.[a-z_]+' "$doc" |
 		sed -E 's/^[^a-z]//' | grep -vE '\.(md|png)$' | sort -u |
 	while read -r k; do
 		grep -qxF "$k" "$tmp/keys" || echo "key $k: not printed by arcaded --print-config"
