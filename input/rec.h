@@ -89,21 +89,22 @@
 #define REC_VERSION_MAX 3           /* newest version this build reads */
 /* 2: the game: enemies, stages, modes, menu; 3: sound (channels,
  * settings) and Doom's specials (the map's changing parts, movers, keys,
- * exits: engine/game/g_world.h), which landed together */
-#define REC_ENGINE_VERSION 3
+ * exits: engine/game/g_world.h), which landed together; 4: the specials'
+ * sounds (twelve sounds more, so twelve more lengths in the state) */
+#define REC_ENGINE_VERSION 4
 /* sim_snapshot_size() at REC_ENGINE_VERSION. A field added to the sim's
  * state (engine/game/sim_table.h) changes the size and every state hash:
  * raise REC_ENGINE_VERSION and set this to the new size, together
  * (test_rec fails on the size until then, as a reminder of the version). */
-#define REC_ENGINE_SNAPSHOT 96898
+#define REC_ENGINE_SNAPSHOT 96922
 /* Bumped whenever the renderer draws any frame differently (engine/render/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */
 #define REC_RENDER_VERSION 4
 /* Bumped whenever the audio of any tick changes (the mixer, the built-in
  * sounds, a sound's lump): recorded audio hashes of another version are
- * not compared. */
-#define REC_AUDIO_VERSION 1
+ * not compared. 2: doors, lifts, switches and teleports sound. */
+#define REC_AUDIO_VERSION 2
 #define REC_HEADER_SIZE 40          /* version 1 */
 #define REC_HEADER_SIZE_V2 80
 #define REC_HEADER_SIZE_V3 96

@@ -8,6 +8,7 @@
 
 #include "engine/core/tab.h"
 #include "engine/game/g_local.h"
+#include "engine/map/map.h"
 #include "engine/sound/mix.h"
 #include "engine/sound/snd.h"
 
@@ -226,4 +227,68 @@ int g_sound_voices(const struct sim *s, const struct sim *under, const struct sn
 	if (under && g_sound_attract_on(s))
 		n = g_sound_add(under, set, out, n, max);
 	return n;
+}
+
+/* Sector sec's sound origin, as Doom's soundorg: the centre of the box
+ * bounding its lines' vertices (a sector without lines: the origin). */
+static void g_sound_origin(const struct map *m, uint32_t sec, fx_t *x, fx_t *y)
+{
+	uint32_t n;
+	const uint32_t *lines = map_sector_lines(m, sec, &n);
+	fx_t x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+
+	for (uint32_t k = 0; k < n; k++) {
+		const struct map_line *l = &m->lines[lines[k]];
+		for (int e = 0; e < 2; e++) {
+			const struct map_vertex *v = &m->vertices[e ? l->v2 : l->v1];
+			if ((k == 0 && e == 0) || v->x < x0)
+				x0 = v->x;
+			if ((k == 0 && e == 0) || v->x > x1)
+				x1 = v->x;
+			if ((k == 0 && e == 0) || v->y < y0)
+				y0 = v->y;
+			if ((k == 0 && e == 0) || v->y > y1)
+				y1 = v->y;
+		}
+	}
+	*x = (fx_t)(((int64_t)x0 + x1) / 2);
+	*y = (fx_t)(((int64_t)y0 + y1) / 2);
+}
+
+/* Each event's sound as Doom plays it (Chocolate Doom's p_doors.c,
+ * p_plats.c, p_floor.c, p_switch.c, p_map.c, p_telept.c): a use on nothing
+ * is DSNOWAY, a locked door DSOOF; a secret has none in vanilla Doom, and
+ * pickups already play theirs (g_combat.c). */
+static int g_event_sfx(enum g_ev ev)
+{
+	switch (ev) {
+	case G_EV_DOOR_OPEN: return SFX_DOOR_OPEN;
+	case G_EV_DOOR_CLOSE: return SFX_DOOR_CLOSE;
+	case G_EV_BLAZE_OPEN: return SFX_BLAZE_OPEN;
+	case G_EV_BLAZE_CLOSE: return SFX_BLAZE_CLOSE;
+	case G_EV_PLANE_MOVE: return SFX_PLANE_MOVE;
+	case G_EV_PLAT_START: return SFX_PLAT_START;
+	case G_EV_PLAT_STOP: return SFX_PLAT_STOP;
+	case G_EV_SWITCH: return SFX_SWITCH;
+	case G_EV_SWITCH_EXIT: return SFX_SWITCH_EXIT;
+	case G_EV_NOWAY: return SFX_NOWAY;
+	case G_EV_LOCKED: return SFX_LOCKED;
+	case G_EV_TELEPORT: return SFX_TELEPORT;
+	default: return SFX_NONE;
+	}
+}
+
+void g_event(struct sim *s, enum g_ev ev, uint32_t sector)
+{
+	int id = g_event_sfx(ev);
+	fx_t x, y;
+
+	if (id == SFX_NONE)
+		return;
+	if (sector == MAP_NONE || sector >= s->map->num_sectors) {
+		g_sound_play(s, id, G_SRC_PLAYER);
+		return;
+	}
+	g_sound_origin(s->map, sector, &x, &y);
+	g_sound_start(s, id, x, y, (uint16_t)G_SRC_SECTOR(sector));
 }

@@ -1,9 +1,9 @@
 /*
  * g_world: the helpers every special shares: a sector's neighbours (Doom's
  * P_Find...Surrounding), sectors by tag, the mover list, line bits, the
- * stage's 35 Hz clock, the HUD message, and the one place where the
- * specials' events happen (g_event: the sound seam). Calls nothing of the
- * game, so every special file may call it.
+ * stage's 35 Hz clock and the HUD message. Calls nothing of the game, so
+ * every special file may call it. (The specials' events, g_event, sound in
+ * g_sound.c.)
  */
 #include <stddef.h>
 #include <string.h>
@@ -177,12 +177,4 @@ void g_message(struct sim *s, int msg)
 {
 	s->w.msg = (uint8_t)msg;
 	s->w.msg_t = 0;
-}
-
-void g_event(struct sim *s, enum g_ev ev, uint32_t sector)
-{
-	/* The sound seam (g_local.h): nothing listens yet. */
-	(void)s;
-	(void)ev;
-	(void)sector;
 }

@@ -80,6 +80,42 @@ static const struct syn_part syn_parts[] = {
 	P(PLAYER_HURT, NOISE, 0, 120, 2500, 2500, 5000, 0, 10)
 	P(PLAYER_DEATH, SAW, 0, 1300, 320, 45, 13000, 10, 20)
 	P(PLAYER_DEATH, SQUARE, 0, 1100, 160, 30, 5000, 10, 20)
+	/* doors: a grinding slide up and a slide down that ends in a thud;
+	 * the blazing door's are shorter, higher and hiss */
+	P(DOOR_OPEN, NOISE, 0, 450, 700, 1100, 9000, 40, 60)
+	P(DOOR_OPEN, SAW, 0, 450, 70, 110, 7000, 40, 60)
+	P(DOOR_CLOSE, NOISE, 0, 400, 1100, 600, 9000, 30, 50)
+	P(DOOR_CLOSE, SAW, 0, 400, 110, 60, 7000, 30, 50)
+	P(DOOR_CLOSE, SQUARE, 380, 120, 90, 40, 9000, 0, 0)
+	P(BLAZE_OPEN, NOISE, 0, 300, 2500, 5000, 10000, 10, 40)
+	P(BLAZE_OPEN, SAW, 0, 300, 140, 260, 6000, 10, 40)
+	P(BLAZE_CLOSE, NOISE, 0, 300, 5000, 2000, 10000, 10, 40)
+	P(BLAZE_CLOSE, SAW, 0, 300, 260, 120, 6000, 10, 40)
+	P(BLAZE_CLOSE, SQUARE, 280, 100, 100, 45, 8000, 0, 0)
+	/* a floor or ceiling moving: a low stony rumble (started again every
+	 * 8 Doom tics while it moves) */
+	P(PLANE_MOVE, NOISE, 0, 230, 300, 300, 9000, 20, 60)
+	N(PLANE_MOVE, SQUARE, 0, 230, 55, 5000, 20, 60)
+	/* a lift: a motor starting up, and a clank as it stops */
+	P(PLAT_START, SAW, 0, 350, 60, 180, 9000, 20, 50)
+	P(PLAT_START, NOISE, 0, 350, 900, 1500, 4000, 20, 50)
+	P(PLAT_STOP, NOISE, 0, 60, 6000, 6000, 9000, 0, 0)
+	P(PLAT_STOP, SQUARE, 0, 200, 150, 70, 9000, 0, 10)
+	/* switches: a click; the exit switch's is a click and a clunk */
+	P(SWITCH, NOISE, 0, 25, 9000, 9000, 10000, 0, 0)
+	N(SWITCH, SQUARE, 0, 70, 1200, 6000, 0, 20)
+	P(SWITCH_EXIT, NOISE, 0, 25, 9000, 9000, 10000, 0, 0)
+	N(SWITCH_EXIT, SQUARE, 0, 70, 1200, 6000, 0, 20)
+	P(SWITCH_EXIT, SQUARE, 120, 160, 200, 80, 9000, 0, 10)
+	/* a use on nothing: a short grunt; a locked door: a lower "oof" */
+	P(NOWAY, SAW, 0, 180, 240, 180, 11000, 10, 30)
+	P(NOWAY, NOISE, 0, 80, 2000, 2000, 3000, 5, 20)
+	P(LOCKED, SAW, 0, 220, 180, 110, 12000, 10, 30)
+	P(LOCKED, SQUARE, 0, 220, 90, 55, 4000, 10, 30)
+	/* a teleport: a shimmering sweep up over a hiss */
+	P(TELEPORT, TRI, 0, 700, 300, 2400, 9000, 30, 30)
+	P(TELEPORT, SQUARE, 0, 700, 600, 4800, 3000, 30, 30)
+	P(TELEPORT, NOISE, 0, 700, 6000, 6000, 5000, 60, 20)
 	/* a coin: a metallic clink, inharmonic partials over a noise click,
 	 * and a second, softer clink (distinct enough to be found by
 	 * correlation in a recording of what the card played) */

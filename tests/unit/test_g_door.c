@@ -19,6 +19,7 @@
 #include "engine/game/g_local.h"
 #include "engine/game/sim.h"
 #include "engine/map/map.h"
+#include "engine/sound/snd.h"
 #include "map_fixture.h"
 
 static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1 };
@@ -180,6 +181,76 @@ static void the_player_walks_through_the_opened_door(void **state)
 	map_free(m);
 }
 
+/* The channel playing sound id, or NULL. */
+static const struct g_schan *playing(const struct sim *s, int id)
+{
+	for (int i = 0; i < G_SND_CHANNELS; i++)
+		if (s->snd.ch[i].sfx == id)
+			return &s->snd.ch[i];
+	return NULL;
+}
+
+/* Doom's door sounds at the door sector's sound origin: the door (sector
+ * 1) spans x 256..272, y 0..128, so its centre is (264, 64). Nothing
+ * plays a door's sound before the door moves; it opens with DSDOROPN,
+ * closes after its wait (257 ticks, above) with DSDORCLS from the same
+ * source, which replaces the opening's sound. */
+static void the_door_sounds_at_its_centre(void **state)
+{
+	struct map *m = door_map(1, 200, 0);
+	struct snd_set *set;
+	struct sim s;
+	const struct sim_cmd u = { .buttons = SIM_BT_USE }, none = { 0 };
+	const struct g_schan *c;
+	(void)state;
+	assert_int_equal(snd_builtin(&set), 0);
+	sim_init(&s, m, &play);
+	sim_set_sounds(&s, set);
+	run(&s, &none, 10);
+	assert_null(playing(&s, SFX_DOOR_OPEN));
+	sim_tick(&s, &u);
+	c = playing(&s, SFX_DOOR_OPEN);
+	assert_non_null(c);
+	assert_int_equal(c->at, 1);
+	assert_int_equal(c->x, 264 * FX_ONE);
+	assert_int_equal(c->y, 64 * FX_ONE);
+	assert_int_equal(c->src, G_SRC_SECTOR(1));
+	assert_int_equal(c->vol, G_SND_VOL);       /* 64 units away: within 200 */
+	assert_null(playing(&s, SFX_DOOR_CLOSE));
+	/* open (107 ticks), wait (257): closing then */
+	run(&s, &none, 107 + 257 + 5);
+	c = playing(&s, SFX_DOOR_CLOSE);
+	assert_non_null(c);
+	assert_int_equal(c->x, 264 * FX_ONE);
+	assert_int_equal(c->src, G_SRC_SECTOR(1));
+	assert_null(playing(&s, SFX_DOOR_OPEN));
+	snd_free(set);
+	map_free(m);
+}
+
+/* A locked door refused: Doom's "oof" (DSOOF) from the player, and no
+ * door sound. */
+static void a_locked_door_says_oof(void **state)
+{
+	struct map *m = door_map(26, 200, 0);      /* DR blue */
+	struct snd_set *set;
+	struct sim s;
+	const struct sim_cmd u = { .buttons = SIM_BT_USE };
+	const struct g_schan *c;
+	(void)state;
+	assert_int_equal(snd_builtin(&set), 0);
+	sim_init(&s, m, &play);
+	sim_set_sounds(&s, set);
+	sim_tick(&s, &u);
+	c = playing(&s, SFX_LOCKED);
+	assert_non_null(c);
+	assert_int_equal(c->at, 0);
+	assert_int_equal(c->src, G_SRC_PLAYER);
+	assert_null(playing(&s, SFX_DOOR_OPEN));
+	snd_free(set);
+	map_free(m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -189,6 +260,8 @@ int main(void)
 		cmocka_unit_test(open_stay_door_stays_open),
 		cmocka_unit_test(locked_door_wants_its_key),
 		cmocka_unit_test(the_player_walks_through_the_opened_door),
+		cmocka_unit_test(the_door_sounds_at_its_centre),
+		cmocka_unit_test(a_locked_door_says_oof),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
