@@ -44,6 +44,13 @@ static size_t rec_fixed_size(uint16_t version)
 					  : REC_HEADER_SIZE;
 }
 
+/* Version 3's header sum: bytes 0..95 but the count (32..35), which the
+ * writer puts last. */
+static uint64_t rec_header_sum(const uint8_t *buf)
+{
+	return hash_bytes(hash_bytes(HASH_INIT, buf, 32), buf + 36, 96 - 36);
+}
+
 size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 {
 	size_t size = rec_fixed_size(h->version);
@@ -86,6 +93,8 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 		le_put64(out + 72, h->snapshot ? hash_bytes(HASH_INIT, h->snapshot, snap)
 						: h->snapshot_sum);
 	}
+	if (size >= REC_HEADER_SIZE_V3)
+		le_put64(out + 96, rec_header_sum(out));
 	return size;
 }
 
@@ -242,6 +251,14 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		}
 	}
 	if (d.version >= REC_VERSION_3) {
+		uint64_t sum = rec_header_sum(buf), stored = le_get64(buf + 96);
+
+		if (sum != stored) {
+			txt_set(err, errlen,
+				"header damaged (sum 0x%016" PRIx64 ", the header says 0x%016" PRIx64 ")",
+				sum, stored);
+			return -EINVAL;
+		}
 		d.set.volume = buf[46];
 		d.set.attract_sound = buf[47];
 		d.audio_rate = le_get32(buf + 80);

@@ -47,7 +47,9 @@
  *  84  4  audio version (REC_AUDIO_VERSION: bumped when the mixer or the
  *        built-in sounds change any sample)
  *  88  8  sound hash: snd_set.hash (engine/sound/snd.h) of the sounds mixed
- *  96  ... the snapshot, as in version 2 but at 96 (header size 96 + its length)
+ *  96  8  header sum: FNV-1a (engine/core/hash.h, from HASH_INIT) of bytes
+ *        0..31 and 36..95 (all but the count, which is written last)
+ * 104  ... the snapshot, as in version 2 but at 104 (header size 104 + its length)
  *  and the flag REC_HAS_AUDIO (44): each record ends with the audio hash
  *        (8 bytes, after the frame hash): mix_hash of the tick's mixed
  *        buffer (engine/sound/mix.h), what `arcaded --replay` prints last.
@@ -65,8 +67,9 @@
  * Checks on the header beyond the ranges of its fields: reserved bytes
  * (37..39; 46..47 in version 2; 52..55 and 72..79 without a snapshot) are 0, the map
  * name holds nothing after its first NUL, the start time fits 32 bits.
- * The low four bytes of the start time are the only bytes no check
- * covers (format 2 has no header checksum).
+ * Version 3's header sum covers every header byte but the count, which
+ * the record count check covers; in version 2 the low four bytes of the
+ * start time are the only bytes no check covers (it has no header sum).
  *
  * A build before snapshots refuses a recording with one ("hash flags 0x04
  * unknown") rather than replaying it from the wrong start; this build
@@ -107,8 +110,8 @@
 #define REC_AUDIO_VERSION 2
 #define REC_HEADER_SIZE 40          /* version 1 */
 #define REC_HEADER_SIZE_V2 80
-#define REC_HEADER_SIZE_V3 96
-#define REC_HEADER_MAX 96
+#define REC_HEADER_SIZE_V3 104
+#define REC_HEADER_MAX 104
 #define REC_CMD_SIZE 6
 #define REC_RECORD_MAX 30           /* command and the three hashes */
 #define REC_COUNT_UNKNOWN 0xffffffffu

@@ -152,7 +152,7 @@ static void test_header_errors(void **state)
 	assert_int_equal(decode_patched(8, 2, 40, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "file too short (40 bytes, the header needs 80)");
 	assert_int_equal(decode_patched(8, 3, 40, err, sizeof(err)), -EINVAL);
-	assert_string_equal(err, "file too short (40 bytes, the header needs 96)");
+	assert_string_equal(err, "file too short (40 bytes, the header needs 104)");
 	assert_int_equal(decode_patched(8, 0, 40, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "version 0 is not a valid version");
 	assert_int_equal(decode_patched(12, 39, 40, err, sizeof(err)), -EINVAL);
@@ -548,6 +548,58 @@ static void test_v2_header_unused_bytes_are_checked(void **state)
 		assert_int_equal(rec_header_decode(b, sizeof(b), &h, err, sizeof(err)), -EINVAL);
 		assert_non_null(strstr(err, "start time"));
 	}
+}
+
+/* Version 3: every header byte but the count is covered by a check (the
+ * header sum covers what no range check can, as the start time's low
+ * bytes); the count is checked against the records (the reader). */
+static void test_v3_header_every_byte_is_checked(void **state)
+{
+	struct rec_header h, back;
+	uint8_t b[REC_HEADER_MAX], f[REC_HEADER_MAX];
+	char err[128];
+	size_t n;
+
+	(void)state;
+	memset(&h, 0, sizeof(h));
+	h.version = REC_VERSION_3;
+	h.tick_rate = 60;
+	h.map_hash = 0x0102030405060708ull;
+	h.engine_version = REC_ENGINE_VERSION;
+	h.set.coins_per_credit = 1;
+	h.set.lives = 3;
+	h.set.volume = 80;
+	h.set.attract_sound = 1;
+	h.count = 7;
+	h.render_w = 320;
+	h.render_h = 240;
+	h.hash_flags = REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_AUDIO;
+	h.render_version = REC_RENDER_VERSION;
+	memcpy(h.map_name, "E1M1", 5);
+	h.start_time = 1764115200;
+	h.audio_rate = 48000;
+	h.audio_version = REC_AUDIO_VERSION;
+	h.sound_hash = 0x1122334455667788ull;
+	n = rec_header_encode(b, &h);
+	assert_int_equal(n, REC_HEADER_SIZE_V3);
+	assert_int_equal(rec_header_decode(b, n, &back, err, sizeof(err)), 0);
+	assert_true(back.start_time == 1764115200);
+	for (size_t i = 0; i < n; i++) {
+		memcpy(f, b, n);
+		f[i] ^= 0x01;
+		err[0] = '\0';
+		if (i >= 32 && i < 36) {
+			assert_int_equal(rec_header_decode(f, n, &back, err, sizeof(err)), 0);
+			continue;
+		}
+		if (rec_header_decode(f, n, &back, err, sizeof(err)) != -EINVAL)
+			fail_msg("byte %zu flipped: the header was accepted", i);
+	}
+	/* the start time's low byte, which only the sum covers */
+	memcpy(f, b, n);
+	f[64] ^= 0x01;
+	assert_int_equal(rec_header_decode(f, n, &back, err, sizeof(err)), -EINVAL);
+	assert_non_null(strstr(err, "header damaged (sum 0x"));
 }
 
 static int decode_v2_patched(size_t off, uint8_t v, char *err, size_t errlen)
@@ -1101,6 +1153,7 @@ int main(void)
 		cmocka_unit_test(test_v2_header_encode_is_byte_exact),
 		cmocka_unit_test(test_v2_header_decode_round_trip),
 		cmocka_unit_test(test_v2_header_unused_bytes_are_checked),
+		cmocka_unit_test(test_v3_header_every_byte_is_checked),
 		cmocka_unit_test(test_v2_header_errors),
 		cmocka_unit_test(test_v2_round_trip_for_every_hash_choice),
 		cmocka_unit_test(test_v2_put_without_hashes_is_refused),
