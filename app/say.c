@@ -5,6 +5,8 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <string.h>
+#include <unistd.h>
 
 #include "systemd/svc.h"
 
@@ -19,6 +21,14 @@ static int say_journal;
 void say_open(void)
 {
 	say_journal = svc_journal_fd(2) > 0;
+}
+
+void say_fatal(const char *text)
+{
+	if (say_journal && write(STDERR_FILENO, SAY_ERR, sizeof(SAY_ERR) - 1) < 0)
+		return;
+	if (write(STDERR_FILENO, text, strlen(text)) < 0)
+		return;
 }
 
 /* One line at once (a single fprintf into the locked stream), so lines

@@ -25,6 +25,9 @@ void say_open(void);
 void say(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void say_warn(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void say_err(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* From a fatal signal's handler: text (a whole line, newline included) as
+ * an error, with write(2) only (async-signal-safe: no stdio, no malloc). */
+void say_fatal(const char *text);
 
 /* A cfg_err_fn (config/cfg.h) for every loader of configuration files:
  * "file:line: msg", or "file: msg" for line 0, as a warning (the value

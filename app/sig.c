@@ -3,10 +3,12 @@
  */
 #include "app/sig.h"
 
+#include <execinfo.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "app/say.h"
 #include "display/dp.h"
@@ -33,11 +35,25 @@ static void on_fault(int sig)
 }
 
 /* A crash must not leave the console in graphics mode: restore it (only
- * async-signal-safe calls), then die of the same signal with the default
- * action (SA_RESETHAND put it back). */
+ * async-signal-safe calls), say where it happened (the call stack as
+ * addresses and symbols on stderr, the journal under systemd: what an
+ * operator sends with a bug report), then die of the same signal with the
+ * default action (SA_RESETHAND put it back). backtrace() was called once
+ * at install, so it does not load libgcc here; backtrace_symbols_fd
+ * writes without malloc. */
 static void on_fatal(int sig)
 {
+	void *pc[48];
+	int n;
+
 	dp_emergency_restore();
+	say_fatal(sig == SIGSEGV   ? "arcaded: fatal signal SIGSEGV; the call stack:\n"
+		  : sig == SIGBUS  ? "arcaded: fatal signal SIGBUS; the call stack:\n"
+		  : sig == SIGILL  ? "arcaded: fatal signal SIGILL; the call stack:\n"
+		  : sig == SIGFPE  ? "arcaded: fatal signal SIGFPE; the call stack:\n"
+				   : "arcaded: fatal signal SIGABRT; the call stack:\n");
+	n = backtrace(pc, (int)(sizeof(pc) / sizeof(pc[0])));
+	backtrace_symbols_fd(pc, n, STDERR_FILENO);
 	raise(sig);
 }
 
@@ -45,7 +61,9 @@ void sig_install(void)
 {
 	struct sigaction sa;
 	static const int fatal[] = { SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT };
+	void *pc[1];
 
+	(void)backtrace(pc, 1);   /* loads what backtrace needs, outside a handler */
 	memset(&sa, 0, sizeof(sa));
 	sigemptyset(&sa.sa_mask);
 	sa.sa_handler = on_stop;
