@@ -23,6 +23,7 @@
 
 #include "engine/core/num.h"
 #include "input/hidd.h"
+#include "input/hidsys.h"
 #include "input/in.h"
 #include "input/io.h"
 
@@ -273,101 +274,13 @@ int in_hid_read_desc(const char *sysroot, const char *node, uint8_t **buf, size_
 	return io_read_file(path, HIDD_MAX_DESC, 0, buf, len);
 }
 
-/* UTF-8 of a hidapi wide string (UTF-32 on Linux) into buf, appended. */
-static void append_wide(char *buf, size_t len, const wchar_t *w)
-{
-	size_t n = strnlen(buf, len);
-
-	for (; w && *w && n + 5 < len; w++) {
-		uint32_t c = (uint32_t)*w;
-
-		if (c < 0x20 || (c >= 0xd800 && c < 0xe000) || c > 0x10ffff)
-			c = '?';
-		if (c < 0x80) {
-			buf[n++] = (char)c;
-		} else if (c < 0x800) {
-			buf[n++] = (char)(0xc0 | c >> 6);
-			buf[n++] = (char)(0x80 | (c & 0x3f));
-		} else if (c < 0x10000) {
-			buf[n++] = (char)(0xe0 | c >> 12);
-			buf[n++] = (char)(0x80 | ((c >> 6) & 0x3f));
-			buf[n++] = (char)(0x80 | (c & 0x3f));
-		} else {
-			buf[n++] = (char)(0xf0 | c >> 18);
-			buf[n++] = (char)(0x80 | ((c >> 12) & 0x3f));
-			buf[n++] = (char)(0x80 | ((c >> 6) & 0x3f));
-			buf[n++] = (char)(0x80 | (c & 0x3f));
-		}
-	}
-	buf[n] = '\0';
-}
-
-static long node_number(const char *node)
-{
-	const char *b = node_base(node);
-
-	return strncmp(b, "hidraw", 6) == 0 ? strtol(b + 6, NULL, 10) : LONG_MAX;
-}
-
-static int cmp_info(const void *a, const void *b)
-{
-	long x = node_number(((const struct in_hid_info *)a)->node);
-	long y = node_number(((const struct in_hid_info *)b)->node);
-
-	return (x > y) - (x < y);
-}
-
-/* The hidraw devices hidapi enumerates (one entry per node: hidapi 0.13
- * lists a node once per top-level collection), sorted by node number;
- * fields are not filled. */
 static int enumerate(struct in_hid_info **out, size_t *count)
 {
-	struct hid_device_info *all = hid_enumerate(0, 0), *e;
-	struct in_hid_info *l = NULL;
-	size_t n = 0, cap = 0;
+	int rc = hidsys_scan(HID_SYSFS, out, count);
 
-	for (e = all; e; e = e->next) {
-		bool dup = false;
-
-		if (!e->path || strncmp(e->path, "/dev/hidraw", 11) != 0)
-			continue;
-		for (size_t i = 0; i < n && !dup; i++)
-			dup = strcmp(l[i].node, e->path) == 0;
-		if (dup || strlen(e->path) >= sizeof(l->node))
-			continue;
-		if (n == cap) {
-			struct in_hid_info *nl;
-
-			cap = cap ? cap * 2 : 8;
-			nl = realloc(l, cap * sizeof(*l));
-			if (!nl) {
-				free(l);
-				hid_free_enumeration(all);
-				return -ENOMEM;
-			}
-			l = nl;
-		}
-		memset(&l[n], 0, sizeof(l[n]));
-		strcpy(l[n].node, e->path);
-		l[n].vid = e->vendor_id;
-		l[n].pid = e->product_id;
-		l[n].iface = e->interface_number;
-		append_wide(l[n].name, sizeof(l[n].name), e->manufacturer_string);
-		if (e->product_string && e->product_string[0]) {
-			if (l[n].name[0])
-				in_say(l[n].name, sizeof(l[n].name), " ");
-			append_wide(l[n].name, sizeof(l[n].name), e->product_string);
-		}
-		append_wide(l[n].serial, sizeof(l[n].serial), e->serial_number);
-		in_hid_port(HID_SYSFS, e->path, l[n].port, sizeof(l[n].port));
-		n++;
-	}
-	hid_free_enumeration(all);
-	if (n > 1)
-		qsort(l, n, sizeof(*l), cmp_info);
-	*out = l;
-	*count = n;
-	return 0;
+	for (size_t i = 0; rc == 0 && i < *count; i++)
+		in_hid_port(HID_SYSFS, (*out)[i].node, (*out)[i].port, sizeof((*out)[i].port));
+	return rc;
 }
 
 static bool matches(const struct in_hid_spec *s, const struct in_hid_info *i)

@@ -97,7 +97,7 @@ struct in_hid_info {
 	char why[160];           /* why fields is NULL */
 };
 
-/* Lists every hidraw device hidapi finds, in node number order, with its
+/* Lists every hidraw device sysfs lists (input/hidsys.h), in node number order, with its
  * decoded fields. 0 (*n may be 0) or -ENOMEM. */
 int in_hid_list(struct in_hid_info **out, size_t *n);
 
