@@ -814,8 +814,12 @@ phase_hid_replug() {
 	# earliest the service's user may open it) to the daemon having it open.
 	react=$(awk '/^plug [0-9]+ closed/ { print $10 - $8 }' "$R/hid-replug.txt" | sort -n |
 		awk '{ v[++n] = $1 } END { if (n) printf "median %.3f max %.3f s over %d plugs", v[int((n + 1) / 2)], v[n], n }')
-	check hid-replug-daemon-reattach "udev done with the new hidraw node (its ctime) to the daemon having it open: ${react:-no plugs} (limit 0.5 s each)" \
-		sh -c "echo '$react' | awk '{ exit !(\$7 == 20 && \$4 <= 0.5) }'"
+	# Limits: the median within 0.5 s, and every plug within 1 s, the
+	# daemon's periodic retry: each was taken on its hotplug notice, not
+	# found by the retry (a loaded host's TCG guest stretches single plugs
+	# past 0.5 s; the median and the retry bound are what it cannot fake).
+	check hid-replug-daemon-reattach "udev done with the new hidraw node (its ctime) to the daemon having it open: ${react:-no plugs} (limits: median 0.5 s, each under 1 s)" \
+		sh -c "echo '$react' | awk '{ exit !(\$7 == 20 && \$2 <= 0.5 && \$4 < 1.0) }'"
 	# Dropped: the gadget unbound to the daemon having closed the node (its
 	# controls are released in the same tick).
 	drop=$(awk '/^plug [0-9]+ closed/ { print $4 }' "$R/hid-replug.txt" | sort -n |
