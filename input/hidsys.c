@@ -61,7 +61,7 @@ static int describe(const char *sysroot, const char *name, struct in_hid_info *i
 
 	memset(i, 0, sizeof(*i));
 	i->iface = -1;
-	snprintf(i->node, sizeof(i->node), "/dev/%s", name);
+	snprintf(i->node, sizeof(i->node), "/dev/%.40s", name);   /* names are at most 40 (hidsys_scan) */
 	if (snprintf(path, sizeof(path), "%s/class/hidraw/%s/device/uevent", sysroot, name) >=
 	    (int)sizeof(path))
 		return -ENAMETOOLONG;
@@ -93,7 +93,7 @@ static int describe(const char *sysroot, const char *name, struct in_hid_info *i
 			i->iface = (int)n;
 	}
 	{
-		char man[128] = "", prod[128] = "";
+		char man[64] = "", prod[64] = "";   /* both fit in the name */
 
 		snprintf(path, sizeof(path), "%s/class/hidraw/%s/device/../../manufacturer",
 			 sysroot, name);
