@@ -1143,7 +1143,7 @@ phase_gl() {
 # every warning and error the daemon logs in these tests), and every line of
 # the daemon's that is one of those has that priority. -t arcaded leaves out
 # systemd's own lines about the unit.
-WARN_PAT='^arcaded: (display: none: |display: still none: |fault injection: |renderer gl |ARCADED_FAULT=|input [a-z]+: .*; retrying as devices appear|input [a-z]+: .* went away; its controls are released|input hotplug: .*(not available|: No such file)|input [a-z]+: not auto-detected|input [a-z]+: more than|input [a-z]+: profile .*: |input wizard: (not while recording|.*not saved)|no input device configured|render threads: |flight recorder: |.*: not saved: |.*\.ini:[0-9]+: |.*; games are not recorded|.*; using (the )?defaults|.*; starting from zero|.*; using the other layers|.*/recordings: recovered .*-cut\.rec )'
+WARN_PAT='^arcaded: (display: none: |display: still none: |fault injection: |renderer gl |ARCADED_FAULT=|input [a-z]+: .*; retrying as devices appear|input [a-z]+: .* went away; its controls are released|input hotplug: .*(not available|: No such file)|input [a-z]+: not auto-detected|input [a-z]+: more than|input [a-z]+: profile .*: |input wizard: (not while recording|.*not saved)|no input device configured|render threads: |flight recorder: |.*: not saved: |.*\.ini:[0-9]+: |.*; games are not recorded|.*; using (the )?defaults|.*; starting from zero|.*; using the other layers|.*/recordings: recovered .*-cut\.rec |fatal signal SIG[A-Z]*; the call stack:)'
 phase_priorities() {
 	all=$(journalctl -u "$U" -t arcaded -o cat --no-pager -q)
 	warn=$(journalctl -u "$U" -t arcaded -p warning -o cat --no-pager -q)
