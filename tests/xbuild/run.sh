@@ -220,10 +220,12 @@ if "$tmp/run-$FIRST" --quiet --rehash "$tmp/v2.rec" "$src"; then
 		fi
 	done
 	[ "$fail" -eq "$before" ] && ok "every build verifies the stored hashes: $(cat "$tmp/verify.err")"
-	# Record 1000's state hash: header 96 + 1000 records of 30 (command,
-	# state, frame and audio hashes), then 6 bytes of command.
+	# Record 1000's state hash: the header (its size at bytes 12..15: 104
+	# in format 3) + 1000 records of 30 (command, state, frame and audio
+	# hashes), then 6 bytes of command.
+	hdr=$(od -An -tu4 -j 12 -N 4 "$tmp/v2.rec" | tr -d ' ')
 	cp "$tmp/v2.rec" "$tmp/v2bad.rec"
-	printf '\125' | dd of="$tmp/v2bad.rec" bs=1 seek=$((96 + 30 * 1000 + 6)) conv=notrunc 2>/dev/null
+	printf '\125' | dd of="$tmp/v2bad.rec" bs=1 seek=$((hdr + 30 * 1000 + 6)) conv=notrunc 2>/dev/null
 	"$tmp/run-$FIRST" --quiet --verify "$tmp/v2bad.rec" 2>"$tmp/verify.err"
 	rc=$?
 	if [ "$rc" -eq 1 ] && grep -q "first difference at tick 1000: state hash" "$tmp/verify.err"; then
@@ -233,7 +235,7 @@ if "$tmp/run-$FIRST" --quiet --rehash "$tmp/v2.rec" "$src"; then
 	fi
 	# Record 1200's audio hash: 22 bytes into its record.
 	cp "$tmp/v2.rec" "$tmp/v2badaudio.rec"
-	printf '\125' | dd of="$tmp/v2badaudio.rec" bs=1 seek=$((96 + 30 * 1200 + 22)) conv=notrunc 2>/dev/null
+	printf '\125' | dd of="$tmp/v2badaudio.rec" bs=1 seek=$((hdr + 30 * 1200 + 22)) conv=notrunc 2>/dev/null
 	"$tmp/run-$FIRST" --quiet --verify "$tmp/v2badaudio.rec" 2>"$tmp/verify.err"
 	rc=$?
 	if [ "$rc" -eq 1 ] && grep -q "first difference at tick 1200: audio hash" "$tmp/verify.err"; then
@@ -304,7 +306,7 @@ if [ -e "$tmp/v2.rec" ] && "$tmp/run-$FIRST" --cut "$tmp/v2.rec" 1000 "$tmp/v2cu
 	done
 	[ "$fail" -eq "$before" ] &&
 		ok "every build verifies the hashes stored after a snapshot: $(cat "$tmp/verify.err")"
-	# The snapshot starts at byte 96 (format 3): change a byte in it.
+	# The snapshot starts at byte 104 (format 3): change a byte in it.
 	cp "$tmp/v2cut.rec" "$tmp/v2cutbad.rec"
 	printf '\125' | dd of="$tmp/v2cutbad.rec" bs=1 seek=200 conv=notrunc 2>/dev/null
 	"$tmp/run-$FIRST" --quiet "$tmp/v2cutbad.rec" 2>"$tmp/cut.err"
