@@ -36,20 +36,26 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t len)
 		struct rec_verify v;
 		struct rec_run run;
 
+		/* the snapshot follows the version's fixed header */
+		size_t snap_at = rh->version >= REC_VERSION_3 ? REC_HEADER_SIZE_V3 : REC_HEADER_SIZE_V2;
+
 		off = rh->header_size;
 		rs = rec_record_size(rh->hash_flags);
 		if (rh->snapshot_len &&
-		    (!rh->snapshot || (size_t)REC_HEADER_SIZE_V2 + rh->snapshot_len > len ||
-		     memcmp(rh->snapshot, data + REC_HEADER_SIZE_V2, rh->snapshot_len) != 0))
+		    (!rh->snapshot || (size_t)snap_at + rh->snapshot_len > len ||
+		     memcmp(rh->snapshot, data + snap_at, rh->snapshot_len) != 0))
 			abort();
 		rec_run_from_header(rh, &run);
 		rec_verify_init(&v, rh, &run);
 		while (rec_reader_next_tick(r, &t) == 1) {
 			uint8_t b[REC_CMD_SIZE];
+			struct rec_tick mine = { 0 };
+
 			rec_cmd_encode(b, &t.cmd);
 			if (off + rs > len || memcmp(b, data + off, REC_CMD_SIZE) != 0)
 				abort();
-			rec_verify_tick(&v, (uint32_t)((off - rh->header_size) / rs), &t, 0, 0);
+			mine.cmd = t.cmd;
+			rec_verify_tick(&v, (uint32_t)((off - rh->header_size) / rs), &t, &mine);
 			off += rs;
 		}
 		rec_verify_summary(&v, err, sizeof(err));

@@ -22,6 +22,10 @@ trap cleanup EXIT
 fail=0
 check() { if [ "$2" -eq 0 ]; then echo "PASS $1"; else echo "FAIL $1"; fail=1; fi; }
 common="--config-dir $tmp/etc --state-dir $tmp/state"
+# A session that outlives every run: tmux's server exits with its last
+# session, and a loaded machine could start the next run while the old
+# server was still going away ("server exited unexpectedly").
+tmux -S "$sock" -f /dev/null new-session -d -s keep "sleep 900"
 
 # run NAME KEY: the daemon in a pane, recording to $tmp/NAME.rec; once the
 # first picture is up, KEY ("none": nothing) is typed 20 times, 30 ms apart,
