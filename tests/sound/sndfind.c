@@ -32,6 +32,7 @@
 #include "engine/map/wad.h"
 #include "engine/sound/sfx.h"
 #include "engine/sound/snd.h"
+#include "input/io.h"
 
 static const char *const sf_ids[] = {
 #define SF_NAME(id, shown, lump, prio) #id,
@@ -47,24 +48,12 @@ static int sf_find(const char *name)
 	return -1;
 }
 
+/* The whole file (input/io.h), NULL when it cannot be read. */
 static uint8_t *sf_slurp(const char *path, size_t *len)
 {
-	FILE *f = fopen(path, "rb");
-	uint8_t *d = NULL;
-	long n;
+	uint8_t *d;
 
-	if (!f)
-		return NULL;
-	if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) > 0 && fseek(f, 0, SEEK_SET) == 0) {
-		d = malloc((size_t)n);
-		if (d && fread(d, 1, (size_t)n, f) != (size_t)n) {
-			free(d);
-			d = NULL;
-		}
-		*len = (size_t)n;
-	}
-	fclose(f);
-	return d;
+	return io_read_file(path, (size_t)1 << 30, 0, &d, len) == 0 ? d : NULL;
 }
 
 static uint32_t sf_le32(const uint8_t *p)

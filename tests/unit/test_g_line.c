@@ -20,6 +20,7 @@
 #include "engine/map/map_wad.h"
 #include "engine/map/tex.h"
 #include "engine/map/wad.h"
+#include "input/io.h"
 #include "map_fixture.h"
 
 static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1 };
@@ -121,24 +122,12 @@ static void a_plain_wall_says_so(void **state)
 	map_free(m);
 }
 
+/* The whole file (input/io.h), NULL when it cannot be read. */
 static uint8_t *slurp(const char *path, size_t *len)
 {
-	FILE *f = fopen(path, "rb");
-	uint8_t *d = NULL;
-	long n;
+	uint8_t *d;
 
-	if (!f)
-		return NULL;
-	if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) > 0 && fseek(f, 0, SEEK_SET) == 0) {
-		d = malloc((size_t)n);
-		if (d && fread(d, 1, (size_t)n, f) != (size_t)n) {
-			free(d);
-			d = NULL;
-		}
-		*len = (size_t)n;
-	}
-	fclose(f);
-	return d;
+	return io_read_file(path, (size_t)1 << 30, 0, &d, len) == 0 ? d : NULL;
 }
 
 /* Freedoom's E1M1 (freedoom1.wad as Debian 12 ships it): the first door
