@@ -83,8 +83,11 @@ static int app_paced(const struct app *a)
 static void app_summary(struct app *a)
 {
 	const char *st = scene_status(&a->scene);
+	char held[160];
 
 	stats_print(&a->stats);
+	/* what the controls hold now: after an unplug, nothing of its own */
+	say("summary: actions held: %s", cmd_held_text(&a->ctl.cs, held, sizeof(held)));
 	if (st)
 		say("summary: display: %s", st);
 }

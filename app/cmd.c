@@ -1,5 +1,6 @@
 #include "app/cmd.h"
 
+#include <stdio.h>
 #include <string.h>
 
 void cmd_reset(struct cmd_state *s)
@@ -45,4 +46,31 @@ void cmd_build(struct cmd_state *s, struct sim_cmd *out)
 				 (active(s, ACT_SERVICE) ? SIM_BT_SERVICE : 0));
 	out->coins = (uint8_t)(coins > UINT8_MAX ? UINT8_MAX : coins);
 	memset(s->presses, 0, sizeof(s->presses));
+}
+
+char *cmd_held_text(const struct cmd_state *s, char *buf, size_t len)
+{
+	size_t at = 0;
+
+	if (!len)
+		return buf;
+	buf[0] = '\0';
+	for (int a = 0; a < ACT_COUNT; a++) {
+		int n;
+
+		if (!s->held[a])
+			continue;
+		n = snprintf(buf + at, len - at, "%s%s (%u)", at ? ", " : "", act_name(a),
+			     (unsigned)s->held[a]);
+		if (n < 0 || (size_t)n >= len - at) {
+			/* cut: end in "..." where it fits */
+			if (len >= 4)
+				memcpy(buf + len - 4, "...", 4);
+			return buf;
+		}
+		at += (size_t)n;
+	}
+	if (!at)
+		snprintf(buf, len, "none");
+	return buf;
 }

@@ -6,6 +6,7 @@
 #ifndef ARCADED_APP_CMD_H
 #define ARCADED_APP_CMD_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "engine/game/sim.h"
@@ -33,5 +34,11 @@ void cmd_action(struct cmd_state *s, int a, int down);
  * builds still shows as pressed for one tick; each coin press edge is one
  * coin. Consumes the press counts. */
 void cmd_build(struct cmd_state *s, struct sim_cmd *out);
+
+/* The actions held now, for the operator's summary: "none", or each held
+ * action's name with the number of controls holding it, as
+ * "fire (1), turn_left (2)". Always NUL-terminated; cut short (ending in
+ * "...") if len is too small. Returns buf. */
+char *cmd_held_text(const struct cmd_state *s, char *buf, size_t len);
 
 #endif

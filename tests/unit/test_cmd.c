@@ -123,6 +123,29 @@ static void out_of_range_action_is_ignored(void **state)
 	assert_int_equal(c.forward | c.side | c.turn | c.buttons | c.coins, 0);
 }
 
+static void held_text_names_each_held_action(void **state)
+{
+	struct cmd_state s;
+	char b[64], small[12];
+	(void)state;
+	cmd_reset(&s);
+	assert_string_equal(cmd_held_text(&s, b, sizeof(b)), "none");
+	/* a press that was released is not held, though its edge is pending */
+	cmd_action(&s, ACT_USE, 1);
+	cmd_action(&s, ACT_USE, 0);
+	assert_string_equal(cmd_held_text(&s, b, sizeof(b)), "none");
+	cmd_action(&s, ACT_TURN_LEFT, 1);
+	cmd_action(&s, ACT_FIRE, 1);
+	cmd_action(&s, ACT_FIRE, 1);
+	/* in the actions' order, each with its count of controls */
+	assert_string_equal(cmd_held_text(&s, b, sizeof(b)), "turn_left (1), fire (2)");
+	assert_string_equal(cmd_held_text(&s, small, sizeof(small)), "turn_lef...");
+	cmd_action(&s, ACT_TURN_LEFT, 0);
+	cmd_action(&s, ACT_FIRE, 0);
+	cmd_action(&s, ACT_FIRE, 0);
+	assert_string_equal(cmd_held_text(&s, b, sizeof(b)), "none");
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -133,6 +156,7 @@ int main(void)
 		cmocka_unit_test(each_coin_edge_counts_once),
 		cmocka_unit_test(two_controls_hold_one_action_until_both_release),
 		cmocka_unit_test(out_of_range_action_is_ignored),
+		cmocka_unit_test(held_text_names_each_held_action),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
