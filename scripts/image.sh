@@ -61,7 +61,7 @@ R=$tmp/root
 # translations.
 say "mmdebstrap $suite (log: $out/mmdebstrap.log)"
 mmdebstrap --variant=minbase --mode=root \
-	--include=systemd,systemd-sysv,udev,kmod,linux-image-amd64,initramfs-tools,zstd,systemd-boot-efi \
+	--include=systemd,systemd-sysv,udev,kmod,linux-image-amd64,initramfs-tools,zstd,systemd-boot-efi,alsa-utils \
 	--dpkgopt='path-exclude=/usr/share/doc/*' --dpkgopt='path-include=/usr/share/doc/*/copyright' \
 	--dpkgopt='path-exclude=/usr/share/man/*' --dpkgopt='path-exclude=/usr/share/info/*' \
 	--dpkgopt='path-exclude=/usr/share/locale/*' --dpkgopt='path-include=/usr/share/locale/locale.alias' \

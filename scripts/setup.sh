@@ -15,6 +15,7 @@ libhidapi-dev
 libgpiod-dev
 libusb-1.0-0-dev
 libasound2-dev
+alsa-utils
 libdrm-dev
 libpng-dev
 libosmesa6-dev

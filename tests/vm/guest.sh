@@ -126,6 +126,59 @@ at_keyboard() {
 	done
 }
 
+# --- sound through QEMU's Intel HDA card ----------------------------------
+# The kms boot has an ich9-intel-hda card whose output QEMU writes to a
+# WAV file on the host (tests/vm/run.sh). udev loads snd_hda_intel; the
+# daemon, which looks for a card every second, opens it through ALSA as
+# installed (audio.output = auto, device "default"). Then 20 coins on the
+# PS/2 keyboard in attract mode: the host times each key it sends and the
+# growth of the WAV file, finds each coin's sound in the file by
+# correlation and gives the coin-to-first-audible-sample latency. The
+# card's mixer starts muted: alsa-utils' udev rule (alsactl restore, which
+# with no saved state runs alsactl init) unmutes it, as on a cabinet with
+# the package's Recommends. Here:
+# the card, the daemon's ALSA line, and its underrun count over the coins.
+SOUND_COINS=20
+underruns() { # the SIGUSR1 summary's underrun count ("" if none came)
+	t_u=$(now)
+	systemctl kill --kill-whom=main -s SIGUSR1 "$U"
+	for _ in 1 2 3 4 5 6 7 8 9 10; do
+		sleep 0.3
+		u=$(log_since "$t_u" | grep -m 1 -F "; sound output: " |
+			sed -n 's/.*; sound output: \([0-9]*\) underruns.*/\1/p')
+		[ -n "$u" ] && { echo "$u"; return; }
+	done
+}
+phase_sound() {
+	wait_until 60 grep -q -i "hda" /proc/asound/cards
+	card=$(grep -m 1 -i "hda" /proc/asound/cards | sed 's/^ *//')
+	check sound-card "the kernel's card: ${card:-none} (/proc/asound/cards)" [ -n "$card" ]
+	al=""
+	for _ in $(seq 1 60); do
+		al=$(log_since 0 | grep -m 1 -E "arcaded: sound: alsa [^ ]*: [0-9]+ Hz" | sed 's/.*arcaded: sound: //')
+		[ -n "$al" ] && break
+		sleep 0.5
+	done
+	check sound-alsa-open "the daemon's line: ${al:-no 'sound: alsa' line within 30 s}" [ -n "$al" ]
+	[ -n "$al" ] && figure "sound output: $al"
+	u0=$(underruns)
+	t_snd=$(now)
+	i=0
+	while [ "$i" -lt "$SOUND_COINS" ]; do
+		i=$((i + 1))
+		coins=$((coins + 1))
+		hostkey 5 100
+		sleep 0.6
+	done
+	sleep 1
+	u1=$(underruns)
+	nc=$(log_since "$t_snd" | grep -c -F 'arcaded: input: evdev 0001:0001 KEY_5 down -> coin')
+	check sound-coins-read "the daemon read $nc coin key(s) of the $SOUND_COINS sent" [ "$nc" = "$SOUND_COINS" ]
+	figure "sound: underruns while $SOUND_COINS coins played: $((${u1:-0} - ${u0:-0})) (summary before ${u0:-none}, after ${u1:-none})"
+	check sound-underruns "the SIGUSR1 summary's underrun count before and after the coins: ${u0:-none} and ${u1:-none}" \
+		[ -n "$u0" -a -n "$u1" ]
+}
+
 # --- input: a uinput keyboard plugged in after start -----------------------
 coins=0
 plays=0
@@ -1217,8 +1270,9 @@ latefb)
 	run phase_nofb phase_latefb phase_input phase_libusb phase_gl phase_priorities
 	;;
 kms)
-	# phase_input runs phase_vt while the start view is still
-	run phase_boot phase_input phase_flips phase_sigterm
+	# phase_input runs phase_vt while the start view is still; the
+	# coins of phase_sound are heard in attract mode, before it
+	run phase_boot phase_sound phase_input phase_flips phase_sigterm
 	UNITS=test_dp_kms
 	run unit_tests
 	UNITS=test_con

@@ -218,12 +218,17 @@ boot() {
 	base="$base modprobe.blacklist=floppy,ata_piix,pata_acpi,ata_generic,pcspkr,kvm,kvm_amd"
 	base="$base,kvm_intel,powernow_k8,acpi_cpufreq,serio_raw,i2c_piix4,joydev,evbug"
 	vga="-vga std"
+	snd=""
 	case $name in
 	kms)
 		kernel=$kdir/vmlinux
 		append="$base"
 		# virtio-gpu: page flips complete with an event
 		vga="-vga none -device virtio-vga"
+		# an Intel HDA card: what the guest plays, QEMU writes to a WAV
+		# file at the daemon's rate (no resampling in QEMU)
+		snd="-audiodev wav,id=snd0,path=$res/sound.wav,out.frequency=48000,out.channels=2,out.format=s16"
+		snd="$snd -device ich9-intel-hda -device hda-output,audiodev=snd0"
 		;;
 	fb32 | units)
 		# PVH entry of the ELF kernel: no firmware, no decompression.
@@ -251,7 +256,7 @@ boot() {
 		echo "-device virtio-9p-pci,fsdev=$1,mount_tag=$1"
 	}
 	qargs="-nodefaults -machine pc -accel tcg,thread=multi -cpu qemu64 -smp 2 -m 512
-		$vga -display none -no-reboot
+		$vga $snd -display none -no-reboot
 		-serial file:$res/serial.log -qmp unix:$sock,server=on,wait=off
 		-kernel $kernel -initrd $B/initramfs.cpio
 		$(fs root "$B/rootmnt" ro) $(fs kmod "$kdir/root/lib/modules" ro)
@@ -280,8 +285,14 @@ boot() {
 			case $rq in key\ *)
 				# "key QCODE MS": a key on QEMU's PS/2 keyboard
 				read -r _ kq kms < "$r"
+				# when it went (for the sound's latency): before and
+				# after the command that presses it
+				[ -n "$snd" ] && [ -e "$res/sound.wav" ] &&
+					echo "$(now) $(stat -c %s "$res/sound.wav")" >> "$res/wavsize.txt"
+				tk=$(now)
 				"$H" qmp "$sock" "{\"execute\":\"send-key\",\"arguments\":{\"keys\":[{\"type\":\"qcode\",\"data\":\"$kq\"}],\"hold-time\":$kms}}" \
 					> "$res/ack/.$n" 2>&1
+				echo "$kq $tk $(now)" >> "$res/keys.txt"
 				mv "$res/ack/.$n" "$res/ack/$n"
 				continue
 				;;
@@ -297,6 +308,9 @@ boot() {
 				touch "$res/ack/$n"
 			fi
 		done
+		# the sound file's growth: maps its frames to this clock
+		[ -n "$snd" ] && [ -e "$res/sound.wav" ] &&
+			echo "$(now) $(stat -c %s "$res/sound.wav")" >> "$res/wavsize.txt"
 		if [ -z "$t_ready" ] && grep -q '@@vm-ready' "$res/serial.log" 2>/dev/null; then
 			t_ready=$(now)
 		fi
@@ -430,7 +444,75 @@ judge() {
 		screen watchdog-back-in-attract "$H" differ "$res/wd-attract-1.ppm" "$res/wd-attract-2.ppm"
 		screen watchdog-screen-is-frame "$H" match "$ref" "$res/wd-play.ppm" "$bpp"
 	fi
+	[ -n "$snd" ] && sound_checks
 	return 0
+}
+
+# The sound the kms boot's HDA card played (QEMU's WAV file): every coin
+# key the host sent (qcode 5) must be heard, and the time from the key to
+# the coin's first audible sample is the coin-to-sound latency.
+# The file holds what the card played, frame after frame, while the
+# daemon's stream ran (an underrun stops it: the file then has a gap in
+# time but not in frames). So each key is placed in the file by the file's
+# growth near it: polled on this host's clock (wavsize.txt, also just
+# before each key), frame k was played at t0 + k / rate, and QEMU's writes
+# lag behind what it played, never lead, so t - frames / rate >= t0 at
+# every poll: the least of those within a second of the key is its t0.
+# That estimate can only be late, and a key's time is taken before the
+# command that presses it: both err towards longer latencies.
+sound_checks() {
+	w=$res/sound.wav
+	[ -e "$w" ] || { result FAIL "$name-sound-file" "QEMU wrote no $w"; return; }
+	awk '$1 == "5" { print $2, $3 }' "$res/keys.txt" 2>/dev/null > "$res/coin-keys.txt"
+	"$BUILD/tests/sndfind" --min 0.9 "$w" COIN > "$res/coin-found.txt" 2>&1
+	rate=$(sed -n 's/.*, rate \([0-9]*\),.*/\1/p' "$res/coin-found.txt")
+	nf=$(grep -c '^found ' "$res/coin-found.txt")
+	out=$(awk -v rate="${rate:-0}" '
+		FILENAME ~ /coin-keys/ { kp[++np] = $1; ka[np] = $2; next }
+		FILENAME ~ /wavsize/ { ws_t[++nw] = $1; ws_f[nw] = ($2 - 44) / 4; next }
+		$1 == "found" { on[++no] = $4 }
+		END {
+			if (!np || !rate) { print "0 0| (no coin keys sent, or no rate in the file)"; exit 1 }
+			heard = 0; bad = ""
+			for (i = 1; i <= np; i++) {
+				t0 = ""
+				for (k = 1; k <= nw; k++)
+					if (ws_t[k] >= kp[i] - 1 && ws_t[k] <= kp[i] + 1 && ws_f[k] > 0) {
+						c = ws_t[k] - ws_f[k] / rate
+						if (t0 == "" || c < t0) t0 = c
+					}
+				best = 0
+				if (t0 == "") { bad = bad " " i; continue }
+				for (j = 1; j <= no; j++) {
+					t = t0 + on[j] / rate
+					if (!used[j] && t >= kp[i] - 0.05 && t < kp[i] + 1) { best = j; break }
+				}
+				if (!best) { bad = bad " " i; continue }
+				used[best] = 1
+				lat[++heard] = t0 + on[best] / rate - kp[i]
+			}
+			for (i = 1; i <= heard; i++) for (j = i + 1; j <= heard; j++)
+				if (lat[j] < lat[i]) { x = lat[i]; lat[i] = lat[j]; lat[j] = x }
+			printf "%d %d", np, heard
+			if (heard) printf " %.1f %.1f %.1f %.1f", lat[1] * 1000,
+				lat[int((heard + 1) / 2)] * 1000, lat[int((heard * 99 + 99) / 100)] * 1000, lat[heard] * 1000
+			printf "|%s\n", bad
+		}' "$res/coin-keys.txt" "$res/wavsize.txt" "$res/coin-found.txt")
+	set -- ${out%%|*}
+	if [ "${2:-0}" -gt 0 ]; then
+		figure "$name: coin key to the coin's first audible sample through the HDA card, over the $2 coins heard whole: min $3 ms, p50 $4 ms, p99 $5 ms, max $6 ms (QEMU's WAV file, $(wc -c < "$w") bytes at $rate Hz)"
+	fi
+	figure "$name: coins heard whole (score 0.9 or more, within 1 s of the key): ${2:-0} of ${1:-0} (not heard:${out#*|}; an underrun inside a coin's first 40 ms breaks it up: the guest's underrun figure)"
+	# The coin is heard: at least one key's coin sound whole in what the
+	# card played (a muted card, a stream that never starts or the wrong
+	# sound give none), and every sound found as a coin follows a key.
+	# How many of all are whole depends on the emulated guest keeping up
+	# (the underruns): a figure, not a limit.
+	if [ "${2:-0}" -gt 0 ] && [ "$nf" = "$2" ]; then
+		result PASS "$name-sound-coin-heard" "${2} of ${1} coin keys heard whole, each within 1 s after its key; $nf coin sounds found in all ($(awk '$1 == "found" { s = s " " $3 } END { print "scores" s }' "$res/coin-found.txt"))"
+	else
+		result FAIL "$name-sound-coin-heard" "keys ${1:-0}, heard ${2:-0}, coin sounds found at score 0.9 or more $nf (keys not heard:${out#*|}); $(tail -n 1 "$res/coin-found.txt")"
+	fi
 }
 
 if [ -n "$gpio_ko" ]; then
