@@ -115,6 +115,8 @@ void out_audio_play(struct out_audio *o, const struct hear *h, struct stats *st)
 	}
 	st->underruns += as.underruns;
 	st->audio_dropped += as.dropped;
+	if (as.raised)   /* describe() says raised, and why */
+		say("sound: %s", o->be->describe(o->dev));
 	if (h->onset >= 0 && as.delay >= 0)
 		stats_sound(st, t0 + (uint64_t)(as.delay + h->onset) * 1000000000ull / h->rate);
 }

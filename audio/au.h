@@ -24,6 +24,8 @@ struct au_status {
 	uint32_t underruns;            /* underruns found and recovered from (each one
 					  restarts the stream) */
 	uint32_t dropped;              /* frames that did not fit and were left out */
+	int raised;                    /* 1: the device's buffer was made larger after
+					  underruns (describe() has the new sizes) */
 };
 
 struct au_backend {

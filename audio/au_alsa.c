@@ -15,7 +15,12 @@
  * clock runs slower than the tick clock, or a late tick was followed by
  * quick ones) are dropped and counted. An underrun (the buffer ran dry: a
  * tick came late) is recovered with snd_pcm_recover and counted, and the
- * stream starts again as above. A device that goes away (USB audio
+ * stream starts again as above. Underruns that keep coming (AU_ALSA_RAISE_AT
+ * within AU_ALSA_WINDOW ticks: the machine does not keep up with so small a
+ * buffer, such as an emulated one or one busy with other work) double the
+ * buffer, up to AU_ALSA_BUFFER_MAX_US, and write() says so (st->raised):
+ * a steady sound a few ms later beats one broken up every second, as
+ * sound servers do when they raise their watermark. A device that goes away (USB audio
  * unplugged: -ENODEV, or the stream's state DISCONNECTED) returns -ENODEV;
  * the app closes it and opens it again when it returns.
  */
@@ -28,6 +33,9 @@
 
 #define AU_ALSA_PERIOD_US 5000
 #define AU_ALSA_BUFFER_US 20000
+#define AU_ALSA_BUFFER_MAX_US 160000   /* the most the raises go to */
+#define AU_ALSA_RAISE_AT 4             /* underruns within a window that raise */
+#define AU_ALSA_WINDOW 300             /* ticks (5 s at 60 Hz) */
 #define AU_ALSA_TICK 60                /* ticks per second: a tick's frames */
 
 struct au_dev {
@@ -36,17 +44,23 @@ struct au_dev {
 	snd_pcm_uframes_t period, buffer;
 	int running;                   /* prefilled since the last (re)start */
 	int16_t *zero;                 /* buffer frames of silence */
+	unsigned int buffer_us;        /* the buffer asked for (raised by underruns) */
+	uint32_t window, window_xruns; /* writes and underruns in this window */
+	char arg[64];
 	char desc[320];
 };
 
-/* The hardware parameters: the period and buffer at most 5 and 20 ms when
- * the device allows (limit 1), else as it gives them (limit 0). 0 or a
- * negative ALSA error. */
+/* The hardware parameters: the period at most 5 ms (or a sixteenth of a
+ * raised buffer) and the buffer at most d->buffer_us when the device
+ * allows (limit 1), else as it gives them (limit 0). 0 or a negative ALSA
+ * error. */
 static int alsa_hw(struct au_dev *d, int limit, char *why, size_t whylen)
 {
 	snd_pcm_hw_params_t *hw;
-	snd_pcm_uframes_t pmax = d->rate * (AU_ALSA_PERIOD_US / 1000) / 1000;
-	snd_pcm_uframes_t bmax = d->rate * (AU_ALSA_BUFFER_US / 1000) / 1000;
+	unsigned int period_us = d->buffer_us / 16 > AU_ALSA_PERIOD_US ? d->buffer_us / 16
+								     : AU_ALSA_PERIOD_US;
+	snd_pcm_uframes_t pmax = (snd_pcm_uframes_t)((uint64_t)d->rate * period_us / 1000000u);
+	snd_pcm_uframes_t bmax = (snd_pcm_uframes_t)((uint64_t)d->rate * d->buffer_us / 1000000u);
 	unsigned int rate = d->rate;
 	int dir = 0, rc;
 
@@ -124,6 +138,47 @@ static int alsa_gone(int rc)
 	       rc == -ENOTTY;
 }
 
+/* d->desc from the sizes the device took. */
+static void alsa_desc(struct au_dev *d)
+{
+	const char *note = "";
+
+	if (d->buffer_us > AU_ALSA_BUFFER_US)
+		note = " (raised: underruns kept coming with a smaller one)";
+	else if (d->period * 1000000ull > (uint64_t)AU_ALSA_PERIOD_US * d->rate ||
+		 d->buffer * 1000000ull > (uint64_t)AU_ALSA_BUFFER_US * d->rate)
+		note = " (the device allows no less than this: above 5 ms / 20 ms; a "
+		       "direct device, plughw:CARD, goes lower)";
+	snprintf(d->desc, sizeof(d->desc),
+		 "alsa %s: %u Hz, period %lu frames (%.1f ms), buffer %lu frames (%.1f ms)%s",
+		 d->arg, d->rate, (unsigned long)d->period, d->period * 1000.0 / d->rate,
+		 (unsigned long)d->buffer, d->buffer * 1000.0 / d->rate, note);
+}
+
+/* The hardware and software parameters at d->buffer_us (the device's own
+ * sizes if it refuses those), and the silence for a prefill. 0 or a
+ * negative error, with why set when there is more to say than the code. */
+static int alsa_setup(struct au_dev *d, char *why, size_t whylen)
+{
+	int16_t *zero;
+	int rc = alsa_hw(d, 1, why, whylen);
+
+	if (rc < 0) {
+		why[0] = '\0';
+		rc = alsa_hw(d, 0, why, whylen);   /* the device's own sizes */
+	}
+	if (rc == 0)
+		rc = alsa_sw(d);
+	if (rc < 0)
+		return rc;
+	zero = calloc(d->buffer * 2, sizeof(int16_t));
+	if (!zero)
+		return -ENOMEM;
+	free(d->zero);
+	d->zero = zero;
+	return 0;
+}
+
 static int alsa_open(const char *arg, uint32_t rate, struct au_dev **out, char *why,
 		     size_t whylen)
 {
@@ -143,18 +198,9 @@ static int alsa_open(const char *arg, uint32_t rate, struct au_dev **out, char *
 		/* every failure to find a card: play silent, look again later */
 		return -ENODEV;
 	}
-	rc = alsa_hw(d, 1, why, whylen);
-	if (rc < 0) {
-		why[0] = '\0';
-		rc = alsa_hw(d, 0, why, whylen);   /* the device's own sizes */
-	}
-	if (rc == 0)
-		rc = alsa_sw(d);
-	if (rc == 0) {
-		d->zero = calloc(d->buffer * 2, sizeof(int16_t));
-		if (!d->zero)
-			rc = -ENOMEM;
-	}
+	d->buffer_us = AU_ALSA_BUFFER_US;
+	snprintf(d->arg, sizeof(d->arg), "%s", arg);
+	rc = alsa_setup(d, why, whylen);
 	if (rc < 0) {
 		if (why[0] == '\0')
 			snprintf(why, whylen, "%s", snd_strerror(rc));
@@ -163,15 +209,7 @@ static int alsa_open(const char *arg, uint32_t rate, struct au_dev **out, char *
 		free(d);
 		return alsa_gone(rc) ? -ENODEV : rc < 0 ? rc : -EIO;
 	}
-	snprintf(d->desc, sizeof(d->desc),
-		 "alsa %s: %u Hz, period %lu frames (%.1f ms), buffer %lu frames (%.1f ms)%s", arg,
-		 rate, (unsigned long)d->period, d->period * 1000.0 / rate,
-		 (unsigned long)d->buffer, d->buffer * 1000.0 / rate,
-		 d->period * 1000000ull > (uint64_t)AU_ALSA_PERIOD_US * rate ||
-				 d->buffer * 1000000ull > (uint64_t)AU_ALSA_BUFFER_US * rate
-			 ? " (the device allows no less than this: above 5 ms / 20 ms; a "
-			   "direct device, plughw:CARD, goes lower)"
-			 : "");
+	alsa_desc(d);
 	*out = d;
 	return 0;
 }
@@ -203,6 +241,36 @@ static int alsa_prefill(struct au_dev *d, uint32_t frames, struct au_status *st)
 		return (int)w;
 	st->delay = w;
 	d->running = 1;
+	return 0;
+}
+
+/* After a write: AU_ALSA_RAISE_AT underruns within a window of
+ * AU_ALSA_WINDOW writes double the buffer (up to AU_ALSA_BUFFER_MAX_US);
+ * the stream starts again with the next write. 0, or -ENODEV when the
+ * device will not take new parameters (it is closed and opened again). */
+static int alsa_raise(struct au_dev *d, struct au_status *st)
+{
+	char why[160] = "";
+	int rc;
+
+	d->window_xruns += st->underruns;
+	if (++d->window < AU_ALSA_WINDOW && d->window_xruns < AU_ALSA_RAISE_AT)
+		return 0;
+	rc = d->window_xruns >= AU_ALSA_RAISE_AT && d->buffer_us < AU_ALSA_BUFFER_MAX_US;
+	d->window = 0;
+	d->window_xruns = 0;
+	if (!rc)
+		return 0;
+	d->buffer_us *= 2;
+	snd_pcm_drop(d->pcm);
+	rc = snd_pcm_hw_free(d->pcm);
+	if (rc == 0)
+		rc = alsa_setup(d, why, sizeof(why));
+	if (rc < 0)
+		return -ENODEV;
+	d->running = 0;
+	alsa_desc(d);
+	st->raised = 1;
 	return 0;
 }
 
@@ -252,7 +320,7 @@ static int alsa_write(struct au_dev *d, const int16_t *buf, uint32_t frames,
 	if (rc < 0)
 		return alsa_gone(rc) ? -ENODEV : rc;
 	st->dropped = frames - (uint32_t)w;
-	return 0;
+	return alsa_raise(d, st);
 }
 
 static void alsa_close(struct au_dev *d)

@@ -175,6 +175,8 @@ phase_sound() {
 	nc=$(log_since "$t_snd" | grep -c -F 'arcaded: input: evdev 0001:0001 KEY_5 down -> coin')
 	check sound-coins-read "the daemon read $nc coin key(s) of the $SOUND_COINS sent" [ "$nc" = "$SOUND_COINS" ]
 	figure "sound: underruns while $SOUND_COINS coins played: $((${u1:-0} - ${u0:-0})) (summary before ${u0:-none}, after ${u1:-none})"
+	raised=$(log_since 0 | grep -F "arcaded: sound: alsa " | grep -F "(raised" | sed 's/.*arcaded: sound: //')
+	[ -n "$raised" ] && figure "sound: the buffer was raised after underruns $(echo "$raised" | wc -l) time(s), last: $(echo "$raised" | tail -n 1)"
 	check sound-underruns "the SIGUSR1 summary's underrun count before and after the coins: ${u0:-none} and ${u1:-none}" \
 		[ -n "$u0" -a -n "$u1" ]
 }
