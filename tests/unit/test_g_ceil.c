@@ -26,18 +26,9 @@ static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1 };
  * tagged 1. The player stands at (200, 64) facing it. */
 static struct map *lift_map(void)
 {
-	static const int v[][2] = {
-		{ 0, 0 }, { 0, 128 }, { 256, 128 }, { 256, 0 },
-		{ 384, 128 }, { 384, 0 }, { 640, 128 }, { 640, 0 },
-	};
+	static const int w[] = { 256, 128, 256 };
 	static const struct fix_sector s[] = { { 0, 192, 160 }, { 64, 192, 160 }, { 64, 192, 160 } };
-	static const struct fix_line l[] = {
-		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
-		{ 2, 4, 1, -1 }, { 4, 5, 1, 2 }, { 5, 3, 1, -1 },
-		{ 4, 6, 2, -1 }, { 6, 7, 2, -1 }, { 7, 5, 2, -1 },
-	};
-	static const struct fix_map f = { v, 8, s, 3, l, 10, 200, 64, 0 };
-	struct map *m = fix_alloc(&f);
+	struct map *m = fix_row(w, s, 3, 128, 200, 64, 0, NULL, 0);
 
 	assert_non_null(m);
 	m->lines[2].special = 62;
