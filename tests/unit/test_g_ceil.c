@@ -79,6 +79,119 @@ static void a_lift_in_motion_is_not_started_twice(void **state)
 }
 
 /*
+ * The other platforms, from Doom's p_plats.c: the perpetual one (53, 87)
+ * moves PLATSPEED, 1 unit a Doom tic, between the lowest and the highest
+ * floor around (128 units: 128 tics = 219.4 sim ticks, reached on tick
+ * 220) and waits 3 s (105 tics = 180 ticks) at each end; 54/89 stop it,
+ * 87 starts it again. Raise-and-change (15: by 24; 20: to the next floor
+ * up, clearing the special) takes the switch's front sector's flat at once
+ * and moves PLATSPEED / 2: 24 units in 48 tics (82.3 ticks: tick 83), 32
+ * in 64 (109.7: tick 110).
+ *
+ * A (x 0..256, floor a, the player at (200, 64)) | T (256..320, floor 64,
+ * tag 1) | B (320..576, floor 128); line 2 (x = 256) has `special`, line 5
+ * (x = 320) `stop`, both tagged 1.
+ */
+static struct map *plat_map(int special, int stop, int a)
+{
+	static const int w[] = { 256, 64, 256 };
+	struct fix_sector s[] = { { a, 256, 160 }, { 64, 256, 160 }, { 128, 256, 160 } };
+	struct map *m = fix_row(w, s, 3, 128, 200, 64, 0, NULL, 0);
+
+	assert_non_null(m);
+	m->lines[2].special = (uint16_t)special;
+	m->lines[2].tag = 1;
+	m->lines[5].special = (uint16_t)stop;
+	m->lines[5].tag = 1;
+	m->sectors[1].tag = 1;
+	return m;
+}
+
+/* Ticks until sector 1's floor is h (the mover may stay), or -1. */
+static int floor_ticks(struct sim *s, fx_t h, int max)
+{
+	for (int t = 1; t <= max; t++) {
+		sim_tick(s, &spec_none);
+		if (s->w.sec[1].floor_h == h)
+			return t;
+	}
+	return -1;
+}
+
+static void perpetual_platform_travels_and_waits_3_s(void **state)
+{
+	struct map *m = plat_map(87, 89, 0);
+	struct sim s;
+	fx_t h;
+	int t;
+	(void)state;
+	assert_int_equal(map_finish(m, NULL, 0), 0);
+	sim_init(&s, m, &spec_play);
+	spec_cross(&s, G_WHO_PLAYER, 256, 64, 1);
+	/* first to whichever end the random start chose, then the cycle */
+	t = floor_ticks(&s, 0, 300);
+	if (t < 0)
+		t = floor_ticks(&s, 0, 700);
+	assert_true(t > 0);
+	for (int i = 0; i < 2; i++) {
+		/* 180 ticks of wait, then the tick that leaves (counted here):
+		 * the travel's other 219 follow */
+		for (t = 0; t < 300 && s.w.sec[1].floor_h == 0; t++)
+			sim_tick(&s, &spec_none);
+		assert_in_range(t, 180, 181);
+		assert_in_range(floor_ticks(&s, 128 * FX_ONE, 500), 218, 220);
+		for (t = 0; t < 300 && s.w.sec[1].floor_h == 128 * FX_ONE; t++)
+			sim_tick(&s, &spec_none);
+		assert_in_range(t, 180, 181);
+		assert_in_range(floor_ticks(&s, 0, 500), 218, 220);
+	}
+	/* stopped where it is, and started again */
+	spec_run(&s, &spec_none, 200);
+	spec_cross(&s, G_WHO_PLAYER, 320, 64, 1);
+	h = s.w.sec[1].floor_h;
+	assert_true(h > 0 && h < 128 * FX_ONE);
+	spec_run(&s, &spec_none, 500);
+	assert_int_equal(s.w.sec[1].floor_h, h);
+	spec_cross(&s, G_WHO_PLAYER, 256, 64, 1);
+	spec_run(&s, &spec_none, 10);
+	assert_int_not_equal(s.w.sec[1].floor_h, h);
+	assert_int_equal(s.w.num_movers, 1);
+	map_free(m);
+}
+
+static void raise_and_change_takes_the_front_flat(void **state)
+{
+	struct map *m = plat_map(15, 0, 0);
+	struct sim s;
+	(void)state;
+	m->sectors[0].floor_tex = 6;
+	assert_int_equal(map_finish(m, NULL, 0), 0);
+	sim_init(&s, m, &spec_play);
+	sim_tick(&s, &spec_use_cmd);               /* tick 1 */
+	assert_int_equal(s.w.sec[1].floor_tex, 6);
+	assert_int_equal(floor_ticks(&s, 88 * FX_ONE, 300) + 1, 83);
+	assert_int_equal(s.w.num_movers, 0);
+	map_free(m);
+}
+
+static void raise_to_next_and_change_clears_the_special(void **state)
+{
+	struct map *m = plat_map(20, 0, 96);
+	struct sim s;
+	(void)state;
+	m->sectors[0].floor_tex = 6;
+	m->sectors[1].special = 7;
+	assert_int_equal(map_finish(m, NULL, 0), 0);
+	sim_init(&s, m, &spec_play);
+	sim_tick(&s, &spec_use_cmd);
+	assert_int_equal(s.w.sec[1].floor_tex, 6);
+	assert_int_equal(s.w.sec[1].special, 0);
+	assert_int_equal(floor_ticks(&s, 96 * FX_ONE, 300) + 1, 110);
+	assert_int_equal(s.w.num_movers, 0);
+	map_free(m);
+}
+
+/*
  * Crushers. Expected values from Doom's rules (p_ceilng.c, p_map.c): a
  * crusher's ceiling moves CEILSPEED, 1 unit a Doom tic (the fast one 2),
  * down to 8 above the floor and back up to where it started, for ever;
@@ -245,6 +358,9 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(lift_goes_down_waits_and_comes_up),
 		cmocka_unit_test(a_lift_in_motion_is_not_started_twice),
+		cmocka_unit_test(perpetual_platform_travels_and_waits_3_s),
+		cmocka_unit_test(raise_and_change_takes_the_front_flat),
+		cmocka_unit_test(raise_to_next_and_change_clears_the_special),
 		cmocka_unit_test(crusher_goes_down_and_up_for_ever),
 		cmocka_unit_test(fast_crusher_goes_down_twice_as_fast),
 		cmocka_unit_test(crusher_hurts_the_player_under_it),
