@@ -89,6 +89,16 @@ static int runs(const uint8_t *l, int n, uint8_t v, int *len, int max)
 	return k;
 }
 
+/* At least ten whole runs of v in l[0..n], each `want` tics long. */
+static void runs_are(const uint8_t *l, int n, uint8_t v, int want)
+{
+	int len[64], k = runs(l, n, v, len, 64);
+
+	assert_true(k >= 10);
+	for (int i = 0; i < k; i++)
+		assert_int_equal(len[i], want);
+}
+
 static void only_dark_and_bright(const uint8_t *l, int n)
 {
 	for (int t = 0; t <= n; t++)
@@ -100,19 +110,12 @@ static void strobe(int special, int dark)
 	struct map *m = light_map(special, 0, 0);
 	struct sim s;
 	uint8_t l[TICS + 1];
-	int len[64], k;
 
 	sim_init(&s, m, &spec_play);
 	sample(&s, 1, l, TICS);
 	only_dark_and_bright(l, TICS);
-	k = runs(l, TICS, BRIGHT, len, 64);
-	assert_true(k >= 10);
-	for (int i = 0; i < k; i++)
-		assert_int_equal(len[i], 5);
-	k = runs(l, TICS, DARK, len, 64);
-	assert_true(k >= 10);
-	for (int i = 0; i < k; i++)
-		assert_int_equal(len[i], dark);
+	runs_are(l, TICS, BRIGHT, 5);
+	runs_are(l, TICS, DARK, dark);
 	map_free(m);
 }
 
@@ -134,7 +137,6 @@ static void synchronized(int special, int dark)
 	struct map *m = light_map(special, special, 0);
 	struct sim s;
 	uint8_t a[TICS + 1], b[TICS + 1];
-	int len[64], k;
 
 	sim_init(&s, m, &spec_play);
 	for (int t = 0; t <= TICS; t++) {
@@ -146,10 +148,7 @@ static void synchronized(int special, int dark)
 	}
 	assert_int_equal(a[0], BRIGHT);
 	assert_int_equal(a[1], DARK);
-	k = runs(a, TICS, DARK, len, 64);
-	assert_true(k >= 10);
-	for (int i = 0; i < k; i++)
-		assert_int_equal(len[i], dark);
+	runs_are(a, TICS, DARK, dark);
 	map_free(m);
 }
 
@@ -250,7 +249,6 @@ static void the_strobe_line_starts_a_slow_strobe(void **state)
 	struct map *m = light_map(0, 0, 17);
 	struct sim s;
 	uint8_t l[TICS + 1];
-	int len[64], k;
 	(void)state;
 	sim_init(&s, m, &spec_play);
 	spec_run(&s, &spec_none, 100);
@@ -262,10 +260,8 @@ static void the_strobe_line_starts_a_slow_strobe(void **state)
 		l[t] = s.w.sec[1].light;
 	}
 	only_dark_and_bright(l, TICS);
-	k = runs(l, TICS, DARK, len, 64);
-	assert_true(k >= 10);
-	for (int i = 0; i < k; i++)
-		assert_int_equal(len[i], 35);
+	runs_are(l, TICS, DARK, 35);
+	runs_are(l, TICS, BRIGHT, 5);
 	map_free(m);
 }
 
