@@ -225,6 +225,28 @@ static void crushing_raise_crushes_and_goes_on(void **state)
 	map_free(m);
 }
 
+/* The fast floors move FLOORSPEED * 4, 4 units a tic. 36 (W1): T at 96
+ * lowers to the highest neighbour floor + 8 = 72: 24 units, 6 tics = 10.3
+ * ticks, tick 11. 130 (W1): T at 0 rises to the next floor up, A's 32: 8
+ * tics = 13.7 ticks, tick 14. */
+static void fast_floors_move_4_units_a_tic(void **state)
+{
+	static const struct fix_sector low[] = { { 32, 128, 160 }, { 96, 200, 160 }, { 64, 128, 160 } };
+	static const struct fix_sector up[] = { { 32, 128, 160 }, { 0, 128, 160 }, { 64, 128, 160 } };
+	struct map *m = floor_map(36, low, 0);
+	struct sim sim;
+	(void)state;
+	finish(m, &sim);
+	spec_cross(&sim, G_WHO_PLAYER, 256, 64, 1);
+	assert_int_equal(spec_ticks_to(&sim, 1, 0, U(72), 400), 11);
+	map_free(m);
+	m = floor_map(130, up, 0);
+	finish(m, &sim);
+	spec_cross(&sim, G_WHO_PLAYER, 256, 64, 1);
+	assert_int_equal(spec_ticks_to(&sim, 1, 0, U(32), 400), 14);
+	map_free(m);
+}
+
 /* Stairs: A | steps 1..4 (tag 1 on the first) | a step of another flat |
  * one more of the first flat, each 32 wide; line 2 has `special`. */
 static struct map *stairs_map(int special)
@@ -299,6 +321,7 @@ int main(void)
 		cmocka_unit_test(raise_by_24_takes_the_front_flat_at_once),
 		cmocka_unit_test(lower_and_change_takes_the_lowest_flat_at_the_end),
 		cmocka_unit_test(crushing_raise_crushes_and_goes_on),
+		cmocka_unit_test(fast_floors_move_4_units_a_tic),
 		cmocka_unit_test(stairs_by_8),
 		cmocka_unit_test(stairs_by_16_fast),
 	};
