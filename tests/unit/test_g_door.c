@@ -31,18 +31,9 @@ static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1 };
  * east. */
 static struct map *door_map(int special, int sx, int low_b)
 {
-	static const int v[][2] = {
-		{ 0, 0 }, { 0, 128 }, { 256, 128 }, { 256, 0 },
-		{ 272, 128 }, { 272, 0 }, { 528, 128 }, { 528, 0 },
-	};
+	static const int w[] = { 256, 16, 256 };
 	struct fix_sector s[] = { { 0, 128, 160 }, { 0, 0, 160 }, { 0, low_b ? 100 : 128, 160 } };
-	static const struct fix_line l[] = {
-		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
-		{ 2, 4, 1, -1 }, { 4, 5, 1, 2 }, { 5, 3, 1, -1 },
-		{ 4, 6, 2, -1 }, { 6, 7, 2, -1 }, { 7, 5, 2, -1 },
-	};
-	struct fix_map f = { v, 8, s, 3, l, 10, sx, 64, 0 };
-	struct map *m = fix_alloc(&f);
+	struct map *m = fix_row(w, s, 3, 128, sx, 64, 0, NULL, 0);
 
 	assert_non_null(m);
 	m->lines[2].special = (uint16_t)special;

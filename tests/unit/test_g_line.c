@@ -1,9 +1,9 @@
 /*
  * Tests for engine/game/g_line.c: switches (SW1/SW2 state, buttons popping
  * back after Doom's one second, 35 tics = 60 sim ticks), exits (normal and
- * secret), a used line with nothing to do, and USE opening the first door
- * of Freedoom's E1M1 (skipped, and counted so, without the freedoom
- * package).
+ * secret, switched and walked over), a used line with nothing to do, and
+ * USE opening the first door of Freedoom's E1M1 (skipped, and counted so,
+ * without the freedoom package).
  */
 #include <stdarg.h>
 #include <stddef.h>
@@ -21,7 +21,7 @@
 #include "engine/map/tex.h"
 #include "engine/map/wad.h"
 #include "input/io.h"
-#include "map_fixture.h"
+#include "spec_fixture.h"
 
 static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1 };
 
@@ -30,18 +30,9 @@ static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1 };
  * has `special` tagged 1. The player stands at (sx, sy) facing `a`. */
 static struct map *line_map(int special, int wall, int sx, int sy, ang_t a)
 {
-	static const int v[][2] = {
-		{ 0, 0 }, { 0, 128 }, { 256, 128 }, { 256, 0 },
-		{ 272, 128 }, { 272, 0 }, { 528, 128 }, { 528, 0 },
-	};
+	static const int w[] = { 256, 16, 256 };
 	static const struct fix_sector s[] = { { 0, 128, 160 }, { 0, 0, 160 }, { 0, 128, 160 } };
-	static const struct fix_line l[] = {
-		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
-		{ 2, 4, 1, -1 }, { 4, 5, 1, 2 }, { 5, 3, 1, -1 },
-		{ 4, 6, 2, -1 }, { 6, 7, 2, -1 }, { 7, 5, 2, -1 },
-	};
-	struct fix_map f = { v, 8, s, 3, l, 10, sx, sy, a };
-	struct map *m = fix_alloc(&f);
+	struct map *m = fix_row(w, s, 3, 128, sx, sy, a, NULL, 0);
 
 	assert_non_null(m);
 	m->lines[1].special = (uint16_t)wall;
@@ -108,6 +99,24 @@ static void exits_end_the_map(void **state)
 	assert_int_equal(s.g.phase, G_PH_INTER);
 	assert_int_equal(s.w.exit, G_EXIT_SECRET);
 	map_free(m);
+}
+
+/* The walk-over exits: 52 (W1) normal, 124 (W1) secret. */
+static void walk_over_exits_end_the_map(void **state)
+{
+	static const int sp[][2] = { { 52, G_EXIT_NORMAL }, { 124, G_EXIT_SECRET } };
+	(void)state;
+	for (int i = 0; i < 2; i++) {
+		struct map *m = line_map(sp[i][0], 0, 200, 64, 0);
+		struct sim s;
+		sim_init(&s, m, &play);
+		run(&s, &none, 10);
+		assert_int_equal(s.g.phase, G_PH_PLAY);
+		spec_cross(&s, G_WHO_PLAYER, 256, 64, 1);
+		assert_int_equal(s.g.phase, G_PH_INTER);
+		assert_int_equal(s.w.exit, sp[i][1]);
+		map_free(m);
+	}
 }
 
 static void a_plain_wall_says_so(void **state)
@@ -186,6 +195,7 @@ int main(void)
 		cmocka_unit_test(a_switch_stays_pressed_once_used),
 		cmocka_unit_test(a_button_pops_back_after_a_second),
 		cmocka_unit_test(exits_end_the_map),
+		cmocka_unit_test(walk_over_exits_end_the_map),
 		cmocka_unit_test(a_plain_wall_says_so),
 		cmocka_unit_test(e1m1_first_door_opens_and_the_player_walks_through),
 	};
