@@ -85,76 +85,59 @@ static void pspec_tally_print(FILE *out, const struct pspec_tally *t)
 	fputc('\n', out);
 }
 
-/* One unplayed type over all maps: its count and the maps it is in. */
-struct pspec_miss {
-	uint16_t type;
-	uint8_t sector;
+/* One type over all maps: its count and, for a type not played, the maps
+ * it is in ("E3M9 MAP20 ...": the list is cut with " ..." when full). */
+struct pspec_type {
+	struct g_spec_use u;
 	uint64_t count;
 	char maps[120];
 };
 
 struct pspec_all {
-	struct pspec_tally t;          /* over lines/sectors of every map */
-	struct g_spec_use *types;      /* every type of every map, merged */
-	int ntypes, captypes;
-	struct pspec_miss *miss;
-	int nmiss, capmiss;
+	struct pspec_tally t;
+	struct pspec_type *types;      /* every type of every map, in first-seen order */
+	int ntypes, cap;
+	int unplayed;                  /* types not played */
 };
-
-static int pspec_grow(void **p, int *cap, size_t size)
-{
-	int n = *cap ? *cap * 2 : 32;
-	void *q = realloc(*p, (size_t)n * size);
-
-	if (!q)
-		return -ENOMEM;
-	*p = q;
-	*cap = n;
-	return 0;
-}
 
 /* Adds map `name`'s census u[0..n-1] to a. */
 static int pspec_merge(struct pspec_all *a, const char *name, const struct g_spec_use *u, int n)
 {
 	for (int i = 0; i < n; i++) {
-		int k;
+		struct pspec_type *e;
+		size_t l;
+		int k = 0;
+
 		a->t.uses[u[i].sector] += u[i].count;
-		if (u[i].played)
-			a->t.played[u[i].sector] += u[i].count;
-		for (k = 0; k < a->ntypes; k++)
-			if (a->types[k].type == u[i].type && a->types[k].sector == u[i].sector)
-				break;
+		a->t.played[u[i].sector] += u[i].played ? u[i].count : 0;
+		while (k < a->ntypes && (a->types[k].u.type != u[i].type ||
+					 a->types[k].u.sector != u[i].sector))
+			k++;
 		if (k == a->ntypes) {
-			if (a->ntypes == a->captypes &&
-			    pspec_grow((void **)&a->types, &a->captypes, sizeof(*a->types)) < 0)
-				return -ENOMEM;
-			a->types[a->ntypes++] = u[i];
+			if (a->ntypes == a->cap) {
+				int cap = a->cap ? a->cap * 2 : 32;
+				void *q = realloc(a->types, (size_t)cap * sizeof(*a->types));
+				if (!q)
+					return -ENOMEM;
+				a->types = q;
+				a->cap = cap;
+			}
+			memset(&a->types[k], 0, sizeof(a->types[k]));
+			a->types[k].u = u[i];
+			a->ntypes++;
 			a->t.types[u[i].sector]++;
 			a->t.ptypes[u[i].sector] += u[i].played;
+			a->unplayed += !u[i].played;
 		}
+		e = &a->types[k];
+		e->count += u[i].count;
+		l = strlen(e->maps);
 		if (u[i].played)
 			continue;
-		for (k = 0; k < a->nmiss; k++)
-			if (a->miss[k].type == u[i].type && a->miss[k].sector == u[i].sector)
-				break;
-		if (k == a->nmiss) {
-			if (a->nmiss == a->capmiss &&
-			    pspec_grow((void **)&a->miss, &a->capmiss, sizeof(*a->miss)) < 0)
-				return -ENOMEM;
-			memset(&a->miss[k], 0, sizeof(a->miss[k]));
-			a->miss[k].type = u[i].type;
-			a->miss[k].sector = u[i].sector;
-			a->nmiss++;
-		}
-		a->miss[k].count += u[i].count;
-		{
-			char *m = a->miss[k].maps;
-			size_t l = strlen(m);
-			if (l + strlen(name) + 5 < sizeof(a->miss[k].maps))
-				snprintf(m + l, sizeof(a->miss[k].maps) - l, "%s%s", l ? " " : "", name);
-			else if (l + 4 < sizeof(a->miss[k].maps) && strcmp(m + l - 3, "...") != 0)
-				snprintf(m + l, sizeof(a->miss[k].maps) - l, " ...");
-		}
+		if (l + strlen(name) + 5 < sizeof(e->maps))
+			snprintf(e->maps + l, sizeof(e->maps) - l, "%s%s", l ? " " : "", name);
+		else if (strcmp(e->maps + l - 3, "...") != 0)
+			snprintf(e->maps + l, sizeof(e->maps) - l, " ...");
 	}
 	return 0;
 }
@@ -295,15 +278,16 @@ int pspec_print(const char *const *wads, int nwads, const char *map, FILE *out)
 	if (rc == 0 && n > 1) {
 		fprintf(out, "all %d maps supported: ", n);
 		pspec_tally_print(out, &a.t);
-		fprintf(out, "unsupported:%s\n", a.nmiss ? "" : " none");
-		for (int i = 0; i < a.nmiss; i++)
-			fprintf(out, "  %s %u x%llu (%s)\n", a.miss[i].sector ? "sector" : "line",
-				a.miss[i].type, (unsigned long long)a.miss[i].count, a.miss[i].maps);
+		fprintf(out, "unsupported:%s\n", a.unplayed ? "" : " none");
+		for (int i = 0; i < a.ntypes; i++)
+			if (!a.types[i].u.played)
+				fprintf(out, "  %s %u x%llu (%s)\n",
+					a.types[i].u.sector ? "sector" : "line", a.types[i].u.type,
+					(unsigned long long)a.types[i].count, a.types[i].maps);
 	}
 	if (rc == -ENOMEM)
 		say_err("out of memory");
 	free(a.types);
-	free(a.miss);
 	free(names);
 	tex_free(tex);
 	wad_free(w);
