@@ -242,10 +242,8 @@ static int pspec_maps(FILE *out, const struct wad *w, const struct tex_set *tex,
 		}
 		free(u);
 		map_free(m);
-		if (rc < 0) {
-			say_err("%s: %s", names[i], strerror(-rc));
-			return rc;
-		}
+		if (rc < 0)
+			return rc;     /* -ENOMEM: the caller says so */
 	}
 	return 0;
 }
