@@ -17,6 +17,7 @@
 #include "app/loop.h"
 #include "app/out.h"
 #include "app/pace.h"
+#include "app/pspec.h"
 #include "app/say.h"
 #include "app/scene.h"
 #include "app/script.h"
@@ -341,6 +342,12 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 	}
 	if (a->ct.note[0])
 		say("%s", a->ct.note);
+	for (int i = 0; i < a->ct.nmaps; i++) {
+		/* once per map, at its load: what of it the game does not play */
+		char un[512];
+		if (pspec_unplayed(a->ct.maps[i], un, sizeof un))
+			say_warn("%s", un);
+	}
 	say("content: %s, %u sectors, %u lines, %d light(s)%s", a->ct.what, a->ct.map->num_sectors,
 	    a->ct.map->num_lines, a->ct.nlights,
 	    a->ct.map->missing_textures ? ", some textures missing (drawn as a checker)" : "");

@@ -9,6 +9,7 @@
 
 #include "app/app.h"
 #include "app/ctl.h"
+#include "app/pspec.h"
 #include "app/say.h"
 #include "app/slot.h"
 #include "audio/au.h"
@@ -38,6 +39,10 @@ static void usage(FILE *f)
 	      "  --wad FILE         play Doom-format maps from FILE (repeatable: IWAD first,\n"
 	      "                     then PWADs, later ones override)\n"
 	      "  --map NAME         the map to play from the WADs (E1M1, MAP01; default: the first)\n"
+	      "  --print-specials   with --wad: list the line and sector specials of --map NAME\n"
+	      "                     with counts, marking those the game does not play, then\n"
+	      "                     exit; without --map (or --map all) every map of the WADs\n"
+	      "                     and the supported share over all of them\n"
 	      "  --grid FILE        play a grid (tile) map; \"builtin\" is the built-in GRID1\n"
 	      "  --no-lights        no shadowed point-light maps\n"
 	      "  --play             start in play, skipping attract (= --set game.start_in_play=1)\n"
@@ -124,7 +129,7 @@ int main(int argc, char **argv)
 	enum { O_CONFIG_DIR = 256, O_STATE_DIR, O_SET, O_DISPLAY, O_AUDIO, O_LEVEL, O_PLAY, O_BINDINGS,
 	       O_SCRIPT, O_RECORD, O_REPLAY, O_NO_RENDER, O_QUIET, O_TICKS, O_FAST, O_SCREENSHOT,
 	       O_PRINT_CONFIG, O_VERSION, O_HELP, O_WAD, O_MAP, O_GRID, O_NO_LIGHTS, O_VERIFY,
-	       O_UNTIL, O_SIZE, O_RENDERER, O_REALTIME };
+	       O_UNTIL, O_SIZE, O_RENDERER, O_REALTIME, O_PRINT_SPECIALS };
 	static const struct option opts[] = {
 		{ "config-dir", required_argument, NULL, O_CONFIG_DIR },
 		{ "state-dir", required_argument, NULL, O_STATE_DIR },
@@ -146,6 +151,7 @@ int main(int argc, char **argv)
 		{ "print-config", no_argument, NULL, O_PRINT_CONFIG },
 		{ "wad", required_argument, NULL, O_WAD },
 		{ "map", required_argument, NULL, O_MAP },
+		{ "print-specials", no_argument, NULL, O_PRINT_SPECIALS },
 		{ "grid", required_argument, NULL, O_GRID },
 		{ "no-lights", no_argument, NULL, O_NO_LIGHTS },
 		{ "verify", no_argument, NULL, O_VERIFY },
@@ -161,7 +167,7 @@ int main(int argc, char **argv)
 	static char sets[MAX_SETS][CFG_PATH_MAX + 32];
 	struct app_opts o = { .out = stdout, .config_dir = "/etc/arcaded" };
 	const char *state_dir = NULL;
-	int nsets = 0, print_config = 0, no_lights = 0, devices = 0, opt;
+	int nsets = 0, print_config = 0, print_specials = 0, no_lights = 0, devices = 0, opt;
 	struct cfg c;
 
 	/* under systemd, lines carry their priority for the journal */
@@ -226,6 +232,7 @@ int main(int argc, char **argv)
 			o.content.wads[o.content.nwads++] = optarg;
 			break;
 		case O_MAP: o.content.map = optarg; break;
+		case O_PRINT_SPECIALS: print_specials = 1; break;
 		case O_GRID: o.content.grid = optarg; break;
 		case O_NO_LIGHTS: no_lights = 1; break;
 		case O_VERSION: puts("arcaded " ARCADED_VERSION); return 0;
@@ -253,6 +260,14 @@ int main(int argc, char **argv)
 		say_err("unexpected argument '%s'", argv[optind]);
 		usage(stderr);
 		return 2;
+	}
+	if (print_specials) {
+		/* a tool: no configuration, no devices */
+		if (o.content.nwads == 0) {
+			say_err("--print-specials goes with --wad");
+			return 2;
+		}
+		return pspec_print(o.content.wads, o.content.nwads, o.content.map, stdout);
 	}
 	if (o.gl && (o.replay || o.script || o.record)) {
 		/* llvmpipe's frames are not bit-exact: hashes, recordings and

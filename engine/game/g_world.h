@@ -255,4 +255,19 @@ int g_line_special(uint16_t type, char *out, size_t len);
  * still describes what it can). */
 int g_sector_special(uint16_t type, char *out, size_t len);
 
+/* One special type a map uses (g_census.c). */
+struct g_spec_use {
+	uint16_t type;
+	uint8_t sector;                /* 0: a line special, 1: a sector special */
+	uint8_t played;                /* g_line_special's or g_sector_special's answer */
+	uint32_t count;                /* lines or sectors that have it */
+};
+
+/* Every special type map m uses (0, no special, is left out) with its
+ * count, into out: line specials first, each kind by type. Returns the
+ * number of entries, or -E2BIG when there are more than max types
+ * (m->num_lines + m->num_sectors entries always suffice). For tools and
+ * the log (app/); the sim does not call it. */
+int g_census(const struct map *m, struct g_spec_use *out, int max);
+
 #endif

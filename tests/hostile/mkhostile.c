@@ -1,5 +1,6 @@
 /*
- * mkhostile: writes the hostile WADs of issue 13 (items 7-9) into a folder,
+ * mkhostile: writes the hostile WADs of issue 13 (items 7-9) and the map
+ * of specials the game does not play (issue 15 item 7) into a folder,
  * for tests/hostile/run.sh, which feeds them to the daemon. The generators
  * are tests/unit/hostile_fixture.h, shared with the unit tests.
  * Usage: mkhostile DIR
@@ -59,5 +60,7 @@ int main(int argc, char **argv)
 	bad |= put(argv[1], "markers100000.wad", img, len);
 	img = hf_heights(32730, 32760, &len);
 	bad |= put(argv[1], "high.wad", img, len);
+	img = hf_specials(&len);
+	bad |= put(argv[1], "specials.wad", img, len);
 	return bad;
 }

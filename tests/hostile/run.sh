@@ -1,5 +1,6 @@
 #!/bin/sh
-# Hostile maps through the real daemon (issue 13 items 7-9). tests/hostile/
+# Hostile maps through the real daemon (issue 13 items 7-9), and maps with
+# specials the game does not play (issue 15 item 7, below). tests/hostile/
 # mkhostile.c writes each hostile WAD of the issue (generators shared with
 # the unit tests: tests/unit/hostile_fixture.h); the daemon loads each one
 # headless and must end with the expected clear error, or with the
@@ -112,6 +113,110 @@ signal_() {
 signal_ TERM cross30004.wad
 signal_ INT tall.wad
 signal_ TERM litlines.wad
+
+# ---- specials the game does not play (issue 15 item 7) ------------------
+# specials.wad (hf_specials): line 1 x1 and sector 9 x1 are played, line
+# 24576 x3 (Boom generalized floor) and sector 256 x1 (Boom friction) not.
+# --print-specials lists each with its count, marking the two; the daemon
+# logs them once at load.
+ps_out="$tmp/ps.out"
+"$BIN" --wad "$tmp/w/specials.wad" --print-specials >"$ps_out" 2>"$tmp/err"
+rc=$?
+if [ "$rc" -ne 0 ]; then
+	bad "print-specials specials.wad: exit $rc, log:"; sed 's/^/    /' "$tmp/err"
+elif ! grep -qx "  line 24576 x3: UNSUPPORTED: Boom generalized floor" "$ps_out" ||
+	! grep -qx "  sector 256 x1: UNSUPPORTED: Boom: friction/wind" "$ps_out" ||
+	! grep -qx "  line 1 x1: DR door open wait close (monsters too)" "$ps_out" ||
+	! grep -qx "  sector 9 x1: secret" "$ps_out" ||
+	! grep -qF "map MAP01 supported: special lines 1 of 4 (25.0%), special sectors 1 of 2 (50.0%)" "$ps_out"; then
+	bad "print-specials specials.wad: not the 4 types with their counts and marks, output:"
+	sed 's/^/    /' "$ps_out"
+else
+	ok "print-specials specials.wad: $(grep -c UNSUPPORTED "$ps_out") unsupported of $(grep -c '^  ' "$ps_out") types, counts right"
+fi
+start specials.wad
+wait_for "$GUARD"
+note="map MAP01: unsupported specials: line 24576 x3, sector 256 x1"
+if [ "$rc" -ne 0 ]; then
+	bad "specials.wad load: exit $rc, log:"; sed 's/^/    /' "$tmp/err"
+elif [ "$(grep -c "unsupported specials" "$tmp/err")" -ne 1 ] || ! grep -qF "arcaded: $note" "$tmp/err"; then
+	bad "specials.wad load: not the one line '$note', log:"; sed 's/^/    /' "$tmp/err"
+else
+	ok "specials.wad load: $(grep -F "unsupported specials" "$tmp/err")"
+fi
+# bad input: a map that is not there, a broken map, no --wad: exit 2 with
+# the file (and lump) named
+"$BIN" --wad "$tmp/w/specials.wad" --map E9M9 --print-specials >/dev/null 2>"$tmp/err"
+rc=$?
+if [ "$rc" -ne 2 ] || ! grep -qF "$tmp/w/specials.wad: no map E9M9 (maps: MAP01)" "$tmp/err"; then
+	bad "print-specials, no such map: exit $rc, log:"; sed 's/^/    /' "$tmp/err"
+else
+	ok "print-specials, no such map: exit 2: $(cat "$tmp/err")"
+fi
+"$BIN" --wad "$tmp/w/dag.wad" --print-specials >/dev/null 2>"$tmp/err"
+rc=$?
+if [ "$rc" -ne 2 ] || ! grep -qF "$tmp/w/dag.wad: MAP01: node 1199" "$tmp/err"; then
+	bad "print-specials, broken map: exit $rc, log:"; sed 's/^/    /' "$tmp/err"
+else
+	ok "print-specials, broken map: exit 2: $(cat "$tmp/err")"
+fi
+"$BIN" --print-specials >/dev/null 2>"$tmp/err"
+rc=$?
+if [ "$rc" -ne 2 ] || ! grep -qF -- "--print-specials goes with --wad" "$tmp/err"; then
+	bad "print-specials without --wad: exit $rc, log:"; sed 's/^/    /' "$tmp/err"
+else
+	ok "print-specials without --wad: exit 2"
+fi
+# Freedoom: every type and count of the daemon's list against a second
+# reading of the WAD (census.py), for E1M1 and for every map of both
+# IWADs; the shares are printed as FIGURE lines. E1M1 plays every special,
+# so its load logs none.
+# ps_rows: the daemon's list as census.py's rows
+ps_rows() {
+	awk '/^unsupported:/ { exit }
+	     /^map [^ ]+ \(/ { m = $2 }
+	     /^  (line|sector) / { n = substr($3, 2); sub(":", "", n); print m, $1, $2, n, ($4 == "UNSUPPORTED:") ? 0 : 1 }' "$1"
+}
+for spec in freedoom1.wad:E1M1 freedoom1.wad:all freedoom2.wad:all; do
+	iwad=/usr/share/games/doom/${spec%%:*}; map=${spec#*:}
+	if [ ! -r "$iwad" ]; then
+		echo "SKIP print-specials $spec: no $iwad (the freedoom package)"
+		continue
+	fi
+	"$BIN" --wad "$iwad" --map "$map" --print-specials >"$ps_out" 2>"$tmp/err"
+	rc=$?
+	python3 tests/hostile/census.py "$iwad" "$([ "$map" = all ] || echo "$map")" >"$tmp/want" ||
+		{ bad "census.py $spec failed"; continue; }
+	grep -v '^total' "$tmp/want" >"$tmp/want.rows"
+	set -- $(grep '^total' "$tmp/want")
+	[ "$map" = all ] && sum="all [0-9]* maps" || sum="map $map"
+	if [ "$rc" -ne 0 ]; then
+		bad "print-specials $spec: exit $rc, log:"; sed 's/^/    /' "$tmp/err"
+	elif ! ps_rows "$ps_out" | diff "$tmp/want.rows" - >"$tmp/diff"; then
+		bad "print-specials $spec: types or counts differ from census.py (< census.py, > daemon):"
+		sed 's/^/    /' "$tmp/diff"
+	elif ! grep -q "^$sum supported: special lines $2 of $3 ([0-9.]*%), special sectors $4 of $5 " "$ps_out"; then
+		bad "print-specials $spec: the share is not $2 of $3 lines, $4 of $5 sectors:"
+		grep "supported:" "$ps_out" | tail -n 1 | sed 's/^/    /'
+	else
+		ok "print-specials $spec: $(wc -l <"$tmp/want.rows") types as census.py reads them"
+		echo "FIGURE $(grep "^$sum supported:" "$ps_out" | tail -n 1)"
+		sed -n 's/^  \(.*([A-Z0-9 .]*)\)$/FIGURE '"$spec"' unsupported: \1/p' "$ps_out"
+	fi
+done
+if [ -r /usr/share/games/doom/freedoom1.wad ]; then
+	"$BIN" --config-dir "$tmp/etc" --state-dir "$tmp/state" --wad /usr/share/games/doom/freedoom1.wad \
+		--map E1M1 --script "$tmp/end.scr" --set display.backend=file --set display.file="$tmp/fb" \
+		>/dev/null 2>"$tmp/err"
+	rc=$?
+	if [ "$rc" -ne 0 ] || grep -q "unsupported specials" "$tmp/err"; then
+		bad "freedoom1 E1M1 load: exit $rc or a note of unsupported specials, log:"; sed 's/^/    /' "$tmp/err"
+	else
+		ok "freedoom1 E1M1 load: no unsupported specials logged"
+	fi
+else
+	echo "SKIP freedoom1 E1M1 load: no /usr/share/games/doom/freedoom1.wad (the freedoom package)"
+fi
 fi
 
 # ---- hostile files (issue 13 items 10-14) -------------------------------

@@ -361,4 +361,41 @@ static inline uint8_t *hf_heights(int floor, int ceil, size_t *len)
 	return hf_iwad(&m, len);
 }
 
+/* Issue 15 item 7, specials the game does not play (--print-specials and
+ * the load-time note). MAP01 is the small room (sector 0, walls 0..3) and
+ * a second room east of it (sector 1, walls 4..7). Line specials: walls
+ * 0, 1 and 4 have 24576 (0x6000, a Boom generalized floor: not vanilla,
+ * not played), wall 2 has 1 (DR door, played); sector specials: sector 0
+ * has 256 (Boom's friction bit: not played), sector 1 has 9 (secret,
+ * played). The census is thus line 1 x1, line 24576 x3, sector 9 x1,
+ * sector 256 x1. */
+static inline void hf_set16(struct wbuf *b, size_t at, int v)
+{
+	b->d[at] = (uint8_t)(v & 0xff);
+	b->d[at + 1] = (uint8_t)((v >> 8) & 0xff);
+}
+
+static inline uint8_t *hf_specials(size_t *len)
+{
+	static const int wall[8] = { 24576, 24576, 1, 0, 24576, 0, 0, 0 };
+	struct hf_map m;
+	int v;
+
+	hf_room(&m, 512, 0, 128);
+	hf_sector(&m, 0, 128);
+	v = hf_vertex(&m, 1024, -256);
+	hf_vertex(&m, 1024, 256);
+	hf_vertex(&m, 1536, 256);
+	hf_vertex(&m, 1536, -256);
+	for (int i = 0; i < 4; i++)
+		hf_line(&m, v + i, v + (i + 1) % 4, 1, -1);
+	/* LINEDEFS entries are 14 bytes, the special at 6; SECTORS entries
+	 * 26 bytes, the special at 22 */
+	for (int i = 0; i < 8; i++)
+		hf_set16(&m.l[1], (size_t)i * 14 + 6, wall[i]);
+	hf_set16(&m.l[7], 22, 256);
+	hf_set16(&m.l[7], 26 + 22, 9);
+	return hf_iwad(&m, len);
+}
+
 #endif
