@@ -25,6 +25,7 @@ udev
 freedoom
 "
 TEST_PACKAGES="
+python3
 clang
 libcmocka-dev
 tmux
