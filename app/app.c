@@ -39,6 +39,10 @@ struct app {
 	const struct app_opts *o;
 	int headless;              /* a script or replay: no devices, no clock, nothing kept */
 	struct ct ct;              /* stage maps, texture set, light maps */
+	/* what was asked to be played: the command line's content, or else
+	 * [game] wad and maps (whose words wadbuf holds) */
+	struct ct_spec content;
+	char wadbuf[sizeof(((struct cfg *)0)->game.wad)];
 	uint64_t map_hash;         /* of every stage: what recordings are tied to */
 	struct sim_settings set;
 	struct sim sim;
@@ -303,15 +307,36 @@ static const struct loop_ops app_steps = {
 
 /* ---- set-up and tear-down --------------------------------------------- */
 
+/* a->content: the command line's --wad/--grid when it has them, else the
+ * configuration's [game] wad (blank-separated files) and maps. */
+static void app_content(struct app *a)
+{
+	const struct cfg *c = a->cfg;
+	char *save = NULL;
+
+	a->content = a->o->content;
+	if (a->content.nwads || a->content.grid || !c->game.wad[0])
+		return;
+	snprintf(a->wadbuf, sizeof(a->wadbuf), "%s", c->game.wad);
+	for (char *w = strtok_r(a->wadbuf, " \t", &save); w && a->content.nwads < CT_MAX_WADS;
+	     w = strtok_r(NULL, " \t", &save))
+		a->content.wads[a->content.nwads++] = w;
+	if (!a->content.map && c->game.maps[0])
+		a->content.map = c->game.maps;
+}
+
 /* The content, the game's settings and the replay's checks; *rate: the
  * sound's output rate (a recording's own). */
 static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 {
 	const struct cfg *c = a->cfg;
 	const struct app_opts *o = a->o;
-	struct ct_spec spec = o->content;
-	char err[512] = "";
+	struct ct_spec spec;
+	char err[512] = "", first[9];
 	int rc;
+
+	app_content(a);
+	spec = a->content;
 
 	if (o->replay) {
 		/* A recording says which built-in level and frame size it was
@@ -336,6 +361,17 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 	}
 	spec.stop = sig_stop_flag();   /* a stop signal ends a long load */
 	rc = ct_load(&a->ct, &spec, err, sizeof(err));
+	if (rc < 0 && rc != -ECANCELED && a->content.nwads && !o->content.nwads && !o->replay) {
+		/* [game] wad or maps is wrong: the cabinet plays its built-in
+		 * levels rather than not at all, and says why */
+		say_err("game.wad / game.maps: %s; playing the built-in levels", err);
+		memset(&a->content, 0, sizeof(a->content));
+		a->content.level = c->game.level;
+		a->content.lights = o->content.lights;
+		spec = a->content;
+		spec.stop = sig_stop_flag();
+		rc = ct_load(&a->ct, &spec, err, sizeof(err));
+	}
 	if (rc < 0) {
 		say_err("%s", err);
 		return rc;
@@ -361,13 +397,14 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 	a->set.lives = (uint8_t)c->game.lives;
 	a->set.volume = (uint8_t)c->game.volume;
 	a->set.attract_sound = (uint8_t)c->game.attract_sound;
+	ct_first_map(&a->content, first);
 	if (a->tape.rep) {
 		struct rec_run run = {
 			.map_hash = a->map_hash,
 			.render_w = (uint16_t)(o->no_render ? 0 : *rw),
 			.render_h = (uint16_t)(o->no_render ? 0 : *rh),
-			.level = (uint8_t)(o->content.nwads || o->content.grid ? 0 : spec.level),
-			.map_name = o->content.map,
+			.level = (uint8_t)(spec.nwads || spec.grid ? 0 : spec.level),
+			.map_name = first,
 			.audio_rate = *rate,
 			.sound_hash = a->ct.sounds->hash,
 		};
@@ -412,7 +449,7 @@ static int setup(struct app *a)
 		if (rc < 0)
 			return rc;
 	}
-	keep_flight_open(&a->keep, c->recorder.keep, c->recorder.max_mb, a->map_hash, &o->content,
+	keep_flight_open(&a->keep, c->recorder.keep, c->recorder.max_mb, a->map_hash, &a->content,
 			 a->hear.rate, a->ct.sounds->hash);
 	rc = demo_init(&a->demo, &a->ct, err, sizeof(err));
 	if (rc < 0) {
@@ -447,7 +484,7 @@ static int setup(struct app *a)
 		 * frame and audio hashes, so `--verify` can prove a replay. */
 		struct rec_header h;
 		tape_header(&h, a->map_hash, &a->set, a->scene.frame.w, a->scene.frame.h,
-			    &o->content, a->hear.rate, a->ct.sounds->hash);
+			    &a->content, a->hear.rate, a->ct.sounds->hash);
 		h.hash_flags = REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_AUDIO;
 		rc = tape_record_open(&a->tape, o->record, &h);
 		if (rc < 0)

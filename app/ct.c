@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "engine/core/lim.h"
 #include "engine/map/grid.h"
@@ -39,11 +40,70 @@ static int ct_stopped(const struct ct_spec *s, char *err, size_t errlen)
 	return -ECANCELED;
 }
 
+void ct_first_map(const struct ct_spec *s, char out[9])
+{
+	const char *m = s->map ? s->map : "";
+	size_t n;
+
+	m += strspn(m, " \t");
+	n = strcspn(m, " \t");
+	if (n > 8)
+		n = 8;
+	memcpy(out, m, n);
+	out[n] = '\0';
+}
+
+/* An episode word: E and one digit ("E1"). */
+static int ct_episode(const char *w, size_t n)
+{
+	return n == 2 && (w[0] == 'E' || w[0] == 'e') && w[1] >= '1' && w[1] <= '9';
+}
+
+/* The maps list names, among the WADs' maps names[0..n), into picked: a
+ * map name adds that map, an episode every map of it in the WADs' order.
+ * The count (at least 1), or -ENOENT / -E2BIG with err naming the word. */
+static int ct_pick_maps(const char *list, char (*names)[9], int n, char (*picked)[9],
+			char *err, size_t errlen)
+{
+	int np = 0;
+
+	for (const char *w = list + strspn(list, " \t"); *w; w += strspn(w, " \t")) {
+		size_t len = strcspn(w, " \t");
+		int found = 0;
+
+		for (int i = 0; i < n; i++) {
+			int hit = ct_episode(w, len)
+					  ? (names[i][0] == 'E' && names[i][1] == w[1] && names[i][2] == 'M')
+					  : (strlen(names[i]) == len && strncasecmp(names[i], w, len) == 0);
+			if (!hit)
+				continue;
+			if (np == CT_MAX_STAGES) {
+				snprintf(err, errlen, "maps: more than %d maps", CT_MAX_STAGES);
+				return -E2BIG;
+			}
+			memcpy(picked[np++], names[i], 9);
+			found = 1;
+		}
+		if (!found) {
+			snprintf(err, errlen, "map %.*s: not in the WADs (they have %s..%s)",
+				 (int)(len > 16 ? 16 : len), w, names[0], names[n - 1]);
+			return -ENOENT;
+		}
+		w += len;
+	}
+	if (!np) {
+		snprintf(err, errlen, "maps: no map named");
+		return -ENOENT;
+	}
+	return np;
+}
+
 static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_stop *stop,
 		     char *err, size_t errlen)
 {
 	uint8_t *bufs[CT_MAX_WADS] = { 0 };
-	char names[64][9];
+	char names[64][9], picked[CT_MAX_STAGES][9];
+	int npicked = 0;
 	struct wad *w = NULL;
 	const char *name;
 	int rc, i;
@@ -68,24 +128,37 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 			snprintf(err, errlen, "sounds: %s", strerror(-rc));
 	}
 	if (rc == 0) {
-		name = s->map;
-		if (!name) {
-			if (map_list_wad(w, names, 64) < 1) {
-				snprintf(err, errlen, "%s: no maps in the WADs", s->wads[0]);
-				rc = -ENOENT;
-			}
-			name = names[0];
+		int nnames = map_list_wad(w, names, 64);
+		if (nnames < 1) {
+			snprintf(err, errlen, "%s: no maps in the WADs", s->wads[0]);
+			rc = -ENOENT;
+		} else if (s->map) {
+			rc = ct_pick_maps(s->map, names, nnames > 64 ? 64 : nnames, picked, err,
+					  errlen);
+		} else {
+			memcpy(picked[0], names[0], sizeof(picked[0]));
+			rc = 1;
 		}
-		if (rc == 0 && !s->grid) {
-			rc = map_load_wad_lim(w, c->tex, name, stop, &c->maps[0], err, errlen);
-			c->nmaps = rc == 0;
-			/* the loader takes the last marker of the name */
+		npicked = rc > 0 ? rc : 0;
+		rc = rc < 0 ? rc : 0;
+		name = picked[0];
+		for (i = 0; rc == 0 && !s->grid && i < npicked; i++) {
+			rc = map_load_wad_lim(w, c->tex, picked[i], stop, &c->maps[i], err, errlen);
+			if (rc == 0)
+				c->nmaps++;
+		}
+		if (rc == 0 && !s->grid)   /* the loader takes the last marker of the name */
 			snprintf(c->src, sizeof c->src, "%s", wad_file(w, wad_find(w, name)));
-		}
 		if (rc == 0) {
+			/* one sky, the first map's (Doom changes it per episode) */
 			tex_pick_sky(c->tex, name);
 			snprintf(c->what, sizeof(c->what), "%s%s %s", s->wads[s->nwads - 1],
 				 s->nwads > 1 ? " (layered)" : "", s->grid ? "textures" : name);
+			if (c->nmaps > 1) {
+				size_t at = strlen(c->what);
+				snprintf(c->what + at, sizeof(c->what) - at, " to %s (%d maps)",
+					 picked[npicked - 1], npicked);
+			}
 		}
 	}
 	/* The texture set and the map copy what they need: the file images

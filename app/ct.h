@@ -26,7 +26,11 @@ struct tex_set;
 struct ct_spec {
 	const char *wads[CT_MAX_WADS];
 	int nwads;
-	const char *map;        /* map name in the WADs; NULL: the first one */
+	/* The maps to play from the WADs, in order, blank-separated: map
+	 * names (E1M1, MAP01) and episodes (E1: every E1Mn the WADs have, in
+	 * order); NULL: the first map. An exit goes to the next one (the
+	 * secret exit to the map the format names, when it is in the list). */
+	const char *map;
 	const char *grid;       /* grid map file, or "builtin" for GRID1 */
 	int level;              /* built-in level, 1-based (no WAD, no grid) */
 	int lights;             /* build light maps (arcaded lights + Doom lamps) */
@@ -55,6 +59,10 @@ struct ct {
 				 * map over a light-map limit is drawn without
 				 * light maps (issue 13 item 8); the app logs it */
 };
+
+/* The first map s->map names (its first word, at most 8 characters), or
+ * "" when s names none: what a recording's header keeps. */
+void ct_first_map(const struct ct_spec *s, char out[9]);
 
 /* Loads the content s names. 0, or -errno with err naming the file, lump
  * or entry: -E2BIG when a file is over a loader's limit, -ECANCELED when

@@ -30,8 +30,7 @@ void tape_header(struct rec_header *h, uint64_t map_hash, const struct sim_setti
 	h->audio_rate = audio_rate;
 	h->audio_version = REC_AUDIO_VERSION;
 	h->sound_hash = sound_hash;
-	if (content->map)
-		snprintf(h->map_name, sizeof(h->map_name), "%s", content->map);
+	ct_first_map(content, h->map_name);   /* the first stage's, of a list */
 }
 
 int tape_replay_open(struct tape *t, const char *path, struct rec_run *run)

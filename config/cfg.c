@@ -89,6 +89,8 @@ static const struct cfg_key cfg_keys[] = {
 	CFG_INTKEY(game, lives, game.lives, 1, 9),
 	CFG_INTKEY(game, volume, game.volume, 0, 100),
 	CFG_INTKEY(game, attract_sound, game.attract_sound, 0, 9),
+	CFG_STRKEY(game, wad, game.wad, CFG_T_STR),
+	CFG_STRKEY(game, maps, game.maps, CFG_T_STR),
 	CFG_STRKEY(audio, output, audio.output, CFG_T_STR),
 	CFG_STRKEY(audio, device, audio.device, CFG_T_STR),
 	CFG_INTKEY(audio, rate, audio.rate, 8000, 192000),

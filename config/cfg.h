@@ -41,6 +41,8 @@ struct cfg {
 		int lives;                   /* 1..9 (3) */
 		int volume;                  /* master volume 0..100 percent (80) */
 		int attract_sound;           /* 0 off, 1 on, N: once every N attract cycles (1) */
+		char wad[512];               /* WAD files, blank-separated, IWAD first ("" none) */
+		char maps[256];              /* maps or episodes from them ("" the first map) */
 	} game;
 	struct {
 		char output[CFG_PATH_MAX];   /* auto | alsa | alsa:DEVICE | wav:FILE | null */

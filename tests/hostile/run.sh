@@ -217,6 +217,32 @@ if [ -r /usr/share/games/doom/freedoom1.wad ]; then
 else
 	echo "SKIP freedoom1 E1M1 load: no /usr/share/games/doom/freedoom1.wad (the freedoom package)"
 fi
+# Content from the configuration ([game] wad and maps, docs/config.md):
+# the maps named, an episode (Doom's ExMy: E1 is E1M1..E1M9, 9 maps), and
+# a wrong map or a missing WAD, which leave the cabinet on its built-in
+# levels with the reason in the log (exit 0: it plays on).
+wadcase() { # label maps-value want-pattern [wad]
+	"$BIN" --config-dir "$tmp/etc" --state-dir "$tmp/state" --script "$tmp/end.scr" \
+		--set display.backend=file --set display.file="$tmp/fb" \
+		--set "game.wad=${4:-/usr/share/games/doom/freedoom1.wad}" --set "game.maps=$2" \
+		>/dev/null 2>"$tmp/err"
+	rc=$?
+	if [ "$rc" -eq 0 ] && grep -q -e "$3" "$tmp/err"; then
+		ok "game.wad/maps $1: $(grep -m 1 -e "$3" "$tmp/err")"
+	else
+		bad "game.wad/maps $1: exit $rc, no line matching '$3' in:"; sed 's/^/    /' "$tmp/err"
+	fi
+}
+if [ -r /usr/share/games/doom/freedoom1.wad ]; then
+	wadcase "two maps" "E1M1 E1M2" 'content: .*freedoom1.wad E1M1 to E1M2 (2 maps),'
+	wadcase "an episode" "E1" 'content: .*freedoom1.wad E1M1 to E1M9 (9 maps),'
+	wadcase "a map not in the WAD" "E1M1 E9M9" 'game.wad / game.maps: map E9M9: not in the WADs.*playing the built-in levels'
+	grep -q "content: built-in levels" "$tmp/err" && ok "game.wad/maps a map not in the WAD: the built-in levels play" ||
+		bad "game.wad/maps a map not in the WAD: not the built-in levels"
+else
+	echo "SKIP game.wad/maps with Freedoom: no /usr/share/games/doom/freedoom1.wad (the freedoom package)"
+fi
+wadcase "a missing WAD" "" "game.wad / game.maps: $tmp/none.wad: No such file or directory; playing the built-in levels" "$tmp/none.wad"
 fi
 
 # ---- hostile files (issue 13 items 10-14) -------------------------------
