@@ -8,6 +8,9 @@
 # or when either renderer's id buffer is (nearly) empty (surfaces on fewer
 # than 99% of the pixels: two empty buffers agree everywhere). First a
 # self-test: with the id buffers cleared (--blank-ids) xcheck must fail.
+# Then the mover views (--movers) of freedoom1 E1M1 and freedoom2 MAP01:
+# door sectors part open and lift sectors mid-travel, seen from in front;
+# they fail the same way, and the step fails when there are none.
 # Usage: tests/crosscheck/run.sh [BUILD] [xcheck options...]
 #   BUILD: the folder holding libarcaded.a (default build); further
 #   arguments replace the default content and views (e.g. --wad F --map M).

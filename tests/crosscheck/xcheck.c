@@ -706,8 +706,12 @@ int main(int argc, char **argv)
 	}
 	r_set_idbuf(x.sw, x.ids_sw);
 	rgl_set_idbuf(x.gl, x.ids_gl);
-	printf("xcheck: %dx%d, %d views per map, seed %llu, threshold %.2f%%, GL: %s\n", o.w, o.h,
-	       o.views, (unsigned long long)o.seed, o.min, rgl_name(x.gl));
+	if (o.movers)
+		printf("xcheck: %dx%d, mover views, threshold %.2f%%, GL: %s\n", o.w, o.h, o.min,
+		       rgl_name(x.gl));
+	else
+		printf("xcheck: %dx%d, %d views per map, seed %llu, threshold %.2f%%, GL: %s\n",
+		       o.w, o.h, o.views, (unsigned long long)o.seed, o.min, rgl_name(x.gl));
 	for (int i = 0; i < o.nsets && rc == 0; i++) {
 		const struct xc_set *s = &o.sets[i];
 
