@@ -14,6 +14,7 @@
  *   xcheck [--builtin] [--grid builtin|FILE] [--wad FILE [--map NAME]]...
  *          [--views N] [--seed S] [--size WxH] [--min PCT] [--diff DIR]
  *          [--diff-all] [--no-sprites] [--verbose] [--view K] [--probe X,Y]
+ *          [--cover PCT] [--blank-ids] [--movers]
  *
  * --builtin: every built-in level (palette-colour set); --grid: a grid map
  * with the built-in texture set; --wad: every map of the WAD (or --map),
@@ -25,7 +26,11 @@
  * one view of four. The map's things are drawn as sprites. --view K runs
  * only view K of each map (the same viewpoint as in a full run), --probe
  * prints both renderers' ids at one pixel, --verbose every view and the
- * disagreeing pixels by kind. Exit status 0
+ * disagreeing pixels by kind. --movers replaces the random views by the
+ * mover views (tests/crosscheck/xc_move.h): door sectors a quarter, half
+ * and three quarters open and lift sectors as far down, each view with
+ * that one sector's heights set in the map both renderers draw (and put
+ * back after). Exit status 0
  * when every view reaches --min (default 99.5), 1 otherwise, 2 on bad
  * arguments or content.
  *
@@ -58,6 +63,7 @@
 #include "engine/render/r_game.h"
 #include "engine/render/r_id.h"
 #include "engine/render/r_main.h"
+#include "tests/crosscheck/xc_move.h"
 
 #define XC_MAX_SETS 16
 #define XC_MAX_MAPS 64
@@ -73,6 +79,7 @@ struct xc_opts {
 	int nsets;
 	int views, w, h, sprites, verbose, diff_all;
 	int only_view;                  /* --view K: only view K of each map, or -1 */
+	int movers;                     /* --movers: the mover views, not random ones */
 	int blank;                      /* --blank-ids: clear the id buffers (self-test) */
 	double cover;                   /* --cover PCT: least share of pixels with a surface */
 	int probe_x, probe_y;           /* --probe X,Y: print both ids there, or -1 */
@@ -278,17 +285,149 @@ static void xc_diff_image(struct xc_run *x, const struct tex_set *t, const char 
 		fprintf(stderr, "xcheck: %s: cannot write\n", path);
 }
 
-/* Every view of one map. Returns the worst agreement. */
-static double xc_map(struct xc_run *x, const struct map *m, const struct tex_set *t,
-		     const char *name)
+/* Renders view v (number k of map name, described by what: "" for a random
+ * view) with both renderers and compares the ids; counts the view and its
+ * failures in x. Returns the share of agreeing pixels, %. */
+static double xc_one(struct xc_run *x, const struct map *m, const struct tex_set *t,
+		     const char *name, int k, const struct r_view *vp, const struct r_sprite *spr,
+		     int nspr, const uint32_t *cf, const uint32_t *cc, const char *what)
 {
 	const struct xc_opts *o = x->o;
 	size_t npx = (size_t)o->w * (size_t)o->h;
+	struct r_view v = *vp;
+	long same = 0, csame = 0, sur_sw = 0, sur_gl = 0;
+	double pct, t0, cover;
+
+	t0 = xc_now();
+	r_render(x->sw, m, t, &v, spr, nspr, &x->fs);
+	x->t_sw += xc_now() - t0;
+	t0 = xc_now();
+	rgl_render(x->gl, m, t, &v, spr, nspr, &x->fg);
+	x->t_gl += xc_now() - t0;
+	if (o->blank) {
+		memset(x->ids_sw, 0, npx * sizeof(*x->ids_sw));
+		memset(x->ids_gl, 0, npx * sizeof(*x->ids_gl));
+	}
+	for (size_t p = 0; p < npx; p++) {
+		sur_sw += r_id_kind(x->ids_sw[p]) != R_IDK_NONE;
+		sur_gl += r_id_kind(x->ids_gl[p]) != R_IDK_NONE;
+	}
+	cover = 100.0 * (double)(sur_sw < sur_gl ? sur_sw : sur_gl) / (double)npx;
+	if (cover < x->cover_min)
+		x->cover_min = cover;
+	if (cover < o->cover) {
+		printf("FAIL %s view %d%s at (%.1f, %.1f): surfaces on %.3f%% of the software "
+		       "and %.3f%% of the OSMesa pixels, < %.2f%%: an (almost) empty id "
+		       "buffer proves nothing\n",
+		       name, k, what, v.x / 65536.0, v.y / 65536.0,
+		       100.0 * (double)sur_sw / (double)npx, 100.0 * (double)sur_gl / (double)npx,
+		       o->cover);
+		x->failed++;
+	}
+	for (size_t p = 0; p < npx; p++) {
+		uint32_t a = xc_norm(x->ids_sw[p], cf, cc, m->num_sectors);
+		uint32_t b = xc_norm(x->ids_gl[p], cf, cc, m->num_sectors);
+
+		if (a == b)
+			same++;
+		else if (r_id_kind(a) < R_IDK_COUNT && r_id_kind(b) < R_IDK_COUNT)
+			x->kinds[r_id_kind(a)][r_id_kind(b)]++;
+		csame += x->fs.px[p] == x->fg.px[p];
+	}
+	pct = 100.0 * (double)same / (double)npx;
+	if (o->probe_x >= 0 && o->probe_x < o->w && o->probe_y >= 0 && o->probe_y < o->h) {
+		size_t p = (size_t)o->probe_y * (size_t)o->w + (size_t)o->probe_x;
+
+		printf("  probe (%d, %d): software kind %u index %u, OSMesa kind %u index %u\n",
+		       o->probe_x, o->probe_y, r_id_kind(x->ids_sw[p]), r_id_index(x->ids_sw[p]),
+		       r_id_kind(x->ids_gl[p]), r_id_index(x->ids_gl[p]));
+	}
+	if (o->verbose)
+		printf("  %-26s view %2d%s at (%.1f, %.1f) angle %.1f shear %d: ids %.3f%%, "
+		       "pixels %.2f%%\n",
+		       name, k, what, v.x / 65536.0, v.y / 65536.0, v.angle * (360.0 / 4294967296.0),
+		       v.shear, pct, 100.0 * (double)csame / (double)npx);
+	if (pct < o->min || (o->diff_all && o->diff)) {
+		char path[512] = "(no --diff)";
+
+		if (o->diff)
+			xc_diff_image(x, t, name, k, cf, cc, m->num_sectors, path, sizeof(path));
+		if (pct < o->min) {
+			printf("FAIL %s view %d%s at (%.1f, %.1f) angle %.1f shear %d: %.3f%% < "
+			       "%.2f%%; difference image %s\n",
+			       name, k, what, v.x / 65536.0, v.y / 65536.0,
+			       v.angle * (360.0 / 4294967296.0), v.shear, pct, o->min, path);
+			x->failed++;
+		}
+	}
+	x->views++;
+	return pct;
+}
+
+/* Adds one view's agreement to a map's figures. */
+static void xc_tally(double pct, int k, double *worst, int *wk, double *sum, int *nv)
+{
+	if (pct < *worst) {
+		*worst = pct;
+		*wk = k;
+	}
+	*sum += pct;
+	(*nv)++;
+}
+
+/* The mover views of map m (xc_move.h): each sets its sector's heights,
+ * renders, and puts them back. */
+static void xc_movers(struct xc_run *x, struct map *m, const struct tex_set *t, const char *name,
+		      const struct r_sprite *spr, int nspr, double *worst, int *wk, double *sum,
+		      int *nv, int *ndoor)
+{
+	int n = xcm_views(m, NULL, 0);
+	struct xcm_view *mv = n > 0 ? calloc((size_t)n, sizeof(*mv)) : NULL;
+
+	if (n < 0 || (n > 0 && !mv)) {
+		fprintf(stderr, "xcheck: out of memory\n");
+		exit(2);
+	}
+	xcm_views(m, mv, n);
+	for (int k = 0; k < n; k++) {
+		struct map_sector *sec = &m->sectors[mv[k].sector];
+		fx_t f = sec->floor_h, c = sec->ceil_h;
+		uint32_t *cf = NULL, *cc = NULL;
+		char what[80];
+
+		if (x->o->only_view >= 0 && k != x->o->only_view)
+			continue;
+		snprintf(what, sizeof(what), " (%s sector %u at %d/4)",
+			 mv[k].kind == 'd' ? "door" : "lift", mv[k].sector, mv[k].quarter);
+		sec->floor_h = mv[k].floor_h;
+		sec->ceil_h = mv[k].ceil_h;
+		/* the normalisation compares heights: made for these ones */
+		if (xc_canon(m, &cf, &cc) < 0) {
+			fprintf(stderr, "xcheck: out of memory\n");
+			exit(2);
+		}
+		xc_tally(xc_one(x, m, t, name, k, &mv[k].v, spr, nspr, cf, cc, what), k, worst, wk,
+			 sum, nv);
+		*ndoor += mv[k].kind == 'd';
+		sec->floor_h = f;
+		sec->ceil_h = c;
+		free(cf);
+		free(cc);
+	}
+	free(mv);
+}
+
+/* Every view of one map: --views random ones, or with --movers the mover
+ * views. The map's sector heights are changed and restored by the mover
+ * views. Returns the worst agreement. */
+static double xc_map(struct xc_run *x, struct map *m, const struct tex_set *t, const char *name)
+{
+	const struct xc_opts *o = x->o;
 	struct r_sprite *spr = calloc(m->num_things + 1, sizeof(*spr));
 	uint64_t rng = o->seed;
 	uint32_t *cf = NULL, *cc = NULL;
 	double worst = 100, sum = 0;
-	int nspr, nv = 0, wk = -1;
+	int nspr, nv = 0, wk = -1, ndoor = 0;
 
 	if (!spr || xc_canon(m, &cf, &cc) < 0) {
 		fprintf(stderr, "xcheck: out of memory\n");
@@ -297,10 +436,8 @@ static double xc_map(struct xc_run *x, const struct map *m, const struct tex_set
 	for (const char *c = name; *c; c++)
 		rng = (rng ^ (uint8_t)*c) * 0x100000001b3ull;
 	nspr = o->sprites ? r_map_sprites(m, t, spr) : 0;
-	for (int k = 0; k < o->views; k++) {
+	for (int k = 0; k < o->views && !o->movers; k++) {
 		struct r_view v;
-		long same = 0, csame = 0, sur_sw = 0, sur_gl = 0;
-		double pct, t0, cover;
 
 		if (xc_view(m, &rng, o->h, &v) < 0) {
 			printf("%-28s no viewpoint found\n", name);
@@ -309,78 +446,19 @@ static double xc_map(struct xc_run *x, const struct map *m, const struct tex_set
 		}
 		if (o->only_view >= 0 && k != o->only_view)
 			continue;
-		t0 = xc_now();
-		r_render(x->sw, m, t, &v, spr, nspr, &x->fs);
-		x->t_sw += xc_now() - t0;
-		t0 = xc_now();
-		rgl_render(x->gl, m, t, &v, spr, nspr, &x->fg);
-		x->t_gl += xc_now() - t0;
-		if (o->blank) {
-			memset(x->ids_sw, 0, npx * sizeof(*x->ids_sw));
-			memset(x->ids_gl, 0, npx * sizeof(*x->ids_gl));
-		}
-		for (size_t p = 0; p < npx; p++) {
-			sur_sw += r_id_kind(x->ids_sw[p]) != R_IDK_NONE;
-			sur_gl += r_id_kind(x->ids_gl[p]) != R_IDK_NONE;
-		}
-		cover = 100.0 * (double)(sur_sw < sur_gl ? sur_sw : sur_gl) / (double)npx;
-		if (cover < x->cover_min)
-			x->cover_min = cover;
-		if (cover < o->cover) {
-			printf("FAIL %s view %d at (%.1f, %.1f): surfaces on %.3f%% of the software "
-			       "and %.3f%% of the OSMesa pixels, < %.2f%%: an (almost) empty id "
-			       "buffer proves nothing\n",
-			       name, k, v.x / 65536.0, v.y / 65536.0, 100.0 * (double)sur_sw / (double)npx,
-			       100.0 * (double)sur_gl / (double)npx, o->cover);
-			x->failed++;
-		}
-		for (size_t p = 0; p < npx; p++) {
-			uint32_t a = xc_norm(x->ids_sw[p], cf, cc, m->num_sectors);
-			uint32_t b = xc_norm(x->ids_gl[p], cf, cc, m->num_sectors);
-
-			if (a == b)
-				same++;
-			else if (r_id_kind(a) < R_IDK_COUNT && r_id_kind(b) < R_IDK_COUNT)
-				x->kinds[r_id_kind(a)][r_id_kind(b)]++;
-			csame += x->fs.px[p] == x->fg.px[p];
-		}
-		pct = 100.0 * (double)same / (double)npx;
-		if (o->probe_x >= 0 && o->probe_x < o->w && o->probe_y >= 0 && o->probe_y < o->h) {
-			size_t p = (size_t)o->probe_y * (size_t)o->w + (size_t)o->probe_x;
-
-			printf("  probe (%d, %d): software kind %u index %u, OSMesa kind %u index %u\n",
-			       o->probe_x, o->probe_y, r_id_kind(x->ids_sw[p]), r_id_index(x->ids_sw[p]),
-			       r_id_kind(x->ids_gl[p]), r_id_index(x->ids_gl[p]));
-		}
-		if (o->verbose)
-			printf("  %-26s view %2d at (%.1f, %.1f) angle %.1f shear %d: ids %.3f%%, "
-			       "pixels %.2f%%\n",
-			       name, k, v.x / 65536.0, v.y / 65536.0, v.angle * (360.0 / 4294967296.0),
-			       v.shear, pct, 100.0 * (double)csame / (double)npx);
-		if (pct < o->min || (o->diff_all && o->diff)) {
-			char path[512] = "(no --diff)";
-
-			if (o->diff)
-				xc_diff_image(x, t, name, k, cf, cc, m->num_sectors, path, sizeof(path));
-			if (pct < o->min) {
-				printf("FAIL %s view %d at (%.1f, %.1f) angle %.1f shear %d: %.3f%% < "
-				       "%.2f%%; difference image %s\n",
-				       name, k, v.x / 65536.0, v.y / 65536.0,
-				       v.angle * (360.0 / 4294967296.0), v.shear, pct, o->min, path);
-				x->failed++;
-			}
-		}
-		if (pct < worst) {
-			worst = pct;
-			wk = k;
-		}
-		sum += pct;
-		nv++;
-		x->views++;
+		xc_tally(xc_one(x, m, t, name, k, &v, spr, nspr, cf, cc, ""), k, &worst, &wk, &sum,
+			 &nv);
 	}
-	if (nv > 0) {
+	if (o->movers)
+		xc_movers(x, m, t, name, spr, nspr, &worst, &wk, &sum, &nv, &ndoor);
+	if (nv > 0 && o->movers)
+		printf("%-28s %3d mover views (%d door, %d lift)  min %7.3f%% (view %d)  "
+		       "mean %7.3f%%\n",
+		       name, nv, ndoor, nv - ndoor, worst, wk, sum / nv);
+	else if (nv > 0)
 		printf("%-28s %3d views  min %7.3f%% (view %d)  mean %7.3f%%\n", name, nv, worst, wk,
 		       sum / nv);
+	if (nv > 0) {
 		x->set_sum += sum;
 		x->set_views += nv;
 		if (worst < x->set_min)
@@ -402,8 +480,8 @@ static void xc_set_begin(struct xc_run *x)
 static void xc_set_end(struct xc_run *x, const char *what, int nmaps)
 {
 	if (x->set_views > 0)
-		printf("== %s: %d maps, %ld views, min %.3f%%, mean %.3f%%\n", what, nmaps,
-		       x->set_views, x->set_min, x->set_sum / (double)x->set_views);
+		printf("== %s: %d maps, %ld %sviews, min %.3f%%, mean %.3f%%\n", what, nmaps,
+		       x->set_views, x->o->movers ? "mover " : "", x->set_min, x->set_sum / (double)x->set_views);
 }
 
 static int xc_builtin(struct xc_run *x)
@@ -572,6 +650,8 @@ static int xc_args(int argc, char **argv, struct xc_opts *o)
 			o->blank = 1;
 		} else if (!strcmp(a, "--cover") && b) {
 			o->cover = atof(argv[++i]);
+		} else if (!strcmp(a, "--movers")) {
+			o->movers = 1;
 		} else if (!strcmp(a, "--no-sprites")) {
 			o->sprites = 0;
 		} else if (!strcmp(a, "--verbose")) {
@@ -601,7 +681,7 @@ int main(int argc, char **argv)
 		fprintf(stderr, "usage: xcheck [--builtin] [--grid builtin|FILE] [--wad FILE "
 				"[--map NAME]]... [--views N] [--seed S] [--size WxH] [--min PCT] "
 				"[--diff DIR] [--diff-all] [--no-sprites] [--verbose] [--view K] "
-				"[--probe X,Y] [--cover PCT] [--blank-ids]\n");
+				"[--probe X,Y] [--cover PCT] [--blank-ids] [--movers]\n");
 		return 2;
 	}
 	memset(&x, 0, sizeof(x));
@@ -626,8 +706,12 @@ int main(int argc, char **argv)
 	}
 	r_set_idbuf(x.sw, x.ids_sw);
 	rgl_set_idbuf(x.gl, x.ids_gl);
-	printf("xcheck: %dx%d, %d views per map, seed %llu, threshold %.2f%%, GL: %s\n", o.w, o.h,
-	       o.views, (unsigned long long)o.seed, o.min, rgl_name(x.gl));
+	if (o.movers)
+		printf("xcheck: %dx%d, mover views, threshold %.2f%%, GL: %s\n", o.w, o.h, o.min,
+		       rgl_name(x.gl));
+	else
+		printf("xcheck: %dx%d, %d views per map, seed %llu, threshold %.2f%%, GL: %s\n",
+		       o.w, o.h, o.views, (unsigned long long)o.seed, o.min, rgl_name(x.gl));
 	for (int i = 0; i < o.nsets && rc == 0; i++) {
 		const struct xc_set *s = &o.sets[i];
 

@@ -1,0 +1,28 @@
+/*
+ * xc_move: the cross-check's mover views (docs/crosscheck.md): door
+ * sectors half open and lift sectors mid-travel, as Doom's movers leave
+ * them in play, each seen from in front. Test code (floating point).
+ */
+#ifndef XC_MOVE_H
+#define XC_MOVE_H
+
+#include <stdint.h>
+
+#include "engine/core/fx.h"
+#include "engine/map/map.h"
+#include "engine/render/r_main.h"
+
+struct xcm_view {
+	struct r_view v;
+	uint32_t sector;               /* the mover's sector */
+	char kind;                     /* 'd' door (ceiling moved), 'l' lift (floor moved) */
+	int quarter;                   /* 1..3: how far along its travel, in quarters */
+	fx_t floor_h, ceil_h;          /* the sector's heights for this view */
+};
+
+/* The mover views of map m into out (at most max), in line and sector
+ * order; returns how many there are (may exceed max: only max are
+ * written). */
+int xcm_views(const struct map *m, struct xcm_view *out, int max);
+
+#endif
