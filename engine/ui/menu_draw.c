@@ -53,6 +53,7 @@ static void menu_main_page(struct menu_ctx *m)
 		[MENU_I_SOUND] = "SOUND TEST",
 		[MENU_I_SETTINGS] = "GAME SETTINGS", [MENU_I_BOOKS] = "BOOKKEEPING",
 		[MENU_I_RESET_SCORES] = "RESET HIGH SCORES", [MENU_I_RESET_BOOKS] = "RESET BOOKKEEPING",
+		[MENU_I_DEVICES] = "DEVICES", [MENU_I_LATENCY] = "LATENCY",
 		[MENU_I_WIZARD] = "CONFIGURE INPUTS", [MENU_I_EXIT] = "EXIT",
 	};
 	const struct menu *mn = &m->s->menu;
@@ -248,6 +249,29 @@ static void menu_books_page(struct menu_ctx *m)
 	menu_item(m, 0, "UPTIME", buf[0]);
 }
 
+/* DEVICES and LATENCY: the app's lines (hud_env.diag), at half the menu's
+ * text scale so that a device's name fits, headings in yellow. */
+static void menu_diag_page(struct menu_ctx *m, const struct hud_diag *d, const char *title)
+{
+	int sc = m->sc > 1 ? m->sc / 2 : 1, x = V_CHAR * sc / 2;
+
+	menu_title(m, title, "FIRE OR SERVICE: BACK");
+	if (!d || d->n <= 0) {
+		menu_line(m, m->c->grey, "NOTHING TO SHOW");
+		return;
+	}
+	for (int i = 0; i < d->n && i < HUD_DIAG_LINES; i++) {
+		char line[HUD_DIAG_COLS];
+		if (m->y + 10 * sc > m->f->h - 14 * m->sc)
+			break;             /* above the help line */
+		memcpy(line, d->line[i], sizeof(line));
+		line[sizeof(line) - 1] = '\0';
+		hud_text(m->f, m->c, x, m->y, sc, line[0] == ' ' ? m->c->white : m->c->yellow,
+			 line);
+		m->y += 10 * sc;
+	}
+}
+
 static void menu_confirm_page(struct menu_ctx *m)
 {
 	const struct menu *mn = &m->s->menu;
@@ -290,6 +314,12 @@ void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f
 		break;
 	case MENU_SOUND:
 		menu_sound_page(&m);
+		break;
+	case MENU_DEVICES:
+		menu_diag_page(&m, env->diag, "DEVICES");
+		break;
+	case MENU_LATENCY:
+		menu_diag_page(&m, env->diag, "LATENCY");
 		break;
 	case MENU_MAIN:
 	case MENU_WIZARD:              /* its one tick: the app draws the wizard */
