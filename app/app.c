@@ -189,7 +189,8 @@ static void step_flight_after(void *ctx, struct loop_tick *k)
 
 /* The diagnostics pages' text (app/diag.h), for the frame: made when the
  * page opens, then again every APP_DIAG_TICKS (percentiles sort the kept
- * samples: not every frame); none on other pages. The machine's listing
+ * samples: not every frame); the input test's raw controls every tick
+ * (but in a recording or a replay); none on other pages. The machine's listing
  * is made once per opening, and not in a script or replay (their frames
  * must not depend on the machine). A recording or a replay shows no
  * figures at all: its frame hashes must be the same on every machine. */
@@ -199,6 +200,13 @@ static void app_diag(struct app *a, uint32_t t)
 	int page = a->sim.mode == SIM_SERVICE ? a->sim.menu.page : 0;
 	int opened = page != a->diag_page;
 
+	if (page == MENU_INPUT && !a->tape.rec && !a->tape.rep) {
+		/* the devices' raw controls: every tick, they are a few lines */
+		diag_raw(&a->diag, &a->ctl);
+		a->diag_page = (uint8_t)page;
+		a->scene.view.diag = &a->diag;
+		return;
+	}
 	if (page != MENU_DEVICES && page != MENU_LATENCY) {
 		a->diag_page = 0;
 		a->scene.view.diag = NULL;

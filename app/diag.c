@@ -171,3 +171,15 @@ void diag_latency(struct hud_diag *d, const struct stats *st)
 		diag_series(d, &st->src[k]);
 	}
 }
+
+void diag_raw(struct hud_diag *d, const struct ctl *c)
+{
+	unsigned n = c->raw_n < CTL_RAW ? c->raw_n : CTL_RAW;
+
+	diag_clear(d);
+	diag_add(d, "RAW CONTROLS, NEWEST FIRST");
+	if (!n)
+		diag_add(d, "  NONE YET");
+	for (unsigned i = 0; i < n; i++)
+		diag_addf(d, "  %s", c->raw[(c->raw_n - 1 - i) % CTL_RAW]);
+}

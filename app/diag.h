@@ -13,6 +13,7 @@
 #include "engine/ui/hud.h"
 
 struct cfg;
+struct ctl;
 struct slot_set;
 struct slot_kind;
 struct stats;
@@ -46,5 +47,10 @@ void diag_devices(struct hud_diag *d, const struct slot_kind *kinds, int nkinds,
  * the SIGUSR1 summary has them (app/stats.h); a source without input yet
  * says NO INPUT YET. */
 void diag_latency(struct hud_diag *d, const struct stats *st);
+
+/* The input test's lines: the devices' last control changes, newest
+ * first, each with the actions it triggers (struct ctl's raw), under a
+ * heading; none yet (a script or replay reads no device) says so. */
+void diag_raw(struct hud_diag *d, const struct ctl *c);
 
 #endif

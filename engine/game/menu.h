@@ -16,7 +16,9 @@
  *
  * Pages:
  *   MAIN      the list of pages
- *   INPUT     input test: each control's state as the game receives it
+ *   INPUT     input test: each control's state as the game receives it;
+ *             under it the devices' last raw control changes with the
+ *             actions they trigger (text from the app, as for DEVICES)
  *   DISPLAY   display test: colour bars, convergence grid, orientation
  *             (fire steps through them)
  *   SETTINGS  difficulty, lives, coins per credit, free play, master volume,

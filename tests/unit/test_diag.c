@@ -4,9 +4,11 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
 
+#include "app/ctl.h"
 #include "app/diag.h"
 #include "app/slot.h"
 #include "app/stats.h"
@@ -121,12 +123,36 @@ static void latency_lines_appear_after_input(void **state)
 		assert_true(strlen(d.line[i]) <= 39);  /* the columns of a 320-wide frame */
 }
 
+/* The input test's lines: a heading, then the kept changes newest first;
+ * only the last CTL_RAW once more were made. */
+static void raw_controls_newest_first(void **state)
+{
+	static struct hud_diag d;
+	static struct ctl c;
+	(void)state;
+	memset(&c, 0, sizeof(c));
+	diag_raw(&d, &c);
+	assert_int_equal(d.n, 2);
+	assert_true(d.line[0][0] != ' ');
+	assert_string_equal(d.line[1], "  NONE YET");
+	for (unsigned i = 0; i < CTL_RAW + 2; i++) {
+		snprintf(c.raw[c.raw_n % CTL_RAW], CTL_RAW_LEN, "change %u", i);
+		c.raw_n++;
+	}
+	diag_raw(&d, &c);
+	assert_int_equal(d.n, 1 + CTL_RAW);
+	assert_string_equal(d.line[1], "  change 9");
+	assert_string_equal(d.line[2], "  change 8");
+	assert_string_equal(d.line[CTL_RAW], "  change 2");
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(text_is_split_cut_and_bounded),
 		cmocka_unit_test(devices_list_the_configured_slots),
 		cmocka_unit_test(latency_lines_appear_after_input),
+		cmocka_unit_test(raw_controls_newest_first),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

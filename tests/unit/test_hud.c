@@ -260,6 +260,34 @@ static void the_input_test_lights_held_controls_green(void **state)
 	assert_true(held > none + 2 * 40);     /* two names and two "ON" */
 }
 
+/* The input test prints the app's lines (the devices' raw controls) under
+ * the coins line: ten action rows 10 lines apart from 34, 4 more, the
+ * coins line (12): from line 150 at scale 1. */
+static void the_input_test_prints_the_apps_lines_under_the_actions(void **state)
+{
+	static struct hud_diag d;
+	struct sim s;
+	(void)state;
+	sim_init(&s, room, &play);
+	s.mode = SIM_SERVICE;
+	s.menu.page = MENU_INPUT;
+	diag = NULL;
+	draw(&s);
+	assert_true(count_in(0, 138, W, 10, col.yellow) > 20);        /* COINS 0 */
+	assert_int_equal(count_in(0, 150, W, H - 150 - 14, col.yellow), 0);
+	assert_int_equal(count_in(0, 150, W, H - 150 - 14, col.white), 0);
+	memset(&d, 0, sizeof(d));
+	strcpy(d.line[0], "CONTROLS");
+	strcpy(d.line[1], "  EVDEV - KEY_UP DOWN -> FORWARD");
+	d.n = 2;
+	diag = &d;
+	draw(&s);
+	assert_true(count_in(0, 150, W, 10, col.yellow) > 8 * 8);
+	assert_true(count_in(0, 160, W, 10, col.white) > 20 * 8);
+	assert_int_equal(count_in(0, 170, W, H - 170 - 14, col.white), 0);
+	diag = NULL;
+}
+
 static void every_menu_page_draws_something(void **state)
 {
 	struct sim s;
@@ -330,6 +358,7 @@ int main(void)
 		cmocka_unit_test(the_input_test_lights_held_controls_green),
 		cmocka_unit_test(every_menu_page_draws_something),
 		cmocka_unit_test(the_diagnostics_pages_print_the_apps_lines),
+		cmocka_unit_test(the_input_test_prints_the_apps_lines_under_the_actions),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
