@@ -187,13 +187,14 @@ static void step_flight_after(void *ctx, struct loop_tick *k)
 			  a->hear.hash);
 }
 
-/* The diagnostics pages' text (app/diag.h), for the frame: made when the
- * page opens, then again every APP_DIAG_TICKS (percentiles sort the kept
- * samples: not every frame); the input test's raw controls every tick
- * (but in a recording or a replay); none on other pages. The machine's listing
- * is made once per opening, and not in a script or replay (their frames
- * must not depend on the machine). A recording or a replay shows no
- * figures at all: its frame hashes must be the same on every machine. */
+/* The service menu's text from the app (app/diag.h), for the frame:
+ * DEVICES' and LATENCY's made when the page opens, then again every
+ * APP_DIAG_TICKS (percentiles sort the kept samples: not every frame);
+ * INPUT TEST's raw controls every tick; none on other pages. The
+ * machine's listing is made once per opening, and not in a script or
+ * replay (their frames must not depend on the machine). A recording or a
+ * replay shows no figures and no raw controls: its frame hashes must be
+ * the same on every machine. */
 #define APP_DIAG_TICKS 30
 static void app_diag(struct app *a, uint32_t t)
 {

@@ -29,7 +29,7 @@ struct stats;
 struct tape;
 
 #define CTL_RAW 8                  /* control changes kept for the input test */
-#define CTL_RAW_LEN 96
+#define CTL_RAW_LEN 256            /* the whole line (a screen line shows 79) */
 
 struct ctl {
 	const struct cfg *cfg;

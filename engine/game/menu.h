@@ -41,15 +41,16 @@
  *             counter field: every field is hashed and snapshotted
  *             (sim_hash.c), so a new one would change every recorded hash.
  *
- * DEVICES and LATENCY show facts of the machine and of the main loop, not
- * of the game: they must not enter the sim state, its hash or a recording
- * (a replay on another machine gives the same hashes). So only where the
- * operator is (the page value, the navigation) is sim state; the page's
- * text is the app's (struct hud_diag in engine/ui/hud.h, passed in the
- * hud_env each frame), and the drawing prints what it is given. FIRE or
- * SERVICE goes back, like BOOKS. The two items sit above CONFIGURE INPUTS,
- * after every item a recorded session reaches by counting moves down from
- * the top, and the page values after MENU_SOUND: no recorded hash changes.
+ * DEVICES and LATENCY (and INPUT's raw control lines) show facts of the
+ * machine and of the main loop, not of the game: they must not enter the
+ * sim state, its hash or a recording (a replay on another machine gives
+ * the same hashes). So only where the operator is (the page value, the
+ * navigation) is sim state; the text is the app's (struct hud_diag in
+ * engine/ui/hud.h, passed in the hud_env each frame), and the drawing
+ * prints what it is given. On DEVICES and LATENCY, FIRE or SERVICE goes
+ * back, like BOOKS. Their two items sit above CONFIGURE INPUTS, after
+ * every item a recorded session reaches by counting moves down from the
+ * top, and their page values after MENU_SOUND: no recorded hash changes.
  */
 #ifndef ARCADED_ENGINE_MENU_H
 #define ARCADED_ENGINE_MENU_H
@@ -153,8 +154,8 @@ const char *menu_difficulty_name(int d);
 const char *menu_sound_name(int i);
 
 /* Draws the menu page for s over the whole frame (menu_draw.c), with the
- * HUD's colours and font (engine/ui/hud.h); DEVICES and LATENCY print
- * env->diag's lines (none when NULL). */
+ * HUD's colours and font (engine/ui/hud.h); DEVICES, LATENCY and INPUT
+ * print env->diag's lines (none when NULL). */
 void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f);
 
 #endif

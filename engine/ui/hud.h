@@ -23,8 +23,9 @@ struct tex_set;
 struct r_frame;
 struct r_par;
 
-/* Text of the service menu's diagnostics pages (DEVICES, LATENCY; see
- * engine/game/menu.h), supplied by the app for the frame: facts of the
+/* Text of the service menu's diagnostics (the DEVICES and LATENCY pages,
+ * INPUT TEST's raw controls; see engine/game/menu.h), supplied by the app
+ * for the frame: facts of the
  * machine and of the main loop, never sim state. Lines are drawn as given
  * (in the font's upper case, cut at the frame's edge, as many as fit); a
  * line that starts with a non-blank is a heading (yellow), the others are
@@ -44,8 +45,8 @@ struct hud_env {
 					* service menu's orientation screen; -1 unknown */
 	const struct r_par *par;       /* optional: threads the large darkened areas are
 					* split on (the renderer's pool); NULL: none */
-	const struct hud_diag *diag;   /* optional: the diagnostics page's text; NULL:
-					* none (the page says so) */
+	const struct hud_diag *diag;   /* optional: the service menu's diagnostics
+					* text; NULL: none (DEVICES and LATENCY say so) */
 };
 
 /* The colours the HUD uses, nearest to fixed RGB values in a palette. */
