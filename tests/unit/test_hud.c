@@ -260,6 +260,16 @@ static void the_input_test_lights_held_controls_green(void **state)
 	assert_true(held > none + 2 * 40);     /* two names and two "ON" */
 }
 
+/* The app gives d, a heading and a line, to the next draw(). */
+static void give_lines(struct hud_diag *d, const char *heading, const char *line)
+{
+	memset(d, 0, sizeof(*d));
+	strcpy(d->line[0], heading);
+	strcpy(d->line[1], line);
+	d->n = 2;
+	diag = d;
+}
+
 /* The input test prints the app's lines (the devices' raw controls) under
  * the coins line: ten action rows 10 lines apart from 34, 4 more, the
  * coins line (12): from line 150 at scale 1. */
@@ -276,11 +286,7 @@ static void the_input_test_prints_the_apps_lines_under_the_actions(void **state)
 	assert_true(count_in(0, 138, W, 10, col.yellow) > 20);        /* COINS 0 */
 	assert_int_equal(count_in(0, 150, W, H - 150 - 14, col.yellow), 0);
 	assert_int_equal(count_in(0, 150, W, H - 150 - 14, col.white), 0);
-	memset(&d, 0, sizeof(d));
-	strcpy(d.line[0], "CONTROLS");
-	strcpy(d.line[1], "  EVDEV - KEY_UP DOWN -> FORWARD");
-	d.n = 2;
-	diag = &d;
+	give_lines(&d, "CONTROLS", "  EVDEV - KEY_UP DOWN -> FORWARD");
 	draw(&s);
 	assert_true(count_in(0, 150, W, 10, col.yellow) > 8 * 8);
 	assert_true(count_in(0, 160, W, 10, col.white) > 20 * 8);
@@ -323,11 +329,7 @@ static void the_diagnostics_pages_print_the_apps_lines(void **state)
 		assert_true(count_in(0, 34, W, 10, col.grey) > 40);
 		assert_int_equal(count_in(0, 34, W, H - 60, col.yellow), 0);
 		assert_int_equal(count_in(0, 34, W, H - 60, col.white), 0);
-		memset(&d, 0, sizeof(d));
-		strcpy(d.line[0], "EVDEV");
-		strcpy(d.line[1], "  /DEV/INPUT/EVENT3");
-		d.n = 2;
-		diag = &d;
+		give_lines(&d, "EVDEV", "  /DEV/INPUT/EVENT3");
 		draw(&s);
 		assert_int_equal(count_in(0, 34, W, 10, col.grey), 0);
 		assert_true(count_in(0, 34, W, 10, col.yellow) > 5 * 8);
