@@ -6,12 +6,14 @@
 #include "app/app.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "app/cmd.h"
 #include "app/ctl.h"
 #include "app/demo.h"
+#include "app/diag.h"
 #include "app/hear.h"
 #include "app/keep.h"
 #include "app/loop.h"
@@ -58,6 +60,10 @@ struct app {
 	struct tape tape;          /* --record, --replay, --verify */
 	struct script script;      /* --script (scr NULL: none) */
 	struct stats stats;
+	struct hud_diag diag;      /* the diagnostics page's text (app_diag) */
+	uint8_t diag_page;         /* the page diag was made for, 0 none */
+	uint32_t diag_at;          /* the tick it was made */
+	char *diag_found;          /* DEVICES: `arcaded devices`' listing, NULL none */
 	struct pace pace;
 	uint32_t hang_at;          /* fault injection: hang after this tick */
 	uint64_t wd_interval, wd_next;
@@ -186,11 +192,65 @@ static void step_flight_after(void *ctx, struct loop_tick *k)
 			  a->hear.hash);
 }
 
+/* The service menu's text from the app (app/diag.h), for the frame:
+ * DEVICES' and LATENCY's made when the page opens, then again every
+ * APP_DIAG_TICKS (percentiles sort the kept samples: not every frame);
+ * INPUT TEST's raw controls every tick; none on other pages. The
+ * machine's listing is made once per opening, and not in a script or
+ * replay (their frames must not depend on the machine). A recording or a
+ * replay shows no figures and no raw controls: its frame hashes must be
+ * the same on every machine. */
+#define APP_DIAG_TICKS 30
+static void app_diag(struct app *a, uint32_t t)
+{
+	int page = a->sim.mode == SIM_SERVICE ? a->sim.menu.page : 0;
+	int opened = page != a->diag_page;
+
+	if (page == MENU_INPUT && !a->tape.rec && !a->tape.rep) {
+		/* the devices' raw controls: every tick, they are a few lines */
+		diag_raw(&a->diag, &a->ctl);
+		a->diag_page = (uint8_t)page;
+		a->scene.view.diag = &a->diag;
+		return;
+	}
+	if (page != MENU_DEVICES && page != MENU_LATENCY) {
+		a->diag_page = 0;
+		a->scene.view.diag = NULL;
+		return;
+	}
+	a->scene.view.diag = &a->diag;
+	if (!opened && t - a->diag_at < APP_DIAG_TICKS)
+		return;
+	a->diag_page = (uint8_t)page;
+	a->diag_at = t;
+	if (a->tape.rec || a->tape.rep) {
+		diag_clear(&a->diag);
+		diag_add(&a->diag, "NOT SHOWN IN A RECORDING OR A REPLAY");
+		return;
+	}
+	if (page == MENU_LATENCY) {
+		diag_latency(&a->diag, &a->stats);
+		return;
+	}
+	if (opened) {
+		size_t len = 0;
+		FILE *f;
+		free(a->diag_found);
+		a->diag_found = NULL;
+		f = a->headless ? NULL : open_memstream(&a->diag_found, &len);
+		if (f) {
+			diag_list(f, a->cfg, a->o->config_dir, a->o->bindings);
+			fclose(f);
+		}
+	}
+	diag_devices(&a->diag, a->kinds, a->nkinds, &a->slots, a->diag_found);
+}
+
 static void step_requests(void *ctx, struct loop_tick *k)
 {
 	struct app *a = ctx;
 
-	(void)k;
+	app_diag(a, k->t);
 	/* CONFIGURE INPUTS: the menu shows its request for one tick */
 	if (a->sim.mode == SIM_SERVICE && a->sim.menu.page == MENU_WIZARD)
 		ctl_wizard_start(&a->ctl, "service menu");
@@ -502,6 +562,7 @@ static void teardown(struct app *a)
 	script_free(&a->script);
 	keep_close(&a->keep, &a->sim, a->stats.ticks);
 	scene_free(&a->scene);
+	free(a->diag_found);
 	demo_free(&a->demo);
 	ct_free(&a->ct);
 }

@@ -199,13 +199,15 @@ static void ctl_opened(void *ctx, struct slot *s)
 	}
 }
 
-/* input.log: one line per press and release, with who sent it and what it
- * does (the operator's view of a device; the VM tests read it too). */
-static void ctl_log_key(const struct slot *s, int code, int down, const int *acts, int n)
+/* What a control change does, in words: "evdev usb-1-1.2 KEY_LEFTCTRL
+ * down -> fire" (the device by USB port, else VID:PID, else "-"; a code
+ * without a name as "code N"; "unbound" when it does nothing). */
+static void ctl_key_text(const struct slot *s, int code, int down, const int *acts, int n,
+			 char *buf, size_t len)
 {
-	char dev[48], what[160] = "";
+	char dev[48], key[24], what[160] = "";
 	const char *name = in_key_name(code);
-	size_t len = 0;
+	size_t wl = 0;
 
 	if (s->id.port[0])
 		snprintf(dev, sizeof(dev), "usb-%s", s->id.port);
@@ -213,26 +215,30 @@ static void ctl_log_key(const struct slot *s, int code, int down, const int *act
 		snprintf(dev, sizeof(dev), "%04x:%04x", s->id.vid, s->id.pid);
 	else
 		snprintf(dev, sizeof(dev), "-");
-	for (int i = 0; i < n && len < sizeof(what); i++)
-		len += (size_t)snprintf(what + len, sizeof(what) - len, "%s%s", i ? "," : "",
-					act_name(acts[i]));
 	if (name)
-		say("input: %s %s %s %s -> %s", s->be->name, dev, name, down ? "down" : "up",
-		    n ? what : "unbound");
+		snprintf(key, sizeof(key), "%s", name);
 	else
-		say("input: %s %s code %d %s -> %s", s->be->name, dev, code, down ? "down" : "up",
-		    n ? what : "unbound");
+		snprintf(key, sizeof(key), "code %d", code);
+	for (int i = 0; i < n && wl < sizeof(what); i++)
+		wl += (size_t)snprintf(what + wl, sizeof(what) - wl, "%s%s", i ? "," : "",
+				       act_name(acts[i]));
+	snprintf(buf, len, "%s %s %s %s -> %s", s->be->name, dev, key, down ? "down" : "up",
+		 n ? what : "unbound");
 }
 
-/* Control code of s changed: to the actions it is bound to (logged with
- * input.log), which makes its effect due on the next frame. */
+/* Control code of s changed: to the actions it is bound to, which makes
+ * its effect due on the next frame. Kept in words for the input test;
+ * with input.log also logged, one line per press and release (the
+ * operator's view of a device; the VM tests read it too). */
 static int ctl_act(struct ctl *c, const struct slot *s, int code, int down)
 {
 	int acts[ACT_COUNT];
 	int n = bind_lookup_dev(&c->binds, &s->id, code, acts, ACT_COUNT);
+	char *raw = c->raw[c->raw_n++ % CTL_RAW];
 
+	ctl_key_text(s, code, down, acts, n, raw, CTL_RAW_LEN);
 	if (c->cfg->input.log)
-		ctl_log_key(s, code, down, acts, n);
+		say("input: %s", raw);
 	for (int i = 0; i < n; i++)
 		cmd_action(&c->cs, acts[i], down);
 	return n;

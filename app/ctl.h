@@ -28,6 +28,9 @@
 struct stats;
 struct tape;
 
+#define CTL_RAW 8                  /* control changes kept for the input test */
+#define CTL_RAW_LEN 256            /* the whole line (a screen line shows 79) */
+
 struct ctl {
 	const struct cfg *cfg;
 	struct bind_table binds;
@@ -48,6 +51,12 @@ struct ctl {
 		char id[BIND_ID_MAX];
 		const struct prof *p;
 	} prof_secs[BIND_DEVICES];
+	/* The last CTL_RAW control changes of the devices (not those the
+	 * wizard takes), as the service menu's input test shows them: "evdev
+	 * usb-1-1.2 KEY_LEFTCTRL down -> fire" (the input.log line's words);
+	 * the newest is raw[(raw_n - 1) % CTL_RAW]. */
+	char raw[CTL_RAW][CTL_RAW_LEN];
+	unsigned raw_n;            /* changes ever kept */
 };
 
 /* The slot hooks; their context is a struct ctl. */

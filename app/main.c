@@ -8,13 +8,11 @@
 #include <string.h>
 
 #include "app/app.h"
-#include "app/ctl.h"
+#include "app/diag.h"
 #include "app/pspec.h"
 #include "app/say.h"
-#include "app/slot.h"
 #include "audio/au.h"
 #include "config/cfg.h"
-#include "config/prof.h"
 #include "config/st.h"
 #include "engine/core/num.h"
 
@@ -67,61 +65,6 @@ static void usage(FILE *f)
 	      "\n"
 	      "SIGUSR1 prints frame-time and latency statistics; they are printed at exit too.\n",
 	      f);
-}
-
-/* `arcaded devices`: every device of every input backend that can list
- * them (HID devices with their decoded report fields, evdev devices, GPIO
- * chips and lines), with the profile that would configure it; then every
- * sound output's devices (ALSA's cards). */
-struct list_ctx {
-	const struct prof_set *profs;
-	const char *backend;
-};
-
-static const char *list_profile(void *u, const struct in_ident *id)
-{
-	const struct list_ctx *l = u;
-	const struct prof *p = prof_match(l->profs, l->backend, id);
-
-	return p ? p->name : NULL;
-}
-
-static int list_devices(const struct cfg *c, const char *config_dir, const char *bindings)
-{
-	struct prof_set *profs = calloc(1, sizeof(*profs));
-	struct bind_table *binds = calloc(1, sizeof(*binds));
-	struct slot_kind kinds[SLOT_KINDS];
-	char path[CFG_PATH_MAX + 32];
-	int n, saved;
-
-	if (!profs || !binds) {
-		free(profs);
-		free(binds);
-		return 2;
-	}
-	/* auto-detection by the bindings a run would use: which devices it
-	 * takes */
-	ctl_bindings_load(binds, c, config_dir, bindings, &saved);
-	prof_init(profs);
-	snprintf(path, sizeof(path), "%s/profiles", config_dir);
-	prof_load_dir(profs, path, NULL, NULL);
-	prof_load_dir(profs, ARCADED_DATADIR "/profiles", NULL, NULL);
-	n = slot_kinds(NULL, kinds);
-	for (int k = 0; k < n; k++) {
-		struct list_ctx l = { profs, kinds[k].be->name };
-		if (kinds[k].be->set_bound)
-			kinds[k].be->set_bound(ctl_bound, binds);
-		if (kinds[k].be->list)
-			kinds[k].be->list(stdout, list_profile, &l);
-		if (kinds[k].be->set_bound)
-			kinds[k].be->set_bound(NULL, NULL);
-	}
-	for (int k = 0; au_backends[k]; k++)
-		if (au_backends[k]->list)
-			au_backends[k]->list(stdout);
-	free(binds);
-	free(profs);
-	return 0;
 }
 
 int main(int argc, char **argv)
@@ -322,7 +265,7 @@ int main(int argc, char **argv)
 	for (int i = 0; i < nsets; i++)
 		cfg_set(&c, sets[i], say_cfg, NULL);
 	if (devices)
-		return list_devices(&c, o.config_dir, o.bindings);
+		return diag_list(stdout, &c, o.config_dir, o.bindings) < 0 ? 2 : 0;
 
 	if (print_config) {
 		size_t n = cfg_format(&c, NULL, 0);

@@ -17,6 +17,7 @@ struct r_par;
 struct r_sprite;
 struct sim;
 struct tex_set;
+struct hud_diag;
 
 struct r_view;
 
@@ -40,6 +41,8 @@ struct view {
 	int rotate;                /* the display's rotation (service menu) */
 	const struct r_par *par;   /* optional, borrowed: threads for the HUD's large
 				    * darkened areas (the renderer's pool) */
+	const struct hud_diag *diag;   /* optional, borrowed: the service menu's
+					* diagnostics text (hud_env.diag), NULL none */
 };
 
 /* Prepares v for the content's stages. 0 or -ENOMEM. */

@@ -4,7 +4,10 @@
 # the cabinet's controls (forward/back move the cursor, FIRE selects,
 # SERVICE goes back): the main page, the input test (FORWARD held, one coin
 # seen), the three display test patterns, the sound test, game settings,
-# bookkeeping (after two coins) and the reset confirmation. The input wizard is not among them:
+# bookkeeping (after two coins), the reset confirmation, and the
+# diagnostics pages DEVICES and LATENCY (their text is this run's: a script
+# opens no device and lists none, and its figures are those of a run that
+# does not wait for the clock). The input wizard is not among them:
 # it runs only on a live cabinet, never under a script (docs/wizard.md).
 # Usage: scripts/service-shots.sh [path/to/arcaded]
 set -eu
@@ -53,6 +56,19 @@ tap() { printf '%d press %s\n%d release %s\n' "$1" "$2" $(($1 + 1)) "$2"; }
 	echo "80 screenshot $out/service-reset-confirm.png"
 	tap 82 service
 	echo "84 expect menu == 0"
+	tap 86 back                     # RESET BOOKKEEPING
+	tap 88 back                     # DEVICES
+	tap 90 fire
+	echo "94 screenshot $out/service-devices.png"
+	tap 96 fire
+	tap 98 back                     # LATENCY
+	tap 100 fire
+	tap 110 coin                    # inputs to measure; moves do nothing here
+	tap 120 back
+	tap 130 start
+	echo "160 screenshot $out/service-latency.png"
+	tap 162 service
+	echo "164 expect menu == 0"
 } >"$tmp/service.scr"
 "$BIN" --script "$tmp/service.scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
 	--set game.render_width=640 --set game.render_height=480 >"$tmp/log" 2>&1 || {

@@ -121,6 +121,12 @@ static int menu_main(struct sim *s, uint8_t pressed, uint8_t nav)
 		m->confirm = m->cursor;
 		m->yes = 0;
 		break;
+	case MENU_I_DEVICES:
+		m->page = MENU_DEVICES;
+		break;
+	case MENU_I_LATENCY:
+		m->page = MENU_LATENCY;
+		break;
 	case MENU_I_WIZARD:
 		m->page = MENU_WIZARD;
 		break;
@@ -286,6 +292,8 @@ int menu_tick(struct sim *s, uint8_t pressed, uint8_t nav)
 		menu_settings(s, pressed, nav);
 		break;
 	case MENU_BOOKS:
+	case MENU_DEVICES:
+	case MENU_LATENCY:
 		if (pressed & (SIM_BT_SERVICE | SIM_BT_FIRE))
 			menu_back(m);
 		break;

@@ -16,7 +16,9 @@
  *
  * Pages:
  *   MAIN      the list of pages
- *   INPUT     input test: each control's state as the game receives it
+ *   INPUT     input test: each control's state as the game receives it;
+ *             under it the devices' last raw control changes with the
+ *             actions they trigger (text from the app, as for DEVICES)
  *   DISPLAY   display test: colour bars, convergence grid, orientation
  *             (fire steps through them)
  *   SETTINGS  difficulty, lives, coins per credit, free play, master volume,
@@ -24,6 +26,10 @@
  *   SOUND     sound test: up/down choose a sound of the set (or the left or
  *             right channel test: a tone on that side only), fire plays it
  *   BOOKS     bookkeeping: coins, plays, play time, average, uptime
+ *   DEVICES   diagnostics: the input devices the daemon uses and the ones
+ *             the machine has (what `arcaded devices` prints)
+ *   LATENCY   diagnostics: input-to-present latency per kind of source
+ *             (p50/p99) and frame time (what the SIGUSR1 summary prints)
  *   CONFIRM   reset of the high scores or the bookkeeping: NO / YES
  *   WIZARD    the operator chose CONFIGURE INPUTS: a request to the app,
  *             which runs the input configuration wizard (app/wiz.h) outside
@@ -34,6 +40,17 @@
  *             never writes sim state. A page value rather than a new
  *             counter field: every field is hashed and snapshotted
  *             (sim_hash.c), so a new one would change every recorded hash.
+ *
+ * DEVICES and LATENCY (and INPUT's raw control lines) show facts of the
+ * machine and of the main loop, not of the game: they must not enter the
+ * sim state, its hash or a recording (a replay on another machine gives
+ * the same hashes). So only where the operator is (the page value, the
+ * navigation) is sim state; the text is the app's (struct hud_diag in
+ * engine/ui/hud.h, passed in the hud_env each frame), and the drawing
+ * prints what it is given. On DEVICES and LATENCY, FIRE or SERVICE goes
+ * back, like BOOKS. Their two items sit above CONFIGURE INPUTS, after
+ * every item a recorded session reaches by counting moves down from the
+ * top, and their page values after MENU_SOUND: no recorded hash changes.
  */
 #ifndef ARCADED_ENGINE_MENU_H
 #define ARCADED_ENGINE_MENU_H
@@ -48,11 +65,12 @@ struct r_frame;
 struct hud_env;
 
 enum menu_page { MENU_MAIN, MENU_INPUT, MENU_DISPLAY, MENU_SETTINGS, MENU_BOOKS, MENU_CONFIRM,
-		 MENU_WIZARD, MENU_SOUND, MENU_PAGES };
+		 MENU_WIZARD, MENU_SOUND, MENU_DEVICES, MENU_LATENCY, MENU_PAGES };
 
 /* Items of the main page, in order. */
 enum menu_item { MENU_I_INPUT, MENU_I_DISPLAY, MENU_I_SOUND, MENU_I_SETTINGS, MENU_I_BOOKS,
-		 MENU_I_RESET_SCORES, MENU_I_RESET_BOOKS, MENU_I_WIZARD, MENU_I_EXIT, MENU_ITEMS };
+		 MENU_I_RESET_SCORES, MENU_I_RESET_BOOKS, MENU_I_DEVICES, MENU_I_LATENCY,
+		 MENU_I_WIZARD, MENU_I_EXIT, MENU_ITEMS };
 
 /* Items of the settings page. */
 enum menu_setting { MENU_S_DIFFICULTY, MENU_S_LIVES, MENU_S_COINS, MENU_S_FREEPLAY,
@@ -136,7 +154,8 @@ const char *menu_difficulty_name(int d);
 const char *menu_sound_name(int i);
 
 /* Draws the menu page for s over the whole frame (menu_draw.c), with the
- * HUD's colours and font (engine/ui/hud.h). */
+ * HUD's colours and font (engine/ui/hud.h); DEVICES, LATENCY and INPUT
+ * print env->diag's lines (none when NULL). */
 void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f);
 
 #endif

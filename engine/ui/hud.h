@@ -23,6 +23,20 @@ struct tex_set;
 struct r_frame;
 struct r_par;
 
+/* Text of the service menu's diagnostics (the DEVICES and LATENCY pages,
+ * INPUT TEST's raw controls; see engine/game/menu.h), supplied by the app
+ * for the frame: facts of the
+ * machine and of the main loop, never sim state. Lines are drawn as given
+ * (in the font's upper case, cut at the frame's edge, as many as fit); a
+ * line that starts with a non-blank is a heading (yellow), the others are
+ * white. */
+#define HUD_DIAG_LINES 32
+#define HUD_DIAG_COLS 80
+struct hud_diag {
+	int n;                         /* lines used, 0..HUD_DIAG_LINES */
+	char line[HUD_DIAG_LINES][HUD_DIAG_COLS];
+};
+
 /* What the HUD needs besides the state; all borrowed, read only. */
 struct hud_env {
 	const struct pal *pal;         /* required: the palette the frame is in */
@@ -31,6 +45,8 @@ struct hud_env {
 					* service menu's orientation screen; -1 unknown */
 	const struct r_par *par;       /* optional: threads the large darkened areas are
 					* split on (the renderer's pool); NULL: none */
+	const struct hud_diag *diag;   /* optional: the service menu's diagnostics
+					* text; NULL: none (DEVICES and LATENCY say so) */
 };
 
 /* The colours the HUD uses, nearest to fixed RGB values in a palette. */

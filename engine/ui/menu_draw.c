@@ -53,6 +53,7 @@ static void menu_main_page(struct menu_ctx *m)
 		[MENU_I_SOUND] = "SOUND TEST",
 		[MENU_I_SETTINGS] = "GAME SETTINGS", [MENU_I_BOOKS] = "BOOKKEEPING",
 		[MENU_I_RESET_SCORES] = "RESET HIGH SCORES", [MENU_I_RESET_BOOKS] = "RESET BOOKKEEPING",
+		[MENU_I_DEVICES] = "DEVICES", [MENU_I_LATENCY] = "LATENCY",
 		[MENU_I_WIZARD] = "CONFIGURE INPUTS", [MENU_I_EXIT] = "EXIT",
 	};
 	const struct menu *mn = &m->s->menu;
@@ -67,7 +68,28 @@ static void menu_main_page(struct menu_ctx *m)
 	}
 }
 
-static void menu_input_page(struct menu_ctx *m)
+/* The app's lines (hud_env.diag) from the next line down, at half the
+ * menu's text scale so that a device's name fits, headings in yellow, as
+ * many as fit above the help line. */
+static void menu_diag_lines(struct menu_ctx *m, const struct hud_diag *d)
+{
+	int sc = m->sc > 1 ? m->sc / 2 : 1, x = V_CHAR * sc / 2;
+
+	for (int i = 0; i < d->n && i < HUD_DIAG_LINES; i++) {
+		char line[HUD_DIAG_COLS];
+		if (m->y + 10 * sc > m->f->h - 14 * m->sc)
+			break;             /* above the help line */
+		memcpy(line, d->line[i], sizeof(line));
+		line[sizeof(line) - 1] = '\0';
+		hud_text(m->f, m->c, x, m->y, sc, line[0] == ' ' ? m->c->white : m->c->yellow,
+			 line);
+		m->y += 10 * sc;
+	}
+}
+
+/* The actions as the game receives them, the coins, then the app's
+ * lines when it gives some (the devices' raw controls, hud_env.diag). */
+static void menu_input_page(struct menu_ctx *m, const struct hud_diag *d)
 {
 	const struct sim_cmd *c = &m->s->cmd;
 	const int on[] = {
@@ -92,6 +114,8 @@ static void menu_input_page(struct menu_ctx *m)
 	hud_cat_num(buf, sizeof(buf), m->s->menu.coins_seen, 1, '0');
 	m->y += 4 * m->sc;
 	menu_line(m, m->c->yellow, buf);
+	if (d)
+		menu_diag_lines(m, d);
 }
 
 static void menu_bars(struct menu_ctx *m, const struct pal *pal)
@@ -248,6 +272,15 @@ static void menu_books_page(struct menu_ctx *m)
 	menu_item(m, 0, "UPTIME", buf[0]);
 }
 
+static void menu_diag_page(struct menu_ctx *m, const struct hud_diag *d, const char *title)
+{
+	menu_title(m, title, "FIRE OR SERVICE: BACK");
+	if (!d || d->n <= 0)
+		menu_line(m, m->c->grey, "NOTHING TO SHOW");
+	else
+		menu_diag_lines(m, d);
+}
+
 static void menu_confirm_page(struct menu_ctx *m)
 {
 	const struct menu *mn = &m->s->menu;
@@ -274,7 +307,7 @@ void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f
 	v_fill(f, 0, 0, f->w, f->h, c.black);
 	switch (s->menu.page) {
 	case MENU_INPUT:
-		menu_input_page(&m);
+		menu_input_page(&m, env->diag);
 		break;
 	case MENU_DISPLAY:
 		menu_display_page(&m, env);
@@ -290,6 +323,12 @@ void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f
 		break;
 	case MENU_SOUND:
 		menu_sound_page(&m);
+		break;
+	case MENU_DEVICES:
+		menu_diag_page(&m, env->diag, "DEVICES");
+		break;
+	case MENU_LATENCY:
+		menu_diag_page(&m, env->diag, "LATENCY");
 		break;
 	case MENU_MAIN:
 	case MENU_WIZARD:              /* its one tick: the app draws the wizard */

@@ -168,6 +168,38 @@ static void keys_go_to_actions_or_to_the_wizard_alone(void **state)
 	assert_int_equal(st.pending_ns, 0);
 }
 
+/* Every control change of a device is kept in words for the input test,
+ * the input.log line's (the VM tests read those: 'evdev 0001:0001 KEY_5
+ * down -> coin'), the last CTL_RAW of them; the wizard's are not. */
+static void control_changes_are_kept_in_words(void **state)
+{
+	struct slot s = slot_of(&keyboard, 0x1209, 0x0001, 0);
+	struct slot p = slot_of(&pad, 0, 0, 1);
+
+	(void)state;
+	start(NULL);
+	strcpy(p.id.port, "1-1.2");
+	ctl_hooks.key(&c, &s, KEY_UP, 1, 5000);
+	assert_int_equal(c.raw_n, 1);
+	assert_string_equal(c.raw[0], "keys 1209:0001 KEY_UP down -> forward");
+	ctl_hooks.key(&c, &s, KEY_F12, 1, 6000);
+	assert_string_equal(c.raw[1], "keys 1209:0001 KEY_F12 down -> unbound");
+	ctl_hooks.released(&c, &p, KEY_LEFTCTRL);
+	assert_string_equal(c.raw[2], "pad usb-1-1.2 KEY_LEFTCTRL up -> fire");
+	s.id.vid = 0;
+	s.id.pid = 0;
+	ctl_hooks.key(&c, &s, 0x2ff, 1, 7000);     /* no name, no id */
+	assert_string_equal(c.raw[3], "keys - code 767 down -> unbound");
+	for (int i = 0; i < CTL_RAW; i++)
+		ctl_hooks.key(&c, &s, KEY_UP, i & 1, 8000);
+	assert_int_equal(c.raw_n, 4 + CTL_RAW);
+	assert_string_equal(c.raw[(c.raw_n - 1) % CTL_RAW], "keys - KEY_UP down -> forward");
+	assert_string_equal(c.raw[(c.raw_n - 2) % CTL_RAW], "keys - KEY_UP up -> forward");
+	ctl_wizard_start(&c, "test");
+	ctl_hooks.key(&c, &s, KEY_DOWN, 1, 9000);
+	assert_int_equal(c.raw_n, 4 + CTL_RAW);
+}
+
 /* Auto-detection asks ctl which codes do something: the defaults' keys for
  * any device, a device's own section's for it alone. */
 static void the_bound_hook_is_what_the_bindings_use(void **state)
@@ -196,6 +228,7 @@ int main(void)
 		cmocka_unit_test(a_profile_configures_the_device_through_its_table),
 		cmocka_unit_test(a_first_boot_asks_for_a_pad_nothing_names),
 		cmocka_unit_test(keys_go_to_actions_or_to_the_wizard_alone),
+		cmocka_unit_test(control_changes_are_kept_in_words),
 		cmocka_unit_test(the_bound_hook_is_what_the_bindings_use),
 	};
 

@@ -45,9 +45,11 @@ static int teardown(void **state)
 	return 0;
 }
 
+static const struct hud_diag *diag;   /* the diagnostics text draw() passes */
+
 static void draw(const struct sim *s)
 {
-	struct hud_env env = { &pal, NULL, 0, NULL };
+	struct hud_env env = { &pal, NULL, 0, NULL, diag };
 	memset(pix, BG, sizeof(pix));
 	hud_draw(s, &env, &frame);
 }
@@ -187,7 +189,7 @@ static void the_score_is_drawn(void **state)
 
 static void hud_is_a_pure_function_of_the_state(void **state)
 {
-	struct hud_env env = { &pal, NULL, 0, NULL };
+	struct hud_env env = { &pal, NULL, 0, NULL, NULL };
 	static uint8_t a[W * H];
 	struct sim s;
 	(void)state;
@@ -258,6 +260,40 @@ static void the_input_test_lights_held_controls_green(void **state)
 	assert_true(held > none + 2 * 40);     /* two names and two "ON" */
 }
 
+/* The app gives d, a heading and a line, to the next draw(). */
+static void give_lines(struct hud_diag *d, const char *heading, const char *line)
+{
+	memset(d, 0, sizeof(*d));
+	strcpy(d->line[0], heading);
+	strcpy(d->line[1], line);
+	d->n = 2;
+	diag = d;
+}
+
+/* The input test prints the app's lines (the devices' raw controls) under
+ * the coins line: ten action rows 10 lines apart from 34, 4 more, the
+ * coins line (12): from line 150 at scale 1. */
+static void the_input_test_prints_the_apps_lines_under_the_actions(void **state)
+{
+	static struct hud_diag d;
+	struct sim s;
+	(void)state;
+	sim_init(&s, room, &play);
+	s.mode = SIM_SERVICE;
+	s.menu.page = MENU_INPUT;
+	diag = NULL;
+	draw(&s);
+	assert_true(count_in(0, 138, W, 10, col.yellow) > 20);        /* COINS 0 */
+	assert_int_equal(count_in(0, 150, W, H - 150 - 14, col.yellow), 0);
+	assert_int_equal(count_in(0, 150, W, H - 150 - 14, col.white), 0);
+	give_lines(&d, "CONTROLS", "  EVDEV - KEY_UP DOWN -> FORWARD");
+	draw(&s);
+	assert_true(count_in(0, 150, W, 10, col.yellow) > 8 * 8);
+	assert_true(count_in(0, 160, W, 10, col.white) > 20 * 8);
+	assert_int_equal(count_in(0, 170, W, H - 170 - 14, col.white), 0);
+	diag = NULL;
+}
+
 static void every_menu_page_draws_something(void **state)
 {
 	struct sim s;
@@ -275,6 +311,39 @@ static void every_menu_page_draws_something(void **state)
 	}
 }
 
+/* DEVICES and LATENCY print the app's lines below the title (34 lines
+ * down at scale 1), 10 lines apart at scale 1: a heading (no blank first)
+ * in yellow, the others in white; without lines, NOTHING TO SHOW in grey. */
+static void the_diagnostics_pages_print_the_apps_lines(void **state)
+{
+	static struct hud_diag d;
+	static const uint8_t pages[2] = { MENU_DEVICES, MENU_LATENCY };
+	struct sim s;
+	(void)state;
+	sim_init(&s, room, &play);
+	s.mode = SIM_SERVICE;
+	for (int p = 0; p < 2; p++) {
+		s.menu.page = pages[p];
+		diag = NULL;
+		draw(&s);
+		assert_true(count_in(0, 34, W, 10, col.grey) > 40);
+		assert_int_equal(count_in(0, 34, W, H - 60, col.yellow), 0);
+		assert_int_equal(count_in(0, 34, W, H - 60, col.white), 0);
+		give_lines(&d, "EVDEV", "  /DEV/INPUT/EVENT3");
+		draw(&s);
+		assert_int_equal(count_in(0, 34, W, 10, col.grey), 0);
+		assert_true(count_in(0, 34, W, 10, col.yellow) > 5 * 8);
+		assert_int_equal(count_in(0, 34, W, 10, col.white), 0);
+		assert_true(count_in(0, 44, W, 10, col.white) > 17 * 8);
+		assert_int_equal(count_in(0, 44, W, 10, col.yellow), 0);
+		assert_int_equal(count_in(0, 54, W, H - 80, col.white), 0);  /* nothing more */
+		d.n = 1;                       /* only the lines given */
+		draw(&s);
+		assert_int_equal(count_in(0, 44, W, 10, col.white), 0);
+	}
+	diag = NULL;
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -290,6 +359,8 @@ int main(void)
 		cmocka_unit_test(the_countdown_number_changes_the_picture),
 		cmocka_unit_test(the_input_test_lights_held_controls_green),
 		cmocka_unit_test(every_menu_page_draws_something),
+		cmocka_unit_test(the_diagnostics_pages_print_the_apps_lines),
+		cmocka_unit_test(the_input_test_prints_the_apps_lines_under_the_actions),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

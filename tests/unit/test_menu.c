@@ -273,6 +273,42 @@ static void the_exit_item_leaves(void **state)
 	assert_int_equal(s.mode, SIM_ATTRACT);
 }
 
+/* DEVICES and LATENCY (just above CONFIGURE INPUTS) open their pages,
+ * which hold no state of their own (their text is the app's): FIRE or
+ * SERVICE goes back to MAIN with the cursor on the item, and the menu is
+ * as it was before the visit (but for its clock and MAIN's cursor). */
+static void the_diagnostics_pages_open_and_go_back(void **state)
+{
+	static const uint8_t item[2] = { MENU_I_DEVICES, MENU_I_LATENCY };
+	static const uint8_t page[2] = { MENU_DEVICES, MENU_LATENCY };
+	struct sim s;
+	(void)state;
+	in_menu(&s, &base);
+	assert_int_equal(MENU_I_LATENCY + 1, MENU_I_WIZARD);
+	for (int k = 0; k < 2; k++) {
+		for (int back = 0; back < 2; back++) {
+			struct menu before;
+			while (s.menu.cursor != item[k])
+				press(&s, DOWN);
+			before = s.menu;
+			press(&s, FIRE);
+			assert_int_equal(s.menu.page, page[k]);
+			assert_int_equal(s.mode, SIM_SERVICE);
+			press(&s, DOWN);               /* moves nothing */
+			assert_int_equal(s.menu.page, page[k]);
+			assert_int_equal(s.menu.main_cursor, item[k]);
+			press(&s, back ? SERVICE : FIRE);
+			assert_int_equal(s.mode, SIM_SERVICE);
+			assert_int_equal(s.menu.page, MENU_MAIN);
+			assert_int_equal(s.menu.cursor, item[k]);
+			/* only the menu's clock moved, and MAIN's cursor is kept */
+			before.t = s.menu.t;
+			before.main_cursor = item[k];
+			assert_memory_equal(&before, &s.menu, sizeof(before));
+		}
+	}
+}
+
 /* CONFIGURE INPUTS (just above EXIT): the page says so for exactly the
  * tick of the choice, then MAIN is back with the cursor on the item,
  * whatever that next tick's commands are (a SERVICE press does not leave);
@@ -321,6 +357,7 @@ int main(void)
 		cmocka_unit_test(resets_need_a_yes),
 		cmocka_unit_test(the_exit_item_leaves),
 		cmocka_unit_test(configure_inputs_is_a_one_tick_request),
+		cmocka_unit_test(the_diagnostics_pages_open_and_go_back),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }
