@@ -159,7 +159,13 @@ phase_sound() {
 		[ -n "$al" ] && break
 		sleep 0.5
 	done
-	check sound-alsa-open "the daemon's line: ${al:-no 'sound: alsa' line within 30 s}" [ -n "$al" ]
+	if [ -z "$al" ]; then
+		# what the service's user meets: the nodes, and ALSA's own word
+		ls -l /dev/snd > "$R/snd-nodes.txt" 2>&1
+		runuser -u arcaded -- aplay -q -D default -d 1 /dev/zero > "$R/snd-aplay.txt" 2>&1
+		log_since 0 | grep -F "arcaded: sound" > "$R/snd-log.txt"
+	fi
+	check sound-alsa-open "the daemon's line: ${al:-no 'sound: alsa' line within 30 s: $(tr '\n' ';' < "$R/snd-log.txt"; tr '\n' ';' < "$R/snd-nodes.txt"; tr '\n' ';' < "$R/snd-aplay.txt")}" [ -n "$al" ]
 	[ -n "$al" ] && figure "sound output: $al"
 	u0=$(underruns)
 	t_snd=$(now)
