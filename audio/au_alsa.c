@@ -256,7 +256,9 @@ static int alsa_raise(struct au_dev *d, struct au_status *st)
 	d->window_xruns += st->underruns;
 	if (++d->window < AU_ALSA_WINDOW && d->window_xruns < AU_ALSA_RAISE_AT)
 		return 0;
-	rc = d->window_xruns >= AU_ALSA_RAISE_AT && d->buffer_us < AU_ALSA_BUFFER_MAX_US;
+	/* not when the device's own buffer is that large already (dmix) */
+	rc = d->window_xruns >= AU_ALSA_RAISE_AT && d->buffer_us < AU_ALSA_BUFFER_MAX_US &&
+	     d->buffer * 1000000ull < (uint64_t)d->buffer_us * 2 * d->rate;
 	d->window = 0;
 	d->window_xruns = 0;
 	if (!rc)

@@ -150,12 +150,14 @@ underruns() { # the SIGUSR1 summary's underrun count ("" if none came)
 	done
 }
 phase_sound() {
+	t_s0=$(now)
+	systemctl start "$U"   # Type=notify: back when the first frame is shown
 	wait_until 60 grep -q -i "hda" /proc/asound/cards
 	card=$(grep -m 1 -i "hda" /proc/asound/cards | sed 's/^ *//')
 	check sound-card "the kernel's card: ${card:-none} (/proc/asound/cards)" [ -n "$card" ]
 	al=""
 	for _ in $(seq 1 60); do
-		al=$(log_since 0 | grep -m 1 -E "arcaded: sound: alsa [^ ]*: [0-9]+ Hz" | sed 's/.*arcaded: sound: //')
+		al=$(log_since "$t_s0" | grep -m 1 -E "arcaded: sound: alsa [^ ]*: [0-9]+ Hz" | sed 's/.*arcaded: sound: //')
 		[ -n "$al" ] && break
 		sleep 0.5
 	done
@@ -163,7 +165,7 @@ phase_sound() {
 		# what the service's user meets: the nodes, and ALSA's own word
 		ls -l /dev/snd > "$R/snd-nodes.txt" 2>&1
 		runuser -u arcaded -- aplay -q -D default -d 1 /dev/zero > "$R/snd-aplay.txt" 2>&1
-		log_since 0 | grep -F "arcaded: sound" > "$R/snd-log.txt"
+		log_since "$t_s0" | grep -F "arcaded: sound" > "$R/snd-log.txt"
 	fi
 	check sound-alsa-open "the daemon's line: ${al:-no 'sound: alsa' line within 30 s: $(tr '\n' ';' < "$R/snd-log.txt"; tr '\n' ';' < "$R/snd-nodes.txt"; tr '\n' ';' < "$R/snd-aplay.txt")}" [ -n "$al" ]
 	[ -n "$al" ] && figure "sound output: $al"
@@ -172,7 +174,6 @@ phase_sound() {
 	i=0
 	while [ "$i" -lt "$SOUND_COINS" ]; do
 		i=$((i + 1))
-		coins=$((coins + 1))
 		hostkey 5 100
 		sleep 0.6
 	done
@@ -181,10 +182,11 @@ phase_sound() {
 	nc=$(log_since "$t_snd" | grep -c -F 'arcaded: input: evdev 0001:0001 KEY_5 down -> coin')
 	check sound-coins-read "the daemon read $nc coin key(s) of the $SOUND_COINS sent" [ "$nc" = "$SOUND_COINS" ]
 	figure "sound: underruns while $SOUND_COINS coins played: $((${u1:-0} - ${u0:-0})) (summary before ${u0:-none}, after ${u1:-none})"
-	raised=$(log_since 0 | grep -F "arcaded: sound: alsa " | grep -F "(raised" | sed 's/.*arcaded: sound: //')
+	raised=$(log_since "$t_s0" | grep -F "arcaded: sound: alsa " | grep -F "(raised" | sed 's/.*arcaded: sound: //')
 	[ -n "$raised" ] && figure "sound: the buffer was raised after underruns $(echo "$raised" | wc -l) time(s), last: $(echo "$raised" | tail -n 1)"
 	check sound-underruns "the SIGUSR1 summary's underrun count before and after the coins: ${u0:-none} and ${u1:-none}" \
 		[ -n "$u0" -a -n "$u1" ]
+	systemctl stop "$U"    # as phase_sigterm left it, for the unit tests
 }
 
 # --- input: a uinput keyboard plugged in after start -----------------------
@@ -1278,9 +1280,10 @@ latefb)
 	run phase_nofb phase_latefb phase_input phase_libusb phase_gl phase_priorities
 	;;
 kms)
-	# phase_input runs phase_vt while the start view is still; the
-	# coins of phase_sound are heard in attract mode, before it
-	run phase_boot phase_sound phase_input phase_flips phase_sigterm
+	# phase_input runs phase_vt while the start view is still; phase_sound
+	# starts the daemon again after phase_sigterm, for coins in attract
+	# mode that leave the other phases' screens and counts alone
+	run phase_boot phase_input phase_flips phase_sigterm phase_sound
 	UNITS=test_dp_kms
 	run unit_tests
 	UNITS=test_con
