@@ -367,24 +367,6 @@ static const struct loop_ops app_steps = {
 
 /* ---- set-up and tear-down --------------------------------------------- */
 
-/* a->content: the command line's --wad/--grid when it has them, else the
- * configuration's [game] wad (blank-separated files) and maps. */
-static void app_content(struct app *a)
-{
-	const struct cfg *c = a->cfg;
-	char *save = NULL;
-
-	a->content = a->o->content;
-	if (a->content.nwads || a->content.grid || !c->game.wad[0])
-		return;
-	snprintf(a->wadbuf, sizeof(a->wadbuf), "%s", c->game.wad);
-	for (char *w = strtok_r(a->wadbuf, " \t", &save); w && a->content.nwads < CT_MAX_WADS;
-	     w = strtok_r(NULL, " \t", &save))
-		a->content.wads[a->content.nwads++] = w;
-	if (!a->content.map && c->game.maps[0])
-		a->content.map = c->game.maps;
-}
-
 /* The content, the game's settings and the replay's checks; *rate: the
  * sound's output rate (a recording's own). */
 static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
@@ -395,7 +377,8 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 	char err[512] = "", first[9];
 	int rc;
 
-	app_content(a);
+	ct_spec_config(&a->content, &o->content, c->game.wad, c->game.maps, a->wadbuf,
+		       sizeof(a->wadbuf));
 	spec = a->content;
 
 	if (o->replay) {

@@ -40,6 +40,22 @@ static int ct_stopped(const struct ct_spec *s, char *err, size_t errlen)
 	return -ECANCELED;
 }
 
+void ct_spec_config(struct ct_spec *out, const struct ct_spec *cmdline, const char *wad,
+		    const char *maps, char *buf, size_t len)
+{
+	char *save = NULL;
+
+	*out = *cmdline;
+	if (out->nwads || out->grid || !wad[0])
+		return;
+	snprintf(buf, len, "%s", wad);
+	for (char *w = strtok_r(buf, " \t", &save); w && out->nwads < CT_MAX_WADS;
+	     w = strtok_r(NULL, " \t", &save))
+		out->wads[out->nwads++] = w;
+	if (!out->map && maps[0])
+		out->map = maps;
+}
+
 void ct_first_map(const struct ct_spec *s, char out[9])
 {
 	const char *m = s->map ? s->map : "";

@@ -60,6 +60,12 @@ struct ct {
 				 * light maps (issue 13 item 8); the app logs it */
 };
 
+/* *out: cmdline when it names WADs or a grid, else the configuration's
+ * [game] wad (blank-separated files, split into buf, which must outlive
+ * out) and maps; cmdline's other fields (lights, level) kept. */
+void ct_spec_config(struct ct_spec *out, const struct ct_spec *cmdline, const char *wad,
+		    const char *maps, char *buf, size_t len);
+
 /* The first map s->map names (its first word, at most 8 characters), or
  * "" when s names none: what a recording's header keeps. */
 void ct_first_map(const struct ct_spec *s, char out[9]);
