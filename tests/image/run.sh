@@ -162,6 +162,8 @@ boot() { # name
 	qpid=$!
 	n=0
 	fw=0
+	dark=0
+	fw_text=0
 	boot_text=0
 	t_frame=""
 	while kill -0 "$qpid" 2>/dev/null; do
@@ -175,18 +177,25 @@ boot() { # name
 			fi
 			# The firmware's own screens (its logo in the middle, its
 			# messages) are not the image's to silence and are not
-			# judged; once the logo has been and gone the kernel has
-			# the screen, and anything lit before the game is boot text.
-			# Before the logo, QEMU's own "Guest has not initialized
-			# the display" shows: not judged either.
+			# judged. After the logo the firmware may still print
+			# (OVMF's "BdsDxe: loading Boot0001 ..." and "starting",
+			# caught by one screen in one of 21 boots of a clean-clone
+			# run) until the kernel takes the screen and it goes black;
+			# anything lit after that black and before the game is boot
+			# text. Before the logo, QEMU's own "Guest has not
+			# initialized the display" shows: not judged either.
 			l=$(lit "$s")
 			if [ "${l:-0}" = 0 ]; then
 				rm -f "$s"
+				[ "$fw" = 1 ] && dark=1
 			elif logo "$s"; then
 				fw=1
-			elif [ "$fw" = 1 ]; then
+			elif [ "$dark" = 1 ]; then
 				boot_text=$((boot_text + 1))
 				cp "$s" "$res/boot-text-$boot_text.ppm"
+			elif [ "$fw" = 1 ]; then
+				fw_text=$((fw_text + 1))
+				cp "$s" "$res/firmware-text-$fw_text.ppm"
 			fi
 		fi
 		[ "$(secs "$t0" "$(now)" | cut -d. -f1)" -lt "$TIMEOUT" ] || break
