@@ -24,7 +24,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "engine/map/th.h"
 #include "tests/crosscheck/xc_move.h"
 
 /* Viewpoints on the grid of a map's vertices (whole units, straight out
@@ -77,19 +76,6 @@ static int xcm_cross(double ax, double ay, double bx, double by, double cx, doub
 	return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
 }
 
-/* Squared distance from (x, y) to line l's segment. */
-static double xcm_dist2(const struct map *m, const struct map_line *l, double x, double y)
-{
-	double ax = xcm_x(m, l->v1), ay = xcm_y(m, l->v1);
-	double dx = xcm_x(m, l->v2) - ax, dy = xcm_y(m, l->v2) - ay;
-	double len2 = dx * dx + dy * dy, t = len2 > 0 ? ((x - ax) * dx + (y - ay) * dy) / len2 : 0;
-
-	t = t < 0 ? 0 : t > 1 ? 1 : t;
-	dx = ax + t * dx - x;
-	dy = ay + t * dy - y;
-	return dx * dx + dy * dy;
-}
-
 /* The eye's sector when (x, y) is a good place to look at (mx, my) from,
  * else MAP_NONE (the rules at the top of this file). */
 static uint32_t xcm_eye(const struct map *m, uint32_t mover, double x, double y, double mx,
@@ -100,20 +86,12 @@ static uint32_t xcm_eye(const struct map *m, uint32_t mover, double x, double y,
 	if (s >= m->num_sectors || s == mover ||
 	    m->sectors[s].ceil_h - m->sectors[s].floor_h < 56 * FX_ONE)
 		return MAP_NONE;
-	for (uint32_t i = 0; i < m->num_things; i++) {
-		const struct th_info *in = th_find(m->things[i].type);
-		double dx = m->things[i].x / 65536.0 - x, dy = m->things[i].y / 65536.0 - y;
-		double r = in ? in->radius + 16.0 : 32.0;
-
-		if (in && (in->flags & (TH_PLAYER | TH_INVISIBLE)))
-			continue;
-		if (dx * dx + dy * dy < r * r)
-			return MAP_NONE;
-	}
+	if (!xc_clear_of_things(m, x, y))
+		return MAP_NONE;
 	for (uint32_t i = 0; i < m->num_lines; i++) {
 		const struct map_line *l = &m->lines[i];
 		int solid = l->side[1] == MAP_NONE;
-		double d2 = xcm_dist2(m, l, x, y);
+		double d2 = xc_line_dist(m, l, x, y);
 
 		if (d2 < 1.0 || (solid && d2 < 16.0 * 16.0))
 			return MAP_NONE;

@@ -25,4 +25,10 @@ struct xcm_view {
  * written). */
 int xcm_views(const struct map *m, struct xcm_view *out, int max);
 
+/* From xcheck.c, shared by its random views and these: the squared
+ * distance from (x, y) to line l, and whether (x, y) is clear of every
+ * solid thing by a player's radius (1) or not (0). */
+double xc_line_dist(const struct map *m, const struct map_line *l, double x, double y);
+int xc_clear_of_things(const struct map *m, double x, double y);
+
 #endif

@@ -131,7 +131,24 @@ static uint8_t *slurp(const char *path, size_t *len)
 }
 
 /* Distance (map units) from (x, y) to the segment of line l. */
-static double xc_line_dist(const struct map *m, const struct map_line *l, double x, double y)
+int xc_clear_of_things(const struct map *m, double x, double y)
+{
+	/* a player stands at least its radius plus its own (16) away from a
+	 * thing's centre */
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		const struct th_info *in = th_find(m->things[i].type);
+		double dx = m->things[i].x / 65536.0 - x, dy = m->things[i].y / 65536.0 - y;
+		double r = in ? in->radius + 16.0 : 32.0;
+
+		if (in && (in->flags & (TH_PLAYER | TH_INVISIBLE)))
+			continue;
+		if (dx * dx + dy * dy < r * r)
+			return 0;
+	}
+	return 1;
+}
+
+double xc_line_dist(const struct map *m, const struct map_line *l, double x, double y)
 {
 	double ax = m->vertices[l->v1].x / 65536.0, ay = m->vertices[l->v1].y / 65536.0;
 	double bx = m->vertices[l->v2].x / 65536.0, by = m->vertices[l->v2].y / 65536.0;
@@ -154,18 +171,8 @@ static int xc_viewpoint_ok(const struct map *m, uint32_t s, double x, double y)
 
 	if (sec->ceil_h - sec->floor_h < 56 * FX_ONE)
 		return 0;
-	/* not inside a thing: a player stands at least its radius plus its
-	 * own (16) away from a thing's centre */
-	for (uint32_t i = 0; i < m->num_things; i++) {
-		const struct th_info *in = th_find(m->things[i].type);
-		double dx = m->things[i].x / 65536.0 - x, dy = m->things[i].y / 65536.0 - y;
-		double r = in ? in->radius + 16.0 : 32.0;
-
-		if (in && (in->flags & (TH_PLAYER | TH_INVISIBLE)))
-			continue;
-		if (dx * dx + dy * dy < r * r)
-			return 0;
-	}
+	if (!xc_clear_of_things(m, x, y))
+		return 0;
 	for (uint32_t i = 0; i < m->num_lines; i++) {
 		const struct map_line *l = &m->lines[i];
 		uint32_t s0 = m->sides[l->side[0]].sector;
