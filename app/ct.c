@@ -15,7 +15,9 @@
 #include "engine/map/map_wad.h"
 #include "engine/map/tex.h"
 #include "engine/map/wad.h"
+#include "engine/render/r_game.h"
 #include "engine/sound/snd.h"
+#include "engine/ui/hud.h"
 #include "input/io.h"
 
 /* Freedoom 2 is 28 MiB; anything far larger is not a WAD meant for us. */
@@ -114,10 +116,37 @@ static int ct_pick_maps(const char *list, char (*names)[9], int n, char (*picked
 	return np;
 }
 
+/* Composes the wall textures and decodes the sprites c's stages can show
+ * (tex_want_map, r_game_want over every stage, and the HUD's). */
+static int ct_compose(struct ct *c, const struct wad *w, const struct lim_stop *stop,
+		      char *err, size_t errlen)
+{
+	uint8_t *want = calloc((size_t)c->tex->num_textures, 1);
+	uint8_t *spr = calloc((size_t)c->tex->num_sprpics, 1);
+	int rc;
+
+	if (!want || !spr) {
+		free(want);
+		free(spr);
+		snprintf(err, errlen, "textures: %s", strerror(ENOMEM));
+		return -ENOMEM;
+	}
+	for (int i = 0; i < c->nmaps; i++) {
+		tex_want_map(c->tex, c->maps[i], want);
+		r_game_want(c->tex, c->maps[i], spr);
+	}
+	hud_want(c->tex, spr);
+	rc = tex_compose(c->tex, w, want, spr, stop, err, errlen);
+	free(want);
+	free(spr);
+	return rc;
+}
+
 static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_stop *stop,
 		     char *err, size_t errlen)
 {
-	uint8_t *bufs[CT_MAX_WADS] = { 0 };
+	const uint8_t *bufs[CT_MAX_WADS] = { 0 };
+	size_t lens[CT_MAX_WADS] = { 0 };
 	char names[64][9], picked[CT_MAX_STAGES][9];
 	int npicked = 0;
 	struct wad *w = NULL;
@@ -125,18 +154,23 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 	int rc, i;
 
 	rc = wad_new(&w);
+	/* Mapped, not read: the file's pages stay the page cache's (never
+	 * private memory), and only the lumps used are read from disk. */
 	for (i = 0; rc == 0 && i < s->nwads; i++) {
-		size_t len = 0;
-		rc = ct_read_file(s->wads[i], &bufs[i], &len);
+		rc = io_map_file(s->wads[i], CT_FILE_MAX, &bufs[i], &lens[i]);
 		if (rc < 0)
 			snprintf(err, errlen, "%s: %s", s->wads[i], strerror(-rc));
 		else
-			rc = wad_add(w, bufs[i], len, s->wads[i], err, errlen);
+			rc = wad_add(w, bufs[i], lens[i], s->wads[i], err, errlen);
 		if (rc == 0)
 			rc = ct_stopped(s, err, errlen);
 	}
-	if (rc == 0)
+	/* Wall textures are composed once the maps say which they show (a
+	 * grid level names its textures later: it gets them all). */
+	if (rc == 0 && s->grid)
 		rc = tex_load_wad_lim(w, stop, &c->tex, err, errlen);
+	else if (rc == 0)
+		rc = tex_load_wad_names(w, stop, &c->tex, err, errlen);
 	if (rc == 0) {
 		/* the WADs' sounds (copied out: the images go below) */
 		rc = snd_load_wad(w, &c->sounds, c->sound_note, sizeof(c->sound_note));
@@ -168,6 +202,10 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 		if (rc == 0) {
 			/* one sky, the first map's (Doom changes it per episode) */
 			tex_pick_sky(c->tex, name);
+			if (!s->grid)
+				rc = ct_compose(c, w, stop, err, errlen);
+		}
+		if (rc == 0) {
 			snprintf(c->what, sizeof(c->what), "%s%s %s", s->wads[s->nwads - 1],
 				 s->nwads > 1 ? " (layered)" : "", s->grid ? "textures" : name);
 			if (c->nmaps > 1) {
@@ -177,11 +215,11 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 			}
 		}
 	}
-	/* The texture set and the map copy what they need: the file images
-	 * can go now (28 MiB for Freedoom 2). */
+	/* The texture set, the sounds and the maps copied what they need: the
+	 * mappings can go now. */
 	wad_free(w);
 	for (i = 0; i < CT_MAX_WADS; i++)
-		free(bufs[i]);
+		io_unmap_file(bufs[i], lens[i]);
 	return rc;
 }
 

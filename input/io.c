@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <stdlib.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -123,4 +124,46 @@ int io_read_file(const char *path, size_t max, int flags, uint8_t **buf, size_t 
 		ret = io_read_fd(fd, max, buf, len);
 	close(fd);
 	return ret;
+}
+
+int io_map_file(const char *path, size_t max, const uint8_t **buf, size_t *len)
+{
+	struct stat sb;
+	void *p;
+	int fd, ret = 0;
+
+	*buf = NULL;
+	*len = 0;
+	fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+	if (fd < 0)
+		return -errno;
+	if (fstat(fd, &sb) < 0)
+		ret = -errno;
+	else if (S_ISDIR(sb.st_mode))
+		ret = -EISDIR;
+	else if (!S_ISREG(sb.st_mode))
+		ret = -EINVAL;
+	else if ((uint64_t)sb.st_size > (uint64_t)max || (uint64_t)sb.st_size > SIZE_MAX / 2)
+		ret = -EFBIG;
+	if (ret == 0) {
+		size_t n = (size_t)sb.st_size;
+
+		/* an empty file: a zero page stands in, so callers see a buffer */
+		p = n ? mmap(NULL, n, PROT_READ, MAP_PRIVATE, fd, 0)
+		      : mmap(NULL, 1, PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+		if (p == MAP_FAILED) {
+			ret = -errno;
+		} else {
+			*buf = p;
+			*len = n;
+		}
+	}
+	close(fd);
+	return ret;
+}
+
+void io_unmap_file(const uint8_t *buf, size_t len)
+{
+	if (buf)
+		munmap((void *)(uintptr_t)buf, len ? len : 1);
 }

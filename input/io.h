@@ -35,6 +35,22 @@ int io_read_fd(int fd, size_t max, uint8_t **buf, size_t *len);
  * IO_REGULAR or 0. A missing file is -ENOENT. */
 int io_read_file(const char *path, size_t max, int flags, uint8_t **buf, size_t *len);
 
+/* Maps the regular file at path read-only (PROT_READ, MAP_PRIVATE) for
+ * the big files the loaders only read (WADs): its pages are the page
+ * cache's, shared and clean, so they are never the process's private
+ * memory, and only the lumps read are brought in. At most max bytes
+ * (-EFBIG past it); a directory is -EISDIR, anything else but a regular
+ * file -EINVAL, a missing file -ENOENT; an empty file maps to a
+ * one-byte private zero page with *len 0 (mmap refuses length 0).
+ * Returns 0 with *buf and *len, or -errno with *buf NULL. Release with
+ * io_unmap_file(*buf, *len). A file truncated by another process while
+ * mapped raises SIGBUS on the lost pages: map only for as long as the
+ * load takes. */
+int io_map_file(const char *path, size_t max, const uint8_t **buf, size_t *len);
+
+/* Unmaps what io_map_file mapped (buf NULL: nothing). */
+void io_unmap_file(const uint8_t *buf, size_t len);
+
 /* Writes the n bytes at p to fd, however many write() calls it takes
  * (EINTR retried). 0, or -errno (-EIO when write makes no progress). */
 int io_write_all(int fd, const void *p, size_t n);

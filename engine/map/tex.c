@@ -300,6 +300,49 @@ int tex_switch_partner(const struct tex_set *t, uint16_t num)
 	return i > 0 ? i : 0;
 }
 
+void tex_want_map(const struct tex_set *t, const struct map *m, uint8_t *want)
+{
+	int n = t->num_textures;
+
+	for (uint32_t i = 0; i < m->num_sides; i++) {
+		const uint16_t *side[3] = { &m->sides[i].top_tex, &m->sides[i].mid_tex,
+					    &m->sides[i].bot_tex };
+
+		for (int k = 0; k < 3; k++) {
+			if (*side[k] == 0 || *side[k] >= n)
+				continue;
+			want[*side[k]] = 1;
+			want[tex_switch_partner(t, *side[k])] = 1;
+		}
+	}
+	if (t->sky_tex > 0 && t->sky_tex < n)
+		want[t->sky_tex] = 1;
+	/* an animation shows every member in turn */
+	for (int a = 0; a < t->num_anims; a++) {
+		const struct tex_anim *an = &t->anims[a];
+		int any = 0;
+
+		if (an->flat || an->first + an->count > n)
+			continue;
+		for (int k = 0; k < an->count; k++)
+			any |= want[an->first + k];
+		for (int k = 0; any && k < an->count; k++)
+			want[an->first + k] = 1;
+	}
+	want[0] = 0;
+}
+
+void tex_want_sprite(const struct tex_set *t, const char *name, uint8_t *want_pics)
+{
+	int i = tex_find_sprite(t, name);
+
+	if (i < 0)
+		return;
+	for (int f = 0; f < t->sprites[i].num_frames; f++)
+		for (int r = 0; r < 8; r++)
+			want_pics[t->sprites[i].frames[f].pic[r]] = 1;
+}
+
 int tex_map_heights(const struct tex_set *t, struct map *m)
 {
 	uint16_t *h = calloc(t->num_textures > 0 ? (size_t)t->num_textures : 1, sizeof(*h));

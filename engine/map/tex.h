@@ -129,6 +129,41 @@ int tex_load_wad_lim(const struct wad *w, const struct lim_stop *stop, struct te
 		     char *err, size_t errlen);
 int tex_load_wad(const struct wad *w, struct tex_set **out, char *err, size_t errlen);
 
+/* tex_load_wad_lim, but the wall textures and sprite pictures are not
+ * decoded: each has its name and size (and a sprite its offsets: all
+ * tex_find, tex_map_heights, the sprite frames and the map loader need)
+ * and no pixels, so tex_wall_index and tex_sprite_pic say it cannot be
+ * drawn until tex_compose makes it. All of Freedoom 1's 900 textures
+ * take 14 MiB and its 850 sprite pictures 9 MiB; a map shows 50 to 150
+ * textures and a few dozen sprites. The loader that knows its maps only
+ * after resolving their names against the set loads the names, then the
+ * maps, then composes what tex_want_map and tex_want_sprite mark. Flats
+ * (4 KiB each) are read whole. */
+int tex_load_wad_names(const struct wad *w, const struct lim_stop *stop, struct tex_set **out,
+		       char *err, size_t errlen);
+
+/* Marks in want (t->num_textures bytes, set to 1) the wall textures map m
+ * can show: its sides' textures, their switch partners (a switch shows the
+ * other when pressed), every member of a wall animation any of them is
+ * in, and t->sky_tex (pick the sky first). Never marks texture 0. */
+void tex_want_map(const struct tex_set *t, const struct map *m, uint8_t *want);
+
+/* Marks in want_pics (t->num_sprpics bytes, set to 1) every picture of
+ * the sprite called name (4 characters, "POSS"): each frame and rotation.
+ * An unknown name marks nothing. */
+void tex_want_sprite(const struct tex_set *t, const char *name, uint8_t *want_pics);
+
+/* Composes the textures marked in want, and the sprite pictures marked in
+ * spr_want (NULL: none), that have no pixels yet, from w: the WADs t was
+ * loaded from by tex_load_wad_names (-EINVAL with err naming TEXTURE1 or
+ * S_START when their lists do not number the same textures or pictures).
+ * What tex_load_wad_lim does for one picture happens here: a bad one
+ * becomes the checker, counted in missing; the step count and the stop
+ * hook give -E2BIG or -ECANCELED with err naming the lump. What is left
+ * unmarked stays without pixels (the renderers skip it). */
+int tex_compose(struct tex_set *t, const struct wad *w, const uint8_t *want,
+		const uint8_t *spr_want, const struct lim_stop *stop, char *err, size_t errlen);
+
 /* The project's own procedural set: palette, colormaps, textures, flats,
  * sky and sprites, made by code. 0 or -ENOMEM. */
 int tex_builtin(struct tex_set **out);

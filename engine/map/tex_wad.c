@@ -45,6 +45,9 @@ struct tw {
 	int *patches;                  /* PNAMES entry -> lump, -1 if none */
 	int num_patches;
 	uint8_t check_a, check_b;      /* fallback colours */
+	int defer;                     /* textures, sprites: names and sizes only */
+	const uint8_t *spr_want;       /* tex_compose: sprite pictures to decode */
+	int spr_k;                     /* tex_compose: the picture the range is at */
 	char *err;
 	size_t errlen;
 };
@@ -231,6 +234,30 @@ fallback:
 	return tex_pic_checker(p, name, w, h, c->check_a, c->check_b);
 }
 
+/* Texture entry k of list `list` described in p without its pixels (a
+ * deferred set, tex_load_wad_names): the name and the size tw_texture
+ * would give it, px NULL. A bad entry gets the checker's size, as there. */
+static void tw_texture_meta(struct tw *c, struct tex_pic *p, int list, int k)
+{
+	const uint8_t *d = c->tl[list];
+	size_t len = c->tlen[list];
+	int32_t ofs = le_s32(d + 4 + 4 * (size_t)k);
+	char name[9] = "";
+	int w = TEX_CHECKER_SIDE, h = TEX_CHECKER_SIDE;
+
+	memset(p, 0, sizeof *p);
+	if (ofs >= 0 && (uint64_t)ofs + 22 <= len) {
+		memcpy(name, d + ofs, 8);
+		w = le_s16(d + ofs + 12);
+		h = le_s16(d + ofs + 14);
+		if (w <= 0 || h <= 0 || w > TEX_MAX_SIDE || h > TEX_MAX_SIDE)
+			w = h = TEX_CHECKER_SIDE;
+	}
+	tex_name(p->name, name);
+	p->w = (int16_t)w;
+	p->h = (int16_t)h;
+}
+
 static int tw_flat_start(const char *n)
 {
 	return strcmp(n, "F_START") == 0 || strcmp(n, "FF_START") == 0;
@@ -310,10 +337,12 @@ static int tw_flat(struct tw *c, int lump)
 	return 0;
 }
 
-static int tw_sprite(struct tw *c, int lump)
+/* Sprite lump `lump` into p: decoded, or in a deferred set only its name,
+ * size and offsets (px NULL) when its header is good; a bad header or a
+ * picture over budget is the 8x8 checker, counted. */
+static int tw_sprite_pic(struct tw *c, struct tex_pic *p, int lump)
 {
 	struct tex_set *t = c->t;
-	struct tex_pic *p = &t->sprpics[t->num_sprpics];
 	size_t len;
 	const uint8_t *d = wad_data(c->w, lump, &len);
 	const char *name = wad_name(c->w, lump);
@@ -321,6 +350,14 @@ static int tw_sprite(struct tw *c, int lump)
 
 	if (tex_pic_header(d, len, &w, &h, &left, &top)) {
 		r = -EINVAL;
+	} else if (c->defer) {
+		memset(p, 0, sizeof *p);
+		tex_name(p->name, name);
+		p->w = (int16_t)w;
+		p->h = (int16_t)h;
+		p->left = (int16_t)left;
+		p->top = (int16_t)top;
+		return 0;
 	} else {
 		r = tex_pic_new(p, name, w, h, &c->budget);
 		if (r == -ENOMEM)
@@ -341,8 +378,31 @@ static int tw_sprite(struct tw *c, int lump)
 		p->left = (int16_t)left;
 		p->top = (int16_t)top;
 	}
-	t->num_sprpics++;
 	return 0;
+}
+
+static int tw_sprite(struct tw *c, int lump)
+{
+	int r = tw_sprite_pic(c, &c->t->sprpics[c->t->num_sprpics], lump);
+
+	if (r == 0)
+		c->t->num_sprpics++;
+	return r;
+}
+
+/* tex_compose's walk over the sprite lumps, in tw_sprite's order: decodes
+ * picture spr_k when it is wanted and has no pixels yet. */
+static int tw_sprite_compose(struct tw *c, int lump)
+{
+	int k = c->spr_k++;
+	struct tex_pic *p;
+
+	if (k >= c->t->num_sprpics)
+		return 0;
+	p = &c->t->sprpics[k];
+	if (!c->spr_want[k] || p->px)
+		return 0;
+	return tw_sprite_pic(c, p, lump);
 }
 
 static int tw_load(struct tw *c, struct pal *pal)
@@ -366,8 +426,12 @@ static int tw_load(struct tw *c, struct pal *pal)
 	/* texture 0, Doom's "-": 1x1, transparent */
 	r = tex_pic_new(&t->textures[0], "-", 1, 1, &c->budget);
 	for (int k = 0, i = 1; !r && k < 2; k++)
-		for (int e = 0; !r && e < c->tcount[k]; e++)
-			r = tw_texture(c, &t->textures[i++], k, e);
+		for (int e = 0; !r && e < c->tcount[k]; e++) {
+			if (c->defer)
+				tw_texture_meta(c, &t->textures[i++], k, e);
+			else
+				r = tw_texture(c, &t->textures[i++], k, e);
+		}
 	if (r)
 		return r;
 	t->fallback_tex = ntex - 1;
@@ -405,22 +469,29 @@ int tex_load_wad(const struct wad *w, struct tex_set **out, char *err, size_t er
 	return tex_load_wad_lim(w, NULL, out, err, errlen);
 }
 
-int tex_load_wad_lim(const struct wad *w, const struct lim_stop *stop, struct tex_set **out,
-		     char *err, size_t errlen)
+static void tw_init(struct tw *c, const struct wad *w, const struct lim_stop *stop, char *err,
+		    size_t errlen)
+{
+	memset(c, 0, sizeof *c);
+	c->w = w;
+	lim_init(&c->lim, stop, TEX_MAX_STEPS);
+	c->budget = TEX_BUDGET;
+	c->err = err;
+	c->errlen = errlen;
+	if (err && errlen)
+		err[0] = '\0';
+}
+
+static int tw_load_set(const struct wad *w, const struct lim_stop *stop, int defer,
+		       struct tex_set **out, char *err, size_t errlen)
 {
 	struct tw c;
 	struct pal pal;
 	int r;
 
 	*out = NULL;
-	memset(&c, 0, sizeof c);
-	c.w = w;
-	lim_init(&c.lim, stop, TEX_MAX_STEPS);
-	c.budget = TEX_BUDGET;
-	c.err = err;
-	c.errlen = errlen;
-	if (err && errlen)
-		err[0] = '\0';
+	tw_init(&c, w, stop, err, errlen);
+	c.defer = defer;
 	r = tw_palette(&c, &pal);
 	if (!r)
 		r = tw_lists(&c);
@@ -433,4 +504,55 @@ int tex_load_wad_lim(const struct wad *w, const struct lim_stop *stop, struct te
 	}
 	*out = c.t;
 	return 0;
+}
+
+int tex_load_wad_lim(const struct wad *w, const struct lim_stop *stop, struct tex_set **out,
+		     char *err, size_t errlen)
+{
+	return tw_load_set(w, stop, 0, out, err, errlen);
+}
+
+int tex_load_wad_names(const struct wad *w, const struct lim_stop *stop, struct tex_set **out,
+		       char *err, size_t errlen)
+{
+	return tw_load_set(w, stop, 1, out, err, errlen);
+}
+
+int tex_compose(struct tex_set *t, const struct wad *w, const uint8_t *want,
+		const uint8_t *spr_want, const struct lim_stop *stop, char *err, size_t errlen)
+{
+	struct tw c;
+	int r;
+
+	tw_init(&c, w, stop, err, errlen);
+	c.t = t;
+	c.check_a = pal_nearest(&t->pal, 255, 0, 255);
+	c.check_b = pal_nearest(&t->pal, 0, 0, 0);
+	r = tw_lists(&c);
+	/* the set's textures 1.. are TEXTURE1's then TEXTURE2's entries, as
+	 * tw_load numbered them: the same WADs give the same lists */
+	if (!r && 1 + c.tcount[0] + c.tcount[1] + 1 != t->num_textures)
+		r = tw_fail(&c, "TEXTURE1", "not the lists the set was loaded from: ",
+			    (int64_t)c.tcount[0] + c.tcount[1], -1);
+	for (int i = 1; !r && i < t->num_textures - 1; i++) {
+		int k = i - 1 < c.tcount[0] ? 0 : 1;
+
+		if (!want[i] || t->textures[i].px)
+			continue;
+		r = tw_texture(&c, &t->textures[i], k, k ? i - 1 - c.tcount[0] : i - 1);
+	}
+	if (!r && spr_want) {
+		int n;
+
+		c.spr_want = spr_want;
+		c.spr_k = 1;
+		n = tw_range(&c, tw_spr_start, tw_spr_end, tw_sprite_compose);
+		if (n < 0)
+			r = n;             /* err names the lump (tw_over) */
+		else if (c.spr_k != t->num_sprpics)
+			r = tw_fail(&c, "S_START", "not the sprites the set was loaded from: ",
+				    c.spr_k - 1, -1);
+	}
+	free(c.patches);
+	return r;
 }

@@ -23,6 +23,16 @@
 #define R_DEATH_TICKS 6                /* ticks per frame of a death */
 #define R_PUFF_TICKS 8
 
+/* Sprites drawn whatever the map's things are: the stand-ins for a thing
+ * whose own sprite the set lacks, and the shot's puff and blood. */
+#define R_STANDIN_ENEMY "POSS"
+#define R_STANDIN_HEALTH "MEDI"
+#define R_STANDIN_PICKUP "CLIP"
+#define R_STANDIN_LIGHT "COLU"
+#define R_STANDIN_DECOR "BAR1"
+#define R_SPR_PUFF "PUFF"
+#define R_SPR_BLOOD "BLUD"
+
 struct r_out {
 	const struct tex_set *t;
 	struct r_sprite *out;
@@ -71,7 +81,7 @@ static void r_put_enemy(struct r_out *o, const struct g_enemy *e)
 	int spr, frame = 0, bright = 0, need = 0;
 
 	g_thing_info(e->type, &ti);
-	spr = r_sprite_index(o->t, ti.sprite, "POSS");
+	spr = r_sprite_index(o->t, ti.sprite, R_STANDIN_ENEMY);
 	switch (e->state) {
 	case G_E_CHASE:
 		frame = ti.frames ? e->anim / R_ANIM % ti.frames : 0;
@@ -112,7 +122,7 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite
 		g_thing_info(p->type, &ti);
 		/* on its floor as it is now (a lift carries it) */
 		r_put(&o, p->x, p->y, s->w.sec[map_point_sector(m, p->x, p->y)].floor_h, 0,
-		      r_sprite_index(t, ti.sprite, p->kind == G_P_HEALTH ? "MEDI" : "CLIP"),
+		      r_sprite_index(t, ti.sprite, p->kind == G_P_HEALTH ? R_STANDIN_HEALTH : R_STANDIN_PICKUP),
 		      ti.stand + (ti.frames > 1 ? (int)(s->tick / R_ANIM % ti.frames) : 0),
 		      ti.bright, 0);
 	}
@@ -123,12 +133,12 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite
 		if ((ti.cls != G_C_LIGHT && ti.cls != G_C_DECOR) || !ti.sprite[0])
 			continue;
 		r_put(&o, th->x, th->y, s->w.sec[map_point_sector(m, th->x, th->y)].floor_h,
-		      th->angle, r_sprite_index(t, ti.sprite, ti.cls == G_C_LIGHT ? "COLU" : "BAR1"),
+		      th->angle, r_sprite_index(t, ti.sprite, ti.cls == G_C_LIGHT ? R_STANDIN_LIGHT : R_STANDIN_DECOR),
 		      ti.stand + (ti.frames > 1 ? (int)(s->tick / R_ANIM % ti.frames) : 0),
 		      ti.bright, 0);
 	}
 	if ((s->g.shot == G_SHOT_WALL || s->g.shot == G_SHOT_ENEMY) && s->g.shot_t < R_PUFF_TICKS) {
-		int spr = tex_find_sprite(t, s->g.shot == G_SHOT_WALL ? "PUFF" : "BLUD");
+		int spr = tex_find_sprite(t, s->g.shot == G_SHOT_WALL ? R_SPR_PUFF : R_SPR_BLOOD);
 		if (spr >= 0)
 			r_put(&o, s->g.shot_x, s->g.shot_y, s->g.shot_z - 8 * FX_ONE, 0, spr,
 			      s->g.shot_t / 2, s->g.shot == G_SHOT_WALL, 1);
@@ -242,4 +252,21 @@ void r_game_view(const struct sim *s, struct r_view *v)
 	v->z = s->pl.viewz;
 	v->angle = s->pl.angle;
 	v->shear = 0;
+}
+
+void r_game_want(const struct tex_set *t, const struct map *m, uint8_t *want_pics)
+{
+	static const char fixed[][5] = { R_STANDIN_ENEMY, R_STANDIN_HEALTH, R_STANDIN_PICKUP,
+					 R_STANDIN_LIGHT, R_STANDIN_DECOR, R_SPR_PUFF,
+					 R_SPR_BLOOD };
+
+	for (size_t i = 0; i < sizeof(fixed) / sizeof(fixed[0]); i++)
+		tex_want_sprite(t, fixed[i], want_pics);
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		struct g_thing_info ti;
+
+		g_thing_info(m->things[i].type, &ti);
+		if (ti.sprite[0])
+			tex_want_sprite(t, ti.sprite, want_pics);
+	}
 }

@@ -52,6 +52,12 @@ void r_game_view(const struct sim *s, struct r_view *v);
  * t is NULL). */
 int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite *out, int max);
 
+/* Marks in want_pics (tex_want_sprite) every sprite r_game_sprites may
+ * draw on map m: each thing's own sprite (enemies and pickups come only
+ * from the map's things) and the fixed stand-ins, puff and blood. For a
+ * set loaded by tex_load_wad_names. */
+void r_game_want(const struct tex_set *t, const struct map *m, uint8_t *want_pics);
+
 /* The most sprites r_game_sprites can produce for a sim on map m: enemies,
  * pickups, the map's things and the puff. */
 #define R_GAME_SPRITES_MAX(m) (G_MAX_ENEMIES + G_MAX_PICKUPS + (int)(m)->num_things + 1)

@@ -169,13 +169,22 @@ static int hud_weapon_frame(const struct sim *s)
 	return t < 3 ? 1 : t < 6 ? 2 : t < 9 ? 3 : t < G_REFIRE ? 4 : 0;
 }
 
+#define HUD_GUN "PISG"
+#define HUD_FLASH "PISF"
+
+void hud_want(const struct tex_set *t, uint8_t *want_pics)
+{
+	tex_want_sprite(t, HUD_GUN, want_pics);
+	tex_want_sprite(t, HUD_FLASH, want_pics);
+}
+
 /* The texture set's pistol (Doom's PISG frames A..E and flash PISF),
  * placed as Doom places weapon sprites on its 320x200 screen. Returns 0
  * when the set has none. */
 static int hud_weapon_pics(const struct sim *s, const struct tex_set *t, struct r_frame *f,
 			   int bottom)
 {
-	int g = t ? tex_find_sprite(t, "PISG") : -1, fl = t ? tex_find_sprite(t, "PISF") : -1;
+	int g = t ? tex_find_sprite(t, HUD_GUN) : -1, fl = t ? tex_find_sprite(t, HUD_FLASH) : -1;
 	int frame = hud_weapon_frame(s), ws = f->h / 200 < 1 ? 1 : f->h / 200;
 	int ox = (f->w - 320 * ws) / 2, oy = bottom - 168 * ws;
 	const struct tex_sprite *sp;
@@ -185,7 +194,9 @@ static int hud_weapon_pics(const struct sim *s, const struct tex_set *t, struct 
 	sp = &t->sprites[g];
 	if (frame >= sp->num_frames)
 		frame = 0;
-	if (sp->num_frames < 1)
+	/* a set loaded for its maps decodes the gun (hud_want); without
+	 * pixels, the project's own pistol is drawn instead */
+	if (sp->num_frames < 1 || !t->sprpics[sp->frames[frame].pic[0]].px)
 		return 0;
 	{
 		const struct tex_pic *p = &t->sprpics[sp->frames[frame].pic[0]];

@@ -70,6 +70,10 @@ int hud_world(const struct sim *s);
  * and its hud_draw first. */
 void hud_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f);
 
+/* Marks in want_pics (tex_want_sprite) the sprites the HUD draws: the
+ * weapon and its flash. For a set loaded by tex_load_wad_names. */
+void hud_want(const struct tex_set *t, uint8_t *want_pics);
+
 /* Text scale for a frame: 1 per 240 lines (and per 320 columns), at least 1. */
 int hud_scale(const struct r_frame *f);
 

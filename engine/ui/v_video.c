@@ -342,6 +342,8 @@ int v_num(char *buf, int len, uint64_t v, int width, char pad)
 
 void v_pic(struct r_frame *f, const struct tex_pic *p, int x, int y, int scale)
 {
+	if (!p->px)
+		return;
 	if (scale < 1)
 		scale = 1;
 	if (scale > 64)

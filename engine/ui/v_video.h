@@ -73,7 +73,8 @@ int v_glyph_bit(char ch, int x, int y);
 int v_num(char *buf, int len, uint64_t v, int width, char pad);
 
 /* A picture (tex_pic: column-major, transparent where opaque says 0) with
- * its top left at (x, y), each pixel scale x scale (1..64). */
+ * its top left at (x, y), each pixel scale x scale (1..64); a picture
+ * without pixels (not decoded: tex_load_wad_names) draws nothing. */
 void v_pic(struct r_frame *f, const struct tex_pic *p, int x, int y, int scale);
 
 #endif

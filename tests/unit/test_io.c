@@ -193,6 +193,50 @@ static void sizeless_files_and_the_fd_position(void **state)
 
 /* Every byte is written (read back whole); the device's or the fd's
  * error comes back as -errno. */
+/* io_map_file: the file's bytes, read-only; an empty file is a buffer of
+ * length 0; max bytes are fine and one more is -EFBIG; a directory, a
+ * FIFO (without blocking) and a missing file are refused with no buffer. */
+static void a_file_is_mapped_whole_or_refused(void **state)
+{
+	struct dir d;
+	char p[128], q[128], fifo[160];
+	const uint8_t *b;
+	size_t len;
+
+	(void)state;
+	dir_make(&d);
+	file_make(&d, "a", 100000, p, sizeof(p));
+	assert_int_equal(io_map_file(p, 100000, &b, &len), 0);
+	assert_int_equal(len, 100000);
+	for (size_t i = 0; i < len; i++)
+		if (b[i] != ((i * 7) & 255))
+			fail_msg("byte %zu is %u", i, b[i]);
+	io_unmap_file(b, len);
+	b = (const uint8_t *)"x";
+	assert_int_equal(io_map_file(p, 99999, &b, &len), -EFBIG);
+	assert_null(b);
+	file_make(&d, "empty", 0, q, sizeof(q));
+	assert_int_equal(io_map_file(q, 10, &b, &len), 0);
+	assert_non_null(b);
+	assert_int_equal(len, 0);
+	io_unmap_file(b, len);
+	assert_int_equal(io_map_file(d.path, 10, &b, &len), -EISDIR);
+	assert_null(b);
+	snprintf(fifo, sizeof(fifo), "%s/fifo", d.path);
+	assert_int_equal(mkfifo(fifo, 0600), 0);
+	assert_int_equal(io_map_file(fifo, 10, &b, &len), -EINVAL);
+	assert_null(b);
+	snprintf(fifo, sizeof(fifo), "%s/none", d.path);
+	assert_int_equal(io_map_file(fifo, 10, &b, &len), -ENOENT);
+	assert_null(b);
+	io_unmap_file(NULL, 0);
+	unlink(p);
+	unlink(q);
+	snprintf(fifo, sizeof(fifo), "%s/fifo", d.path);
+	unlink(fifo);
+	rmdir(d.path);
+}
+
 static void write_all_writes_everything_or_says_why(void **state)
 {
 	static uint8_t data[300000];
@@ -232,6 +276,7 @@ int main(void)
 		cmocka_unit_test(a_fifo_is_refused_without_blocking),
 		cmocka_unit_test(a_pipe_is_read_to_its_end_within_max),
 		cmocka_unit_test(sizeless_files_and_the_fd_position),
+		cmocka_unit_test(a_file_is_mapped_whole_or_refused),
 		cmocka_unit_test(write_all_writes_everything_or_says_why),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -14,6 +14,7 @@
 #include <cmocka.h>
 
 #include "engine/core/lim.h"
+#include "engine/map/map.h"
 #include "engine/map/tex.h"
 #include "engine/map/wad.h"
 #include "hostile_fixture.h"
@@ -353,6 +354,157 @@ static void pwad_overrides_a_texture_and_a_flat(void **state)
 	free(pw);
 }
 
+/* Deferred composition (tex_load_wad_names, tex_want_map, tex_compose):
+ * the names and sizes are the full load's, no wall texture has pixels
+ * until composed, and a composed one is the full load's exactly. */
+static void deferred_set_composes_what_the_map_shows(void **state)
+{
+	struct fx f = load_fixture(1);
+	struct tex_set *d;
+	struct map m;
+	struct map_side sides[2];
+	struct tex_anim anim, *anims;
+	uint8_t want[16] = { 0 };
+	char err[160];
+	int two, neg, missp, nanims;
+
+	(void)state;
+	assert_int_equal(tex_load_wad_names(f.w, NULL, &d, err, sizeof err), 0);
+	assert_int_equal(d->num_textures, f.t->num_textures);
+	assert_true(d->num_textures <= (int)sizeof want);
+	for (int i = 1; i < d->num_textures - 1; i++) {
+		assert_string_equal(d->textures[i].name, f.t->textures[i].name);
+		assert_int_equal(d->textures[i].w, f.t->textures[i].w);
+		assert_int_equal(d->textures[i].h, f.t->textures[i].h);
+		assert_null(d->textures[i].px);
+		assert_int_equal(tex_wall_index(d, (uint16_t)i), -1);
+	}
+	/* the fallback and texture 0 are there at once */
+	assert_int_equal(tex_wall_index(d, (uint16_t)d->fallback_tex), d->fallback_tex);
+	assert_int_equal(tex_wall_index(d, 0), 0);
+	assert_int_equal(d->missing, 15);             /* sprite rotations only */
+
+	/* a map whose sides show TWO (top), MISSP (bottom), an out-of-range
+	 * number and nothing; BFALL1 is in an animation with BFALL2 */
+	two = tex_find(d, "TWO");
+	neg = tex_find(d, "NEG");
+	missp = tex_find(d, "MISSP");
+	memset(&m, 0, sizeof m);
+	memset(sides, 0, sizeof sides);
+	sides[0].top_tex = (uint16_t)two;
+	sides[0].bot_tex = (uint16_t)missp;
+	sides[1].mid_tex = (uint16_t)tex_find(d, "BFALL1");
+	sides[1].top_tex = 999;
+	m.sides = sides;
+	m.num_sides = 2;
+	anim.flat = 0;
+	anim.first = (uint16_t)tex_find(d, "BFALL1");
+	anim.count = 2;
+	anims = d->anims;
+	nanims = d->num_anims;
+	d->anims = &anim;
+	d->num_anims = 1;
+	tex_want_map(d, &m, want);
+	d->anims = anims;
+	d->num_anims = nanims;
+	for (int i = 0; i < d->num_textures; i++)
+		assert_int_equal(want[i], i == two || i == missp || i == anim.first ||
+						  i == anim.first + 1 || i == d->sky_tex);
+
+	assert_int_equal(tex_compose(d, f.w, want, NULL, NULL, err, sizeof err), 0);
+	assert_int_equal(tex_wall_index(d, (uint16_t)two), two);
+	assert_memory_equal(d->textures[two].px, f.t->textures[two].px, 8 * 8);
+	assert_memory_equal(d->textures[two].opaque, f.t->textures[two].opaque, 8 * 8);
+	/* MISSP's patch is missing: the checker, counted as in a full load */
+	assert_memory_equal(d->textures[missp].px, f.t->textures[missp].px, 8 * 8);
+	assert_int_equal(d->missing, 15 + 1);
+	/* not shown by the map: still without pixels */
+	assert_null(d->textures[neg].px);
+	assert_int_equal(tex_wall_index(d, (uint16_t)neg), -1);
+	/* composing again changes nothing */
+	assert_int_equal(tex_compose(d, f.w, want, NULL, NULL, err, sizeof err), 0);
+	assert_int_equal(d->missing, 15 + 1);
+	tex_free(d);
+	unload(&f);
+}
+
+/* Deferred sprites: every picture has its name, size and offsets and no
+ * pixels (the renderers' lookup says it cannot be drawn) until a wanted
+ * sprite's pictures are decoded, exactly as a full load decodes them. */
+static void deferred_sprites_are_decoded_when_wanted(void **state)
+{
+	struct fx f = load_fixture(1);
+	struct tex_set *d;
+	uint8_t want[16] = { 0 }, spr[16] = { 0 };
+	char err[160];
+	int flip, n = f.t->num_sprpics;
+
+	(void)state;
+	assert_int_equal(tex_load_wad_names(f.w, NULL, &d, err, sizeof err), 0);
+	assert_int_equal(d->num_sprpics, n);
+	assert_true(n <= (int)sizeof spr);
+	for (int i = 1; i < n; i++) {
+		assert_string_equal(d->sprpics[i].name, f.t->sprpics[i].name);
+		assert_int_equal(d->sprpics[i].w, f.t->sprpics[i].w);
+		assert_int_equal(d->sprpics[i].left, f.t->sprpics[i].left);
+		assert_int_equal(d->sprpics[i].top, f.t->sprpics[i].top);
+		assert_null(d->sprpics[i].px);
+	}
+	assert_int_equal(tex_sprite_pic(d, (unsigned)tex_find_sprite(d, "TROO"), 0, 0, &flip), -1);
+	tex_want_sprite(d, "NONE", spr);
+	for (int i = 0; i < n; i++)
+		assert_int_equal(spr[i], 0);
+	tex_want_sprite(d, "TROO", spr);
+	/* TROOA1..A5, B0, D1 are pictures 1..7 (see the rotations test); the
+	 * missing frame C points at picture 0 */
+	for (int i = 1; i < n; i++)
+		assert_int_equal(spr[i], 1);
+	assert_int_equal(tex_compose(d, f.w, want, spr, NULL, err, sizeof err), 0);
+	for (int i = 1; i < n; i++) {
+		const struct tex_pic *a = &d->sprpics[i], *b = &f.t->sprpics[i];
+
+		assert_non_null(a->px);
+		assert_memory_equal(a->px, b->px, (size_t)a->w * (size_t)a->h);
+		if (b->opaque)
+			assert_memory_equal(a->opaque, b->opaque, (size_t)a->w * (size_t)a->h);
+	}
+	assert_int_equal(tex_sprite_pic(d, (unsigned)tex_find_sprite(d, "TROO"), 0, 0, &flip),
+			 tex_sprite_pic(f.t, (unsigned)tex_find_sprite(f.t, "TROO"), 0, 0, &flip));
+	tex_free(d);
+	unload(&f);
+}
+
+/* tex_compose refuses WADs whose texture lists number other textures than
+ * the set's (a PWAD's TEXTURE1 added after the set was loaded). */
+static void deferred_set_refuses_other_lists(void **state)
+{
+	struct fx f = load_fixture(1);
+	struct tex_set *d;
+	struct wfix b;
+	struct wbuf l = { 0 };
+	uint8_t *pw, want[16];
+	size_t len;
+	char err[160];
+	static const int one[1][3] = { { 0, 0, 0 } };
+
+	(void)state;
+	assert_int_equal(tex_load_wad_names(f.w, NULL, &d, err, sizeof err), 0);
+	wf_init(&b);
+	wb_32(&l, 1);
+	wb_32(&l, 8);
+	wfx_texdef(&l, "SOLID", 2, 2, 1, one);
+	wf_lumpb(&b, "TEXTURE1", &l);
+	pw = wf_finish(&b, "PWAD", &len);
+	assert_int_equal(wad_add(f.w, pw, len, "p.wad", err, sizeof err), 0);
+	memset(want, 1, sizeof want);
+	assert_int_equal(tex_compose(d, f.w, want, NULL, NULL, err, sizeof err), -EINVAL);
+	assert_non_null(strstr(err, "TEXTURE1"));
+	assert_null(d->textures[1].px);
+	tex_free(d);
+	unload(&f);
+	free(pw);
+}
+
 /* A graphics WAD whose lump `name` is replaced by n bytes. */
 static int load_with(const char *name, size_t n, char *err, size_t errlen)
 {
@@ -600,6 +752,9 @@ int main(void)
 		cmocka_unit_test(bad_palette_and_lists_are_errors),
 		cmocka_unit_test(no_playpal_is_an_error),
 		cmocka_unit_test(a_texture_past_the_step_limit_is_refused),
+		cmocka_unit_test(deferred_set_composes_what_the_map_shows),
+		cmocka_unit_test(deferred_set_refuses_other_lists),
+		cmocka_unit_test(deferred_sprites_are_decoded_when_wanted),
 		cmocka_unit_test(lookup_by_index_agrees_with_a_scan),
 		cmocka_unit_test(builtin_set_is_complete_and_deterministic),
 		cmocka_unit_test(builtin_set_has_pickups_effects_and_the_pistol),
