@@ -87,7 +87,7 @@ case_() {
 if [ "$PART" != files ]; then
 case_ dag.wad 2 "dag.wad: MAP01: node 1199: child[1] node 1198 is reached a second time: the BSP is not a tree"
 case_ high.wad 2 "high.wad: MAP01: SECTORS entry 0: floor 32730 out of range (+/-16383 units"
-case_ tall.wad 2 "tall.wad: TEXTURE1 entry 0 (HOSTILE): the textures need more than 268435456 steps to compose (limit TEX_MAX_STEPS)"
+case_ tall.wad 2 "tall.wad: TEXTURE1 entry 0 (SOLID): the textures need more than 268435456 steps to compose (limit TEX_MAX_STEPS)"
 case_ cross2004.wad 2 "cross2004.wad: MAP01: NODES (built here): node builder: 2008 lines need more than 268435456 steps (limit NB_MAX_STEPS)"
 case_ cross30004.wad 2 "cross30004.wad: MAP01: NODES (built here): node builder: 30008 lines need more than 268435456 steps (limit NB_MAX_STEPS)"
 case_ lights30000.wad 0 "lights30000.wad: MAP01: THINGS: 30000 lights, more than the limit of 4096 (LMAP_MAX_LIGHTS): drawn without light maps"

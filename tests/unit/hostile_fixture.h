@@ -192,9 +192,10 @@ static inline uint8_t *hf_dag(int nodes, size_t *len)
  * columns wide, all of whose column offsets point at the same column of
  * `posts` one-pixel posts (each continuing the one before, DeePsea style,
  * so all land in row 0). TEXTURE1 (replacing the fixture's) holds one
- * texture, "HOSTILE" (4,096 x 128), made of `patches` copies of TALLP at
+ * texture, "SOLID" (4,096 x 128), made of `patches` copies of TALLP at
  * (0, 0): composing it walks patches x 4,096 x posts posts. MAP01 is the
- * small room. */
+ * small room, whose walls show SOLID (hf_side): a loader that composes
+ * only what its maps show must compose it. */
 static inline uint8_t *hf_tall_texture(int patches, int posts, size_t *len)
 {
 	struct wfix f;
@@ -214,7 +215,7 @@ static inline uint8_t *hf_tall_texture(int patches, int posts, size_t *len)
 	wf_lumpb(&f, "PNAMES", &b);
 	wb_32(&b, 1);
 	wb_32(&b, 8);
-	wb_name(&defs, "HOSTILE");
+	wb_name(&defs, "SOLID");
 	wb_32(&defs, 0);
 	wb_16(&defs, w);
 	wb_16(&defs, 128);

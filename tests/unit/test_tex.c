@@ -601,12 +601,12 @@ static void a_texture_past_the_step_limit_is_refused(void **state)
 	(void)state;
 	img = hf_tall_texture(2000, 6000, &len);
 	assert_int_equal(load_hostile(img, len, &count, err, sizeof err), -E2BIG);
-	assert_string_equal(err, "hostile.wad: TEXTURE1 entry 0 (HOSTILE): the textures need more "
+	assert_string_equal(err, "hostile.wad: TEXTURE1 entry 0 (SOLID): the textures need more "
 				 "than 268435456 steps to compose (limit TEX_MAX_STEPS)");
 	assert_true(steps > TEX_MAX_STEPS && steps < TEX_MAX_STEPS + 10000);
 	img = hf_tall_texture(2000, 6000, &len);
 	assert_int_equal(load_hostile(img, len, &stop, err, sizeof err), -ECANCELED);
-	assert_string_equal(err, "hostile.wad: TEXTURE1 entry 0 (HOSTILE): stopped");
+	assert_string_equal(err, "hostile.wad: TEXTURE1 entry 0 (SOLID): stopped");
 	assert_int_equal(halt.polls, 2);
 	/* 2 patches of 10 one-pixel posts: per patch, a step per column (4,096)
 	 * and per column 10 posts of 2 steps (the post and its pixel); the rest
