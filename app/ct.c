@@ -174,6 +174,7 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 {
 	const uint8_t *bufs[CT_MAX_WADS] = { 0 };
 	size_t lens[CT_MAX_WADS] = { 0 };
+	uint8_t read[CT_MAX_WADS] = { 0 };  /* bufs[i] was read, not mapped */
 	char names[64][9], picked[CT_MAX_STAGES][9];
 	struct ct_lights_job job = { c, stop, 0, "" };
 	pthread_t th;
@@ -187,6 +188,15 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 	 * private memory), and only the lumps used are read from disk. */
 	for (i = 0; rc == 0 && i < s->nwads; i++) {
 		rc = io_map_file(s->wads[i], CT_FILE_MAX, &bufs[i], &lens[i]);
+		if (rc == -ENODEV) {
+			/* a filesystem that cannot map files (some network and
+			 * FUSE ones): read it instead */
+			uint8_t *b = NULL;
+
+			rc = ct_read_file(s->wads[i], &b, &lens[i]);
+			bufs[i] = b;
+			read[i] = 1;
+		}
 		if (rc < 0)
 			snprintf(err, errlen, "%s: %s", s->wads[i], strerror(-rc));
 		else
@@ -260,8 +270,12 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 	/* The texture set, the sounds and the maps copied what they need: the
 	 * mappings can go now. */
 	wad_free(w);
-	for (i = 0; i < CT_MAX_WADS; i++)
-		io_unmap_file(bufs[i], lens[i]);
+	for (i = 0; i < CT_MAX_WADS; i++) {
+		if (read[i])
+			free((void *)(uintptr_t)bufs[i]);
+		else
+			io_unmap_file(bufs[i], lens[i]);
+	}
 	return rc;
 }
 

@@ -243,6 +243,14 @@ else
 	echo "SKIP game.wad/maps with Freedoom: no /usr/share/games/doom/freedoom1.wad (the freedoom package)"
 fi
 wadcase "a missing WAD" "" "game.wad / game.maps: $tmp/none.wad: No such file or directory; playing the built-in levels" "$tmp/none.wad"
+# A file on a filesystem that cannot map files (sysfs says ENODEV, as some
+# network and FUSE ones do) is read instead: the message is about what it
+# holds, not "No such device".
+if [ -r /sys/kernel/profiling ]; then
+	wadcase "a file that cannot be mapped" "" "game.wad / game.maps: /sys/kernel/profiling: shorter than a WAD header" /sys/kernel/profiling
+else
+	echo "SKIP game.wad/maps a file that cannot be mapped: no /sys/kernel/profiling"
+fi
 fi
 
 # ---- hostile files (issue 13 items 10-14) -------------------------------
