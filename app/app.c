@@ -17,6 +17,7 @@
 #include "app/hear.h"
 #include "app/keep.h"
 #include "app/loop.h"
+#include "app/op.h"
 #include "app/out.h"
 #include "app/pace.h"
 #include "app/pspec.h"
@@ -60,6 +61,7 @@ struct app {
 	struct tape tape;          /* --record, --replay, --verify */
 	struct script script;      /* --script (scr NULL: none) */
 	struct stats stats;
+	struct op op;              /* the menu's content, screen and config pages */
 	struct hud_diag diag;      /* the diagnostics page's text (app_diag) */
 	uint8_t diag_page;         /* the page diag was made for, 0 none */
 	uint32_t diag_at;          /* the tick it was made */
@@ -115,6 +117,8 @@ static int step_begin(void *ctx, struct loop_tick *k)
 	}
 	if (sig_summary())
 		app_summary(a);
+	if (a->op.reload)
+		return 0;                  /* the service menu's choice: run again (app/op.h) */
 	if (a->o->ticks && k->t >= a->o->ticks)
 		return 0;
 	if (k->t == a->hang_at || sig_fault())
@@ -151,6 +155,7 @@ static void step_command(void *ctx, struct loop_tick *k)
 
 	if (!a->tape.rep)
 		cmd_build(&a->ctl.cs, &k->rt.cmd);
+	op_command(&a->op, &k->rt.cmd);
 }
 
 static void step_wizard(void *ctx, struct loop_tick *k)
@@ -253,6 +258,8 @@ static void step_requests(void *ctx, struct loop_tick *k)
 	/* CONFIGURE INPUTS: the menu shows its request for one tick */
 	if (a->sim.mode == SIM_SERVICE && a->sim.menu.page == MENU_WIZARD)
 		ctl_wizard_start(&a->ctl, "service menu");
+	op_request(&a->op, &a->sim);
+	a->scene.view.notice = op_notice(&a->op);
 	scene_follow_menu(&a->scene, &a->sim);
 }
 
@@ -293,7 +300,7 @@ static void step_present(void *ctx, struct loop_tick *k)
 	if (scene_poll_display(&a->scene, t0) == SCENE_STILL_MISSING)
 		app_status_no_display(a);
 	scene_show(&a->scene, &a->sim, demo_under(&a->demo, &a->sim),
-		   a->ctl.wiz_on ? &a->ctl.wiz : NULL);
+		   a->ctl.wiz_on ? &a->ctl.wiz : NULL, a->op.on ? &a->op.pick : NULL);
 	stats_presented(&a->stats, t0, in_now_ns(),
 			app_paced(a) ? pace_due(&a->pace, k->t + 1) : 0);
 	app_flips(a);
@@ -407,6 +414,8 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 		/* [game] wad or maps is wrong: the cabinet plays its built-in
 		 * levels rather than not at all, and says why */
 		say_err("game.wad / game.maps: %s; playing the built-in levels", err);
+		if (o->errs)       /* on screen too, as a configuration error */
+			cfgerr_keep(o->errs, "game.wad / game.maps", 0, err);
 		memset(&a->content, 0, sizeof(a->content));
 		a->content.level = c->game.level;
 		a->content.lights = o->content.lights;
@@ -516,6 +525,7 @@ static int setup(struct app *a)
 	stats_init(&a->stats, names, a->nkinds + 1);
 	ctl_load(&a->ctl, c, o->config_dir, o->bindings, !a->headless, persist, &a->stats,
 		 &a->tape);
+	op_init(&a->op, c, o->errs, &a->tape, persist, a->ct.what);
 	slot_init(&a->slots, &ctl_hooks, &a->ctl);
 	a->slots.log_nodes = c->input.log;
 	if (!a->headless)
@@ -605,6 +615,8 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 		a->hang_at = sig_fault_setup();
 		loop_run(&app_steps, a);
 		code = finish(a);
+		if (code == APP_OK && a->op.reload)
+			code = APP_RELOAD;
 	} else if (rc == -ECANCELED && sig_stop()) {
 		code = APP_OK;                 /* stopped by a signal while loading: an ordinary end */
 	}
