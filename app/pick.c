@@ -333,7 +333,7 @@ void pick_draw(const struct pick *p, const struct pal *pal, struct r_frame *f)
 	v_fill(f, 0, 0, f->w, f->h, d.c.black);
 	bottom = f->h - 16 * d.sc;
 	pick_centre(&d, f->h - 12 * d.sc, d.sc, d.c.grey,
-		    p->page == PICK_SCREEN ? "UP/DOWN MOVE  LEFT/RIGHT CHANGE  SERVICE BACK"
+		    p->page == PICK_SCREEN ? "LEFT/RIGHT CHANGE  SERVICE BACK"
 					   : "UP/DOWN MOVE  FIRE SELECT  SERVICE BACK");
 	switch (p->page) {
 	case PICK_CONTENT:

@@ -49,7 +49,7 @@ static const struct hud_diag *diag;   /* the diagnostics text draw() passes */
 
 static void draw(const struct sim *s)
 {
-	struct hud_env env = { &pal, NULL, 0, NULL, diag };
+	struct hud_env env = { &pal, NULL, 0, NULL, diag, NULL };
 	memset(pix, BG, sizeof(pix));
 	hud_draw(s, &env, &frame);
 }
@@ -189,7 +189,7 @@ static void the_score_is_drawn(void **state)
 
 static void hud_is_a_pure_function_of_the_state(void **state)
 {
-	struct hud_env env = { &pal, NULL, 0, NULL, NULL };
+	struct hud_env env = { &pal, NULL, 0, NULL, NULL, NULL };
 	static uint8_t a[W * H];
 	struct sim s;
 	(void)state;
