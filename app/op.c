@@ -137,12 +137,25 @@ static void op_apply(struct op *o)
 	}
 }
 
+/* The sim sees none of cmd but its coins. */
+static void op_take(struct sim_cmd *cmd)
+{
+	cmd->forward = 0;
+	cmd->side = 0;
+	cmd->turn = 0;
+	cmd->buttons = 0;
+}
+
 void op_command(struct op *o, struct sim_cmd *cmd)
 {
 	unsigned held, keys;
 
-	if (!o->on)
+	if (!o->on) {
+		o->swallow &= op_held(cmd);
+		if (o->swallow)
+			op_take(cmd);
 		return;
+	}
 	held = op_held(cmd);
 	keys = held & ~o->held;
 	if (held & (PICK_K_UP | PICK_K_DOWN) & o->held) {
@@ -155,13 +168,11 @@ void op_command(struct op *o, struct sim_cmd *cmd)
 	}
 	o->held = held;
 	/* the sim sees none of it: the menu stays where it was */
-	cmd->forward = 0;
-	cmd->side = 0;
-	cmd->turn = 0;
-	cmd->buttons = 0;
+	op_take(cmd);
 	if (pick_keys(&o->pick, keys) == PICK_RUNNING)
 		return;
 	o->on = 0;
+	o->swallow = held;
 	if (o->pick.status == PICK_CHOSEN)
 		op_apply(o);
 }

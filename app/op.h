@@ -52,6 +52,9 @@ struct op {
 	struct wads wads;           /* CONTENT's packs, scanned when it opens */
 	unsigned held;              /* the controls held last tick (PICK_K_*) */
 	int held_ticks;             /* how long up or down has been held */
+	unsigned swallow;           /* controls held when the page ended: the sim gets
+				     * nothing until they are released (the FIRE that
+				     * chose must not also choose on MAIN) */
 	int acked;                  /* errs acknowledged */
 	int reload;                 /* a choice was applied: the run starts again */
 	char now[80];               /* what plays: shown by CONTENT */
@@ -68,7 +71,8 @@ void op_request(struct op *o, const struct sim *s);
 
 /* Before the sim's tick, after the command was built: while a page runs,
  * its controls are taken from cmd (which keeps only its coins), and a
- * choice made is applied. */
+ * choice made is applied; after it ends, until every control held then is
+ * released, too. */
 void op_command(struct op *o, struct sim_cmd *cmd);
 
 /* The notice for the frame (hud_env.notice): the first configuration

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "app/ct.h"
 #include "engine/render/r_main.h"
 #include "engine/ui/hud.h"
 #include "engine/ui/v_video.h"
@@ -167,7 +168,7 @@ int pick_content_choice(const struct pick *p, char *wad, size_t wlen, char *maps
 	}
 	if (pick_cat(wad, wlen, k->path) < 0)
 		return -ENAMETOOLONG;
-	for (int i = p->start ? p->start - 1 : 0; i < k->nmaps; i++)
+	for (int i = p->start ? p->start - 1 : 0, n = 0; i < k->nmaps && n < CT_MAX_STAGES; i++, n++)
 		if (pick_cat(maps, mlen, k->maps[i]) < 0)
 			break;              /* as many as fit */
 	return 0;

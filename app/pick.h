@@ -83,7 +83,8 @@ enum pick_status pick_keys(struct pick *p, unsigned keys);
 /* CONTENT's choice once PICK_CHOSEN: *wad the WAD files for [game] wad
  * (a PWAD follows the first IWAD found, which gives it its textures and
  * sounds), *maps for [game] maps (the start map and every map after it in
- * the pack's order, as many as fit in mlen; ALL MAPS: every map from the
+ * the pack's order, as many as fit in mlen and at most CT_MAX_STAGES, the
+ * stages a run plays (app/ct.h); ALL MAPS: every map from the
  * first); both "" for the built-in levels. Returns 0, or -ENOENT when
  * there is no choice, -ENAMETOOLONG when the WADs' paths do not fit. */
 int pick_content_choice(const struct pick *p, char *wad, size_t wlen, char *maps, size_t mlen);

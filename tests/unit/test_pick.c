@@ -102,6 +102,33 @@ static void test_a_pwad_follows_the_first_iwad_and_all_maps_lists_them_all(void 
 			 -ENAMETOOLONG);
 }
 
+/* freedoom1.wad has 36 maps; a run plays at most CT_MAX_STAGES (32):
+ * the list stops there rather than have the load refuse it. */
+static void test_all_maps_stops_at_the_stages_a_run_plays(void **state)
+{
+	static struct wads w;
+	struct pick p;
+	char wad[64], maps[256];
+	int words = 0;
+
+	(void)state;
+	two_packs(&w);
+	w.pack[1].nmaps = 36;
+	for (int i = 0; i < 36; i++)
+		snprintf(w.pack[1].maps[i], 9, "E%dM%d", i / 9 + 1, i % 9 + 1);
+	pick_content(&p, &w, NULL);
+	pick_keys(&p, PICK_K_DOWN);
+	pick_keys(&p, PICK_K_DOWN);
+	pick_keys(&p, PICK_K_FIRE);
+	assert_int_equal(pick_keys(&p, PICK_K_FIRE), PICK_CHOSEN);
+	assert_int_equal(pick_content_choice(&p, wad, sizeof(wad), maps, sizeof(maps)), 0);
+	for (char *s = maps; *s; s++)
+		words += *s == ' ';
+	assert_int_equal(words + 1, 32);
+	assert_non_null(strstr(maps, "E4M5"));   /* the 32nd: 3 x 9 + 5 */
+	assert_null(strstr(maps, "E4M6"));
+}
+
 static void test_service_goes_back_one_level_then_out(void **state)
 {
 	static struct wads w;
@@ -207,6 +234,7 @@ int main(void)
 		cmocka_unit_test(test_built_in_levels_is_the_first_row),
 		cmocka_unit_test(test_an_iwad_from_its_second_map),
 		cmocka_unit_test(test_a_pwad_follows_the_first_iwad_and_all_maps_lists_them_all),
+		cmocka_unit_test(test_all_maps_stops_at_the_stages_a_run_plays),
 		cmocka_unit_test(test_service_goes_back_one_level_then_out),
 		cmocka_unit_test(test_screen_steps_rotation_and_scale_then_applies),
 		cmocka_unit_test(test_config_acknowledges_only_when_there_are_errors),
