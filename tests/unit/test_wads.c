@@ -165,7 +165,8 @@ static void test_scan_names_every_refused_file_with_its_reason(void **state)
 	assert_int_equal(w.nbad, 5);
 	why = why_for(&s, "c_trunc.wad");
 	assert_non_null(why);
-	assert_non_null(strstr(why, "truncated"));
+	/* its header: directory at 12, 6 entries; the file: 12 + 4 x 16 */
+	assert_string_equal(why, "truncated: directory at 12 + 16 x 6 bytes, file 76 bytes");
 	why = why_for(&s, "d_text.wad");
 	assert_non_null(why);
 	assert_non_null(strstr(why, "not a WAD"));
@@ -203,7 +204,7 @@ static void test_check_refuses_a_directory_past_the_end(void **state)
 		fclose(f);
 	}
 	assert_int_equal(wads_check(path, &p, why, sizeof(why)), -EBADMSG);
-	assert_non_null(strstr(why, "truncated"));
+	assert_string_equal(why, "truncated: directory at 12 + 16 x 2 bytes, file 28 bytes");
 	unlink(path);
 	snprintf(path, sizeof(path), "%s/none.wad", dir);
 	assert_int_equal(wads_check(path, &p, why, sizeof(why)), -ENOENT);
