@@ -299,17 +299,29 @@ static void pick_draw_config(struct pick_dc *d, const struct pick *p, int bottom
 {
 	const struct cfgerr *e = p->errs;
 	int rows = pick_rows(p), y = 26 * d->sc, room = bottom - (rows + 1) * 11 * d->sc;
+	int sc = d->sc > 1 ? d->sc / 2 : 1;
 	char more[48];
 
 	pick_centre(d, 6 * d->sc, 2 * d->sc, d->c.cyan, "CONFIG ERRORS");
 	if (rows == 1)
 		pick_text(d, 2 * d->sc, y, d->sc, d->c.green, "NO CONFIGURATION ERRORS");
 	/* the errors at half the menu's scale when it has one to spare, so
-	 * that a path and its reason fit on a line */
-	for (int i = 0; i < e->n && y + 9 * d->sc < room; i++) {
-		int sc = d->sc > 1 ? d->sc / 2 : 1;
-		pick_text(d, 2 * d->sc, y, sc, d->c.red, e->text[i]);
-		y += 10 * sc;
+	 * that a path and its reason fit, wrapped at the frame's edge */
+	for (int i = 0; i < e->n && y + 9 * sc < room; i++) {
+		const char *t = e->text[i];
+		int cols = (d->f->w - 4 * d->sc) / (V_CHAR * sc);
+		char part[CFGERR_LEN];
+
+		if (cols < 8)
+			cols = 8;
+		while (*t && y + 9 * sc < room) {
+			int n = (int)strlen(t) < cols ? (int)strlen(t) : cols;
+			snprintf(part, sizeof(part), "%.*s", n, t);
+			pick_text(d, 2 * d->sc, y, sc, d->c.red, part);
+			y += 10 * sc;
+			t += n;
+		}
+		y += 4 * sc;               /* between two errors */
 	}
 	if (e->more) {
 		snprintf(more, sizeof(more), "AND %d MORE (SEE THE JOURNAL)", e->more);

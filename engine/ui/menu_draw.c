@@ -67,8 +67,11 @@ static void menu_main_page(struct menu_ctx *m, const char *notice)
 		menu_line(m, m->c->green, mn->done == MENU_I_RESET_SCORES ? "HIGH SCORES RESET" :
 									   "BOOKKEEPING RESET");
 	} else if (notice) {
-		/* the app's first unacknowledged configuration error (hud.h) */
-		hud_text(m->f, m->c, 2 * m->sc, m->f->h - 24 * m->sc, m->sc, m->c->red, notice);
+		/* the app's first unacknowledged configuration error (hud.h),
+		 * at half the menu's scale when it has one to spare: a path and
+		 * its reason are long */
+		int sc = m->sc > 1 ? m->sc / 2 : 1;
+		hud_text(m->f, m->c, 2 * m->sc, m->f->h - 24 * m->sc, sc, m->c->red, notice);
 	}
 }
 
