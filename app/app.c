@@ -17,6 +17,7 @@
 #include "app/hear.h"
 #include "app/keep.h"
 #include "app/loop.h"
+#include "app/op.h"
 #include "app/out.h"
 #include "app/pace.h"
 #include "app/pspec.h"
@@ -60,10 +61,9 @@ struct app {
 	struct tape tape;          /* --record, --replay, --verify */
 	struct script script;      /* --script (scr NULL: none) */
 	struct stats stats;
-	struct hud_diag diag;      /* the diagnostics page's text (app_diag) */
-	uint8_t diag_page;         /* the page diag was made for, 0 none */
-	uint32_t diag_at;          /* the tick it was made */
-	char *diag_found;          /* DEVICES: `arcaded devices`' listing, NULL none */
+	struct op op;              /* the menu's content, screen and config pages */
+	struct diag_view dv;       /* the service menu's diagnostics text */
+	struct diag_src ds;        /* what it is made from */
 	struct pace pace;
 	uint32_t hang_at;          /* fault injection: hang after this tick */
 	uint64_t wd_interval, wd_next;
@@ -115,6 +115,8 @@ static int step_begin(void *ctx, struct loop_tick *k)
 	}
 	if (sig_summary())
 		app_summary(a);
+	if (a->op.reload)
+		return 0;                  /* the service menu's choice: run again (app/op.h) */
 	if (a->o->ticks && k->t >= a->o->ticks)
 		return 0;
 	if (k->t == a->hang_at || sig_fault())
@@ -151,6 +153,7 @@ static void step_command(void *ctx, struct loop_tick *k)
 
 	if (!a->tape.rep)
 		cmd_build(&a->ctl.cs, &k->rt.cmd);
+	op_command(&a->op, &k->rt.cmd);
 }
 
 static void step_wizard(void *ctx, struct loop_tick *k)
@@ -192,67 +195,18 @@ static void step_flight_after(void *ctx, struct loop_tick *k)
 			  a->hear.hash);
 }
 
-/* The service menu's text from the app (app/diag.h), for the frame:
- * DEVICES' and LATENCY's made when the page opens, then again every
- * APP_DIAG_TICKS (percentiles sort the kept samples: not every frame);
- * INPUT TEST's raw controls every tick; none on other pages. The
- * machine's listing is made once per opening, and not in a script or
- * replay (their frames must not depend on the machine). A recording or a
- * replay shows no figures and no raw controls: its frame hashes must be
- * the same on every machine. */
-#define APP_DIAG_TICKS 30
-static void app_diag(struct app *a, uint32_t t)
-{
-	int page = a->sim.mode == SIM_SERVICE ? a->sim.menu.page : 0;
-	int opened = page != a->diag_page;
-
-	if (page == MENU_INPUT && !a->tape.rec && !a->tape.rep) {
-		/* the devices' raw controls: every tick, they are a few lines */
-		diag_raw(&a->diag, &a->ctl);
-		a->diag_page = (uint8_t)page;
-		a->scene.view.diag = &a->diag;
-		return;
-	}
-	/* Recording or replaying: the page as the engine alone draws it
-	 * ("NOTHING TO SHOW"), so a recording's frame hashes are the ones any
-	 * replayer of it computes, this machine's devices and timings aside
-	 * (tests/xbuild replays scripts through the engine alone). */
-	if ((page != MENU_DEVICES && page != MENU_LATENCY) || a->tape.rec || a->tape.rep) {
-		a->diag_page = 0;
-		a->scene.view.diag = NULL;
-		return;
-	}
-	a->scene.view.diag = &a->diag;
-	if (!opened && t - a->diag_at < APP_DIAG_TICKS)
-		return;
-	a->diag_page = (uint8_t)page;
-	a->diag_at = t;
-	if (page == MENU_LATENCY) {
-		diag_latency(&a->diag, &a->stats);
-		return;
-	}
-	if (opened) {
-		size_t len = 0;
-		FILE *f;
-		free(a->diag_found);
-		a->diag_found = NULL;
-		f = a->headless ? NULL : open_memstream(&a->diag_found, &len);
-		if (f) {
-			diag_list(f, a->cfg, a->o->config_dir, a->o->bindings);
-			fclose(f);
-		}
-	}
-	diag_devices(&a->diag, a->kinds, a->nkinds, &a->slots, a->diag_found);
-}
-
 static void step_requests(void *ctx, struct loop_tick *k)
 {
 	struct app *a = ctx;
 
-	app_diag(a, k->t);
+	a->scene.view.diag = diag_frame(&a->dv, &a->ds,
+					a->sim.mode == SIM_SERVICE ? a->sim.menu.page : 0,
+					a->tape.rec || a->tape.rep, k->t);
 	/* CONFIGURE INPUTS: the menu shows its request for one tick */
 	if (a->sim.mode == SIM_SERVICE && a->sim.menu.page == MENU_WIZARD)
 		ctl_wizard_start(&a->ctl, "service menu");
+	op_request(&a->op, &a->sim);
+	a->scene.view.notice = op_notice(&a->op);
 	scene_follow_menu(&a->scene, &a->sim);
 }
 
@@ -293,7 +247,7 @@ static void step_present(void *ctx, struct loop_tick *k)
 	if (scene_poll_display(&a->scene, t0) == SCENE_STILL_MISSING)
 		app_status_no_display(a);
 	scene_show(&a->scene, &a->sim, demo_under(&a->demo, &a->sim),
-		   a->ctl.wiz_on ? &a->ctl.wiz : NULL);
+		   a->ctl.wiz_on ? &a->ctl.wiz : NULL, a->op.on ? &a->op.pick : NULL);
 	stats_presented(&a->stats, t0, in_now_ns(),
 			app_paced(a) ? pace_due(&a->pace, k->t + 1) : 0);
 	app_flips(a);
@@ -407,6 +361,8 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 		/* [game] wad or maps is wrong: the cabinet plays its built-in
 		 * levels rather than not at all, and says why */
 		say_err("game.wad / game.maps: %s; playing the built-in levels", err);
+		if (o->errs)       /* on screen too, as a configuration error */
+			cfgerr_keep(o->errs, "game.wad / game.maps", 0, err);
 		memset(&a->content, 0, sizeof(a->content));
 		a->content.level = c->game.level;
 		a->content.lights = o->content.lights;
@@ -516,6 +472,9 @@ static int setup(struct app *a)
 	stats_init(&a->stats, names, a->nkinds + 1);
 	ctl_load(&a->ctl, c, o->config_dir, o->bindings, !a->headless, persist, &a->stats,
 		 &a->tape);
+	op_init(&a->op, c, o->errs, &a->tape, persist, a->ct.what);
+	a->ds = (struct diag_src){ c, o->config_dir, o->bindings, a->headless, &a->ctl, &a->stats,
+				   a->kinds, a->nkinds, &a->slots };
 	slot_init(&a->slots, &ctl_hooks, &a->ctl);
 	a->slots.log_nodes = c->input.log;
 	if (!a->headless)
@@ -544,7 +503,7 @@ static void teardown(struct app *a)
 	script_free(&a->script);
 	keep_close(&a->keep, &a->sim, a->stats.ticks);
 	scene_free(&a->scene);
-	free(a->diag_found);
+	diag_view_free(&a->dv);
 	demo_free(&a->demo);
 	ct_free(&a->ct);
 }
@@ -605,6 +564,8 @@ int app_run(const struct cfg *c, const struct app_opts *o)
 		a->hang_at = sig_fault_setup();
 		loop_run(&app_steps, a);
 		code = finish(a);
+		if (code == APP_OK && a->op.reload)
+			code = APP_RELOAD;
 	} else if (rc == -ECANCELED && sig_stop()) {
 		code = APP_OK;                 /* stopped by a signal while loading: an ordinary end */
 	}

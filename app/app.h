@@ -33,10 +33,14 @@ struct app_opts {
 	int gl;                  /* --renderer gl: draw the world with OSMesa */
 	FILE *out;               /* hashes, snapshots and summaries (stdout) */
 	struct ct_spec content;  /* what to play on (level set from the config) */
+	struct cfgerr *errs;     /* the configuration's errors, for the screen (NULL none);
+				  * a [game] wad that fails to load is added */
 };
 
 /* Exit codes of app_run. */
-enum { APP_OK = 0, APP_EXPECT_FAILED = 1, APP_SETUP_FAILED = 2 };
+enum { APP_OK = 0, APP_EXPECT_FAILED = 1, APP_SETUP_FAILED = 2,
+       APP_RELOAD = 3 };              /* the service menu changed the content or the screen:
+				       * read the configuration again and run again (app/op.h) */
 
 /* Runs the daemon or a headless script/replay with configuration c until
  * the end of the script/recording, the tick limit, or SIGINT/SIGTERM.

@@ -15,6 +15,7 @@
 #include "config/bind.h"
 #include "config/cfg.h"
 #include "config/prof.h"
+#include "engine/game/menu.h"
 
 struct diag_list_ctx {
 	const struct prof_set *profs;
@@ -182,4 +183,48 @@ void diag_raw(struct hud_diag *d, const struct ctl *c)
 		diag_add(d, "  NONE YET");
 	for (unsigned i = 0; i < n; i++)
 		diag_addf(d, "  %s", c->raw[(c->raw_n - 1 - i) % CTL_RAW]);
+}
+
+const struct hud_diag *diag_frame(struct diag_view *v, const struct diag_src *src, int page,
+				  int taping, uint32_t t)
+{
+	int opened = page != v->page;
+
+	if (page == MENU_INPUT && !taping) {
+		/* the devices' raw controls: every tick, they are a few lines */
+		diag_raw(&v->diag, src->ctl);
+		v->page = page;
+		return &v->diag;
+	}
+	if ((page != MENU_DEVICES && page != MENU_LATENCY) || taping) {
+		v->page = 0;
+		return NULL;
+	}
+	if (!opened && t - v->at < DIAG_TICKS)
+		return &v->diag;
+	v->page = page;
+	v->at = t;
+	if (page == MENU_LATENCY) {
+		diag_latency(&v->diag, src->stats);
+		return &v->diag;
+	}
+	if (opened) {
+		size_t len = 0;
+		FILE *f;
+		free(v->found);
+		v->found = NULL;
+		f = src->headless ? NULL : open_memstream(&v->found, &len);
+		if (f) {
+			diag_list(f, src->cfg, src->config_dir, src->bindings);
+			fclose(f);
+		}
+	}
+	diag_devices(&v->diag, src->kinds, src->nkinds, src->slots, v->found);
+	return &v->diag;
+}
+
+void diag_view_free(struct diag_view *v)
+{
+	free(v->found);
+	v->found = NULL;
 }

@@ -8,6 +8,7 @@
 #ifndef ARCADED_APP_DIAG_H
 #define ARCADED_APP_DIAG_H
 
+#include <stdint.h>
 #include <stdio.h>
 
 #include "engine/ui/hud.h"
@@ -52,5 +53,44 @@ void diag_latency(struct hud_diag *d, const struct stats *st);
  * first, each with the actions it triggers (struct ctl's raw), under a
  * heading; none yet (a script or replay reads no device) says so. */
 void diag_raw(struct hud_diag *d, const struct ctl *c);
+
+/* Where a run's diagnostics text comes from (all borrowed). */
+struct diag_src {
+	const struct cfg *cfg;
+	const char *config_dir, *bindings;   /* for diag_list; may be NULL */
+	int headless;                        /* a script or replay: no machine listing */
+	const struct ctl *ctl;
+	const struct stats *stats;
+	const struct slot_kind *kinds;
+	int nkinds;
+	const struct slot_set *slots;
+};
+
+/* The text of the page on screen and when it was made. */
+struct diag_view {
+	struct hud_diag diag;
+	int page;                  /* the page diag was made for, 0 none */
+	uint32_t at;               /* the tick it was made */
+	char *found;               /* DEVICES: `arcaded devices`' listing, NULL none */
+};
+
+#define DIAG_TICKS 30              /* DEVICES and LATENCY: made again this often */
+
+/* The service menu's text from the app for this tick's frame, page being
+ * the menu's page (0 when not in the menu) at tick t: DEVICES' and
+ * LATENCY's made when the page opens, then again every DIAG_TICKS
+ * (percentiles sort the kept samples: not every frame); INPUT TEST's raw
+ * controls every tick; NULL on other pages. The machine's listing is made
+ * once per opening, and not when src is headless (a script's or replay's
+ * frames must not depend on the machine). While taping (recording or
+ * replaying): NULL on every page, so they show the engine's own "NOTHING
+ * TO SHOW" and a recording's frame hashes are the ones any replayer
+ * computes, this machine's devices and timings aside (tests/xbuild
+ * replays scripts through the engine alone). */
+const struct hud_diag *diag_frame(struct diag_view *v, const struct diag_src *src, int page,
+				  int taping, uint32_t t);
+
+/* Frees what v holds. */
+void diag_view_free(struct diag_view *v);
 
 #endif

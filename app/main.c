@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "app/app.h"
+#include "app/cfgerr.h"
 #include "app/diag.h"
 #include "app/pspec.h"
 #include "app/say.h"
@@ -67,6 +68,47 @@ static void usage(FILE *f)
 	      f);
 }
 
+/* One state file of the state directory whose payload is INI text,
+ * applied as a layer (settings.ini: the menu's settings; content.ini and
+ * screen.ini: the app's service pages, app/op.h). */
+static void main_state_layer(struct cfg *c, const char *file, struct cfgerr *e)
+{
+	char msg[256] = "", name[CFG_PATH_MAX + 32];
+	size_t len = 0;
+	void *buf = NULL;
+	int rc = st_load(c->paths.state_dir, file, &buf, &len, NULL, msg, sizeof(msg));
+
+	snprintf(name, sizeof(name), "%s/%s", c->paths.state_dir, file);
+	if (msg[0] && rc != -ENOENT)
+		say_warn("%s: %s", name, msg);
+	if (rc == 0)
+		cfg_load_text(c, buf, len, name, cfgerr_add, e);
+	else if (rc != -ENOENT)
+		say_warn("%s: %s; using the other layers", name, strerror(-rc));
+	free(buf);
+}
+
+/* The configuration, layered: defaults < config dir < the state
+ * directory's settings.ini, content.ini, screen.ini < command line. Its
+ * errors are logged and kept in e (for the screen: app/cfgerr.h). */
+static void main_layers(struct cfg *c, const char *config_dir, const char *state_dir,
+			char (*sets)[CFG_PATH_MAX + 32], int nsets, struct cfgerr *e)
+{
+	static const char *const state_files[] = { "settings.ini", "content.ini", "screen.ini" };
+
+	cfgerr_clear(e);
+	cfg_defaults(c);
+	if (state_dir)
+		snprintf(c->paths.state_dir, sizeof(c->paths.state_dir), "%s", state_dir);
+	if (config_dir)
+		cfg_load_dir(c, config_dir, cfgerr_add, e);
+	for (size_t i = 0; c->paths.state_dir[0] && i < sizeof(state_files) / sizeof(*state_files);
+	     i++)
+		main_state_layer(c, state_files[i], e);
+	for (int i = 0; i < nsets; i++)
+		cfg_set(c, sets[i], cfgerr_add, e);
+}
+
 int main(int argc, char **argv)
 {
 	enum { O_CONFIG_DIR = 256, O_STATE_DIR, O_SET, O_DISPLAY, O_AUDIO, O_LEVEL, O_PLAY, O_BINDINGS,
@@ -108,6 +150,7 @@ int main(int argc, char **argv)
 	/* --set values and the shortcuts that expand to them, applied in
 	 * command-line order after the files. */
 	static char sets[MAX_SETS][CFG_PATH_MAX + 32];
+	static struct cfgerr errs;     /* the configuration's, for the screen */
 	struct app_opts o = { .out = stdout, .config_dir = "/etc/arcaded" };
 	const char *state_dir = NULL;
 	int nsets = 0, print_config = 0, print_specials = 0, no_lights = 0, devices = 0, opt;
@@ -232,8 +275,6 @@ int main(int argc, char **argv)
 		return 2;
 	}
 
-	/* Layers: defaults < config dir < state dir < command line. */
-	cfg_defaults(&c);
 	if (state_dir && strlen(state_dir) >= sizeof(c.paths.state_dir)) {
 		/* cut short it would name another directory: refused, as
 		 * paths.state_dir set in a file or by --set is */
@@ -241,47 +282,32 @@ int main(int argc, char **argv)
 			sizeof(c.paths.state_dir) - 1);
 		return 2;
 	}
-	if (state_dir)
-		snprintf(c.paths.state_dir, sizeof(c.paths.state_dir), "%s", state_dir);
-	if (o.config_dir)
-		cfg_load_dir(&c, o.config_dir, say_cfg, NULL);
-	if (c.paths.state_dir[0]) {
-		/* Settings changed in the service menu: a power-cut-safe state
-		 * file (config/st.h) whose payload is INI text. */
-		char msg[256] = "", name[CFG_PATH_MAX + 32];
-		size_t len = 0;
-		void *buf = NULL;
-		int rc = st_load(c.paths.state_dir, "settings.ini", &buf, &len, NULL, msg,
-				 sizeof(msg));
-		snprintf(name, sizeof(name), "%s/settings.ini", c.paths.state_dir);
-		if (msg[0] && rc != -ENOENT)
-			say_warn("%s: %s", name, msg);
-		if (rc == 0)
-			cfg_load_text(&c, buf, len, name, say_cfg, NULL);
-		else if (rc != -ENOENT)
-			say_warn("%s: %s; using the other layers", name, strerror(-rc));
-		free(buf);
-	}
-	for (int i = 0; i < nsets; i++)
-		cfg_set(&c, sets[i], say_cfg, NULL);
-	if (devices)
-		return diag_list(stdout, &c, o.config_dir, o.bindings) < 0 ? 2 : 0;
+	o.errs = &errs;
+	for (;;) {
+		int code;
 
-	if (print_config) {
-		size_t n = cfg_format(&c, NULL, 0);
-		char *buf = malloc(n + 1);
-		if (!buf)
+		main_layers(&c, o.config_dir, state_dir, sets, nsets, &errs);
+		if (devices)
+			return diag_list(stdout, &c, o.config_dir, o.bindings) < 0 ? 2 : 0;
+		if (print_config) {
+			size_t n = cfg_format(&c, NULL, 0);
+			char *buf = malloc(n + 1);
+			if (!buf)
+				return 2;
+			cfg_format(&c, buf, n + 1);
+			fputs(buf, stdout);
+			free(buf);
+			return 0;
+		}
+		o.content.level = c.game.level;
+		o.content.lights = !no_lights;
+		if (o.content.map && o.content.nwads == 0) {
+			say_err("--map goes with --wad");
 			return 2;
-		cfg_format(&c, buf, n + 1);
-		fputs(buf, stdout);
-		free(buf);
-		return 0;
+		}
+		code = app_run(&c, &o);
+		if (code != APP_RELOAD)
+			return code;
+		say("service menu: the content or the screen changed: starting again");
 	}
-	o.content.level = c.game.level;
-	o.content.lights = !no_lights;
-	if (o.content.map && o.content.nwads == 0) {
-		say_err("--map goes with --wad");
-		return 2;
-	}
-	return app_run(&c, &o);
 }

@@ -10,6 +10,7 @@
 #include "app/ct.h"
 #include "app/pool.h"
 #include "app/say.h"
+#include "app/pick.h"
 #include "app/wiz.h"
 #include "display/dp.h"
 #include "input/hp.h"
@@ -259,12 +260,14 @@ void scene_follow_menu(struct scene *s, const struct sim *sim)
 }
 
 int scene_show(struct scene *s, const struct sim *sim, const struct sim *under,
-	       const struct wiz *wiz)
+	       const struct wiz *wiz, const struct pick *pick)
 {
 	int rc;
 
 	if (wiz)
 		wiz_draw(wiz, &s->ct->tex->pal, &s->frame);
+	else if (pick)
+		pick_draw(pick, &s->ct->tex->pal, &s->frame);
 	else
 		view_draw(&s->view, sim, under, &s->frame);
 	rc = s->dpb->present(s->dp, s->frame.px, s->frame.w, s->frame.h, s->frame.pitch);

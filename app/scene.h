@@ -35,6 +35,7 @@ struct dp_flip;
 struct pool;
 struct sim;
 struct wiz;
+struct pick;
 
 struct scene {
 	const struct cfg *cfg;
@@ -96,12 +97,13 @@ enum scene_poll scene_poll_display(struct scene *s, uint64_t now_ns);
  * follows. */
 void scene_follow_menu(struct scene *s, const struct sim *sim);
 
-/* Draws the frame (the wizard's screen when wiz is not NULL, else sim,
+/* Draws the frame (the wizard's screen when wiz is not NULL, else the
+ * service menu's app page when pick is not NULL (app/pick.h), else sim,
  * over the attract demo's under when not NULL) and presents it; a
  * successful present on the display asked for (not a stand-in) counts in
  * shown. 0 or the present's -errno (the first failure is logged). */
 int scene_show(struct scene *s, const struct sim *sim, const struct sim *under,
-	       const struct wiz *wiz);
+	       const struct wiz *wiz, const struct pick *pick);
 
 /* The display's fd to watch between ticks (dp_backend.wait_fd), -1 none. */
 int scene_wait_fd(struct scene *s);

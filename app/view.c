@@ -36,7 +36,7 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	       struct r_frame *f)
 {
 	struct tex_set *tex = v->ct->tex;
-	struct hud_env env = { &tex->pal, tex, v->rotate, v->par, v->diag };
+	struct hud_env env = { &tex->pal, tex, v->rotate, v->par, v->diag, v->notice };
 	struct r_view rv;
 
 	if (under) {

@@ -43,6 +43,7 @@ struct view {
 				    * darkened areas (the renderer's pool) */
 	const struct hud_diag *diag;   /* optional, borrowed: the service menu's
 					* diagnostics text (hud_env.diag), NULL none */
+	const char *notice;        /* optional, borrowed: hud_env.notice (app/op.h) */
 };
 
 /* Prepares v for the content's stages. 0 or -ENOMEM. */

@@ -91,6 +91,7 @@ static const struct cfg_key cfg_keys[] = {
 	CFG_INTKEY(game, attract_sound, game.attract_sound, 0, 9),
 	CFG_STRKEY(game, wad, game.wad, CFG_T_STR),
 	CFG_STRKEY(game, maps, game.maps, CFG_T_STR),
+	CFG_STRKEY(game, content_dirs, game.content_dirs, CFG_T_STR),
 	CFG_STRKEY(audio, output, audio.output, CFG_T_STR),
 	CFG_STRKEY(audio, device, audio.device, CFG_T_STR),
 	CFG_INTKEY(audio, rate, audio.rate, 8000, 192000),
@@ -138,6 +139,8 @@ void cfg_defaults(struct cfg *c)
 	c->game.difficulty = 1;
 	c->game.lives = 3;
 	c->game.volume = 80;
+	cfg_setstr(c->game.content_dirs, sizeof(c->game.content_dirs),
+		   "/usr/share/games/doom /var/lib/arcaded/content");
 	c->game.attract_sound = 1;
 	cfg_setstr(c->audio.output, sizeof(c->audio.output), "auto");
 	cfg_setstr(c->audio.device, sizeof(c->audio.device), "default");

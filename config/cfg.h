@@ -43,6 +43,9 @@ struct cfg {
 		int attract_sound;           /* 0 off, 1 on, N: once every N attract cycles (1) */
 		char wad[512];               /* WAD files, blank-separated, IWAD first ("" none) */
 		char maps[256];              /* maps or episodes from them ("" the first map) */
+		char content_dirs[512];      /* where the service menu's content picker looks
+					      * for WADs, blank-separated
+					      * ("/usr/share/games/doom /var/lib/arcaded/content") */
 	} game;
 	struct {
 		char output[CFG_PATH_MAX];   /* auto | alsa | alsa:DEVICE | wav:FILE | null */

@@ -7,7 +7,9 @@
 # bookkeeping (after two coins), the reset confirmation, and the
 # diagnostics pages DEVICES and LATENCY (their text is this run's: a script
 # opens no device and lists none, and its figures are those of a run that
-# does not wait for the clock). The input wizard is not among them:
+# does not wait for the clock); the app's pages CONTENT PACK (and a pack's
+# maps), SCREEN and CONFIG ERRORS, with the configuration error's notice on
+# the attract screen and the main page. The input wizard is not among them:
 # it runs only on a live cabinet, never under a script (docs/wizard.md).
 # Usage: scripts/service-shots.sh [path/to/arcaded]
 set -eu
@@ -76,4 +78,57 @@ tap() { printf '%d press %s\n%d release %s\n' "$1" "$2" $(($1 + 1)) "$2"; }
 	echo "service-shots: failed" >&2
 	exit 1
 }
-ls -1 "$out"/service-*.png
+# The app's pages (app/pick.h): CONTENT PACK on a content directory made
+# here (Freedoom's IWADs when the freedoom package is installed, and a
+# truncated WAD that is named as not listed), the map list of the first
+# pack, and SCREEN. Then, with a configuration file that has two errors,
+# the attract screen's notice, the main page's line and CONFIG ERRORS.
+mkdir -p "$tmp/content" "$tmp/etc2"
+for w in /usr/share/games/doom/freedoom1.wad /usr/share/games/doom/freedoom2.wad; do
+	[ -r "$w" ] && ln -s "$w" "$tmp/content/"
+done
+printf 'PWAD\003\000\000\000\377\377\000\000' > "$tmp/content/broken.wad"
+{
+	tap 2 service
+	t=4; for i in 1 2 3 4 5 6 7 8 9; do tap $t back; t=$((t + 2)); done
+	tap 24 fire                     # CONTENT PACK
+	tap 26 back                     # the first WAD
+	echo "30 screenshot $out/service-content.png"
+	tap 32 fire                     # its maps
+	tap 34 back
+	tap 36 back                     # FROM ...M2
+	echo "40 screenshot $out/service-content-maps.png"
+	tap 42 service                  # back to the packs
+	tap 44 service                  # out of the page
+	tap 46 back                     # SCREEN
+	tap 48 fire
+	tap 50 turn_right               # 90
+	echo "54 screenshot $out/service-screen.png"
+	tap 56 service
+	echo "58 expect menu == 0"
+} >"$tmp/app.scr"
+"$BIN" --script "$tmp/app.scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
+	--set game.render_width=640 --set game.render_height=480 \
+	--set "game.content_dirs=$tmp/content" >"$tmp/log" 2>&1 || {
+	cat "$tmp/log" >&2
+	echo "service-shots: the app's pages failed" >&2
+	exit 1
+}
+printf '[game]\nlives = 12\n\n[display]\nrotate = 45\n' > "$tmp/etc2/50-local.ini"
+{
+	echo "60 screenshot $out/attract-config-error.png"
+	tap 62 service
+	echo "66 screenshot $out/service-main-config-error.png"
+	t=68; for i in 1 2 3 4 5 6 7 8 9 10 11; do tap $t back; t=$((t + 2)); done
+	tap 92 fire                     # CONFIG ERRORS
+	echo "96 screenshot $out/service-config.png"
+	tap 98 service
+	echo "100 expect menu == 0"
+} >"$tmp/cfg.scr"
+"$BIN" --script "$tmp/cfg.scr" --config-dir "$tmp/etc2" --state-dir "$tmp/state" \
+	--set game.render_width=640 --set game.render_height=480 >"$tmp/log" 2>&1 || {
+	cat "$tmp/log" >&2
+	echo "service-shots: the configuration errors' pages failed" >&2
+	exit 1
+}
+ls -1 "$out"/service-*.png "$out"/attract-config-error.png

@@ -130,6 +130,15 @@ static int menu_main(struct sim *s, uint8_t pressed, uint8_t nav)
 	case MENU_I_WIZARD:
 		m->page = MENU_WIZARD;
 		break;
+	case MENU_I_CONTENT:
+		m->page = MENU_CONTENT;
+		break;
+	case MENU_I_SCREEN:
+		m->page = MENU_SCREEN;
+		break;
+	case MENU_I_CONFIG:
+		m->page = MENU_CONFIG;
+		break;
 	case MENU_I_EXIT:
 	default:
 		return 1;
@@ -298,6 +307,9 @@ int menu_tick(struct sim *s, uint8_t pressed, uint8_t nav)
 			menu_back(m);
 		break;
 	case MENU_WIZARD:
+	case MENU_CONTENT:
+	case MENU_SCREEN:
+	case MENU_CONFIG:
 		/* one tick: the app has seen the request (menu.h) */
 		menu_back(m);
 		break;

@@ -40,6 +40,19 @@
  *             never writes sim state. A page value rather than a new
  *             counter field: every field is hashed and snapshotted
  *             (sim_hash.c), so a new one would change every recorded hash.
+ *   CONTENT   the operator chose CONTENT PACK: like WIZARD, a one-tick
+ *             request; the app runs its content picker (app/pick.h: the
+ *             WADs of the content directories, then a start map) outside
+ *             the sim, applies and persists the choice.
+ *   SCREEN    the operator chose SCREEN: a one-tick request; the app's
+ *             page sets the display's rotation and scale (app/pick.h).
+ *   CONFIG    the operator chose CONFIG ERRORS: a one-tick request; the
+ *             app's page lists the configuration's errors (file:line and
+ *             reason), and FIRE acknowledges them (app/pick.h).
+ *             The WADs found, the display and the configuration's errors
+ *             are facts of the machine, not of the game: they never enter
+ *             the sim state. Only the page value (one tick) and the
+ *             cursor do, as for WIZARD.
  *
  * DEVICES and LATENCY (and INPUT's raw control lines) show facts of the
  * machine and of the main loop, not of the game: they must not enter the
@@ -51,6 +64,11 @@
  * back, like BOOKS. Their two items sit above CONFIGURE INPUTS, after
  * every item a recorded session reaches by counting moves down from the
  * top, and their page values after MENU_SOUND: no recorded hash changes.
+ * CONTENT PACK, SCREEN and CONFIG ERRORS followed the same rule: their
+ * items come after LATENCY, their page values after MENU_LATENCY.
+ *
+ * The MAIN page may also show one line of the app's (hud_env.notice): the
+ * first configuration error not yet acknowledged.
  */
 #ifndef ARCADED_ENGINE_MENU_H
 #define ARCADED_ENGINE_MENU_H
@@ -65,12 +83,13 @@ struct r_frame;
 struct hud_env;
 
 enum menu_page { MENU_MAIN, MENU_INPUT, MENU_DISPLAY, MENU_SETTINGS, MENU_BOOKS, MENU_CONFIRM,
-		 MENU_WIZARD, MENU_SOUND, MENU_DEVICES, MENU_LATENCY, MENU_PAGES };
+		 MENU_WIZARD, MENU_SOUND, MENU_DEVICES, MENU_LATENCY, MENU_CONTENT, MENU_SCREEN,
+		 MENU_CONFIG, MENU_PAGES };
 
 /* Items of the main page, in order. */
 enum menu_item { MENU_I_INPUT, MENU_I_DISPLAY, MENU_I_SOUND, MENU_I_SETTINGS, MENU_I_BOOKS,
 		 MENU_I_RESET_SCORES, MENU_I_RESET_BOOKS, MENU_I_DEVICES, MENU_I_LATENCY,
-		 MENU_I_WIZARD, MENU_I_EXIT, MENU_ITEMS };
+		 MENU_I_CONTENT, MENU_I_SCREEN, MENU_I_CONFIG, MENU_I_WIZARD, MENU_I_EXIT, MENU_ITEMS };
 
 /* Items of the settings page. */
 enum menu_setting { MENU_S_DIFFICULTY, MENU_S_LIVES, MENU_S_COINS, MENU_S_FREEPLAY,

@@ -382,6 +382,13 @@ void hud_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f)
 	case SIM_ATTRACT:
 	default:
 		hud_page_attract(s, &c, f);
+		if (env->notice) {
+			/* small, at the foot, on a black band: readable over the demo */
+			int sc = hud_scale(f);
+			v_fill(f, 0, f->h - 11 * sc, f->w, 11 * sc, c.black);
+			hud_text_centre(f, &c, f->h - 10 * sc, sc, c.red,
+					"CONFIG ERROR: SEE SERVICE MENU");
+		}
 		break;
 	}
 }

@@ -47,6 +47,11 @@ struct hud_env {
 					* split on (the renderer's pool); NULL: none */
 	const struct hud_diag *diag;   /* optional: the service menu's diagnostics
 					* text; NULL: none (DEVICES and LATENCY say so) */
+	const char *notice;            /* optional: the first configuration error the
+					* operator has not acknowledged (app text, never
+					* sim state): the attract pages show "CONFIG ERROR:
+					* SEE SERVICE MENU", the service menu's MAIN page
+					* the text itself; NULL: none */
 };
 
 /* The colours the HUD uses, nearest to fixed RGB values in a palette. */

@@ -46,7 +46,7 @@ static void menu_title(struct menu_ctx *m, const char *title, const char *help)
 	m->y = 34 * m->sc;
 }
 
-static void menu_main_page(struct menu_ctx *m)
+static void menu_main_page(struct menu_ctx *m, const char *notice)
 {
 	static const char items[MENU_ITEMS][20] = {
 		[MENU_I_INPUT] = "INPUT TEST", [MENU_I_DISPLAY] = "DISPLAY TEST",
@@ -54,7 +54,8 @@ static void menu_main_page(struct menu_ctx *m)
 		[MENU_I_SETTINGS] = "GAME SETTINGS", [MENU_I_BOOKS] = "BOOKKEEPING",
 		[MENU_I_RESET_SCORES] = "RESET HIGH SCORES", [MENU_I_RESET_BOOKS] = "RESET BOOKKEEPING",
 		[MENU_I_DEVICES] = "DEVICES", [MENU_I_LATENCY] = "LATENCY",
-		[MENU_I_WIZARD] = "CONFIGURE INPUTS", [MENU_I_EXIT] = "EXIT",
+		[MENU_I_CONTENT] = "CONTENT PACK", [MENU_I_SCREEN] = "SCREEN",
+		[MENU_I_CONFIG] = "CONFIG ERRORS", [MENU_I_WIZARD] = "CONFIGURE INPUTS", [MENU_I_EXIT] = "EXIT",
 	};
 	const struct menu *mn = &m->s->menu;
 
@@ -65,6 +66,12 @@ static void menu_main_page(struct menu_ctx *m)
 		m->y += 12 * m->sc;
 		menu_line(m, m->c->green, mn->done == MENU_I_RESET_SCORES ? "HIGH SCORES RESET" :
 									   "BOOKKEEPING RESET");
+	} else if (notice) {
+		/* the app's first unacknowledged configuration error (hud.h),
+		 * at half the menu's scale when it has one to spare: a path and
+		 * its reason are long */
+		int sc = m->sc > 1 ? m->sc / 2 : 1;
+		hud_text(m->f, m->c, 2 * m->sc, m->f->h - 24 * m->sc, sc, m->c->red, notice);
 	}
 }
 
@@ -332,8 +339,11 @@ void menu_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f
 		break;
 	case MENU_MAIN:
 	case MENU_WIZARD:              /* its one tick: the app draws the wizard */
+	case MENU_CONTENT:             /* and these the app's pages (app/pick.h) */
+	case MENU_SCREEN:
+	case MENU_CONFIG:
 	default:
-		menu_main_page(&m);
+		menu_main_page(&m, env->notice);
 		break;
 	}
 }

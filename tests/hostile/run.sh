@@ -343,5 +343,72 @@ else
 fi
 fi
 
+
+# ---- the service menu's content directory (issue 18 item 4) -------------
+if [ "$PART" != maps ]; then
+# A content directory as an operator's USB stick may leave it: one WAD
+# that is whole (mkhostile's specials.wad: PWAD, one map), a truncated
+# copy of it, a zip named .wad, a FIFO named .wad (opening it blocking
+# would hang the cabinet), a dangling symlink and a directory named .wad.
+# (The tests run as root, for whom a mode-000 file is readable: the
+# unreadable ones here are the FIFO, the link and the directory.) A
+# script opens CONTENT PACK (nine moves down, FIRE) and the pack's map
+# list: the cabinet keeps running, lists the one good WAD and names every
+# other file with its reason.
+C="$tmp/content"; mkdir -p "$C"
+cp "$tmp/w/specials.wad" "$C/a_good.wad"
+head -c 40 "$tmp/w/specials.wad" > "$C/b_trunc.wad"
+printf 'PK\003\004 this is a zip archive, not a WAD' > "$C/c_zip.wad"
+mkfifo "$C/d_fifo.wad"
+ln -s "$tmp/nowhere.wad" "$C/e_dangling.wad"
+mkdir "$C/f_dir.wad"
+{
+	echo "2 press service"; echo "3 release service"
+	t=4; for i in 1 2 3 4 5 6 7 8 9; do echo "$t press back"; echo "$((t + 1)) release back"; t=$((t + 2)); done
+	echo "24 press fire"; echo "25 release fire"
+	echo "30 screenshot $tmp/content.png"
+	echo "32 press back"; echo "33 release back"
+	echo "34 press fire"; echo "35 release fire"
+	echo "40 screenshot $tmp/content-maps.png"
+	echo "42 end"
+} >"$tmp/content.scr"
+timeout -s KILL "$GUARD" "$BIN" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
+	--script "$tmp/content.scr" --set display.backend=file --set display.file="$tmp/fb" \
+	--set "game.content_dirs=$tmp/nodir $C" >/dev/null 2>"$tmp/err"
+rc=$?; [ "$rc" -eq 137 ] && rc=124
+miss=""
+for want in "b_trunc.wad: truncated" "c_zip.wad: not a WAD (no IWAD or PWAD magic)" \
+	    "d_fifo.wad: not a regular file" "e_dangling.wad: No such file or directory" \
+	    "f_dir.wad: not a regular file" "content: 1 WAD(s) in" "service menu: content pack"; do
+	grep -qF "$want" "$tmp/err" || miss="$miss [$want]"
+done
+if [ "$rc" -eq 124 ]; then
+	bad "content dir: the cabinet hung (killed after $GUARD s)"
+elif [ "$rc" -ne 0 ] || [ -n "$miss" ]; then
+	bad "content dir: exit $rc, log lacks:$miss; log:"; sed 's/^/    /' "$tmp/err"
+elif ! head -c 8 "$tmp/content-maps.png" 2>/dev/null | grep -q PNG; then
+	bad "content dir: no screenshot of the page"
+else
+	ok "content dir: 1 WAD listed, 5 files named: $(grep -F "b_trunc.wad" "$tmp/err" | head -n 1)"
+fi
+# The pack chosen on screen (STATE_DIR/content.ini, a state file whose
+# payload is INI text) broke since: the cabinet plays its built-in levels,
+# says why, and keeps running (a live run of 10 ticks).
+S="$tmp/s18"; mkdir -p "$S"
+ini=$(printf '[game]\nwad = %s\nmaps = \n' "$C/b_trunc.wad")
+{ printf 'ARCDSTA\000\001\000\030\000'; printf "$(printf '\\%03o' $((${#ini} + 1)))\\000\\000\\000"
+  printf '\000\000\000\000\000\000\000\000'; printf '%s\n' "$ini"; } >"$S/content.ini"
+reseal_ "$S/content.ini"
+run_ "$S"
+if [ "$rc" -ne 0 ]; then
+	bad "content.ini: a broken chosen WAD: exit $rc, log:"; sed 's/^/    /' "$tmp/err"
+elif ! grep -qF "game.wad / game.maps: $C/b_trunc.wad" "$tmp/err" ||
+     ! grep -qF "content: built-in levels" "$tmp/err"; then
+	bad "content.ini: no fallback naming the WAD, log:"; sed 's/^/    /' "$tmp/err"
+else
+	ok "content.ini: $(grep -F "game.wad / game.maps" "$tmp/err" | head -n 1)"
+fi
+fi
+
 echo "hostile: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

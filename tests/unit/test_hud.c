@@ -46,10 +46,11 @@ static int teardown(void **state)
 }
 
 static const struct hud_diag *diag;   /* the diagnostics text draw() passes */
+static const char *notice;            /* and the configuration error's notice */
 
 static void draw(const struct sim *s)
 {
-	struct hud_env env = { &pal, NULL, 0, NULL, diag };
+	struct hud_env env = { &pal, NULL, 0, NULL, diag, notice };
 	memset(pix, BG, sizeof(pix));
 	hud_draw(s, &env, &frame);
 }
@@ -189,7 +190,7 @@ static void the_score_is_drawn(void **state)
 
 static void hud_is_a_pure_function_of_the_state(void **state)
 {
-	struct hud_env env = { &pal, NULL, 0, NULL, NULL };
+	struct hud_env env = { &pal, NULL, 0, NULL, NULL, NULL };
 	static uint8_t a[W * H];
 	struct sim s;
 	(void)state;
@@ -344,6 +345,38 @@ static void the_diagnostics_pages_print_the_apps_lines(void **state)
 	diag = NULL;
 }
 
+/* A configuration error not acknowledged (app text, hud_env.notice): red
+ * text in a black band at the attract screen's foot (the 11 lines of one
+ * text row at scale 1, with a line above it), and on the service menu's
+ * MAIN page the text itself in red above the help line; nothing of it
+ * without a notice. */
+static void a_config_notice_shows_on_attract_and_main(void **state)
+{
+	struct sim s;
+	int red_with, red_without;
+	(void)state;
+	sim_init(&s, room, &play);
+	s.mode = SIM_ATTRACT;
+	notice = NULL;
+	draw(&s);
+	red_without = count_in(0, H - 11, W, 11, col.red);
+	notice = "/etc/arcaded/x.ini:2: lives: 12 out of range 1..9";
+	draw(&s);
+	red_with = count_in(0, H - 11, W, 11, col.red);
+	assert_true(red_with > red_without + 100);
+	/* the band: black where the text is not, from the first of its lines */
+	assert_int_equal(at(0, H - 11), col.black);
+	assert_int_equal(at(W - 1, H - 1), col.black);
+	/* MAIN: the text's row is 24 lines above the bottom at scale 1 */
+	s.mode = SIM_SERVICE;
+	menu_enter(&s.menu);
+	draw(&s);
+	assert_true(count_in(0, H - 24, W, 8, col.red) > 100);
+	notice = NULL;
+	draw(&s);
+	assert_int_equal(count_in(0, H - 24, W, 8, col.red), 0);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -361,6 +394,7 @@ int main(void)
 		cmocka_unit_test(every_menu_page_draws_something),
 		cmocka_unit_test(the_diagnostics_pages_print_the_apps_lines),
 		cmocka_unit_test(the_input_test_prints_the_apps_lines_under_the_actions),
+		cmocka_unit_test(a_config_notice_shows_on_attract_and_main),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -273,7 +273,7 @@ static void the_exit_item_leaves(void **state)
 	assert_int_equal(s.mode, SIM_ATTRACT);
 }
 
-/* DEVICES and LATENCY (just above CONFIGURE INPUTS) open their pages,
+/* DEVICES and LATENCY (just under RESET BOOKKEEPING) open their pages,
  * which hold no state of their own (their text is the app's): FIRE or
  * SERVICE goes back to MAIN with the cursor on the item, and the menu is
  * as it was before the visit (but for its clock and MAIN's cursor). */
@@ -284,7 +284,7 @@ static void the_diagnostics_pages_open_and_go_back(void **state)
 	struct sim s;
 	(void)state;
 	in_menu(&s, &base);
-	assert_int_equal(MENU_I_LATENCY + 1, MENU_I_WIZARD);
+	assert_int_equal(MENU_I_RESET_BOOKS + 1, MENU_I_DEVICES);
 	for (int k = 0; k < 2; k++) {
 		for (int back = 0; back < 2; back++) {
 			struct menu before;
@@ -345,6 +345,39 @@ static void configure_inputs_is_a_one_tick_request(void **state)
 	assert_int_equal(s.mode, SIM_ATTRACT);
 }
 
+/* CONTENT PACK, SCREEN and CONFIG ERRORS (between LATENCY and CONFIGURE
+ * INPUTS, so that the items a recorded session reaches by counting moves
+ * down keep their places): each is a one-tick request to the app, like
+ * CONFIGURE INPUTS: its page for the tick of FIRE, then MAIN with the
+ * cursor on the item; the menu is as before but for its clock. */
+static void the_app_pages_are_one_tick_requests(void **state)
+{
+	static const uint8_t item[3] = { MENU_I_CONTENT, MENU_I_SCREEN, MENU_I_CONFIG };
+	static const uint8_t page[3] = { MENU_CONTENT, MENU_SCREEN, MENU_CONFIG };
+	struct sim s;
+	(void)state;
+	in_menu(&s, &base);
+	assert_int_equal(MENU_I_LATENCY + 1, MENU_I_CONTENT);
+	assert_int_equal(MENU_I_CONFIG + 1, MENU_I_WIZARD);
+	assert_true(MENU_LATENCY < MENU_CONTENT && MENU_CONFIG + 1 == MENU_PAGES);
+	for (int k = 0; k < 3; k++) {
+		struct menu before;
+		while (s.menu.cursor != item[k])
+			press(&s, DOWN);
+		before = s.menu;
+		sim_tick(&s, &FIRE);
+		assert_int_equal(s.menu.page, page[k]);
+		assert_int_equal(s.mode, SIM_SERVICE);
+		sim_tick(&s, &FIRE);               /* held: no new request */
+		assert_int_equal(s.menu.page, MENU_MAIN);
+		assert_int_equal(s.menu.cursor, item[k]);
+		sim_tick(&s, &none);
+		before.t = s.menu.t;
+		before.main_cursor = item[k];
+		assert_memory_equal(&before, &s.menu, sizeof(before));
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -358,6 +391,7 @@ int main(void)
 		cmocka_unit_test(the_exit_item_leaves),
 		cmocka_unit_test(configure_inputs_is_a_one_tick_request),
 		cmocka_unit_test(the_diagnostics_pages_open_and_go_back),
+		cmocka_unit_test(the_app_pages_are_one_tick_requests),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

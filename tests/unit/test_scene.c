@@ -119,7 +119,7 @@ static void a_missing_display_is_waited_for_and_taken(void **state)
 	assert_non_null(strstr(s.missing, fb));
 	assert_non_null(strstr(s.missing, strerror(ENOENT)));
 	assert_true(s.dpb->flags & DP_SHOWS_NOTHING);
-	assert_int_equal(scene_show(&s, sim, NULL, NULL), 0);
+	assert_int_equal(scene_show(&s, sim, NULL, NULL, NULL), 0);
 	assert_int_equal(s.shown, 0);                  /* nothing shown: no READY */
 	/* still missing: the first try at once, then not before the retry time */
 	snprintf(why, sizeof(why), "%s", s.missing);
@@ -133,7 +133,7 @@ static void a_missing_display_is_waited_for_and_taken(void **state)
 	assert_null(s.hp);
 	assert_false(s.dpb->flags & DP_SHOWS_NOTHING);
 	assert_int_equal(fb_values(), 1);              /* cleared by its open */
-	assert_int_equal(scene_show(&s, sim, NULL, NULL), 0);
+	assert_int_equal(scene_show(&s, sim, NULL, NULL, NULL), 0);
 	assert_int_equal(s.shown, 1);
 	assert_true(fb_values() >= 4);                 /* a picture */
 	assert_int_equal(scene_poll_display(&s, t + 10 * SCENE_RETRY_NS), SCENE_SAME);
@@ -197,7 +197,7 @@ static void auto_waits_and_a_named_null_display_does_not(void **state)
 	close(null);
 	assert_int_equal(s.waiting, 1);
 	assert_non_null(strstr(s.missing, "fbdev"));
-	assert_int_equal(scene_show(&s, sim, NULL, NULL), 0);
+	assert_int_equal(scene_show(&s, sim, NULL, NULL, NULL), 0);
 	assert_int_equal(s.shown, 0);
 	scene_free(&s);
 
@@ -206,7 +206,7 @@ static void auto_waits_and_a_named_null_display_does_not(void **state)
 	assert_int_equal(scene_init(&s, &cf, &ct, 0, 160, 120), 0);
 	assert_int_equal(scene_open_display(&s, 0), 0);
 	assert_int_equal(s.waiting, 0);
-	assert_int_equal(scene_show(&s, sim, NULL, NULL), 0);
+	assert_int_equal(scene_show(&s, sim, NULL, NULL, NULL), 0);
 	assert_int_equal(s.shown, 1);
 	scene_free(&s);
 }
