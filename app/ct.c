@@ -1,13 +1,13 @@
 #include "app/ct.h"
 
 #include <errno.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
+#include "app/pool.h"
 #include "engine/core/lim.h"
 #include "engine/map/grid.h"
 #include "engine/map/lmap.h"
@@ -157,14 +157,13 @@ struct ct_lights_job {
 static int load_lights(struct ct *c, int i, const struct lim_stop *stop, char *err,
 		       size_t errlen);
 
-static void *ct_lights_run(void *p)
+static void ct_lights_run(void *p)
 {
 	struct ct_lights_job *j = p;
 
 	j->rc = 0;
 	for (int i = 0; j->rc == 0 && i < j->c->nmaps; i++)
 		j->rc = load_lights(j->c, i, j->stop, j->err, sizeof j->err);
-	return NULL;
 }
 
 /* The WADs' textures, stages and sounds; with lights, the stages' light
@@ -177,8 +176,8 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 	uint8_t read[CT_MAX_WADS] = { 0 };  /* bufs[i] was read, not mapped */
 	char names[64][9], picked[CT_MAX_STAGES][9];
 	struct ct_lights_job job = { c, stop, 0, "" };
-	pthread_t th;
-	int npicked = 0, threaded = 0;
+	struct pool_task *task = NULL;
+	int npicked = 0;
 	struct wad *w = NULL;
 	const char *name = "";
 	int rc, i;
@@ -236,7 +235,7 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 	if (rc == 0 && s->lights && c->nmaps > 0) {
 		*lit = 1;
 		/* without a thread the lights are made here, after the rest */
-		threaded = pthread_create(&th, NULL, ct_lights_run, &job) == 0;
+		pool_task_start(ct_lights_run, &job, &task);
 	}
 	if (rc == 0) {
 		/* one sky, the first map's (Doom changes it per episode) */
@@ -250,8 +249,8 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 		if (rc < 0)
 			snprintf(err, errlen, "sounds: %s", strerror(-rc));
 	}
-	if (threaded)
-		pthread_join(th, NULL);
+	if (task)
+		pool_task_join(task);
 	else if (*lit)
 		ct_lights_run(&job);
 	if (rc == 0 && job.rc < 0) {

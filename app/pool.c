@@ -238,3 +238,44 @@ void pool_px_par(struct pool *p, struct px_par *out)
 	out->pool = p;
 	out->threads = pool_threads(p);
 }
+
+struct pool_task {
+	pthread_t th;
+	void (*fn)(void *arg);
+	void *arg;
+};
+
+static void *pool_task_main(void *p)
+{
+	struct pool_task *t = p;
+
+	t->fn(t->arg);
+	return NULL;
+}
+
+int pool_task_start(void (*fn)(void *arg), void *arg, struct pool_task **out)
+{
+	struct pool_task *t = calloc(1, sizeof(*t));
+	int rc;
+
+	*out = NULL;
+	if (!t)
+		return -ENOMEM;
+	t->fn = fn;
+	t->arg = arg;
+	rc = pthread_create(&t->th, NULL, pool_task_main, t);
+	if (rc != 0) {
+		free(t);
+		return -rc;
+	}
+	*out = t;
+	return 0;
+}
+
+void pool_task_join(struct pool_task *t)
+{
+	if (!t)
+		return;
+	pthread_join(t->th, NULL);
+	free(t);
+}

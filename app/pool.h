@@ -42,6 +42,16 @@ int pool_threads(const struct pool *p);
  * struct pool * (void * to fit struct r_par). */
 void pool_run(void *p, int n, void (*job)(void *arg, int i), void *arg);
 
+/* One job on a thread of its own, for work that overlaps the caller's
+ * (the content loader's light maps, app/ct.c). pool_task_start runs
+ * fn(arg) on a new thread: 0 with *out, or -errno when no thread could be
+ * started (the caller then does the work itself). pool_task_join waits
+ * for fn to return (its writes are then visible) and frees the task;
+ * NULL-safe. */
+struct pool_task;
+int pool_task_start(void (*fn)(void *arg), void *arg, struct pool_task **out);
+void pool_task_join(struct pool_task *t);
+
 /* CLOCK_MONOTONIC in ns (the renderer measures its strips with it). */
 uint64_t pool_now(void);
 

@@ -149,6 +149,51 @@ static void two_threads_run_two_jobs_at_once(void **state)
 	pool_free(p);
 }
 
+/* pool_task: the job runs on its own thread, at the same time as the
+ * caller: each side waits (at most 2 s) for the other's flag, which a job
+ * run in line, before or at the join, could not see. */
+struct handshake {
+	atomic_int caller, task, task_saw_caller;
+};
+
+static int wait_flag(atomic_int *f)
+{
+	for (int i = 0; i < 2000; i++) {
+		struct timespec nap = { 0, 1000 * 1000 };
+
+		if (atomic_load(f))
+			return 1;
+		nanosleep(&nap, NULL);
+	}
+	return 0;
+}
+
+static void handshake_job(void *arg)
+{
+	struct handshake *h = arg;
+
+	atomic_store(&h->task, 1);
+	atomic_store(&h->task_saw_caller, wait_flag(&h->caller));
+}
+
+static void a_task_runs_beside_the_caller(void **state)
+{
+	struct handshake h;
+	struct pool_task *t;
+	(void)state;
+
+	atomic_init(&h.caller, 0);
+	atomic_init(&h.task, 0);
+	atomic_init(&h.task_saw_caller, 0);
+	assert_int_equal(pool_task_start(handshake_job, &h, &t), 0);
+	assert_non_null(t);
+	assert_true(wait_flag(&h.task));
+	atomic_store(&h.caller, 1);
+	pool_task_join(t);
+	assert_int_equal(atomic_load(&h.task_saw_caller), 1);
+	pool_task_join(NULL);
+}
+
 static void nothing_to_do_returns_at_once(void **state)
 {
 	struct pool *p;
@@ -184,6 +229,7 @@ int main(void)
 		cmocka_unit_test(every_job_runs_exactly_once_per_batch),
 		cmocka_unit_test(a_batch_of_70000_jobs_runs_each_once),
 		cmocka_unit_test(two_threads_run_two_jobs_at_once),
+		cmocka_unit_test(a_task_runs_beside_the_caller),
 		cmocka_unit_test(nothing_to_do_returns_at_once),
 		cmocka_unit_test(r_par_points_at_the_pool),
 	};
