@@ -1,14 +1,15 @@
 /*
  * autopilot: writes the input script (.scr, input/scr.h) of a walk from a
  * Doom map's start to its exit, for the golden exit recordings of
- * tests/replay/freedoom (README.md there).
+ * tests/replay/freedoom (tests/replay/README.md).
  *
  *   autopilot --wad FILE [--wad FILE...] --map NAME [--set S.K=V...]
- *             --route ROUTE [--out SCRIPT] [--inter N] [--verbose]
+ *             --route ROUTE [--out SCRIPT] [--inter N] [--verbose | --trace]
+ *   autopilot --wad FILE --map NAME --explore X,Y[,KEYS]
  *
  * It loads the content with the daemon's own code (app/ct.c), starts the
  * sim as the daemon does with no configuration files and the --set
- * options given (start of app/app.c: settings from config/cfg.c, default
+ * options given (app/app.c's settings from config/cfg.c, the default
  * tables, the content's sounds), and plays it tick by tick through the
  * same path as a script (actions -> cmd_build -> sim_tick). Every change
  * of the actions it holds becomes a script line; the script then is
@@ -19,12 +20,21 @@
  * of steps, one a line, '#' starting a comment:
  *   go X Y [TOL]      walk to within TOL (default 16) units of map point
  *                     (X, Y); the way is found on a grid of 8-unit cells
- *                     over the map as the sim has it now (closed doors and
- *                     raised lifts are walls); while there is none (a
- *                     door still opening, a lift still moving) it waits
- *   use X Y           turn to face point (X, Y) (a door's or switch's
- *                     middle) and press USE
+ *                     over the map as the sim has it now (walls, steps of
+ *                     more than 24, openings lower than the player); while
+ *                     there is none (a lift still moving) it waits. A
+ *                     closed manual door (D1/DR; a locked one once its key
+ *                     is held) counts as open: the walk stops in front of
+ *                     it, presses USE and waits for it (one that does not
+ *                     open counts as a wall for 900 ticks)
+ *   use X Y           turn to face point (X, Y) (a switch) and press USE
  *   face X Y          turn to face point (X, Y)
+ *   lift X Y SX SY    get onto the lift at (X, Y), pressing the switch at
+ *                     (SX, SY) while the lift is neither reachable nor
+ *                     moving
+ *   dash X Y          run (forward and strafe held, the fastest move) to
+ *                     (X, Y), over a gap a walk would drop into; the run-up
+ *                     that lands is found by trying on copies of the sim
  *   wait N            stand N ticks
  *   ride X Y          stand until the floor under (X, Y) stops moving
  * After the last step it waits for the map's exit (the intermission page),
@@ -32,10 +42,21 @@
  * with checks that the daemon runs when it records it: mode play, phase 3
  * (the intermission), and the player's position and the score there.
  *
- * On the way it fights: an awake enemy in sight within 1024 units (or any
- * within 384) is turned to and shot while the walk waits; one that stays
- * alive for 6 s of shooting is left alone. Cheats there are none: the
- * route and the game's own settings (difficulty, lives: --set) must do.
+ * On the way it fights: an awake enemy in sight within 700 units (or any
+ * within 384) is turned to and shot when the shot passes well inside its
+ * body, standing (braking) or backing off from a biter; one that five
+ * shots do not hurt, or that 6 s of shooting do not kill, is left alone.
+ * Low on ammunition (under 40) or health (under 60), it first takes the
+ * nearest pickup that gives it when the way there is short. A life lost
+ * restarts the walk from the map's start with what was done kept (the
+ * game's rule). No cheats: the route and the game's own settings
+ * (difficulty, lives: --set) must do.
+ *
+ * --explore X,Y[,KEYS], for writing routes: no play; prints the way from
+ * the map's start to (X, Y) with every door and tagged sector open (locked
+ * doors only for the G_KEY_* bits KEYS), sector by sector, marking the
+ * ones opened; AUTOPILOT_DUMP=FILE draws the last search as a PPM picture
+ * (also when a step fails).
  *
  * Exit: 0 with the script written; 1 when a step could not be done (the
  * message names the route's line, the tick and the player's position);
@@ -1193,7 +1214,8 @@ static void ap_cfg_err(void *user, const char *file, int line, const char *msg)
 static int ap_usage(void)
 {
 	fprintf(stderr, "usage: autopilot --wad FILE [--wad FILE...] --map NAME [--set S.K=V...] "
-			"--route ROUTE [--out SCRIPT] [--inter N] [--verbose]\n");
+			"--route ROUTE [--out SCRIPT] [--inter N] [--verbose | --trace]\n"
+			"       autopilot --wad FILE --map NAME --explore X,Y[,KEYS]\n");
 	return 2;
 }
 
@@ -1241,9 +1263,9 @@ int main(int argc, char **argv)
 			return ap_usage();
 		i++;
 	}
-	if (!spec.nwads || !spec.map || !a.route)
+	if (!spec.nwads || !spec.map || (!a.route && !explore))
 		return ap_usage();
-	nsteps = ap_read_route(a.route, steps, AP_MAX_STEPS);
+	nsteps = explore ? 0 : ap_read_route(a.route, steps, AP_MAX_STEPS);
 	if (nsteps < 0)
 		return 2;
 	if (ct_load(&ct, &spec, err, sizeof(err)) < 0) {
