@@ -131,9 +131,10 @@ TEST_TOOLS := $(BUILD)/tests/sndfind $(BUILD)/tests/autopilot
 $(BUILD)/tests/sndfind: tests/sound/sndfind.c $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -o $@ $< $(LIB) $(LDLIBS)
-$(BUILD)/tests/autopilot: tests/replay/autopilot.c $(LIB)
+AUTOPILOT_SRC := tests/replay/autopilot.c tests/replay/ap_walk.c tests/replay/ap_way.c
+$(BUILD)/tests/autopilot: $(AUTOPILOT_SRC) tests/replay/ap.h $(LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -o $@ $< $(LIB) $(LDLIBS)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $(AUTOPILOT_SRC) $(LIB) $(LDLIBS)
 
 $(BUILD)/tools/%: tools/%.c
 	@mkdir -p $(dir $@)
