@@ -125,11 +125,16 @@ $(BUILD)/tests/%: tests/unit/%.c $(LIB)
 		$(LDLIBS) $(TEST_LIBS)
 
 # Test tools that link the library: sndfind finds a sound in a recording of
-# what was played (the script and VM sound tests).
-TEST_TOOLS := $(BUILD)/tests/sndfind
+# what was played (the script and VM sound tests); autopilot writes the
+# scripts of the Freedoom exit goldens from their routes (tests/replay).
+TEST_TOOLS := $(BUILD)/tests/sndfind $(BUILD)/tests/autopilot
 $(BUILD)/tests/sndfind: tests/sound/sndfind.c $(LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -MMD -MP -o $@ $< $(LIB) $(LDLIBS)
+AUTOPILOT_SRC := tests/replay/autopilot.c tests/replay/ap_walk.c tests/replay/ap_way.c
+$(BUILD)/tests/autopilot: $(AUTOPILOT_SRC) tests/replay/ap.h $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $(AUTOPILOT_SRC) $(LIB) $(LDLIBS)
 
 $(BUILD)/tools/%: tools/%.c
 	@mkdir -p $(dir $@)

@@ -20,6 +20,7 @@
 #include "app/op.h"
 #include "app/out.h"
 #include "app/pace.h"
+#include "app/prog.h"
 #include "app/pspec.h"
 #include "app/say.h"
 #include "app/scene.h"
@@ -172,8 +173,11 @@ static void step_flight_before(void *ctx, struct loop_tick *k)
 static void step_sim(void *ctx, struct loop_tick *k)
 {
 	struct app *a = ctx;
+	char line[256];
 
 	sim_tick(&a->sim, &k->rt.cmd);
+	if (prog_exit(&a->sim, line, sizeof(line)))
+		say("%s", line);
 	demo_tick(&a->demo, &a->sim);
 	a->stats.ticks++;
 }

@@ -8,7 +8,8 @@
 #  3. a recording of another map, or of a newer format, is refused with a
 #     message that says what differs;
 #  4. a recording cut mid-command (power loss) replays its whole commands;
-#  5. a changed command changes the hashes from that tick on, not before.
+#  5. a changed command changes the hashes from that tick on, not before;
+#  6. the exit recordings of Freedoom maps take their map's exit.
 # Usage: tests/replay/run.sh arcaded-O2 arcaded-O0
 set -u
 BIN=$1
@@ -68,6 +69,38 @@ if [ -f "$W" ]; then
 else
 	echo "FAIL $W missing: run scripts/setup.sh (package freedoom)"; fail=1
 fi
+
+# The exit recordings (freedoom/exits.list: from a map's start to its exit
+# and a few seconds of the intermission page). Each replays with --verify
+# (the hashes it stores) to its committed hashes; and, apart from any
+# hash, the replay's own log says that the map's exit was taken (app/prog.c:
+# "map E1M1: exit taken after ..."), once; the same recording cut 300 ticks
+# before its end (the exit is 241 ticks before it) says nothing of it.
+exits=0
+while read -r name wad map settings; do
+	case $name in '#'*|'') continue ;; esac
+	exits=$((exits + 1))
+	if [ ! -f "$wad" ]; then
+		echo "FAIL $wad missing: run scripts/setup.sh (package freedoom)"; fail=1; continue
+	fi
+	g=tests/replay/freedoom/golden-$name
+	$BIN $common --wad "$wad" --map "$map" replay "$g.rec" --verify >"$tmp/x" 2>"$tmp/x.err"
+	rc=$?
+	cmp -s "$g.hashes" "$tmp/x"
+	same=$?
+	check "golden-$name ($map) replays with --verify (exit $rc) to its committed hashes ($(wc -l <"$tmp/x") ticks)" \
+		$([ "$rc" -eq 0 ] && [ "$same" -eq 0 ]; echo $?)
+	n=$(grep -c "map $map: exit taken after" "$tmp/x.err")
+	check "golden-$name: the replay took $map's exit: $(grep -o "map $map: exit taken.*" "$tmp/x.err" | head -n 1)" \
+		$([ "$n" -eq 1 ]; echo $?)
+	hdr=$(od -An -tu4 -j 12 -N 4 "$g.rec" | tr -d ' ')
+	ticks=$(wc -l <"$g.hashes")
+	head -c $((hdr + 30 * (ticks - 300))) "$g.rec" >"$tmp/xcut.rec"
+	$BIN $common --wad "$wad" --map "$map" replay "$tmp/xcut.rec" --no-render --quiet >/dev/null 2>"$tmp/xcut.err"
+	check "golden-$name cut 300 ticks before its end: no exit in the log" \
+		$(! grep -q "exit taken" "$tmp/xcut.err"; echo $?)
+done <tests/replay/freedoom/exits.list
+check "exit recordings listed: $exits" $([ "$exits" -ge 3 ]; echo $?)
 
 # resum FILE: writes format 3's header sum (bytes 96..103: FNV-1a of bytes
 # 0..31 and 36..95, input/rec.h) again after a test changed a field, so the

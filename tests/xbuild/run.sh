@@ -12,6 +12,8 @@
 #     one mixed at 22050 Hz, a rate whose ticks are 367 or 368 frames),
 #   - two random-input recordings (replay --make-random, fixed seeds),
 #   - one game at 200x150 and 640x480 besides the default 320x240,
+#   - the Freedoom exit recordings (tests/replay/freedoom/exits.list), their
+#     states and sound only (--no-render),
 # and its per-tick "TICK STATEHASH FRAMEHASH AUDIOHASH" output must equal,
 # byte for byte, what the daemon itself prints with --replay (gcc -O2):
 # the audio hash of every tick is the same on every build. Then the
@@ -180,6 +182,19 @@ if [ -f "$W" ]; then
 else
 	bad "$W missing: run scripts/setup.sh (package freedoom)"
 fi
+# The exit recordings of Freedoom maps (tests/replay/freedoom/exits.list,
+# 24,000 ticks in all): their states and sound on every build, without
+# rendering (--no-render: frame hash 0), which keeps the emulated aarch64
+# build's share small; the frames of Freedoom maps are the E1M1 walk's above.
+while read -r name wad map settings; do
+	case $name in '#'*|'') continue ;; esac
+	if [ -f "$wad" ]; then
+		compare "$name" "tests/replay/freedoom/golden-$name.rec" 320x240 --wad "$wad" --map "$map" \
+			--no-render
+	else
+		bad "$wad missing: run scripts/setup.sh (package freedoom)"
+	fi
+done <tests/replay/freedoom/exits.list
 compare replay-game "$tmp/rec/replay-game.rec" 200x150
 compare replay-game "$tmp/rec/replay-game.rec" 640x480
 [ "$fail" -eq "$before" ] &&

@@ -1,0 +1,15 @@
+#!/bin/sh
+# Writes the scripts of the golden exit recordings from their routes:
+# tests/replay/freedoom/NAME.scr from NAME.route for every line of
+# freedoom/exits.list, with the autopilot (tests/replay/autopilot.c, built
+# by `make tests`). Only after a change of a route or of the game's rules;
+# then record them again with tests/replay/regen.sh and look at the frames.
+# Usage: tests/replay/autopilot.sh [path/to/autopilot]
+set -eu
+cd "$(dirname "$0")/../.."
+AP=${1:-build/tests/autopilot}
+grep -v '^#' tests/replay/freedoom/exits.list | while read -r name wad map settings; do
+	# shellcheck disable=SC2086
+	"$AP" --wad "$wad" --map "$map" $settings --route "tests/replay/freedoom/$name.route" \
+		--out "tests/replay/freedoom/$name.scr"
+done
