@@ -20,6 +20,7 @@
 #include "app/op.h"
 #include "app/out.h"
 #include "app/pace.h"
+#include "app/pool.h"
 #include "app/prog.h"
 #include "app/pspec.h"
 #include "app/say.h"
@@ -360,6 +361,8 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 		*rh = o->size_h;
 	}
 	spec.stop = sig_stop_flag();   /* a stop signal ends a long load */
+	spec.task_start = pool_task_start;
+	spec.task_join = pool_task_join;
 	rc = ct_load(&a->ct, &spec, err, sizeof(err));
 	if (rc < 0 && rc != -ECANCELED && a->content.nwads && !o->content.nwads && !o->replay) {
 		/* [game] wad or maps is wrong: the cabinet plays its built-in

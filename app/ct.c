@@ -7,7 +7,6 @@
 #include <string.h>
 #include <strings.h>
 
-#include "app/pool.h"
 #include "engine/core/lim.h"
 #include "engine/map/grid.h"
 #include "engine/map/lmap.h"
@@ -235,7 +234,8 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 	if (rc == 0 && s->lights && c->nmaps > 0) {
 		*lit = 1;
 		/* without a thread the lights are made here, after the rest */
-		pool_task_start(ct_lights_run, &job, &task);
+		if (s->task_start && s->task_join)
+			s->task_start(ct_lights_run, &job, &task);
 	}
 	if (rc == 0) {
 		/* one sky, the first map's (Doom changes it per episode) */
@@ -250,7 +250,7 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 			snprintf(err, errlen, "sounds: %s", strerror(-rc));
 	}
 	if (task)
-		pool_task_join(task);
+		s->task_join(task);
 	else if (*lit)
 		ct_lights_run(&job);
 	if (rc == 0 && job.rc < 0) {

@@ -17,6 +17,7 @@
 
 struct lmap;
 struct map;
+struct pool_task;
 struct snd_set;
 struct tex_set;
 
@@ -38,6 +39,13 @@ struct ct_spec {
 	 * the loaders poll it (engine/core/lim.h) and a load ends within
 	 * well under a second of it becoming nonzero. */
 	const volatile sig_atomic_t *stop;
+	/* Starts fn(arg) on a thread of its own and waits for it (the
+	 * daemon's app/pool.h pool_task_start and pool_task_join), for the
+	 * stages' light maps while the textures and sounds load; NULL: the
+	 * loader makes them itself, after the rest (the engine-only replayer
+	 * of tests/xbuild links no threads). */
+	int (*task_start)(void (*fn)(void *arg), void *arg, struct pool_task **out);
+	void (*task_join)(struct pool_task *t);
 };
 
 struct ct {
