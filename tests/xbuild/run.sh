@@ -116,9 +116,15 @@ for g in golden-attract golden-game golden-walk; do
 		bad "tests/replay/$g.rec is missing (a committed golden)"
 	fi
 done
+top=$(pwd)
+top_bin=$(realpath "$BIN")
 record() { # $1 script, $2 output name, rest: daemon options
 	s=$1; n=$2; shift 2
-	"$BIN" $common "$@" --script "$s" --record "$tmp/rec/$n.rec" >/dev/null 2>"$tmp/record.err"
+	# in a directory of its own: a script's screenshot (screenshot.scr's
+	# shot.png) is written relative to it, not into the tree
+	mkdir -p "$tmp/cwd"
+	(cd "$tmp/cwd" && "$top_bin" $common "$@" --script "$top/$s" --record "$tmp/rec/$n.rec") \
+		>/dev/null 2>"$tmp/record.err"
 	# expect_fails.scr fails on purpose and records; a script refused at
 	# set-up on purpose (expect-exit 2) records nothing; any other script
 	# that records nothing is a failure
