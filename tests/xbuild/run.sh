@@ -189,7 +189,7 @@ else
 	bad "$W missing: run scripts/setup.sh (package freedoom)"
 fi
 # The exit recordings of Freedoom maps (tests/replay/freedoom/exits.list,
-# 24,000 ticks in all): their states and sound on every build, without
+# 38,000 ticks in all): their states and sound on every build, without
 # rendering (--no-render: frame hash 0), which keeps the emulated aarch64
 # build's share small; the frames of Freedoom maps are the E1M1 walk's above.
 while read -r name wad map settings; do
