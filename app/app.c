@@ -388,6 +388,8 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 		char un[512];
 		if (pspec_unplayed(a->ct.maps[i], un, sizeof un))
 			say_warn("%s", un);
+		if (pspec_crowded(a->ct.maps[i], c->game.difficulty, un, sizeof un))
+			say_warn("%s", un);
 	}
 	say("content: %s, %u sectors, %u lines, %d light(s)%s", a->ct.what, a->ct.map->num_sectors,
 	    a->ct.map->num_lines, a->ct.nlights,

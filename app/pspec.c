@@ -8,6 +8,7 @@
 
 #include "app/ct.h"
 #include "app/say.h"
+#include "engine/game/g_game.h"
 #include "engine/game/g_world.h"
 #include "engine/map/map.h"
 #include "engine/map/map_wad.h"
@@ -318,4 +319,20 @@ int pspec_unplayed(const struct map *m, char *out, size_t len)
 	if (!any)
 		out[0] = '\0';
 	return any;
+}
+
+int pspec_crowded(const struct map *m, int difficulty, char *out, size_t len)
+{
+	int ne, np;
+
+	if (len)
+		out[0] = '\0';
+	g_spawn_count(m, difficulty, &ne, &np);
+	if (!len || (ne <= G_MAX_ENEMIES && np <= G_MAX_PICKUPS))
+		return 0;
+	snprintf(out, len,
+		 "map %s: %d enemies and %d pickups at difficulty %d; the game keeps the first %d "
+		 "enemies and %d pickups in the map's order, the rest never appear",
+		 m->name, ne, np, difficulty, G_MAX_ENEMIES, G_MAX_PICKUPS);
+	return 1;
 }

@@ -29,4 +29,11 @@ int pspec_print(const char *const *wads, int nwads, const char *map, FILE *out);
  * every special of m or out could not be filled (no memory). */
 int pspec_unplayed(const struct map *m, char *out, size_t len);
 
+/* The load-time note of a map with more enemies or pickups at difficulty
+ * (0..3) than the game keeps (G_MAX_ENEMIES, G_MAX_PICKUPS; the first in
+ * the map's order stay): "map E1M3: 48 enemies and 164 pickups at
+ * difficulty 0; the game keeps ...". 1 when there are more, 0 (out "")
+ * when not. */
+int pspec_crowded(const struct map *m, int difficulty, char *out, size_t len);
+
 #endif

@@ -242,6 +242,12 @@ void g_thing_info(uint16_t type, struct g_thing_info *out);
  * player at a time. */
 int g_thing_at_difficulty(uint16_t flags, int d);
 
+/* The enemies and pickups map m spawns at difficulty d, as g_spawn_stage
+ * counts them; the game keeps the first G_MAX_ENEMIES and G_MAX_PICKUPS
+ * in the map's order (the load warns of more: app/pspec.c). */
+struct map;
+void g_spawn_count(const struct map *m, int d, int *enemies, int *pickups);
+
 /* Doom's thing flags. */
 #define G_TF_AMBUSH 0x0008
 #define G_TF_MULTI 0x0010

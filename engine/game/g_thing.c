@@ -24,6 +24,7 @@
 #include "engine/game/g_game.h"
 #include "engine/game/g_world.h"
 #include "engine/game/sim.h"
+#include "engine/map/map.h"
 #include "engine/map/th.h"
 
 struct g_thing_row {
@@ -154,4 +155,18 @@ int g_thing_at_difficulty(uint16_t flags, int d)
 	if ((flags & 7) == 0)
 		return 1;
 	return (flags & bit[d < 0 ? 0 : d > 3 ? 3 : d]) != 0;
+}
+
+void g_spawn_count(const struct map *m, int d, int *enemies, int *pickups)
+{
+	*enemies = *pickups = 0;
+	for (uint32_t i = 0; i < m->num_things; i++) {
+		struct g_thing_info ti;
+
+		g_thing_info(m->things[i].type, &ti);
+		if (!g_thing_at_difficulty(m->things[i].flags, d))
+			continue;
+		*enemies += ti.cls == G_C_ENEMY;
+		*pickups += ti.cls == G_C_PICKUP;
+	}
 }

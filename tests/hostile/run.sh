@@ -214,6 +214,38 @@ if [ -r /usr/share/games/doom/freedoom1.wad ]; then
 	else
 		ok "freedoom1 E1M1 load: no unsupported specials logged"
 	fi
+	grep -q "enemies and .* pickups at difficulty" "$tmp/err" &&
+		bad "freedoom1 E1M1 load: a note of too many things (it has 40 items)"
+	# E1M3 has more pickups than the game keeps (G_MAX_PICKUPS, 96): the
+	# load says so, with the map's own count of enemies at that skill
+	# (Doom's monster types with the easy bit, read here from THINGS)
+	want=$(python3 - /usr/share/games/doom/freedoom1.wad <<'PY'
+import struct, sys
+d = open(sys.argv[1], 'rb').read()
+n, ofs = struct.unpack('<ii', d[4:12])
+lumps = [struct.unpack('<ii8s', d[ofs + 16 * i:ofs + 16 * i + 16]) for i in range(n)]
+i = [l[2].rstrip(b'\0') for l in lumps].index(b'E1M3')
+o, size, _ = lumps[i + 1]
+mon = {3004, 9, 65, 3001, 3002, 58, 3005, 3003, 69, 3006, 7, 68, 16, 71, 84, 64, 66, 67, 88, 89, 72}
+e = 0
+for k in range(size // 10):
+    t, f = struct.unpack('<hh', d[o + 10 * k + 6:o + 10 * k + 10])
+    if f & 16 or ((f & 7) and not f & 1):
+        continue
+    e += t in mon
+print(e)
+PY
+)
+	"$BIN" --config-dir "$tmp/etc" --state-dir "$tmp/state" --wad /usr/share/games/doom/freedoom1.wad \
+		--map E1M3 --set game.difficulty=0 --script "$tmp/end.scr" --set display.backend=file \
+		--set display.file="$tmp/fb" >/dev/null 2>"$tmp/err"
+	line=$(grep -m 1 "map E1M3: .* enemies and .* pickups at difficulty 0" "$tmp/err")
+	got=$(echo "$line" | sed -n 's/.*E1M3: \([0-9]*\) enemies and \([0-9]*\) pickups.*/\1 \2/p')
+	if [ -n "$got" ] && [ "${got% *}" = "$want" ] && [ "${got#* }" -gt 96 ]; then
+		ok "freedoom1 E1M3 load: too many pickups named (THINGS: $want enemies at easy): $line"
+	else
+		bad "freedoom1 E1M3 load: no note of its pickups over the game's 96, or enemies not $want: ${line:-none}"
+	fi
 else
 	echo "SKIP freedoom1 E1M1 load: no /usr/share/games/doom/freedoom1.wad (the freedoom package)"
 fi
