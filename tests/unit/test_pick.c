@@ -115,7 +115,7 @@ static void test_all_maps_stops_at_the_stages_a_run_plays(void **state)
 	two_packs(&w);
 	w.pack[1].nmaps = 36;
 	for (int i = 0; i < 36; i++)
-		snprintf(w.pack[1].maps[i], 9, "E%dM%d", i / 9 + 1, i % 9 + 1);
+		snprintf(w.pack[1].maps[i], 9, "E%cM%c", '1' + i / 9, '1' + i % 9);
 	pick_content(&p, &w, NULL);
 	pick_keys(&p, PICK_K_DOWN);
 	pick_keys(&p, PICK_K_DOWN);
