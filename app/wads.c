@@ -15,16 +15,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "engine/core/le.h"
+
 const char *wads_name(const struct wads_pack *p)
 {
 	const char *s = strrchr(p->path, '/');
 
 	return s ? s + 1 : p->path;
-}
-
-static uint32_t wads_le32(const uint8_t *b)
-{
-	return (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
 }
 
 /* Reads exactly n bytes at off; 0, -EBADMSG when the file is shorter, or
@@ -84,8 +81,8 @@ static int wads_read(int fd, off_t size, struct wads_pack *p, char *why, size_t 
 		return -EBADMSG;
 	}
 	p->iwad = h[0] == 'I';
-	nl = wads_le32(h + 4);
-	at = wads_le32(h + 8);
+	nl = le_get32(h + 4);
+	at = le_get32(h + 8);
 	if (nl > WADS_LUMPS_MAX) {
 		snprintf(why, len, "not a WAD: %u lumps (at most %u)", nl, WADS_LUMPS_MAX);
 		return -EBADMSG;
