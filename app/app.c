@@ -397,13 +397,7 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 	if (a->ct.sound_note[0])
 		say("sounds: %s; their built-in sounds play instead", a->ct.sound_note);
 	a->map_hash = sim_stages_hash((const struct map *const *)a->ct.maps, a->ct.nmaps);
-	a->set.coins_per_credit = (uint8_t)c->game.coins_per_credit;
-	a->set.freeplay = (uint8_t)c->game.freeplay;
-	a->set.start_in_play = (uint8_t)c->game.start_in_play;
-	a->set.difficulty = (uint8_t)c->game.difficulty;
-	a->set.lives = (uint8_t)c->game.lives;
-	a->set.volume = (uint8_t)c->game.volume;
-	a->set.attract_sound = (uint8_t)c->game.attract_sound;
+	cfg_settings(c, &a->set);
 	ct_first_map(&a->content, first);
 	if (a->tape.rep) {
 		struct rec_run run = {

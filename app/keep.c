@@ -109,12 +109,17 @@ void keep_start(struct keep *k, const char *dir, int on, struct sim *s, const st
 static void keep_settings(struct keep *k, const struct sim *s, int w, int h)
 {
 	const struct sim_settings *st = &s->set;
-	char ini[320];
+	static const char *const idles[G_IDLE_COUNT] = { "life", "end", "off" };
+	char ini[400];
 	int n = snprintf(ini, sizeof(ini),
 			 "[game]\ncoins_per_credit = %u\nfreeplay = %s\ndifficulty = %u\nlives = %u\n"
-			 "volume = %u\nattract_sound = %u\nrender_width = %d\nrender_height = %d\n",
+			 "volume = %u\nattract_sound = %u\nstage_time = %u\nidle_out = %s\n"
+			 "render_width = %d\nrender_height = %d\n",
 			 st->coins_per_credit, st->freeplay ? "yes" : "no", st->difficulty,
-			 st->lives, st->volume, st->attract_sound, w, h);
+			 st->lives, st->volume, st->attract_sound,
+			 st->stage_time == G_STAGE_TIME_OFF ? 0
+			 : st->stage_time ? st->stage_time : G_STAGE_TIME_DEFAULT,
+			 idles[st->idle_out < G_IDLE_COUNT ? st->idle_out : G_IDLE_OFF], w, h);
 	keep_save(k, "settings.ini", NULL, ini, (size_t)n);
 }
 

@@ -18,6 +18,7 @@
 
 #include "config/cini.h"
 #include "engine/core/num.h"
+#include "engine/game/sim.h"
 #include "input/txt.h"
 
 enum cfg_type {
@@ -47,6 +48,8 @@ static const char *const cfg_backends[] = { "auto", "kms", "fbdev", "file", "ter
 static const char *const cfg_formats[] = { "rgb565", "bgr565", "xrgb8888", "xbgr8888", "rgb888",
 					   NULL };
 static const char *const cfg_scales[] = { "integer", "fill", NULL };
+/* enum g_idle's order (engine/game/g_game.h) */
+static const char *const cfg_idles[] = { "life", "end", "off", NULL };
 static const int cfg_rotations[] = { 0, 90, 180, 270 };
 
 #define CFG_STRKEY(sec, name, field, t)                                                      \
@@ -89,6 +92,9 @@ static const struct cfg_key cfg_keys[] = {
 	CFG_INTKEY(game, lives, game.lives, 1, 9),
 	CFG_INTKEY(game, volume, game.volume, 0, 100),
 	CFG_INTKEY(game, attract_sound, game.attract_sound, 0, 9),
+	CFG_INTKEY(game, stage_time, game.stage_time, 0, 30),
+	{ .section = "game", .key = "idle_out", .type = CFG_T_INDEX,
+	  .off = offsetof(struct cfg, game.idle_out), .names = cfg_idles },
 	CFG_STRKEY(game, wad, game.wad, CFG_T_STR),
 	CFG_STRKEY(game, maps, game.maps, CFG_T_STR),
 	CFG_STRKEY(game, content_dirs, game.content_dirs, CFG_T_STR),
@@ -119,6 +125,21 @@ static void cfg_setstr(char *dst, size_t size, const char *s)
 	snprintf(dst, size, "%s", s);
 }
 
+void cfg_settings(const struct cfg *c, struct sim_settings *set)
+{
+	memset(set, 0, sizeof(*set));
+	set->coins_per_credit = (uint8_t)c->game.coins_per_credit;
+	set->freeplay = (uint8_t)c->game.freeplay;
+	set->start_in_play = (uint8_t)c->game.start_in_play;
+	set->difficulty = (uint8_t)c->game.difficulty;
+	set->lives = (uint8_t)c->game.lives;
+	set->volume = (uint8_t)c->game.volume;
+	set->attract_sound = (uint8_t)c->game.attract_sound;
+	/* the file's 0 is "no clock"; the sim's 0 is its default */
+	set->stage_time = c->game.stage_time == 0 ? G_STAGE_TIME_OFF : (uint8_t)c->game.stage_time;
+	set->idle_out = (uint8_t)c->game.idle_out;
+}
+
 void cfg_defaults(struct cfg *c)
 {
 	const char *sd = getenv("STATE_DIRECTORY");
@@ -142,6 +163,7 @@ void cfg_defaults(struct cfg *c)
 	cfg_setstr(c->game.content_dirs, sizeof(c->game.content_dirs),
 		   "/usr/share/games/doom /var/lib/arcaded/content");
 	c->game.attract_sound = 1;
+	c->game.stage_time = 5;
 	cfg_setstr(c->audio.output, sizeof(c->audio.output), "auto");
 	cfg_setstr(c->audio.device, sizeof(c->audio.device), "default");
 	c->audio.rate = 48000;

@@ -15,6 +15,8 @@
 
 #define CFG_PATH_MAX 256
 
+struct sim_settings;
+
 struct cfg {
 	struct {
 		char backend[16];            /* auto kms fbdev file term null */
@@ -41,6 +43,8 @@ struct cfg {
 		int lives;                   /* 1..9 (3) */
 		int volume;                  /* master volume 0..100 percent (80) */
 		int attract_sound;           /* 0 off, 1 on, N: once every N attract cycles (1) */
+		int stage_time;              /* the stage clock, minutes 1..30, 0 off (5) */
+		int idle_out;                /* a player gone 30 s: life (0) | end (1) | off (2) */
 		char wad[512];               /* WAD files, blank-separated, IWAD first ("" none) */
 		char maps[256];              /* maps or episodes from them ("" the first map) */
 		char content_dirs[512];      /* where the service menu's content picker looks
@@ -72,6 +76,10 @@ struct cfg {
  * when there is no line (a file that cannot be read, a --set). msg is valid
  * during the call only. */
 typedef void (*cfg_err_fn)(void *user, const char *file, int line, const char *msg);
+
+/* The game's rules from c's [game] section (the sim's settings, which
+ * recordings store); set is overwritten whole. */
+void cfg_settings(const struct cfg *c, struct sim_settings *set);
 
 /* Built-in defaults (listed in docs/config.md). paths.state_dir is the first
  * directory of $STATE_DIRECTORY when set, else /var/lib/arcaded. */

@@ -81,6 +81,8 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 	if (size >= REC_HEADER_SIZE_V3) {
 		out[46] = h->set.volume;
 		out[47] = h->set.attract_sound;
+		out[37] = h->set.stage_time;
+		out[38] = h->set.idle_out;
 		le_put32(out + 80, h->audio_rate);
 		le_put32(out + 84, h->audio_version);
 		le_put64(out + 88, h->sound_hash);
@@ -186,7 +188,7 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 	}
 	/* Reserved bytes are 0 as written: a flip there is damage, not a
 	 * field this build may skip. */
-	if (rec_nonzero(buf, 37, 40, err, errlen))
+	if (rec_nonzero(buf, d.version >= REC_VERSION_3 ? 39 : 37, 40, err, errlen))
 		return -EINVAL;
 	if (d.version >= REC_VERSION_2) {
 		d.render_w = le_get16(buf + 40);
@@ -261,6 +263,8 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		}
 		d.set.volume = buf[46];
 		d.set.attract_sound = buf[47];
+		d.set.stage_time = buf[37];
+		d.set.idle_out = buf[38];
 		d.audio_rate = le_get32(buf + 80);
 		d.audio_version = le_get32(buf + 84);
 		d.sound_hash = le_get64(buf + 88);
@@ -271,6 +275,16 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		if (d.set.attract_sound > 9) {
 			txt_set(err, errlen, "attract_sound %u out of range 0..9",
 				d.set.attract_sound);
+			return -EINVAL;
+		}
+		if (d.set.stage_time > G_STAGE_TIME_MAX && d.set.stage_time != G_STAGE_TIME_OFF) {
+			txt_set(err, errlen, "stage_time %u out of range 0..%d or %d (off)",
+				d.set.stage_time, G_STAGE_TIME_MAX, G_STAGE_TIME_OFF);
+			return -EINVAL;
+		}
+		if (d.set.idle_out >= G_IDLE_COUNT) {
+			txt_set(err, errlen, "idle_out %u out of range 0..%d", d.set.idle_out,
+				G_IDLE_COUNT - 1);
 			return -EINVAL;
 		}
 		if ((d.hash_flags & REC_HAS_AUDIO) &&

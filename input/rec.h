@@ -13,7 +13,9 @@
  *  31  1  difficulty 0..3 (0 in recordings of engine version 1)
  *  32  4  number of records, or 0xffffffff if the writer did not finish
  *  36  1  lives 0..9, 0 meaning the default (0 in engine version 1)
- *  37  3  reserved 0
+ *  37  3  reserved 0; version 3 (engine version 5 on): stage_time 0..30 or
+ *        255 (off) (37)
+ *        and idle_out 0..2 (38), 39 reserved 0
  *  40  ... records: the command, REC_CMD_SIZE bytes:
  *        int8 forward, int8 side, int16 turn, uint8 buttons, uint8 coins
  *
@@ -65,7 +67,7 @@
  * size (a later minor addition) is skipped.
  *
  * Checks on the header beyond the ranges of its fields: reserved bytes
- * (37..39; 46..47 in version 2; 52..55 and 72..79 without a snapshot) are 0, the map
+ * (37..39 before version 3, 39 in it; 46..47 in version 2; 52..55 and 72..79 without a snapshot) are 0, the map
  * name holds nothing after its first NUL, the start time fits 32 bits.
  * Version 3's header sum covers every header byte but the count, which
  * the record count check covers; in version 2 the low four bytes of the
@@ -93,17 +95,19 @@
 /* 2: the game: enemies, stages, modes, menu; 3: sound (channels,
  * settings) and Doom's specials (the map's changing parts, movers, keys,
  * exits: engine/game/g_world.h), which landed together; 4: the specials'
- * sounds (twelve sounds more, so twelve more lengths in the state) */
-#define REC_ENGINE_VERSION 4
+ * sounds (twelve sounds more, so twelve more lengths in the state); 5: the
+ * stage clock, hurry up, the idle player and the time bonus (g_pace.c),
+ * with their settings stage_time and idle_out */
+#define REC_ENGINE_VERSION 5
 /* sim_snapshot_size() at REC_ENGINE_VERSION. A field added to the sim's
  * state (engine/game/sim_table.h) changes the size and every state hash:
  * raise REC_ENGINE_VERSION and set this to the new size, together
  * (test_rec fails on the size until then, as a reminder of the version). */
-#define REC_ENGINE_SNAPSHOT 96922
+#define REC_ENGINE_SNAPSHOT 96935
 /* Bumped whenever the renderer draws any frame differently (engine/render/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */
-#define REC_RENDER_VERSION 4
+#define REC_RENDER_VERSION 5
 /* Bumped whenever the audio of any tick changes (the mixer, the built-in
  * sounds, a sound's lump): recorded audio hashes of another version are
  * not compared. 2: doors, lifts, switches and teleports sound. */

@@ -24,7 +24,8 @@
 #define G_FLASH_TICKS 8
 
 /* Per difficulty 0..3: percent of the kinds' damage and speed. Each loop
- * through all stages adds 25% damage and 10% speed (speed capped at 200%). */
+ * through all stages adds 25% damage and 10% speed (speed capped at 200%);
+ * the stage clock's hurry up adds G_HURRY_SPEED% after the cap. */
 static const uint8_t g_damage_pct[4] = { 50, 100, 150, 200 };
 static const uint8_t g_speed_pct[4] = { 80, 100, 115, 130 };
 
@@ -41,6 +42,8 @@ fx_t g_enemy_speed(const struct sim *s, int kind)
 
 	if (pct > 200)
 		pct = 200;
+	if (g_pace_hurry(s))
+		pct += G_HURRY_SPEED;
 	return (fx_t)((int64_t)g_kinds[kind].speed * pct / 100);
 }
 

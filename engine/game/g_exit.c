@@ -20,6 +20,7 @@ void g_exit(struct sim *s, int secret)
 	s->w.exit_t = g->stage_t;
 	s->w.next = (uint8_t)g_next_stage(s, secret);
 	g->score += G_STAGE_BONUS * ((uint32_t)g->stage + 1);
+	g_pace_bonus(s);
 	g->phase = G_PH_INTER;
 	g->phase_t = 0;
 }

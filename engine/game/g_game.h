@@ -129,6 +129,29 @@ enum g_phase {
 #define G_STAGE_BONUS 1000             /* times the stage number, on clearing it */
 #define G_EXTRA_LIFE_SCORE 20000       /* an extra life each time the score passes a multiple */
 
+/* The stage clock (arcade pacing): each stage, and each life on it, gets
+ * set.stage_time minutes; in its last G_HURRY_TICKS every enemy wakes and
+ * runs faster ("HURRY UP"); at zero the player dies ("TIME UP"). Whole
+ * seconds left at a clear or an exit score G_TIME_BONUS each. A player who
+ * gives no input for G_IDLE_TICKS in play is gone (set.idle_out), warned
+ * for the last G_IDLE_WARN of them. */
+#define G_STAGE_TIME_DEFAULT 5         /* minutes, for set.stage_time 0 */
+#define G_STAGE_TIME_MAX 30
+/* set.stage_time: no clock (no hurry, no time up, no time bonus), for
+ * free-play cabinets and tests that need a still screen */
+#define G_STAGE_TIME_OFF 255
+#define G_HURRY_TICKS 1800             /* 30 s */
+#define G_HURRY_SPEED 50               /* points added to the enemies' speed percent */
+#define G_IDLE_TICKS 1800              /* 30 s */
+#define G_IDLE_WARN 600
+#define G_TIME_BONUS 10
+
+/* set.idle_out: what happens to a player who is gone. */
+enum g_idle { G_IDLE_LIFE, G_IDLE_END, G_IDLE_OFF, G_IDLE_COUNT };
+
+/* Why the player died, for the banner. */
+enum g_why { G_WHY_KILLED, G_WHY_TIME, G_WHY_IDLE };
+
 /* What the last shot did, for the HUD and the puff sprite. */
 enum g_shot { G_SHOT_NONE, G_SHOT_WALL, G_SHOT_ENEMY, G_SHOT_MISS };
 
@@ -151,7 +174,11 @@ enum g_shot { G_SHOT_NONE, G_SHOT_WALL, G_SHOT_ENEMY, G_SHOT_MISS };
 	X(VAL, fx_t, shot_y, SIM_COORD) \
 	X(VAL, fx_t, shot_z, SIM_COORD) \
 	X(VAL, uint8_t, shot, SIM_MAX(G_SHOT_MISS)) /* enum g_shot */ \
-	X(VAL, uint16_t, shot_t, SIM_ANY)           /* ticks since the last shot (saturates) */
+	X(VAL, uint16_t, shot_t, SIM_ANY)           /* ticks since the last shot (saturates) */ \
+	X(VAL, uint32_t, clock, SIM_ANY)            /* stage clock: ticks left */ \
+	X(VAL, uint16_t, idle_t, SIM_ANY)           /* ticks in play without input */ \
+	X(VAL, uint8_t, why, SIM_MAX(G_WHY_IDLE))   /* enum g_why: the last death */ \
+	X(VAL, uint32_t, time_bonus, SIM_ANY)       /* scored at the last clear or exit */
 struct g_game {
 	G_GAME_FIELDS(SIM_MEMBER)
 };

@@ -27,6 +27,17 @@ void g_cry(struct sim *s, int i, int cry)
 	g_sound_start(s, g_cries[e->kind % G_KINDS][cry], e->x, e->y, (uint16_t)G_SRC_ENEMY(i));
 }
 
+void g_player_dies(struct sim *s, int why)
+{
+	if (s->g.phase != G_PH_PLAY)
+		return;
+	s->pl.health = 0;
+	s->g.phase = G_PH_DEAD;
+	s->g.phase_t = 0;
+	s->g.why = (uint8_t)why;
+	g_sound_play(s, SFX_PLAYER_DEATH, G_SRC_PLAYER);
+}
+
 void g_hurt_player(struct sim *s, fx_t dmg)
 {
 	if (s->g.phase != G_PH_PLAY)
@@ -34,10 +45,7 @@ void g_hurt_player(struct sim *s, fx_t dmg)
 	s->pl.health -= dmg;
 	s->pl.hurt = G_HURT_TICKS;
 	if (s->pl.health <= 0) {
-		s->pl.health = 0;
-		s->g.phase = G_PH_DEAD;
-		s->g.phase_t = 0;
-		g_sound_play(s, SFX_PLAYER_DEATH, G_SRC_PLAYER);
+		g_player_dies(s, G_WHY_KILLED);
 		return;
 	}
 	g_sound_play(s, SFX_PLAYER_HURT, G_SRC_PLAYER);

@@ -278,4 +278,26 @@ static inline int g_lives_setting(const struct sim *s)
 	return s->set.lives == 0 ? G_LIVES_DEFAULT : s->set.lives > 9 ? 9 : s->set.lives;
 }
 
+/* ---- g_pace: the stage clock, hurry up, the idle player ---------------- */
+
+/* The stage clock's full length in ticks (set.stage_time); 0 when off. */
+uint32_t g_pace_full(const struct sim *s);
+
+/* A stage or a life begins: the clock full, the idle count zero. */
+void g_pace_start(struct sim *s);
+
+/* One tick of phase PLAY, after the player's move and before the enemies:
+ * counts cmd's input, runs the clock; the clock's last G_HURRY_TICKS wake
+ * every enemy; its end, or a player gone (set.idle_out), kills the player. */
+void g_pace_tick(struct sim *s, const struct sim_cmd *cmd);
+
+/* 1 in the clock's last G_HURRY_TICKS of phase PLAY (never when off). */
+int g_pace_hurry(const struct sim *s);
+
+/* A stage was cleared or its exit taken: scores the whole seconds left. */
+void g_pace_bonus(struct sim *s);
+
+/* The player dies now (phase PLAY only), for the reason why (enum g_why). */
+void g_player_dies(struct sim *s, int why);
+
 #endif

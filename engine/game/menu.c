@@ -178,6 +178,17 @@ static void menu_change(struct sim *s, int dir)
 						     MENU_ATTRACT_SOUND_MAX : t->attract_sound,
 					     dir, 0, MENU_ATTRACT_SOUND_MAX);
 		break;
+	case MENU_S_STAGE_TIME: {
+		/* OFF, then 1..G_STAGE_TIME_MAX minutes, wrapping */
+		uint8_t v = menu_step((int)(g_pace_full(s) / (60u * SIM_TICRATE)), dir, 0,
+				      G_STAGE_TIME_MAX);
+		t->stage_time = v == 0 ? G_STAGE_TIME_OFF : v;
+		break;
+	}
+	case MENU_S_IDLE:
+		t->idle_out = menu_step(t->idle_out >= G_IDLE_COUNT ? G_IDLE_OFF : t->idle_out, dir,
+					0, G_IDLE_COUNT - 1);
+		break;
 	case MENU_S_RES:
 		m->res = menu_step(m->res, dir, 0, MENU_RES_COUNT);
 		return;
@@ -213,6 +224,8 @@ static void menu_settings(struct sim *s, uint8_t pressed, uint8_t nav)
 			s->set.lives = G_LIVES_DEFAULT;
 			s->set.volume = MENU_DEFAULT_VOLUME;
 			s->set.attract_sound = MENU_DEFAULT_ATTRACT_SOUND;
+			s->set.stage_time = G_STAGE_TIME_DEFAULT;
+			s->set.idle_out = G_IDLE_LIFE;
 			m->res = 0;
 			s->set_gen++;
 			menu_blip(s, SFX_MENU_SELECT);

@@ -134,6 +134,7 @@ static void sim_start_stage(struct sim *s, int i)
 	g_spec_start(s);
 	g_spawn_stage(s);
 	sim_spawn(s);
+	g_pace_start(s);
 }
 
 static void sim_full_health(struct sim *s)
@@ -308,6 +309,7 @@ static void sim_life_lost(struct sim *s)
 		g->phase = G_PH_PLAY;
 		g->phase_t = 0;
 		sim_spawn(s);
+		g_pace_start(s);
 		return;
 	}
 	s->mode = SIM_GAMEOVER;
@@ -365,11 +367,13 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd, uint8_t pres
 		    g->phase == G_PH_PLAY)
 			g_fire(s);
 		g_pickups_tick(s);
+		g_pace_tick(s, cmd);
 		g_enemies_tick(s);
 		g_spec_tick(s);
 		/* a map with an exit ends there; one without when it is cleared */
 		if (g->phase == G_PH_PLAY && !s->w.has_exit && g->num_enemies > 0 && g->alive == 0) {
 			g->score += G_STAGE_BONUS * ((uint32_t)g->stage + 1);
+			g_pace_bonus(s);
 			g->phase = G_PH_CLEAR;
 			g->phase_t = 0;
 			g_sound_play(s, SFX_STAGE_CLEAR, G_SRC_ANNOUNCE);

@@ -88,7 +88,13 @@ enum sim_page { SIM_PAGE_TITLE, SIM_PAGE_SCORES, SIM_PAGE_DEMO, SIM_PAGE_COUNT }
 	/* master volume, percent 0..100 (0 silent; above 100 counts as 100) */ \
 	X(VAL, uint8_t, volume, SIM_ANY) \
 	/* attract mode's sound: 0 off, 1 on, N (2..9) once every N cycles (g_sound.h) */ \
-	X(VAL, uint8_t, attract_sound, SIM_ANY)
+	X(VAL, uint8_t, attract_sound, SIM_ANY) \
+	/* the stage clock in minutes, 1..G_STAGE_TIME_MAX; 0 counts as \
+	 * G_STAGE_TIME_DEFAULT, G_STAGE_TIME_OFF is none, other values above \
+	 * the maximum count as the maximum (g_game.h) */ \
+	X(VAL, uint8_t, stage_time, SIM_ANY) \
+	/* a player gone idle: enum g_idle; above counts as G_IDLE_OFF */ \
+	X(VAL, uint8_t, idle_out, SIM_ANY)
 struct sim_settings {
 	SIM_SETTINGS_FIELDS(SIM_MEMBER)
 };

@@ -16,7 +16,7 @@ enum {
 	F_X, F_Y, F_Z, F_ANGLE, F_SECTOR, F_CREDITS, F_COINS, F_TICK, F_MODE,
 	F_SCORE, F_LIVES, F_HEALTH, F_AMMO, F_STAGE, F_ENEMIES, F_KILLS, F_CONTINUES,
 	F_COUNTDOWN, F_PAGE, F_PHASE, F_PLAYS, F_RANK, F_HISCORE, F_MENU, F_DIFFICULTY,
-	F_COUNT
+	F_CLOCK, F_WHY, F_COUNT
 };
 
 static const struct sim_field_def sim_fields[F_COUNT] = {
@@ -45,6 +45,8 @@ static const struct sim_field_def sim_fields[F_COUNT] = {
 	[F_HISCORE] = { "hiscore", SIM_FK_INT },
 	[F_MENU] = { "menu", SIM_FK_INT },
 	[F_DIFFICULTY] = { "difficulty", SIM_FK_INT },
+	[F_CLOCK] = { "clock", SIM_FK_INT },
+	[F_WHY] = { "why", SIM_FK_INT },
 };
 
 int sim_field_count(void)
@@ -100,6 +102,10 @@ int64_t sim_field_value(const struct sim *s, int i)
 	case F_HISCORE: return s->scores.e[0].score;
 	case F_MENU: return s->menu.page;
 	case F_DIFFICULTY: return s->set.difficulty;
+	/* the stage clock's whole seconds left, rounded up: the number on the screen */
+	case F_CLOCK: return (s->g.clock + SIM_TICRATE - 1) / SIM_TICRATE;
+	/* the last death's cause: 0 killed, 1 time up, 2 gone idle (enum g_why) */
+	case F_WHY: return s->g.why;
 	default: return 0;
 	}
 }

@@ -263,7 +263,8 @@ static void hud_banners(const struct sim *s, const struct hud_colours *c, struct
 	char buf[48] = "";
 
 	if (s->g.phase == G_PH_DEAD) {
-		hud_text_centre(f, c, y, 2 * sc, c->red, "YOU DIED");
+		static const char why[][12] = { "YOU DIED", "TIME UP", "PLAYER GONE" };
+		hud_text_centre(f, c, y, 2 * sc, c->red, why[s->g.why <= G_WHY_IDLE ? s->g.why : 0]);
 		if (s->g.lives > 1) {
 			hud_cat_num(buf, sizeof(buf), (uint64_t)s->g.lives - 1, 1, '0');
 			msg_cat(buf, sizeof(buf), s->g.lives == 2 ? " LIFE LEFT" : " LIVES LEFT");
@@ -274,12 +275,45 @@ static void hud_banners(const struct sim *s, const struct hud_colours *c, struct
 		msg_cat(buf, sizeof(buf), "BONUS ");
 		hud_cat_num(buf, sizeof(buf), (uint64_t)G_STAGE_BONUS * (s->g.stage + 1u), 1, '0');
 		hud_text_centre(f, c, y + 20 * sc, sc, c->white, buf);
+		buf[0] = '\0';
+		msg_cat(buf, sizeof(buf), "TIME BONUS ");
+		hud_cat_num(buf, sizeof(buf), s->g.time_bonus, 1, '0');
+		hud_text_centre(f, c, y + 32 * sc, sc, c->white, buf);
 	} else if (s->g.stage_t < G_BANNER_TICKS) {
 		msg_cat(buf, sizeof(buf), "STAGE ");
 		hud_cat_num(buf, sizeof(buf), s->g.stage + 1u, 1, '0');
 		hud_text_centre(f, c, y, 2 * sc, c->white, buf);
 		if (s->map && s->map->name[0])
 			hud_text_centre(f, c, y + 20 * sc, sc, c->grey, s->map->name);
+	}
+}
+
+/* The stage clock at the top, red and blinking in a hurry; "HURRY UP" for
+ * the hurry's first 3 seconds; the idle player's countdown. */
+static void hud_clock(const struct sim *s, const struct hud_colours *c, struct r_frame *f)
+{
+	int sc = hud_scale(f);
+	uint32_t secs = (s->g.clock + SIM_TICRATE - 1) / SIM_TICRATE;
+	int on = s->set.stage_time != G_STAGE_TIME_OFF;
+	int hurry = on && s->g.phase == G_PH_PLAY && s->g.clock <= G_HURRY_TICKS;
+	char buf[32] = "";
+
+	msg_cat(buf, sizeof(buf), "TIME ");
+	hud_cat_num(buf, sizeof(buf), secs / 60, 1, '0');
+	msg_cat(buf, sizeof(buf), ":");
+	hud_cat_num(buf, sizeof(buf), secs % 60, 2, '0');
+	if (on && (!hurry || hud_blink(s)))
+		hud_text_centre(f, c, 2 * sc, sc, hurry ? c->red : c->white, buf);
+	if (hurry && s->g.clock > G_HURRY_TICKS - 3 * SIM_TICRATE)
+		hud_text_centre(f, c, f->h / 3, 2 * sc, c->red, "HURRY UP!");
+	if (s->g.phase == G_PH_PLAY && s->set.idle_out != G_IDLE_OFF &&
+	    s->set.idle_out < G_IDLE_COUNT && s->g.idle_t > G_IDLE_TICKS - G_IDLE_WARN) {
+		buf[0] = '\0';
+		msg_cat(buf, sizeof(buf), "STILL THERE? ");
+		hud_cat_num(buf, sizeof(buf),
+			    (uint64_t)(G_IDLE_TICKS - s->g.idle_t + SIM_TICRATE - 1) / SIM_TICRATE, 1,
+			    '0');
+		hud_text_centre(f, c, f->h / 3 + 20 * sc, 2 * sc, c->yellow, buf);
 	}
 }
 
@@ -352,6 +386,7 @@ static void hud_play(const struct sim *s, const struct hud_env *env, const struc
 	if (s->w.msg)
 		hud_text_centre(f, c, 34 * sc, sc, c->yellow, hud_msg_text(s->w.msg));
 	hud_minimap(s, c, f);
+	hud_clock(s, c, f);
 	hud_banners(s, c, f);
 }
 

@@ -183,14 +183,18 @@ void hud_page_inter(const struct sim *s, const struct hud_colours *c, struct r_f
 	hud_cat_time(buf, sizeof(buf), w->exit_t);
 	hud_text(f, c, x, y + 42 * sc, sc, c->white, buf);
 	buf[0] = '\0';
+	msg_cat(buf, sizeof(buf), "BONUS   ");
+	hud_cat_num(buf, sizeof(buf), s->g.time_bonus, 1, '0');
+	hud_text(f, c, x, y + 56 * sc, sc, c->white, buf);
+	buf[0] = '\0';
 	msg_cat(buf, sizeof(buf), "SCORE   ");
 	hud_cat_num(buf, sizeof(buf), s->g.score, 1, '0');
-	hud_text(f, c, x, y + 56 * sc, sc, c->white, buf);
+	hud_text(f, c, x, y + 70 * sc, sc, c->white, buf);
 	if (w->next < s->num_stages && s->stages[w->next]) {
 		buf[0] = '\0';
 		msg_cat(buf, sizeof(buf), "ENTERING ");
 		msg_cat(buf, sizeof(buf), s->stages[w->next]->name);
-		hud_text_centre(f, c, y + 80 * sc, sc, c->green, buf);
+		hud_text_centre(f, c, y + 92 * sc, sc, c->green, buf);
 	}
 	if (s->g.phase_t >= G_INTER_MIN && hud_blink(s))
 		hud_text_centre(f, c, f->h - 24 * sc, sc, c->yellow, "PRESS FIRE");

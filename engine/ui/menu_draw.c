@@ -202,7 +202,9 @@ static void menu_settings_page(struct menu_ctx *m)
 	const struct sim *s = m->s;
 	const struct menu *mn = &s->menu;
 	const char *diff = menu_difficulty_name(s->set.difficulty > 3 ? 3 : s->set.difficulty);
+	static const char idles[G_IDLE_COUNT][13] = { "LOSE A LIFE", "END THE GAME", "OFF" };
 	char lives[4] = "", coins[4] = "", res[24] = "", vol[8] = "", attract[16] = "";
+	char clock[12] = "";
 	int w = m->f->w, h = m->f->h;
 
 	hud_cat_num(lives, sizeof(lives), s->set.lives ? s->set.lives : G_LIVES_DEFAULT, 1, '0');
@@ -224,6 +226,16 @@ static void menu_settings_page(struct menu_ctx *m)
 		msg_cat(attract, sizeof(attract), "1 CYCLE IN ");
 		hud_cat_num(attract, sizeof(attract), s->set.attract_sound, 1, '0');
 	}
+	if (s->set.stage_time == G_STAGE_TIME_OFF) {
+		msg_cat(clock, sizeof(clock), "OFF");
+	} else {
+		hud_cat_num(clock, sizeof(clock),
+			    s->set.stage_time == 0 ? G_STAGE_TIME_DEFAULT
+			    : s->set.stage_time > G_STAGE_TIME_MAX ? G_STAGE_TIME_MAX
+								   : s->set.stage_time,
+			    1, '0');
+		msg_cat(clock, sizeof(clock), " MIN");
+	}
 	menu_title(m, "GAME SETTINGS", "LEFT/RIGHT CHANGE  SERVICE BACK");
 	menu_item(m, mn->cursor == MENU_S_DIFFICULTY, "DIFFICULTY", diff);
 	menu_item(m, mn->cursor == MENU_S_LIVES, "LIVES", lives);
@@ -231,6 +243,9 @@ static void menu_settings_page(struct menu_ctx *m)
 	menu_item(m, mn->cursor == MENU_S_FREEPLAY, "FREE PLAY", s->set.freeplay ? "YES" : "NO");
 	menu_item(m, mn->cursor == MENU_S_VOLUME, "VOLUME", vol);
 	menu_item(m, mn->cursor == MENU_S_ATTRACT_SOUND, "ATTRACT SOUND", attract);
+	menu_item(m, mn->cursor == MENU_S_STAGE_TIME, "STAGE CLOCK", clock);
+	menu_item(m, mn->cursor == MENU_S_IDLE, "IDLE PLAYER",
+		  idles[s->set.idle_out < G_IDLE_COUNT ? s->set.idle_out : G_IDLE_OFF]);
 	menu_item(m, mn->cursor == MENU_S_RES, "RENDER SIZE", res);
 	menu_item(m, mn->cursor == MENU_S_DEFAULTS, "FACTORY DEFAULTS", NULL);
 	menu_item(m, mn->cursor == MENU_S_BACK, "BACK", NULL);

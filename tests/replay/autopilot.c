@@ -319,13 +319,7 @@ int main(int argc, char **argv)
 	}
 	/* the daemon's settings (app/app.c setup_game) and start (keep_start
 	 * with nothing kept: the default tables; then the content's sounds) */
-	set.coins_per_credit = (uint8_t)c.game.coins_per_credit;
-	set.freeplay = (uint8_t)c.game.freeplay;
-	set.start_in_play = (uint8_t)c.game.start_in_play;
-	set.difficulty = (uint8_t)c.game.difficulty;
-	set.lives = (uint8_t)c.game.lives;
-	set.volume = (uint8_t)c.game.volume;
-	set.attract_sound = (uint8_t)c.game.attract_sound;
+	cfg_settings(&c, &set);
 	sim_init_stages(&a.s, (const struct map *const *)ct.maps, ct.nmaps, &set, NULL, NULL);
 	sim_set_sounds(&a.s, ct.sounds);
 	cmd_reset(&a.cs);

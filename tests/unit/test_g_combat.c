@@ -15,7 +15,7 @@
 
 #define U(v) fx_from_int(v)
 
-static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1 };
+static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
 
 static const struct sim_cmd idle = { 0 };
 static const struct sim_cmd fire = { .buttons = SIM_BT_FIRE };
@@ -44,7 +44,7 @@ static void sight_crosses_an_open_room_but_not_a_pillar(void **state)
 {
 	static const struct gf_box pillar = { 500, 200, 600, 300 };
 	struct map *m = arena(NULL, 0, &pillar, 1);
-	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
 	struct sim sim, *sm = &sim;
 	fx_t z = U(40);
 	(void)state;
@@ -64,7 +64,7 @@ static void sight_crosses_an_open_room_but_not_a_pillar(void **state)
 static void sight_through_a_window_depends_on_the_heights(void **state)
 {
 	struct map *m;
-	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
 	struct sim sim, *sm = &sim;
 	(void)state;
 	assert_int_equal(lvl_builtin(0, &m), 0);

@@ -15,7 +15,8 @@
  * The numbers the script expects are worked out here, not read from the
  * sim: the score at the clear of stage 1 is the kill values of the enemy
  * table (g_kinds) over the enemy things of stage 1's map plus the stage
- * bonus, and its kills the count of those things; the score at initials
+ * bonus and the time bonus (the stage clock's whole seconds left, from the
+ * clock's length and the stage's ticks), and its kills the count of those things; the score at initials
  * adds the kill values of the enemies seen dying on stage 2; the rank is
  * the place that score takes in the default high-score table. The sim
  * must agree with each (asserted), and the script states them. After an
@@ -272,7 +273,7 @@ static void lose_every_life(struct flow *f)
 
 static void play_flow(struct flow *f)
 {
-	static const struct sim_settings set = { 1, 0, 0, 0, 0, 100, 1 };  /* what the app passes today */
+	static const struct sim_settings set = { 1, 0, 0, 0, 0, 100, 1, 0, 0 };  /* what the app passes today */
 	const struct map *mp[3];
 
 	memset(f, 0, sizeof(*f));
@@ -318,10 +319,15 @@ static void play_flow(struct flow *f)
 		uint32_t n, v;
 
 		stage_enemies(f->maps[0], f->s.set.difficulty, &n, &v);
-		/* every one killed once: the table's values and the stage bonus */
+		/* every one killed once: the table's values, the stage bonus
+		 * and the time bonus: the whole seconds (rounded up) the stage
+		 * clock had left, each tick of the stage having taken one */
+		uint32_t tb = (G_STAGE_TIME_DEFAULT * 60 * SIM_TICRATE - f->s.g.stage_t +
+			       SIM_TICRATE - 1) / SIM_TICRATE * G_TIME_BONUS;
 		assert_int_equal(f->dead_count, n);
-		assert_int_equal(f->s.g.score, v + G_STAGE_BONUS * 1);
-		expect_u(f, "score", v + G_STAGE_BONUS * 1);
+		assert_int_equal(f->s.g.time_bonus, tb);
+		assert_int_equal(f->s.g.score, v + G_STAGE_BONUS * 1 + tb);
+		expect_u(f, "score", v + G_STAGE_BONUS * 1 + tb);
 		expect_u(f, "kills", n);
 		f->dead_value = f->dead_count = 0;
 	}
@@ -458,7 +464,7 @@ static void the_committed_script_is_the_flow(void **state)
 	struct scr *scr;
 	char err[256];
 	const struct map *mp[3];
-	static const struct sim_settings set = { 1, 0, 0, 0, 0, 100, 1 };
+	static const struct sim_settings set = { 1, 0, 0, 0, 0, 100, 1, 0, 0 };
 	struct cmd_state cs;
 	struct sim s;
 	size_t len, k = 0;

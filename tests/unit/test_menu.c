@@ -54,7 +54,7 @@ static void in_menu(struct sim *s, const struct sim_settings *set)
 	assert_int_equal(s->menu.cursor, MENU_I_INPUT);
 }
 
-static const struct sim_settings base = { 1, 0, 0, 1, 3, 100, 1 };
+static const struct sim_settings base = { 1, 0, 0, 1, 3, 100, 1, 0, 0 };
 
 static void the_cursor_moves_and_wraps_and_pages_open_and_close(void **state)
 {
@@ -177,6 +177,25 @@ static void settings_change_with_left_and_right(void **state)
 	assert_int_equal(s.set.attract_sound, 9);
 	assert_int_equal(s.set_gen, 8 + 3 + 4);
 	press(&s, DOWN);
+	press(&s, RIGHT);                      /* stage clock: 0 means the default 5 minutes */
+	assert_int_equal(s.set.stage_time, G_STAGE_TIME_DEFAULT + 1);
+	press(&s, LEFT);
+	press(&s, LEFT);
+	assert_int_equal(s.set.stage_time, G_STAGE_TIME_DEFAULT - 1);
+	for (int i = 0; i < G_STAGE_TIME_DEFAULT - 1; i++)
+		press(&s, LEFT);               /* down to OFF, under 1 minute */
+	assert_int_equal(s.set.stage_time, G_STAGE_TIME_OFF);
+	press(&s, LEFT);                       /* and round to the longest */
+	assert_int_equal(s.set.stage_time, G_STAGE_TIME_MAX);
+	press(&s, DOWN);
+	press(&s, RIGHT);                      /* idle player: lose a life, end the game, off */
+	assert_int_equal(s.set.idle_out, G_IDLE_END);
+	press(&s, RIGHT);
+	assert_int_equal(s.set.idle_out, G_IDLE_OFF);
+	press(&s, RIGHT);                      /* wraps */
+	assert_int_equal(s.set.idle_out, G_IDLE_LIFE);
+	assert_int_equal(s.set_gen, 15 + 3 + G_STAGE_TIME_DEFAULT + 3);
+	press(&s, DOWN);
 	press(&s, RIGHT);
 	assert_int_equal(s.menu.res, 1);
 	menu_res_size(s.menu.res, &w, &h);
@@ -185,7 +204,7 @@ static void settings_change_with_left_and_right(void **state)
 	press(&s, LEFT);
 	press(&s, LEFT);                       /* 0 (as configured) wraps to the last */
 	assert_int_equal(s.menu.res, MENU_RES_COUNT);
-	assert_int_equal(s.set_gen, 15);       /* the size is not a game setting */
+	assert_int_equal(s.set_gen, 26);       /* the size is not a game setting */
 	press(&s, DOWN);
 	press(&s, DOWN);
 	press(&s, FIRE);                       /* BACK */
@@ -200,7 +219,7 @@ static void settings_change_with_left_and_right(void **state)
 
 static void factory_defaults_restore_every_setting(void **state)
 {
-	static const struct sim_settings odd = { 7, 1, 0, 3, 9, 30, 0 };
+	static const struct sim_settings odd = { 7, 1, 0, 3, 9, 30, 0, 17, G_IDLE_OFF };
 	struct sim s;
 	(void)state;
 	in_menu(&s, &odd);
@@ -222,6 +241,8 @@ static void factory_defaults_restore_every_setting(void **state)
 	assert_int_equal(s.set.lives, 3);
 	assert_int_equal(s.set.volume, 80);
 	assert_int_equal(s.set.attract_sound, 1);
+	assert_int_equal(s.set.stage_time, G_STAGE_TIME_DEFAULT);
+	assert_int_equal(s.set.idle_out, G_IDLE_LIFE);
 	assert_int_equal(s.menu.res, 0);
 	assert_int_equal(s.set_gen, 1);
 	assert_int_equal(s.menu.page, MENU_SETTINGS);

@@ -38,10 +38,14 @@ static void the_exit_tick_gives_one_line(void **state)
 	spec_run(&s, &spec_none, 119);
 	assert_int_equal(prog_exit(&s, buf, sizeof(buf)), 0);
 	assert_string_equal(buf, "untouched");
-	sim_tick(&s, &spec_use_cmd);       /* the 120th tick: 2 s into the map */
+	/* the 120th tick: 2 s into the map. The score is stage 1's bonus
+	 * (G_STAGE_BONUS) and the time bonus: the 5-minute clock ran on 119
+	 * ticks (the exit comes before the clock in the tick), so 17881 are
+	 * left, 299 seconds rounded up, 10 points each */
+	sim_tick(&s, &spec_use_cmd);
 	assert_int_equal(prog_exit(&s, buf, sizeof(buf)), 1);
 	assert_string_equal(buf, "map FIXTURE: exit taken after 0:00:02 (120 ticks), kills 0 of 1, "
-				 "items 0 of 1, secrets 0 of 0, score 1000; next FIXTURE");
+				 "items 0 of 1, secrets 0 of 0, score 3990; next FIXTURE");
 	/* the intermission goes on: no second line */
 	sim_tick(&s, &spec_none);
 	assert_int_equal(prog_exit(&s, buf, sizeof(buf)), 0);

@@ -19,7 +19,7 @@
 #include "g_fixture.h"
 #include "map_fixture.h"
 
-static const struct sim_settings play = { 1, 0, 1, 1, 3, 100, 1 };
+static const struct sim_settings play = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
 
 static void sprites_follow_the_state(void **state)
 {

@@ -433,12 +433,12 @@ static void test_check_names_every_difference(void **state)
 	/* a recording made before sound (engine 2): refused, naming it */
 	h.engine_version = 2;
 	assert_int_equal(rec_check(&h, 0x0102030405060708ull, err, sizeof(err)), -EINVAL);
-	assert_string_equal(err, "engine version differs: recording 2, this build 4");
+	assert_string_equal(err, "engine version differs: recording 2, this build 5");
 
 	assert_int_equal(rec_check(&h, 0xabcull, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "map content differs: recording 0x0102030405060708, "
 				 "loaded 0x0000000000000abc; engine version differs: "
-				 "recording 2, this build 4");
+				 "recording 2, this build 5");
 }
 
 /* ---- version 2 ------------------------------------------------------ */
@@ -570,6 +570,8 @@ static void test_v3_header_every_byte_is_checked(void **state)
 	h.set.lives = 3;
 	h.set.volume = 80;
 	h.set.attract_sound = 1;
+	h.set.stage_time = 7;
+	h.set.idle_out = G_IDLE_END;
 	h.count = 7;
 	h.render_w = 320;
 	h.render_h = 240;
@@ -584,6 +586,21 @@ static void test_v3_header_every_byte_is_checked(void **state)
 	assert_int_equal(n, REC_HEADER_SIZE_V3);
 	assert_int_equal(rec_header_decode(b, n, &back, err, sizeof(err)), 0);
 	assert_true(back.start_time == 1764115200);
+	assert_int_equal(b[37], 7);            /* the pacing settings' bytes */
+	assert_int_equal(b[38], G_IDLE_END);
+	assert_int_equal(back.set.stage_time, 7);
+	assert_int_equal(back.set.idle_out, G_IDLE_END);
+	/* out of range, with a good sum: refused by name */
+	h.set.stage_time = G_STAGE_TIME_MAX + 1;
+	assert_int_equal(rec_header_decode(f, rec_header_encode(f, &h), &back, err, sizeof(err)),
+			 -EINVAL);
+	assert_string_equal(err, "stage_time 31 out of range 0..30 or 255 (off)");
+	h.set.stage_time = 7;
+	h.set.idle_out = G_IDLE_COUNT;
+	assert_int_equal(rec_header_decode(f, rec_header_encode(f, &h), &back, err, sizeof(err)),
+			 -EINVAL);
+	assert_string_equal(err, "idle_out 3 out of range 0..2");
+	h.set.idle_out = G_IDLE_END;
 	for (size_t i = 0; i < n; i++) {
 		memcpy(f, b, n);
 		f[i] ^= 0x01;
@@ -813,7 +830,7 @@ static void test_check_run_names_each_difference(void **state)
 	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "map content differs: recording 0x0102030405060708, loaded "
 				 "0x0000000000000abc; engine version differs: recording 9, this "
-				 "build 4");
+				 "build 5");
 	/* A message longer than the buffer is cut, not overrun. */
 	assert_int_equal(rec_check_run(&h, &run, err, 20), -EINVAL);
 	assert_int_equal(strlen(err), 19);

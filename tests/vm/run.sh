@@ -165,6 +165,7 @@ mkdir -p "$B/refstate"
 for n in 600 1800; do
 	printf '0 tap coin\n1 tap start\n2 expect mode == play\n%d end\n' "$n" > "$B/ref-$n.scr"
 	"$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --state-dir "$B/refstate" \
+		--set game.stage_time=0 --set game.idle_out=off \
 		--script "$B/ref-$n.scr" --screenshot "$B/ref-$n.png" > "$B/ref.log" 2>&1 ||
 		{ cat "$B/ref.log"; die "reference frame"; }
 done
