@@ -3,7 +3,8 @@
 # screenshot command while it plays the whole-flow script
 # (tests/script/game/flow.scr): the service menu, play with the HUD and
 # minimap, game over with the continue countdown, initials entry, and the
-# new score in attract; plus the attract title page.
+# new score in attract; plus the attract title page, and the stage clock's
+# HURRY UP and the idle player's STILL THERE? from their scripts.
 # Usage: scripts/game-shots.sh [path/to/arcaded]
 set -eu
 cd "$(dirname "$0")/.."
@@ -24,6 +25,23 @@ mkdir -p "$out"
 } >"$tmp/shots.scr"
 (cd "$tmp" && "$BIN" --script "$tmp/shots.scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
 	--set game.render_width=640 --set game.render_height=480 >/dev/null)
+# The stage clock's hurry and the idle player's warning, from their script
+# tests (tests/script/pace_*.scr, up to the shot's tick).
+{
+	awk '/^#/ || $1 <= 1862' tests/script/pace_hurry.scr
+	echo "1862 screenshot $out/game-hurry-up.png"
+	echo "1863 end"
+} >"$tmp/hurry.scr"
+{
+	awk '/^#/ || $1 <= 3950' tests/script/pace_idle.scr
+	echo "3950 screenshot $out/game-still-there.png"
+	echo "3951 end"
+} >"$tmp/idle.scr"
+for s in hurry idle; do
+	(cd "$tmp" && "$BIN" --script "$tmp/$s.scr" --config-dir "$tmp/etc" \
+		--state-dir "$tmp/state-$s" --set game.render_width=640 \
+		--set game.render_height=480 >/dev/null)
+done
 printf '100 screenshot %s\n' "$out/game-attract-title.png" >"$tmp/title.scr"
 "$BIN" --script "$tmp/title.scr" --config-dir "$tmp/etc" --state-dir "$tmp/state2" \
 	--set game.render_width=640 --set game.render_height=480 >/dev/null
