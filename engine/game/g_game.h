@@ -7,7 +7,8 @@
  * split the rules by topic:
  *   g_thing.c   Doom thing types -> enemy kinds, pickups, lights
  *   g_enemy.c   enemy kinds, spawning from the map's things, chase, attack
- *   g_combat.c  line of sight, the player's hitscan shot, damage, pickups
+ *   g_combat.c  line of sight, the player's hitscan shots, damage, pickups
+ *   g_weapon.c  the weapons' table, the weapon change, weapon pickups
  *   g_score.c   the high-score table and bookkeeping (and their bytes)
  *   sim_field.c   named state values for test scripts
  *   r_game.c  the things to draw, for the renderer

@@ -427,6 +427,7 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 			g->continues++;
 		g->lives = (uint8_t)g_lives_setting(s);
 		sim_full_health(s);
+		g_weapon_reset(s);
 		g_enemies_reset(s);
 		g->phase = G_PH_PLAY;
 		g->phase_t = 0;

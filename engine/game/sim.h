@@ -219,7 +219,8 @@ void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set
  * Walls are one-sided and ML_BLOCKING lines, and portals whose higher
  * floor is more than SIM_MAX_STEP above the feet or whose opening is lower
  * than SIM_PLAYER_HEIGHT. z is the floor of the sector under the centre:
- * steps up and drops down are immediate. FIRE shoots (g_combat.c), enemies
+ * steps up and drops down are immediate. A WEAPON press takes the next
+ * weapon owned (g_weapon.c), FIRE shoots the one held (g_combat.c), enemies
  * act (g_enemy.c), pickups are taken; health at 0 starts the death phase
  * (G_DEAD_TICKS), then a life is lost: the player respawns at the stage
  * start (enemies back at their spawn points, unalerted) or, with no life

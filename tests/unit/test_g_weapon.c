@@ -241,7 +241,8 @@ static void the_change_cycles_only_owned_weapons(void **state)
 	map_free(m);
 }
 
-/* A death drops the weapons found: the next life has the pistol only. */
+/* A death drops the weapons found: the next life, and a continue after the
+ * last, has the pistol only. */
 static void a_death_drops_to_the_pistol(void **state)
 {
 	struct map *m = arena(NULL, 0);
@@ -255,6 +256,19 @@ static void a_death_drops_to_the_pistol(void **state)
 		sim_tick(&s, &idle);
 	assert_int_equal(s.g.lives, 2);
 	assert_int_equal(s.g.phase, G_PH_PLAY);
+	assert_int_equal(s.pl.weapons, G_W_BIT(G_W_PISTOL));
+	assert_int_equal(s.pl.weapon, G_W_PISTOL);
+	/* the last life: game over, and a continue starts with the pistol */
+	s.g.lives = 1;
+	hold(&s, G_W_SPREAD);
+	g_player_dies(&s, G_WHY_KILLED);
+	for (int k = 0; k < G_DEAD_TICKS; k++)
+		sim_tick(&s, &idle);
+	assert_int_equal(s.mode, SIM_GAMEOVER);
+	s.set.freeplay = 1;
+	sim_tick(&s, &(struct sim_cmd){ .buttons = SIM_BT_START });
+	assert_int_equal(s.mode, SIM_PLAY);
+	assert_int_equal(s.g.continues, 1);
 	assert_int_equal(s.pl.weapons, G_W_BIT(G_W_PISTOL));
 	assert_int_equal(s.pl.weapon, G_W_PISTOL);
 	map_free(m);

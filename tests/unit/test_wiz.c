@@ -97,7 +97,7 @@ static void defaults_by_hand(int k[ACT_COUNT][BIND_MAX])
 	k[ACT_START][0] = KEY_1, k[ACT_START][1] = KEY_ENTER;
 	k[ACT_COIN][0] = KEY_5;
 	k[ACT_SERVICE][0] = KEY_9, k[ACT_SERVICE][1] = KEY_F2;
-	k[ACT_WEAPON][0] = KEY_R, k[ACT_WEAPON][1] = KEY_TAB;
+	k[ACT_WEAPON][0] = KEY_Z, k[ACT_WEAPON][1] = KEY_TAB;
 }
 
 /* Sets action a of k to exactly the one code c (or none for -1). */
@@ -181,7 +181,7 @@ static void a_hid_device_on_a_port_gets_its_own_section(void **state)
 	only(want, ACT_STRAFE_RIGHT, BTN_TRIGGER_HAPPY6);
 	only(want, ACT_START, BTN_TRIGGER_HAPPY10);
 	only(want, ACT_COIN, BTN_TRIGGER_HAPPY9);
-	/* service and weapon: skipped, keep KEY_9, KEY_F2 and KEY_R, KEY_TAB
+	/* service and weapon: skipped, keep KEY_9, KEY_F2 and KEY_Z, KEY_TAB
 	 * from the copy of [keyboard] */
 	expect_section((const int (*)[BIND_MAX])section(&out, "usb-1-1")->key,
 		       (const int (*)[BIND_MAX])want);
