@@ -43,7 +43,8 @@ void cmd_build(struct cmd_state *s, struct sim_cmd *out)
 	out->buttons = (uint8_t)((active(s, ACT_FIRE) ? SIM_BT_FIRE : 0) |
 				 (active(s, ACT_USE) ? SIM_BT_USE : 0) |
 				 (active(s, ACT_START) ? SIM_BT_START : 0) |
-				 (active(s, ACT_SERVICE) ? SIM_BT_SERVICE : 0));
+				 (active(s, ACT_SERVICE) ? SIM_BT_SERVICE : 0) |
+				 (active(s, ACT_WEAPON) ? SIM_BT_WEAPON : 0));
 	out->coins = (uint8_t)(coins > UINT8_MAX ? UINT8_MAX : coins);
 	memset(s->presses, 0, sizeof(s->presses));
 }

@@ -34,6 +34,7 @@ static const struct {
 	{ ACT_START, "P1 START", "START" },
 	{ ACT_COIN, "COIN", "COIN" },
 	{ ACT_SERVICE, "SERVICE", "SERVICE" },
+	{ ACT_WEAPON, "P1 WEAPON", "WEAPON" },
 };
 
 int wiz_step_action(int k)

@@ -10,7 +10,8 @@
  * Steps, one per action, in this order (WIZ_STEPS):
  *   P1 UP (forward), P1 DOWN (back), P1 LEFT (turn_left), P1 RIGHT
  *   (turn_right), P1 FIRE, P1 USE, P1 STRAFE LEFT, P1 STRAFE RIGHT,
- *   P1 START, COIN, SERVICE.
+ *   P1 START, COIN, SERVICE, P1 WEAPON (last: a cabinet with fewer
+ *   buttons than actions skips it by holding, as any step).
  *
  * Rules of a step:
  *  - a control is assigned to the step's action on its RELEASE, when it
@@ -51,7 +52,7 @@
 struct pal;
 struct r_frame;
 
-#define WIZ_STEPS 11
+#define WIZ_STEPS 12
 #define WIZ_HOLD_NS 1000000000ull       /* hold to skip (steps) or discard (summary) */
 #define WIZ_IDLE_NS 60000000000ull      /* steps: no event for this long cancels */
 #define WIZ_SUMMARY_NS 10000000000ull   /* summary: no press for this long saves */

@@ -19,7 +19,9 @@
 #include "input/txt.h"
 
 /* Defaults: arrows and WASD (A/D strafe, arrows turn), the 1/5/9 start,
- * coin and service keys of MAME's defaults, F2 as a second service key. */
+ * coin and service keys of MAME's defaults, F2 as a second service key, Z
+ * (MAME's player 1 button 5; R and Q are player 2's) and Tab to change
+ * weapons. */
 static const struct {
 	int act;
 	const char *keys[BIND_MAX];
@@ -35,6 +37,7 @@ static const struct {
 	{ ACT_START, { "KEY_1", "KEY_ENTER" } },
 	{ ACT_COIN, { "KEY_5" } },
 	{ ACT_SERVICE, { "KEY_9", "KEY_F2" } },
+	{ ACT_WEAPON, { "KEY_Z", "KEY_TAB" } },
 };
 
 void bind_defaults(struct bind_table *b)

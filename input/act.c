@@ -19,6 +19,7 @@ static const char *const act_names[ACT_COUNT] = {
 	[ACT_START] = "start",
 	[ACT_COIN] = "coin",
 	[ACT_SERVICE] = "service",
+	[ACT_WEAPON] = "weapon",
 };
 
 const char *act_name(int a)

@@ -16,12 +16,13 @@ enum act {
 	ACT_START,
 	ACT_COIN,
 	ACT_SERVICE,
+	ACT_WEAPON,                     /* change to the next weapon owned */
 	ACT_COUNT
 };
 
 /* "forward", "back", "turn_left", "turn_right", "strafe_left",
- * "strafe_right", "fire", "use", "start", "coin", "service"; NULL if out of
- * range. */
+ * "strafe_right", "fire", "use", "start", "coin", "service", "weapon"; NULL
+ * if out of range. */
 const char *act_name(int a);
 /* Action by name (case-insensitive), or -1. */
 int act_from_name(const char *name);

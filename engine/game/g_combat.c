@@ -1,5 +1,6 @@
 /*
- * g_combat: the player's hitscan shot and pickups.
+ * g_combat: the player's hitscan shots (every pellet of the held weapon,
+ * g_weapon.c) and pickups.
  *
  * The shot is exact integer geometry: which walls stop it comes from
  * g_line_stops (g_sight.c), the ray against enemy circles by projection and
@@ -56,21 +57,21 @@ static fx_t g_wall_along(const struct sim *s, fx_t px, fx_t py, fx_t pz, int64_t
 	return best;
 }
 
-void g_fire(struct sim *s)
+/* One ray of a shot from the player's eye along angle a: it hurts the
+ * nearest living enemy whose circle it enters within range and that no
+ * wall hides by dmg, else it ends on the nearest wall or at its range.
+ * Sets *x, *y, *z to where it ended and returns enum g_shot. The lines it
+ * reached get their gun specials. */
+static int g_ray(struct sim *s, ang_t a, int dmg, fx_t *x, fx_t *y, fx_t *z)
 {
 	struct g_game *g = &s->g;
 	const struct sim_player *p = &s->pl;
-	int64_t cx = tab_cos(p->angle), cy = tab_sin(p->angle);
+	int64_t cx = tab_cos(a), cy = tab_sin(a);
 	int64_t range = G_SHOT_RANGE;
 	fx_t entry[G_MAX_ENEMIES];
 	uint8_t cand[G_MAX_ENEMIES];
 	int n = 0;
 
-	s->pl.ammo--;
-	s->pl.refire = G_REFIRE;
-	g->shot_t = 0;
-	g_noise(s);
-	g_sound_play(s, SFX_PISTOL, G_SRC_WEAPON);
 	/* every living enemy whose circle the ray enters within range */
 	for (int i = 0; i < g->num_enemies; i++) {
 		const struct g_enemy *e = &g->en[i];
@@ -100,13 +101,12 @@ void g_fire(struct sim *s)
 		fx_t hy = (fx_t)(p->y + ((entry[best] * cy) >> FX_SHIFT));
 		fx_t hz = e->z + g_kinds[e->kind].eye;
 		if (g_sight(s, p->x, p->y, p->viewz, hx, hy, hz)) {
-			g->shot = G_SHOT_ENEMY;
-			g->shot_x = hx;
-			g->shot_y = hy;
-			g->shot_z = hz;
+			*x = hx;
+			*y = hy;
+			*z = hz;
 			g_shoot_lines(s, p->x, p->y, hx, hy);
-			g_hurt_enemy(s, cand[best], G_SHOT_DAMAGE);
-			return;
+			g_hurt_enemy(s, cand[best], dmg);
+			return G_SHOT_ENEMY;
 		}
 		entry[best] = entry[n - 1];
 		cand[best] = cand[n - 1];
@@ -115,14 +115,42 @@ void g_fire(struct sim *s)
 	{
 		int64_t dx = (range * cx) >> FX_SHIFT, dy = (range * cy) >> FX_SHIFT;
 		fx_t t = g_wall_along(s, p->x, p->y, p->viewz, dx, dy);
-		g->shot = t < FX_ONE ? G_SHOT_WALL : G_SHOT_MISS;
-		g->shot_x = (fx_t)(p->x + ((dx * t) >> FX_SHIFT));
-		g->shot_y = (fx_t)(p->y + ((dy * t) >> FX_SHIFT));
-		g->shot_z = p->viewz;
-		g_shoot_lines(s, p->x, p->y, g->shot_x, g->shot_y);
-		if (g->shot == G_SHOT_WALL)
-			g_sound_start(s, SFX_WALLHIT, g->shot_x, g->shot_y, G_SRC_PUFF);
+		*x = (fx_t)(p->x + ((dx * t) >> FX_SHIFT));
+		*y = (fx_t)(p->y + ((dy * t) >> FX_SHIFT));
+		*z = p->viewz;
+		g_shoot_lines(s, p->x, p->y, *x, *y);
+		return t < FX_ONE ? G_SHOT_WALL : G_SHOT_MISS;
 	}
+}
+
+void g_fire(struct sim *s)
+{
+	struct g_game *g = &s->g;
+	struct sim_player *p = &s->pl;
+	const struct g_weapon_info *w = &g_weapons[p->weapon < G_WEAPONS ? p->weapon : 0];
+	int half = w->pellets / 2, hit = 0;
+
+	p->ammo = (uint16_t)(p->ammo - w->ammo);
+	p->refire = w->refire;
+	g->shot_t = 0;
+	g_noise(s);
+	g_sound_play(s, w->sfx, G_SRC_WEAPON);
+	/* the pellets from left to right; the HUD and the puff show the first
+	 * that hit an enemy, else the middle one */
+	for (int k = 0; k < w->pellets; k++) {
+		ang_t a = p->angle + (ang_t)((int64_t)(half - k) * w->step);
+		fx_t x, y, z;
+		int r = g_ray(s, a, w->damage, &x, &y, &z);
+		if ((r == G_SHOT_ENEMY && !hit) || (k == half && !hit)) {
+			g->shot = (uint8_t)r;
+			g->shot_x = x;
+			g->shot_y = y;
+			g->shot_z = z;
+			hit = r == G_SHOT_ENEMY;
+		}
+	}
+	if (g->shot == G_SHOT_WALL)
+		g_sound_start(s, SFX_WALLHIT, g->shot_x, g->shot_y, G_SRC_PUFF);
 }
 
 void g_pickups_tick(struct sim *s)
@@ -155,6 +183,10 @@ void g_pickups_tick(struct sim *s)
 			p->ammo = (uint16_t)(a > G_AMMO_MAX ? G_AMMO_MAX : a);
 			break;
 		}
+		case G_P_WEAPON:
+			if (!g_weapon_give(s, ti.weapon, k->amount))
+				continue;
+			break;
 		case G_P_KEY:
 			s->w.keys = (uint8_t)(s->w.keys | (k->amount & 0x3f));
 			g_message(s, G_MSG_KEY);

@@ -7,7 +7,8 @@
  * split the rules by topic:
  *   g_thing.c   Doom thing types -> enemy kinds, pickups, lights
  *   g_enemy.c   enemy kinds, spawning from the map's things, chase, attack
- *   g_combat.c  line of sight, the player's hitscan shot, damage, pickups
+ *   g_combat.c  line of sight, the player's hitscan shots, damage, pickups
+ *   g_weapon.c  the weapons' table, the weapon change, weapon pickups
  *   g_score.c   the high-score table and bookkeeping (and their bytes)
  *   sim_field.c   named state values for test scripts
  *   r_game.c  the things to draw, for the renderer
@@ -27,14 +28,35 @@
 #define G_SCORES 10                    /* entries in the high-score table */
 #define G_NAME_LEN 3                   /* initials */
 
-/* Player limits and the weapon (a hitscan pistol). */
+/* Player limits. */
 #define G_HEALTH_MAX 100
 #define G_AMMO_START 50
 #define G_AMMO_MAX 200
-#define G_SHOT_DAMAGE 15
-#define G_SHOT_RANGE (2048 * FX_ONE)
-#define G_REFIRE 12                    /* ticks between shots: 5 per second */
+#define G_SHOT_RANGE (2048 * FX_ONE)   /* every weapon's hitscan reach */
 #define G_LIVES_DEFAULT 3
+
+/* Weapons (g_weapon.c): hitscan guns sharing the one ammo count. The
+ * player owns a set of them (sim_player.weapons, a bit per enum g_weapon;
+ * the pistol always) and holds one (sim_player.weapon). */
+enum g_weapon { G_W_PISTOL, G_W_SPREAD, G_W_RAPID, G_WEAPONS };
+#define G_W_BIT(w) (1u << (w))
+
+struct g_weapon_info {
+	char name[8];                  /* "PISTOL", for the HUD */
+	uint8_t damage;                /* per pellet that hits */
+	uint8_t pellets;               /* rays per shot, fanned about the view centre */
+	uint8_t ammo;                  /* used per shot; fires only with this much */
+	uint8_t refire;                /* ticks from one shot to the next */
+	ang_t step;                    /* angle between neighbouring pellets */
+	uint8_t sfx;                   /* enum sfx_id of the shot */
+};
+
+/* The table, indexed by enum g_weapon. */
+extern const struct g_weapon_info g_weapons[G_WEAPONS];
+
+/* The pistol's numbers, which other rules and the HUD name. */
+#define G_SHOT_DAMAGE 15
+#define G_REFIRE 12                    /* ticks between pistol shots: 5 per second */
 
 /* Enemy kinds. Each has fixed numbers (g_kinds); difficulty and the
  * stage loop scale damage and speed (g_enemy.c). */
@@ -92,11 +114,12 @@ struct g_enemy {
 };
 
 /* Pickups: health (Doom's health items, armour and the health-giving
- * powerups), ammo (ammo and weapons), keys (amount: the G_KEY_* bit), the
+ * powerups), ammo, weapons (amount: the ammo it brings; the weapon is
+ * g_thing_info's), keys (amount: the G_KEY_* bit), the
  * radiation suit (amount: ticks of protection from damaging floors), and
  * items the game has no use for but counts (Doom's computer map, light
  * visor, invisibility). */
-enum g_pkind { G_P_HEALTH, G_P_AMMO, G_P_KEY, G_P_SUIT, G_P_ITEM, G_P_KINDS };
+enum g_pkind { G_P_HEALTH, G_P_AMMO, G_P_KEY, G_P_SUIT, G_P_ITEM, G_P_WEAPON, G_P_KINDS };
 
 #define G_PICKUP_FIELDS(X) \
 	X(VAL, fx_t, x, SIM_COORD) \
@@ -248,6 +271,7 @@ struct g_thing_info {
 	uint16_t amount;               /* pickup: health or ammo it gives, the key's bit,
 					* the suit's ticks */
 	uint8_t counted;               /* Doom counts it among the map's items */
+	uint8_t weapon;                /* a G_P_WEAPON pickup: enum g_weapon it gives */
 	char sprite[5];                /* Doom sprite name, e.g. "POSS" */
 	uint8_t bright;                /* drawn full bright (lights) */
 	uint8_t stand;                 /* standing frame (0 = 'A'), from th.h */

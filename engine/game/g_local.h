@@ -100,11 +100,28 @@ int g_sight(const struct sim *s, fx_t x1, fx_t y1, fx_t z1, fx_t x2, fx_t y2, fx
 
 /* ---- g_combat.c ------------------------------------------------------ */
 
-/* The player's shot along the view centre (g_combat.c); called on a FIRE
- * level when refire allows and there is ammo. */
+/* The player's shot with the held weapon: its pellets fanned about the
+ * view centre (g_combat.c); called on a FIRE level when g_weapon_can_fire. */
 void g_fire(struct sim *s);
 /* Takes the pickups the player touches (when they are of use). */
 void g_pickups_tick(struct sim *s);
+
+/* ---- g_weapon.c ------------------------------------------------------ */
+
+/* Whether the held weapon may fire now: refire run out and at least its
+ * ammo per shot. */
+int g_weapon_can_fire(const struct sim *s);
+/* The weapon-change press: the next weapon the player owns after the one
+ * held, in enum g_weapon order, wrapping (the same one when it is the only
+ * one owned). */
+void g_weapon_next(struct sim *s);
+/* A weapon pickup: weapon w with ammo (capped at G_AMMO_MAX). Returns 0
+ * when it is of no use (owned already, ammo full), else gives it, and a
+ * weapon not owned before is taken in hand. */
+int g_weapon_give(struct sim *s, int w, int ammo);
+/* The pistol only, in hand: a new game and every life (an arcade death
+ * drops what the player found). */
+void g_weapon_reset(struct sim *s);
 
 /* ---- g_world.c: what every special shares ---------------------------- */
 

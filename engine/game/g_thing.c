@@ -8,8 +8,8 @@
  * grunts, melee and close-range monsters brutes, slow or floating ranged
  * monsters sentries, which stand their ground); health items, armour and
  * the health-giving powerups (soulsphere, megasphere, berserk,
- * invulnerability) become health pickups, ammo and weapons ammo pickups
- * (the game has one weapon and one ammo); the six keys open Doom's locked
+ * invulnerability) become health pickups, ammo ammo pickups, Doom's
+ * weapons one of the game's three (g_weapon.c; one ammo for all); the six keys open Doom's locked
  * doors; the radiation suit keeps damaging floors off for a minute; the
  * computer map, light visor and invisibility are taken and counted among
  * the map's items, nothing more. `counted` is Doom's COUNTITEM (the
@@ -32,19 +32,22 @@ struct g_thing_row {
 	uint8_t cls, kind;
 	uint16_t amount;
 	uint8_t counted;
+	uint8_t weapon;                /* G_P_WEAPON: enum g_weapon */
 	/* enemies: walk frames and Doom's frame letters (0 = 'A') of the
 	 * attack, pain and death (first .. last, the last is the corpse);
 	 * pickups: frames cycled */
 	uint8_t frames, attack, pain, death0, death1;
 };
 
-#define E(t, k, walk, att, pain, d0, d1) { t, G_C_ENEMY, k, 0, 0, walk, att, pain, d0, d1 }
-#define H(t, n, frames) { t, G_C_PICKUP, G_P_HEALTH, n, 0, frames, 0, 0, 0, 0 }
+#define E(t, k, walk, att, pain, d0, d1) { t, G_C_ENEMY, k, 0, 0, 0, walk, att, pain, d0, d1 }
+#define H(t, n, frames) { t, G_C_PICKUP, G_P_HEALTH, n, 0, 0, frames, 0, 0, 0, 0 }
 /* counted health items (Doom's bonuses and spheres) */
-#define HC(t, n, frames) { t, G_C_PICKUP, G_P_HEALTH, n, 1, frames, 0, 0, 0, 0 }
-#define M(t, n) { t, G_C_PICKUP, G_P_AMMO, n, 0, 1, 0, 0, 0, 0 }
-#define K(t, bit, frames) { t, G_C_PICKUP, G_P_KEY, bit, 0, frames, 0, 0, 0, 0 }
-#define I(t, kind, n, frames) { t, G_C_PICKUP, kind, n, 1, frames, 0, 0, 0, 0 }
+#define HC(t, n, frames) { t, G_C_PICKUP, G_P_HEALTH, n, 1, 0, frames, 0, 0, 0, 0 }
+#define M(t, n) { t, G_C_PICKUP, G_P_AMMO, n, 0, 0, 1, 0, 0, 0, 0 }
+/* weapons: the weapon and its ammo */
+#define W(t, w, n) { t, G_C_PICKUP, G_P_WEAPON, n, 0, w, 1, 0, 0, 0, 0 }
+#define K(t, bit, frames) { t, G_C_PICKUP, G_P_KEY, bit, 0, 0, frames, 0, 0, 0, 0 }
+#define I(t, kind, n, frames) { t, G_C_PICKUP, kind, n, 1, 0, frames, 0, 0, 0, 0 }
 
 static const struct g_thing_row g_thing_rows[] = {
 	/* grunts: hitscan soldiers */
@@ -88,11 +91,11 @@ static const struct g_thing_row g_thing_rows[] = {
 	K(39, G_KEY_YELLOW_SKULL, 2),                 /* yellow skull key YSKU */
 	K(38, G_KEY_RED_SKULL, 2),                    /* red skull key RSKU */
 	/* the radiation suit: a minute; items that are only counted */
-	{ 2025, G_C_PICKUP, G_P_SUIT, 60 * SIM_TICRATE, 0, 1, 0, 0, 0, 0 },  /* SUIT */
+	{ 2025, G_C_PICKUP, G_P_SUIT, 60 * SIM_TICRATE, 0, 0, 1, 0, 0, 0, 0 },  /* SUIT */
 	I(2026, G_P_ITEM, 0, 1),                      /* computer area map PMAP */
 	I(2045, G_P_ITEM, 0, 2),                      /* light amplification visor PVIS */
 	I(2024, G_P_ITEM, 0, 4),                      /* partial invisibility PINS */
-	/* ammo, and weapons as ammo */
+	/* ammo */
 	M(2007, 10),                                  /* clip CLIP */
 	M(2048, 50),                                  /* box of bullets AMMO */
 	M(2008, 10),                                  /* shells SHEL */
@@ -102,12 +105,14 @@ static const struct g_thing_row g_thing_rows[] = {
 	M(2047, 20),                                  /* cell CELL */
 	M(17, 50),                                    /* cell pack CELP */
 	M(8, 50),                                     /* backpack BPAK */
-	M(2001, 20),                                  /* shotgun SHOT */
-	M(82, 20),                                    /* super shotgun SGN2 */
-	M(2002, 20),                                  /* chaingun MGUN */
-	M(2003, 10),                                  /* rocket launcher LAUN */
-	M(2004, 20),                                  /* plasma rifle PLAS */
-	M(2006, 20),                                  /* BFG9000 BFUG */
+	/* weapons: Doom's shotguns and BFG (a fan of rays) and its heavy
+	 * launcher give the spread gun, its rapid-fire guns the rapid gun */
+	W(2001, G_W_SPREAD, 20),                      /* shotgun SHOT */
+	W(82, G_W_SPREAD, 20),                        /* super shotgun SGN2 */
+	W(2002, G_W_RAPID, 20),                       /* chaingun MGUN */
+	W(2003, G_W_SPREAD, 10),                      /* rocket launcher LAUN */
+	W(2004, G_W_RAPID, 20),                       /* plasma rifle PLAS */
+	W(2006, G_W_SPREAD, 20),                      /* BFG9000 BFUG */
 };
 
 void g_thing_info(uint16_t type, struct g_thing_info *out)
@@ -131,6 +136,7 @@ void g_thing_info(uint16_t type, struct g_thing_info *out)
 		out->kind = r->kind;
 		out->amount = r->amount;
 		out->counted = r->counted;
+		out->weapon = r->weapon;
 		out->frames = r->frames;
 		out->attack = r->attack;
 		out->pain = r->pain;

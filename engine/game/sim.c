@@ -83,18 +83,21 @@ static void sim_settle(struct sim *s)
 
 /* Puts the player at the map's player 1 start, or, without one, SPAWN_INSET
  * in front of the middle of the first line whose front side faces sector 0,
- * facing along that line. Keeps health and ammo. */
+ * facing along that line. Keeps health, ammo and weapons. */
 static void sim_spawn(struct sim *s)
 {
 	const struct map *m = s->map;
 	struct sim_player *p = &s->pl;
 	fx_t health = p->health;
 	uint16_t ammo = p->ammo;
+	uint8_t weapons = p->weapons, weapon = p->weapon;
 	uint32_t i;
 
 	memset(p, 0, sizeof *p);
 	p->health = health;
 	p->ammo = ammo;
+	p->weapons = weapons;
+	p->weapon = weapon;
 	for (i = 0; i < m->num_things; i++) {
 		if (m->things[i].type == 1) {
 			p->x = m->things[i].x;
@@ -149,6 +152,7 @@ static void sim_new_game(struct sim *s)
 	memset(&s->g, 0, sizeof s->g);
 	s->g.lives = (uint8_t)g_lives_setting(s);
 	s->pl.ammo = 0;
+	g_weapon_reset(s);
 	sim_full_health(s);
 	s->new_rank = -1;
 	s->mode = SIM_PLAY;
@@ -177,6 +181,7 @@ void sim_init_stages(struct sim *s, const struct map *const *maps, int n,
 	s->num_stages = (uint8_t)n;
 	s->set = *set;
 	s->rng = SIM_RNG_SEED;
+	g_weapon_reset(s);
 	for (int id = 1; id < SFX_COUNT; id++) {
 		/* the built-in set's lengths until the app gives its own */
 		struct snd b = { NULL, syn_len(id), SYN_RATE };
@@ -305,6 +310,7 @@ static void sim_life_lost(struct sim *s)
 		g->lives--;
 	if (g->lives > 0) {
 		sim_full_health(s);
+		g_weapon_reset(s);
 		g_enemies_reset(s);
 		g->phase = G_PH_PLAY;
 		g->phase_t = 0;
@@ -363,8 +369,9 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd, uint8_t pres
 		sim_player_move(s, cmd);
 		if ((pressed & SIM_BT_USE) && g->phase == G_PH_PLAY)
 			g_use(s);
-		if ((cmd->buttons & SIM_BT_FIRE) && p->refire == 0 && p->ammo > 0 &&
-		    g->phase == G_PH_PLAY)
+		if ((pressed & SIM_BT_WEAPON) && g->phase == G_PH_PLAY)
+			g_weapon_next(s);
+		if ((cmd->buttons & SIM_BT_FIRE) && g_weapon_can_fire(s) && g->phase == G_PH_PLAY)
 			g_fire(s);
 		g_pickups_tick(s);
 		g_pace_tick(s, cmd);
@@ -420,6 +427,7 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 			g->continues++;
 		g->lives = (uint8_t)g_lives_setting(s);
 		sim_full_health(s);
+		g_weapon_reset(s);
 		g_enemies_reset(s);
 		g->phase = G_PH_PLAY;
 		g->phase_t = 0;

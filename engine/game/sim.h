@@ -46,6 +46,8 @@ struct snd_set;
 #define SIM_BT_USE 0x02
 #define SIM_BT_START 0x04
 #define SIM_BT_SERVICE 0x08
+/* weapon change: a press takes the next weapon the player owns */
+#define SIM_BT_WEAPON 0x10
 
 /* One tick of player input: exactly what a recording stores (6 bytes,
  * see input/rec.h). forward/side: -127..127 of full speed (positive is
@@ -113,6 +115,9 @@ struct sim_settings {
 	X(VAL, fx_t, health, SIM_RANGE(0, G_HEALTH_MAX * FX_ONE)) \
 	X(VAL, uint16_t, ammo, SIM_ANY) \
 	X(VAL, uint16_t, refire, SIM_ANY)           /* ticks until the next shot may fire */ \
+	/* the weapons owned, a bit per enum g_weapon (G_W_BIT; the pistol's always) */ \
+	X(VAL, uint8_t, weapons, SIM_MAX(G_W_BIT(G_WEAPONS) - 1)) \
+	X(VAL, uint8_t, weapon, SIM_MAX(G_WEAPONS - 1))  /* enum g_weapon: the one held */ \
 	X(VAL, uint16_t, hurt, SIM_ANY)             /* ticks left of the damage flash */ \
 	X(VAL, uint16_t, bonus, SIM_ANY)            /* ticks left of the pickup flash */ \
 	/* ticks the player is held still (after a teleport) */ \
@@ -214,7 +219,8 @@ void sim_init(struct sim *s, const struct map *m, const struct sim_settings *set
  * Walls are one-sided and ML_BLOCKING lines, and portals whose higher
  * floor is more than SIM_MAX_STEP above the feet or whose opening is lower
  * than SIM_PLAYER_HEIGHT. z is the floor of the sector under the centre:
- * steps up and drops down are immediate. FIRE shoots (g_combat.c), enemies
+ * steps up and drops down are immediate. A WEAPON press takes the next
+ * weapon owned (g_weapon.c), FIRE shoots the one held (g_combat.c), enemies
  * act (g_enemy.c), pickups are taken; health at 0 starts the death phase
  * (G_DEAD_TICKS), then a life is lost: the player respawns at the stage
  * start (enemies back at their spawn points, unalerted) or, with no life

@@ -160,31 +160,40 @@ static void hud_minimap(const struct sim *s, const struct hud_colours *c, struct
 
 /* ---- the weapon --------------------------------------------------------- */
 
-/* Frame of the weapon animation: 0 ready, 1..4 the shot's recoil, by
- * ticks since the last shot. */
-static int hud_weapon_frame(const struct sim *s)
+static int hud_held(const struct sim *s)
 {
-	uint16_t t = s->g.shot_t;
-
-	return t < 3 ? 1 : t < 6 ? 2 : t < 9 ? 3 : t < G_REFIRE ? 4 : 0;
+	return s->pl.weapon < G_WEAPONS ? s->pl.weapon : G_W_PISTOL;
 }
 
-#define HUD_GUN "PISG"
-#define HUD_FLASH "PISF"
+/* Frame of the weapon animation: 0 ready, 1..4 the shot's recoil, four
+ * equal parts of the held weapon's refire, by ticks since the last shot. */
+static int hud_weapon_frame(const struct sim *s)
+{
+	uint32_t t = s->g.shot_t, r = g_weapons[hud_held(s)].refire;
+
+	return t < r ? 1 + (int)(t * 4 / r) : 0;
+}
+
+/* Doom's weapon sprites for each weapon: the gun's frames and its flash. */
+static const char hud_gun[G_WEAPONS][5] = { "PISG", "SHTG", "CHGG" };
+static const char hud_flash[G_WEAPONS][5] = { "PISF", "SHTF", "CHGF" };
 
 void hud_want(const struct tex_set *t, uint8_t *want_pics)
 {
-	tex_want_sprite(t, HUD_GUN, want_pics);
-	tex_want_sprite(t, HUD_FLASH, want_pics);
+	for (int w = 0; w < G_WEAPONS; w++) {
+		tex_want_sprite(t, hud_gun[w], want_pics);
+		tex_want_sprite(t, hud_flash[w], want_pics);
+	}
 }
 
-/* The texture set's pistol (Doom's PISG frames A..E and flash PISF),
- * placed as Doom places weapon sprites on its 320x200 screen. Returns 0
- * when the set has none. */
+/* The texture set's gun for the held weapon (Doom's PISG, SHTG, CHGG
+ * frames and their flashes PISF, SHTF, CHGF), placed as Doom places weapon
+ * sprites on its 320x200 screen. Returns 0 when the set has none. */
 static int hud_weapon_pics(const struct sim *s, const struct tex_set *t, struct r_frame *f,
 			   int bottom)
 {
-	int g = t ? tex_find_sprite(t, HUD_GUN) : -1, fl = t ? tex_find_sprite(t, HUD_FLASH) : -1;
+	int w = hud_held(s);
+	int g = t ? tex_find_sprite(t, hud_gun[w]) : -1, fl = t ? tex_find_sprite(t, hud_flash[w]) : -1;
 	int frame = hud_weapon_frame(s), ws = f->h / 200 < 1 ? 1 : f->h / 200;
 	int ox = (f->w - 320 * ws) / 2, oy = bottom - 168 * ws;
 	const struct tex_sprite *sp;
@@ -194,53 +203,86 @@ static int hud_weapon_pics(const struct sim *s, const struct tex_set *t, struct 
 	sp = &t->sprites[g];
 	if (frame >= sp->num_frames)
 		frame = 0;
-	/* a set loaded for its maps decodes the gun (hud_want); without
-	 * pixels, the project's own pistol is drawn instead */
+	/* a set loaded for its maps decodes the guns (hud_want); without
+	 * pixels, the project's own drawing is drawn instead */
 	if (sp->num_frames < 1 || !t->sprpics[sp->frames[frame].pic[0]].px)
 		return 0;
 	{
 		const struct tex_pic *p = &t->sprpics[sp->frames[frame].pic[0]];
 		v_pic(f, p, ox + (1 - p->left) * ws, oy + (32 - p->top) * ws, ws);
 	}
-	if (fl >= 0 && frame == 1 && t->sprites[fl].num_frames > 0) {
+	if (fl >= 0 && hud_weapon_frame(s) == 1 && t->sprites[fl].num_frames > 0 &&
+	    t->sprpics[t->sprites[fl].frames[0].pic[0]].px) {
 		const struct tex_pic *p = &t->sprpics[t->sprites[fl].frames[0].pic[0]];
 		v_pic(f, p, ox + (1 - p->left) * ws, oy + (32 - p->top) * ws, ws);
 	}
 	return 1;
 }
 
-/* The project's own pistol, seen from behind, drawn with rectangles and
- * triangles in units of the 320x240 screen: the hand round the grip, the
- * slide narrowing to the muzzle, the sights. It kicks up on a shot and
- * shows a muzzle flash for the first ticks. */
+/* A barrel from the muzzle (x, top) down to the breech, w wide and h long:
+ * steel with a dark bore at the muzzle. */
+static void hud_barrel(const struct hud_colours *c, struct r_frame *f, int sc, int x, int top,
+		       int w, int h)
+{
+	v_fill(f, x - w / 2 * sc, top, w * sc, h * sc, c->steel);
+	v_fill(f, x - (w / 2 - 1) * sc, top, (w - 2) * sc, 2 * sc, c->black);
+}
+
+/* The project's own guns, seen from behind, drawn with rectangles and
+ * triangles in units of the 320x240 screen: the hand round the grip and
+ * the held weapon (the pistol's slide narrowing to the muzzle and its
+ * sights; the spread gun's two wide barrels on a stock; the rapid gun's
+ * cluster of four thin barrels round a drum). Each kicks up on a shot
+ * (the spread gun most) and shows a muzzle flash for the first ticks. */
 static void hud_weapon_drawn(const struct sim *s, const struct hud_colours *c, struct r_frame *f,
 			     int bottom)
 {
-	static const int8_t kick[5] = { 0, 7, 4, 2, 1 };
-	int sc = hud_scale(f), frame = hud_weapon_frame(s);
-	int cx = f->w / 2 + 20 * sc, top = bottom - 52 * sc - kick[frame] * sc;
+	static const int8_t kick[G_WEAPONS][5] = {
+		{ 0, 7, 4, 2, 1 }, { 0, 12, 8, 4, 2 }, { 0, 3, 2, 1, 0 }
+	};
+	int w = hud_held(s), sc = hud_scale(f), frame = hud_weapon_frame(s);
+	int cx = f->w / 2 + 20 * sc, top = bottom - 52 * sc - kick[w][frame] * sc;
+	int fy = top - 2 * sc, flash = 10;
 
 	/* the hand and wrist */
 	v_fill(f, cx - 16 * sc, top + 36 * sc, 32 * sc, bottom - top - 36 * sc, c->skin);
 	v_tri(f, cx - 16 * sc, top + 36 * sc, cx - 22 * sc, bottom, cx - 16 * sc, bottom, c->skin,
 	      NULL);
 	v_fill(f, cx - 16 * sc, top + 40 * sc, 32 * sc, 2 * sc, c->orange);   /* knuckles */
-	/* the grip and the slide */
-	v_fill(f, cx - 9 * sc, top + 24 * sc, 18 * sc, 14 * sc, c->dark);
-	v_tri(f, cx - 11 * sc, top + 26 * sc, cx + 11 * sc, top + 26 * sc, cx - 7 * sc, top,
-	      c->steel, NULL);
-	v_tri(f, cx + 11 * sc, top + 26 * sc, cx + 7 * sc, top, cx - 7 * sc, top, c->steel, NULL);
-	v_fill(f, cx - 1 * sc, top + 2 * sc, 2 * sc, 22 * sc, c->grey);       /* top rib */
-	v_fill(f, cx - 4 * sc, top + 1 * sc, 8 * sc, 3 * sc, c->black);       /* muzzle */
-	v_fill(f, cx - 1 * sc, top - 2 * sc, 2 * sc, 3 * sc, c->white);       /* front sight */
-	v_fill(f, cx - 6 * sc, top + 22 * sc, 4 * sc, 3 * sc, c->white);      /* rear sight */
-	v_fill(f, cx + 2 * sc, top + 22 * sc, 4 * sc, 3 * sc, c->white);
+	if (w == G_W_SPREAD) {
+		v_fill(f, cx - 14 * sc, top + 26 * sc, 28 * sc, 12 * sc, c->dark);  /* stock */
+		hud_barrel(c, f, sc, cx - 6 * sc, top, 11, 28);
+		hud_barrel(c, f, sc, cx + 6 * sc, top, 11, 28);
+		v_fill(f, cx - 1 * sc, top + 2 * sc, 2 * sc, 24 * sc, c->grey);   /* rib */
+		v_fill(f, cx - 1 * sc, top - 2 * sc, 2 * sc, 3 * sc, c->white);   /* bead */
+		flash = 16;
+	} else if (w == G_W_RAPID) {
+		v_fill(f, cx - 12 * sc, top + 22 * sc, 24 * sc, 16 * sc, c->dark);  /* drum */
+		v_fill(f, cx - 12 * sc, top + 28 * sc, 24 * sc, 2 * sc, c->grey);
+		for (int b = 0; b < 4; b++)
+			hud_barrel(c, f, sc, cx + (b * 6 - 9) * sc, top + (b == 1 || b == 2 ? 0 : 3) * sc,
+				   5, 24);
+		flash = 8;
+	} else {
+		/* the grip and the slide */
+		v_fill(f, cx - 9 * sc, top + 24 * sc, 18 * sc, 14 * sc, c->dark);
+		v_tri(f, cx - 11 * sc, top + 26 * sc, cx + 11 * sc, top + 26 * sc, cx - 7 * sc, top,
+		      c->steel, NULL);
+		v_tri(f, cx + 11 * sc, top + 26 * sc, cx + 7 * sc, top, cx - 7 * sc, top, c->steel,
+		      NULL);
+		v_fill(f, cx - 1 * sc, top + 2 * sc, 2 * sc, 22 * sc, c->grey);   /* top rib */
+		v_fill(f, cx - 4 * sc, top + 1 * sc, 8 * sc, 3 * sc, c->black);   /* muzzle */
+		v_fill(f, cx - 1 * sc, top - 2 * sc, 2 * sc, 3 * sc, c->white);   /* front sight */
+		v_fill(f, cx - 6 * sc, top + 22 * sc, 4 * sc, 3 * sc, c->white);  /* rear sight */
+		v_fill(f, cx + 2 * sc, top + 22 * sc, 4 * sc, 3 * sc, c->white);
+	}
 	if (frame == 1) {
-		int fy = top - 2 * sc;
-		v_tri(f, cx, fy - 18 * sc, cx - 10 * sc, fy, cx + 10 * sc, fy, c->orange, NULL);
-		v_tri(f, cx - 14 * sc, fy - 8 * sc, cx + 14 * sc, fy - 8 * sc, cx, fy + 2 * sc,
-		      c->orange, NULL);
-		v_tri(f, cx, fy - 11 * sc, cx - 5 * sc, fy, cx + 5 * sc, fy, c->yellow, NULL);
+		v_tri(f, cx, fy - (flash + 8) * sc, cx - flash * sc, fy, cx + flash * sc, fy, c->orange,
+		      NULL);
+		v_tri(f, cx - (flash + 4) * sc, fy - 8 * sc, cx + (flash + 4) * sc, fy - 8 * sc, cx,
+		      fy + 2 * sc, c->orange, NULL);
+		v_tri(f, cx, fy - (flash + 1) * sc, cx - flash / 2 * sc, fy, cx + flash / 2 * sc, fy,
+		      c->yellow, NULL);
 	}
 }
 
@@ -366,6 +408,14 @@ static void hud_play(const struct sim *s, const struct hud_env *env, const struc
 	hud_cat_num(buf, sizeof(buf), s->pl.ammo, 3, ' ');
 	hud_text(f, c, 2 * sc + v_text_width("HEALTH 100  ", sc), ty, sc,
 		 s->pl.ammo == 0 ? c->red : c->white, buf);
+	/* the weapon held: its number (what the change button steps through)
+	 * and name */
+	buf[0] = '\0';
+	hud_cat_num(buf, sizeof(buf), (uint64_t)hud_held(s) + 1, 1, '0');
+	msg_cat(buf, sizeof(buf), " ");
+	msg_cat(buf, sizeof(buf), g_weapons[hud_held(s)].name);
+	hud_text(f, c, 2 * sc + v_text_width("HEALTH 100  AMMO 200  ", sc), ty, sc,
+		 s->pl.ammo < g_weapons[hud_held(s)].ammo ? c->red : c->yellow, buf);
 	buf[0] = '\0';
 	msg_cat(buf, sizeof(buf), "STAGE ");
 	hud_cat_num(buf, sizeof(buf), s->g.stage + 1u, 1, '0');

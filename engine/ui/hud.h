@@ -40,7 +40,8 @@ struct hud_diag {
 /* What the HUD needs besides the state; all borrowed, read only. */
 struct hud_env {
 	const struct pal *pal;         /* required: the palette the frame is in */
-	const struct tex_set *tex;     /* optional: weapon pictures PISG/PISF if it has them */
+	const struct tex_set *tex;     /* optional: weapon pictures (PISG/PISF, SHTG/SHTF,
+					 * CHGG/CHGF) if it has them */
 	int rotate;                    /* the display's rotation in degrees, shown by the
 					* service menu's orientation screen; -1 unknown */
 	const struct r_par *par;       /* optional: threads the large darkened areas are
@@ -76,7 +77,7 @@ int hud_world(const struct sim *s);
 void hud_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f);
 
 /* Marks in want_pics (tex_want_sprite) the sprites the HUD draws: the
- * weapon and its flash. For a set loaded by tex_load_wad_names. */
+ * weapons and their flashes. For a set loaded by tex_load_wad_names. */
 void hud_want(const struct tex_set *t, uint8_t *want_pics);
 
 /* Text scale for a frame: 1 per 240 lines (and per 320 columns), at least 1. */

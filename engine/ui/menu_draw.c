@@ -103,10 +103,11 @@ static void menu_input_page(struct menu_ctx *m, const struct hud_diag *d)
 		c->forward > 0, c->forward < 0, c->turn > 0, c->turn < 0, c->side < 0, c->side > 0,
 		!!(c->buttons & SIM_BT_FIRE), !!(c->buttons & SIM_BT_USE),
 		!!(c->buttons & SIM_BT_START), !!(c->buttons & SIM_BT_SERVICE),
+		!!(c->buttons & SIM_BT_WEAPON),
 	};
 	static const char names[][14] = {
 		"FORWARD", "BACK", "TURN LEFT", "TURN RIGHT", "STRAFE LEFT", "STRAFE RIGHT",
-		"FIRE", "USE", "START", "SERVICE",
+		"FIRE", "USE", "START", "SERVICE", "WEAPON",
 	};
 	char buf[32] = "";
 

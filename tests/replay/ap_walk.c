@@ -249,7 +249,8 @@ static int ap_detour(struct ap *a)
 		const struct g_pickup *k = &s->g.pk[i];
 		double d = ap_dist(a, ap_fx(k->x), ap_fx(k->y));
 		if (k->taken || d >= bd || a->skipped[i] ||
-		    !((want_ammo && k->kind == G_P_AMMO) || (want_health && k->kind == G_P_HEALTH)))
+		    !((want_ammo && (k->kind == G_P_AMMO || k->kind == G_P_WEAPON)) ||
+		      (want_health && k->kind == G_P_HEALTH)))
 			continue;
 		best = i;
 		bd = d;
@@ -268,7 +269,7 @@ static int ap_detour(struct ap *a)
 		if (a->verbose)
 			fprintf(stderr, "autopilot: tick %u (%.0f, %.0f): for the %s at (%.0f, %.0f)\n",
 				s->tick, ap_fx(s->pl.x), ap_fx(s->pl.y),
-				s->g.pk[best].kind == G_P_AMMO ? "ammo" : "health", go.x, go.y);
+				s->g.pk[best].kind == G_P_HEALTH ? "health" : "ammo", go.x, go.y);
 		a->detour = 1;
 		ap_go(a, &go);
 		a->detour = 0;

@@ -69,6 +69,7 @@ static void test_defaults_bind_the_documented_keys(void **state)
 	expect_keys(&b, ACT_START, KEY_1, KEY_ENTER);
 	expect_keys(&b, ACT_COIN, KEY_5, -1);
 	expect_keys(&b, ACT_SERVICE, KEY_9, KEY_F2);
+	expect_keys(&b, ACT_WEAPON, KEY_Z, KEY_TAB);
 }
 
 static void test_file_replaces_a_whole_action_list(void **state)
@@ -453,6 +454,7 @@ static void test_format_writes_every_action_of_every_section(void **state)
 		"start = KEY_1, KEY_ENTER\n"
 		"coin = KEY_5\n"
 		"service = KEY_9, KEY_F2\n"
+		"weapon = KEY_Z, KEY_TAB\n"
 		"\n"
 		"[device \"usb-1-1.2\"]\n"
 		"forward = BTN_DPAD_UP\n"
@@ -465,7 +467,8 @@ static void test_format_writes_every_action_of_every_section(void **state)
 		"use =\n"
 		"start =\n"
 		"coin =\n"
-		"service =\n";
+		"service =\n"
+		"weapon =\n";
 	int key[ACT_COUNT][BIND_MAX];
 	struct bind_table b, back;
 	char buf[2048];

@@ -69,6 +69,13 @@ static void tap_within_one_tick_still_presses(void **state)
 	assert_int_equal(c.buttons, SIM_BT_START);
 	cmd_build(&s, &c);
 	assert_int_equal(c.buttons, 0);
+	/* the weapon change: its own bit, a tap is a press */
+	cmd_action(&s, ACT_WEAPON, 1);
+	cmd_action(&s, ACT_WEAPON, 0);
+	cmd_build(&s, &c);
+	assert_int_equal(c.buttons, SIM_BT_WEAPON);
+	cmd_build(&s, &c);
+	assert_int_equal(c.buttons, 0);
 }
 
 static void each_coin_edge_counts_once(void **state)

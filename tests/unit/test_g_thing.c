@@ -69,9 +69,25 @@ static void pickups_give_health_or_ammo(void **state)
 	g_thing_info(2007, &ti);                    /* clip */
 	assert_int_equal(ti.kind, G_P_AMMO);
 	assert_int_equal(ti.amount, 10);
-	g_thing_info(2001, &ti);                    /* a shotgun is ammo here */
+	/* Doom's weapons give one of the game's (docs/game.md's table) */
+	g_thing_info(2001, &ti);                    /* shotgun: the spread gun */
 	assert_int_equal(ti.cls, G_C_PICKUP);
-	assert_int_equal(ti.kind, G_P_AMMO);
+	assert_int_equal(ti.kind, G_P_WEAPON);
+	assert_int_equal(ti.weapon, G_W_SPREAD);
+	assert_int_equal(ti.amount, 20);
+	g_thing_info(82, &ti);                      /* super shotgun */
+	assert_int_equal(ti.kind, G_P_WEAPON);
+	assert_int_equal(ti.weapon, G_W_SPREAD);
+	g_thing_info(2002, &ti);                    /* chaingun: the rapid gun */
+	assert_int_equal(ti.kind, G_P_WEAPON);
+	assert_int_equal(ti.weapon, G_W_RAPID);
+	g_thing_info(2004, &ti);                    /* plasma rifle */
+	assert_int_equal(ti.weapon, G_W_RAPID);
+	g_thing_info(2003, &ti);                    /* rocket launcher */
+	assert_int_equal(ti.weapon, G_W_SPREAD);
+	assert_int_equal(ti.amount, 10);
+	g_thing_info(2006, &ti);                    /* BFG9000 */
+	assert_int_equal(ti.weapon, G_W_SPREAD);
 }
 
 static void lights_decorations_and_the_rest(void **state)

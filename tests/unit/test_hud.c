@@ -272,8 +272,8 @@ static void give_lines(struct hud_diag *d, const char *heading, const char *line
 }
 
 /* The input test prints the app's lines (the devices' raw controls) under
- * the coins line: ten action rows 10 lines apart from 34, 4 more, the
- * coins line (12): from line 150 at scale 1. */
+ * the coins line: eleven action rows (WEAPON the last) 10 lines apart
+ * from 34, 4 more, the coins line (12): from line 160 at scale 1. */
 static void the_input_test_prints_the_apps_lines_under_the_actions(void **state)
 {
 	static struct hud_diag d;
@@ -284,14 +284,14 @@ static void the_input_test_prints_the_apps_lines_under_the_actions(void **state)
 	s.menu.page = MENU_INPUT;
 	diag = NULL;
 	draw(&s);
-	assert_true(count_in(0, 138, W, 10, col.yellow) > 20);        /* COINS 0 */
-	assert_int_equal(count_in(0, 150, W, H - 150 - 14, col.yellow), 0);
-	assert_int_equal(count_in(0, 150, W, H - 150 - 14, col.white), 0);
+	assert_true(count_in(0, 148, W, 10, col.yellow) > 20);        /* COINS 0 */
+	assert_int_equal(count_in(0, 160, W, H - 160 - 14, col.yellow), 0);
+	assert_int_equal(count_in(0, 160, W, H - 160 - 14, col.white), 0);
 	give_lines(&d, "CONTROLS", "  EVDEV - KEY_UP DOWN -> FORWARD");
 	draw(&s);
-	assert_true(count_in(0, 150, W, 10, col.yellow) > 8 * 8);
-	assert_true(count_in(0, 160, W, 10, col.white) > 20 * 8);
-	assert_int_equal(count_in(0, 170, W, H - 170 - 14, col.white), 0);
+	assert_true(count_in(0, 160, W, 10, col.yellow) > 8 * 8);
+	assert_true(count_in(0, 170, W, 10, col.white) > 20 * 8);
+	assert_int_equal(count_in(0, 180, W, H - 180 - 14, col.white), 0);
 	diag = NULL;
 }
 

@@ -28,7 +28,7 @@
 #define T0 (5 * S)                     /* any start time */
 
 /* The steps in the order wiz.h gives. */
-enum { UP, DOWN, LEFT, RIGHT, FIRE, USE, SLEFT, SRIGHT, START, COIN, SERVICE };
+enum { UP, DOWN, LEFT, RIGHT, FIRE, USE, SLEFT, SRIGHT, START, COIN, SERVICE, WEAPON };
 
 static struct in_ident ident(const char *port, uint16_t vid, uint16_t pid, const char *name)
 {
@@ -97,6 +97,7 @@ static void defaults_by_hand(int k[ACT_COUNT][BIND_MAX])
 	k[ACT_START][0] = KEY_1, k[ACT_START][1] = KEY_ENTER;
 	k[ACT_COIN][0] = KEY_5;
 	k[ACT_SERVICE][0] = KEY_9, k[ACT_SERVICE][1] = KEY_F2;
+	k[ACT_WEAPON][0] = KEY_Z, k[ACT_WEAPON][1] = KEY_TAB;
 }
 
 /* Sets action a of k to exactly the one code c (or none for -1). */
@@ -121,7 +122,7 @@ static void the_steps_are_in_stick_then_button_order(void **state)
 {
 	static const int want[WIZ_STEPS] = { ACT_FORWARD, ACT_BACK, ACT_TURN_LEFT, ACT_TURN_RIGHT,
 					     ACT_FIRE, ACT_USE, ACT_STRAFE_LEFT, ACT_STRAFE_RIGHT,
-					     ACT_START, ACT_COIN, ACT_SERVICE };
+					     ACT_START, ACT_COIN, ACT_SERVICE, ACT_WEAPON };
 
 	(void)state;
 	for (int k = 0; k < WIZ_STEPS; k++)
@@ -160,6 +161,9 @@ static void a_hid_device_on_a_port_gets_its_own_section(void **state)
 	hold(&w, "hid", &hid, BTN_TRIGGER_HAPPY3, &t);
 	assert_int_equal(wiz_last_note(&w, &step, NULL), WIZ_N_SKIPPED);
 	assert_int_equal(step, SERVICE);
+	hold(&w, "hid", &hid, BTN_TRIGGER_HAPPY3, &t);
+	assert_int_equal(wiz_last_note(&w, &step, NULL), WIZ_N_SKIPPED);
+	assert_int_equal(step, WEAPON);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
 
@@ -177,7 +181,8 @@ static void a_hid_device_on_a_port_gets_its_own_section(void **state)
 	only(want, ACT_STRAFE_RIGHT, BTN_TRIGGER_HAPPY6);
 	only(want, ACT_START, BTN_TRIGGER_HAPPY10);
 	only(want, ACT_COIN, BTN_TRIGGER_HAPPY9);
-	/* service: skipped, keeps KEY_9, KEY_F2 from the copy of [keyboard] */
+	/* service and weapon: skipped, keep KEY_9, KEY_F2 and KEY_Z, KEY_TAB
+	 * from the copy of [keyboard] */
 	expect_section((const int (*)[BIND_MAX])section(&out, "usb-1-1")->key,
 		       (const int (*)[BIND_MAX])want);
 
@@ -228,7 +233,7 @@ static void holding_one_second_skips_and_keeps_the_old_binding(void **state)
 	assert_int_equal(wiz_last_note(&w, NULL, NULL), WIZ_N_SKIPPED);
 	t += 2 * S;
 	/* the rest skipped */
-	for (int k = RIGHT; k <= SERVICE; k++)
+	for (int k = RIGHT; k <= WEAPON; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
@@ -265,7 +270,7 @@ static void a_control_assigned_twice_is_refused(void **state)
 	assert_int_equal(wiz_last_note(&w, &step, NULL), WIZ_N_TAKEN);
 	assert_int_equal(step, DOWN);
 	tap(&w, "evdev", NULL, KEY_SPACE, &t);         /* turn left = SPACE, off fire */
-	for (int k = RIGHT; k <= SERVICE; k++)
+	for (int k = RIGHT; k <= WEAPON; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
@@ -294,7 +299,7 @@ static void a_keyboard_without_ident_binds_in_keyboard(void **state)
 	tap(&w, "tty", NULL, KEY_S, &t);               /* back = S */
 	tap(&w, NULL, NULL, KEY_A, &t);                /* turn left = A, off strafe left */
 	tap(&w, "gpio", &gpio, KEY_D, &t);             /* turn right = D, off strafe right */
-	for (int k = FIRE; k <= SERVICE; k++)
+	for (int k = FIRE; k <= WEAPON; k++)
 		hold(&w, "gpio", &gpio, KEY_5, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
@@ -338,7 +343,7 @@ static void two_devices_in_one_run_get_two_sections(void **state)
 	assert_int_equal(wiz_last_note(&w, NULL, NULL), WIZ_N_ASSIGNED);
 	tap(&w, "hid", &a, BTN_TRIGGER_HAPPY3, &t);    /* A fire (replaces HAPPY1) */
 	tap(&w, "hid", &a, BTN_TRIGGER_HAPPY10, &t);   /* A use: off A's start */
-	for (int k = SLEFT; k <= SERVICE; k++)
+	for (int k = SLEFT; k <= WEAPON; k++)
 		hold(&w, "evdev", NULL, KEY_SPACE, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
@@ -371,7 +376,7 @@ static void skipping_every_step_changes_nothing(void **state)
 	(void)state;
 	bind_defaults(&b);
 	wiz_start(&w, &b, t);
-	for (int k = UP; k <= SERVICE; k++)
+	for (int k = UP; k <= WEAPON; k++)
 		hold(&w, "evdev", NULL, KEY_ENTER, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 0);
@@ -394,7 +399,7 @@ static void the_summary_saves_or_discards_and_idle_cancels(void **state)
 	t = T0;
 	wiz_start(&w, &b, t);
 	tap(&w, "evdev", NULL, KEY_I, &t);
-	for (int k = DOWN; k <= SERVICE; k++)
+	for (int k = DOWN; k <= WEAPON; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	assert_int_equal(wiz_step(&w), WIZ_STEPS);
 	hold(&w, "evdev", NULL, KEY_L, &t);
@@ -411,7 +416,7 @@ static void the_summary_saves_or_discards_and_idle_cancels(void **state)
 	t = T0;
 	wiz_start(&w, &b, t);
 	tap(&w, "evdev", NULL, KEY_I, &t);
-	for (int k = DOWN; k <= SERVICE; k++)
+	for (int k = DOWN; k <= WEAPON; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	/* the last hold ended the steps at its 1 s tick, 500 ms before t */
 	assert_int_equal(wiz_tick(&w, t - 500 * MS + WIZ_SUMMARY_NS - 1), WIZ_RUNNING);
@@ -498,7 +503,7 @@ static void no_room_for_another_section_is_refused(void **state)
 	tap(&w, "hid", &known, BTN_SOUTH, &t);
 	assert_int_equal(wiz_last_note(&w, NULL, NULL), WIZ_N_ASSIGNED);
 	assert_int_equal(wiz_step(&w), DOWN);
-	for (int k = DOWN; k <= SERVICE; k++)
+	for (int k = DOWN; k <= WEAPON; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
@@ -624,7 +629,7 @@ static void the_summary_lists_controls_with_section_letters(void **state)
 	tap(&w, "evdev", NULL, KEY_I, &t);              /* [A] KEYBOARD */
 	tap(&w, "hid", &hid, BTN_SOUTH, &t);            /* [B] USB-1-1 */
 	tap(&w, "evdev", NULL, KEY_K, &t);              /* [A] again */
-	for (int k = RIGHT; k <= SERVICE; k++)
+	for (int k = RIGHT; k <= WEAPON; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	wiz_draw(&w, &pal, &f);
 	assert_int_equal(count(&f, c.green), text_pixels("KEY_I [A]", 1) +
@@ -653,7 +658,7 @@ static void tiny_frames_are_safe(void **state)
 		assert_non_null(f.px);
 		wiz_start(&w, &b, t);
 		wiz_draw(&w, &pal, &f);
-		for (int k = UP; k <= SERVICE; k++)
+		for (int k = UP; k <= WEAPON; k++)
 			hold(&w, "evdev", NULL, KEY_Z, &t);
 		wiz_draw(&w, &pal, &f);
 		free(f.px);
