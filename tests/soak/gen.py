@@ -6,8 +6,9 @@ a random player does not finish: a new high score and its initials), then
 random input: coins now and then, start presses, movement, turning,
 strafing and fire held for random spans, so the game cycles through
 attract, play and game over. The header (bytes 0..39, format 1) is the
-template's (its map hash, engine version, settings), so the daemon
-accepts it.
+template's (its map hash, engine version, settings; the pacing settings
+at its bytes 37 and 38 must be the defaults, which format 1 stores as 0),
+so the daemon accepts it.
 Usage: gen.py TEMPLATE.rec OUT.rec TICKS SEED"""
 import random
 import struct
@@ -31,6 +32,12 @@ if len(prefix) != count or any(len(c) != 6 for c in prefix) or count > ticks:
 hdr[8:10] = struct.pack('<H', 1)          # format version 1: commands only
 hdr[12:16] = struct.pack('<I', 40)        # header size
 hdr[32:36] = struct.pack('<I', ticks)     # command count
+# Format 1 has no room for the format 3 settings kept in bytes 37 and 38
+# (stage_time, idle_out): they are reserved (0) there, which reads back as
+# the defaults, the template's own settings.
+if hdr[37] not in (0, 5) or hdr[38] != 0:
+    sys.exit('gen.py: %s: stage_time %d, idle_out %d are not the defaults' % (tmpl, hdr[37], hdr[38]))
+hdr[37:40] = bytes(3)
 rng = random.Random(seed)
 FIRE, USE, START, SERVICE = 1, 2, 4, 8
 buf = bytearray(b''.join(prefix))
