@@ -109,7 +109,6 @@ void keep_start(struct keep *k, const char *dir, int on, struct sim *s, const st
 static void keep_settings(struct keep *k, const struct sim *s, int w, int h)
 {
 	const struct sim_settings *st = &s->set;
-	static const char *const idles[G_IDLE_COUNT] = { "life", "end", "off" };
 	char ini[400];
 	int n = snprintf(ini, sizeof(ini),
 			 "[game]\ncoins_per_credit = %u\nfreeplay = %s\ndifficulty = %u\nlives = %u\n"
@@ -119,7 +118,7 @@ static void keep_settings(struct keep *k, const struct sim *s, int w, int h)
 			 st->lives, st->volume, st->attract_sound,
 			 st->stage_time == G_STAGE_TIME_OFF ? 0
 			 : st->stage_time ? st->stage_time : G_STAGE_TIME_DEFAULT,
-			 idles[st->idle_out < G_IDLE_COUNT ? st->idle_out : G_IDLE_OFF], w, h);
+			 cfg_idle_name(st->idle_out), w, h);
 	keep_save(k, "settings.ini", NULL, ini, (size_t)n);
 }
 

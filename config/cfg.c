@@ -125,6 +125,11 @@ static void cfg_setstr(char *dst, size_t size, const char *s)
 	snprintf(dst, size, "%s", s);
 }
 
+const char *cfg_idle_name(int idle)
+{
+	return cfg_idles[idle >= 0 && idle < G_IDLE_COUNT ? idle : G_IDLE_OFF];
+}
+
 void cfg_settings(const struct cfg *c, struct sim_settings *set)
 {
 	memset(set, 0, sizeof(*set));

@@ -81,6 +81,10 @@ typedef void (*cfg_err_fn)(void *user, const char *file, int line, const char *m
  * recordings store); set is overwritten whole. */
 void cfg_settings(const struct cfg *c, struct sim_settings *set);
 
+/* game.idle_out's name for enum g_idle value idle ("life", "end", "off");
+ * out of range: "off", as the sim counts it. */
+const char *cfg_idle_name(int idle);
+
 /* Built-in defaults (listed in docs/config.md). paths.state_dir is the first
  * directory of $STATE_DIRECTORY when set, else /var/lib/arcaded. */
 void cfg_defaults(struct cfg *c);

@@ -71,4 +71,20 @@ static inline struct map *gf_room(int w, int h, const struct gf_thing *th, int n
 	return m;
 }
 
+/* The game tests' arena: gf_room 2048 x 512 with the player 1 start at
+ * (128, 256) facing east, then the n things th (at most 7) and the boxes.
+ * NULL on failure. */
+static inline struct map *gf_arena(const struct gf_thing *th, int n, const struct gf_box *box,
+				   int nbox)
+{
+	struct gf_thing all[8];
+
+	if (n < 0 || n > 7)
+		return NULL;
+	all[0] = (struct gf_thing){ 128, 256, 0, 1, 0 };
+	if (n > 0)
+		memcpy(all + 1, th, (size_t)n * sizeof(*th));
+	return gf_room(2048, 512, all, n + 1, box, nbox);
+}
+
 #endif

@@ -26,16 +26,11 @@ static void run(struct sim *s, const struct sim_cmd *c, int n)
 		sim_tick(s, c);
 }
 
-/* Room 2048 x 512, player at (128, 256) facing east, plus the things. */
+/* gf_arena, which a test needs to have built. */
 static struct map *arena(const struct gf_thing *th, int n, const struct gf_box *b, int nb)
 {
-	struct gf_thing all[8];
-	struct map *m;
+	struct map *m = gf_arena(th, n, b, nb);
 
-	all[0] = (struct gf_thing){ 128, 256, 0, 1, 0 };
-	if (n > 0)
-		memcpy(all + 1, th, (size_t)n * sizeof(*th));
-	m = gf_room(2048, 512, all, n + 1, b, nb);
 	assert_non_null(m);
 	return m;
 }

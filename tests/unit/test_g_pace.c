@@ -26,18 +26,12 @@ static void run(struct sim *s, const struct sim_cmd *c, int n)
 }
 
 /* Straight into play (easy, 3 lives) with a stage clock of `minutes` and
- * idle rule `idle`, in a room 2048 x 512 with the player at (128, 256)
- * facing east and the things th. */
+ * idle rule `idle`, in gf_arena with the things th. */
 static struct map *start(struct sim *s, int minutes, int idle, const struct gf_thing *th, int n)
 {
 	struct sim_settings set = { 1, 0, 1, 0, 3, 100, 1, (uint8_t)minutes, (uint8_t)idle };
-	struct gf_thing all[8];
-	struct map *m;
+	struct map *m = gf_arena(th, n, NULL, 0);
 
-	all[0] = (struct gf_thing){ 128, 256, 0, 1, 0 };
-	if (n > 0)
-		memcpy(all + 1, th, (size_t)n * sizeof(*th));
-	m = gf_room(2048, 512, all, n + 1, NULL, 0);
 	assert_non_null(m);
 	sim_init(s, m, &set);
 	assert_int_equal(s->mode, SIM_PLAY);

@@ -24,16 +24,11 @@ static const struct sim_cmd idle = { 0 };
 static const struct sim_cmd fire = { .buttons = SIM_BT_FIRE };
 static const struct sim_cmd change = { .buttons = SIM_BT_WEAPON };
 
-/* Room 2048 x 512, player at (128, 256) facing east, plus the things. */
+/* gf_arena without pillars, which a test needs to have built. */
 static struct map *arena(const struct gf_thing *th, int n)
 {
-	struct gf_thing all[8];
-	struct map *m;
+	struct map *m = gf_arena(th, n, NULL, 0);
 
-	all[0] = (struct gf_thing){ 128, 256, 0, 1, 0 };
-	if (n > 0)
-		memcpy(all + 1, th, (size_t)n * sizeof(*th));
-	m = gf_room(2048, 512, all, n + 1, NULL, 0);
 	assert_non_null(m);
 	return m;
 }
