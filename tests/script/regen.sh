@@ -14,12 +14,13 @@ out=${2:-$(mktemp -d)}
 mkdir -p "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+. tests/script/args.sh
 : > "$tmp/frames"
 for scr in tests/script/*.scr tests/script/game/*.scr; do
 	name=$(basename "$scr" .scr)
 	rm -rf "$tmp/run"; mkdir "$tmp/run"
 	rc=0
-	(cd "$tmp/run" && "$BIN" --script "$top/$scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
+	(cd "$tmp/run" && "$BIN" --script "$top/$scr" $(script_args "$top/$scr") --config-dir "$tmp/etc" --state-dir "$tmp/state" \
 		--set display.backend=file --set display.file="$tmp/fb" \
 		--set display.file_format=xrgb8888 --set display.file_width=640 \
 		--set display.file_height=480 >/dev/null 2>&1) || rc=$?

@@ -24,6 +24,7 @@ cd "$(dirname "$0")/../.."
 top=$(pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+. tests/script/args.sh
 pass=0
 fail=0
 for scr in tests/script/*.scr tests/script/game/*.scr; do
@@ -31,7 +32,7 @@ for scr in tests/script/*.scr tests/script/game/*.scr; do
 	want_exit=$(sed -n 's/^# expect-exit: *\([0-9]*\).*/\1/p' "$scr" | head -n 1)
 	want_exit=${want_exit:-0}
 	rm -rf "$tmp/run"; mkdir "$tmp/run"
-	(cd "$tmp/run" && "$BIN" --script "$top/$scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
+	(cd "$tmp/run" && "$BIN" --script "$top/$scr" $(script_args "$top/$scr") --config-dir "$tmp/etc" --state-dir "$tmp/state" \
 		--set display.backend=file --set display.file="$tmp/fb" \
 		--set display.file_format=xrgb8888 --set display.file_width=640 \
 		--set display.file_height=480 >"$tmp/out" 2>"$tmp/err")
