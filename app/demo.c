@@ -1,16 +1,25 @@
 #include "app/demo.h"
 
 #include <errno.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "app/cmd.h"
 #include "app/ct.h"
+#include "engine/map/map.h"
 #include "input/scr.h"
 
-/* The demo: into the hall, shooting, through the doorway and the yard. The
- * page lasts SIM_DEMO_TICKS; the last command repeats if it ends sooner. */
-static const char demo_script[] =
+/* The demo of the first built-in level: a real game (levels/demo.scr,
+ * played by tests/replay/autopilot), compiled in as demo_game. Its first
+ * line names the map it was played on, that map's content hash and the
+ * difficulty it was played at: "# demo: ARENA1 HASH DIFFICULTY". */
+#include "app/demo_game.h"
+
+/* For any other content (a WAD, a grid map, another first level), where
+ * a recorded game would not replay: a walk about, shooting. The page
+ * lasts SIM_DEMO_TICKS; the last command repeats if a script ends sooner. */
+static const char demo_walk[] =
 	"0 press forward\n"
 	"40 press fire\n"
 	"70 release fire\n"
@@ -42,6 +51,20 @@ static const char demo_script[] =
 	"1600 hold fire 100\n"
 	"1799 end\n";
 
+int demo_game_matches(const struct map *m, int *difficulty)
+{
+	char name[9];
+	unsigned long long hash;
+	int diff;
+
+	if (sscanf(demo_game, "# demo: %8s %llx %d", name, &hash, &diff) != 3)
+		return 0;
+	if (strcmp(m->name, name) != 0 || m->content_hash != (uint64_t)hash)
+		return 0;
+	*difficulty = diff;
+	return 1;
+}
+
 int demo_init(struct demo *d, const struct ct *ct, char *err, size_t errlen)
 {
 	struct cmd_state cs;
@@ -51,7 +74,11 @@ int demo_init(struct demo *d, const struct ct *ct, char *err, size_t errlen)
 
 	memset(d, 0, sizeof(*d));
 	d->ct = ct;
-	rc = scr_parse(demo_script, sizeof(demo_script) - 1, "built-in demo", &s, err, errlen);
+	d->game = ct->nmaps > 0 && demo_game_matches(ct->maps[0], &d->difficulty);
+	if (d->game)
+		rc = scr_parse(demo_game, sizeof(demo_game) - 1, "levels/demo.scr", &s, err, errlen);
+	else
+		rc = scr_parse(demo_walk, sizeof(demo_walk) - 1, "built-in demo", &s, err, errlen);
 	if (rc < 0)
 		return rc;
 	d->len = s->end_tick + 1;
@@ -85,9 +112,19 @@ void demo_tick(struct demo *d, const struct sim *m)
 		return;
 	}
 	if (!d->running || m->mode_t == 0) {
-		/* The demo plays on the cabinet's own settings, from the
-		 * first stage, straight into play. */
+		/* The demo plays from the first stage, straight into play.
+		 * The recorded game plays by the rules it was played with:
+		 * its difficulty and every other rule at its default (0),
+		 * whatever the operator set, or it would not replay; the
+		 * cabinet's sound settings are kept. The walk about plays on
+		 * the cabinet's settings. */
 		struct sim_settings set = m->set;
+		if (d->game) {
+			memset(&set, 0, sizeof(set));
+			set.difficulty = (uint8_t)d->difficulty;
+			set.volume = m->set.volume;
+			set.attract_sound = m->set.attract_sound;
+		}
 		set.start_in_play = 1;
 		sim_init_stages(&d->sim, (const struct map *const *)d->ct->maps, d->ct->nmaps, &set,
 				NULL, NULL);

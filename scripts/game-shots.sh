@@ -42,7 +42,8 @@ for s in hurry idle; do
 		--state-dir "$tmp/state-$s" --set game.render_width=640 \
 		--set game.render_height=480 >/dev/null)
 done
-printf '100 screenshot %s\n' "$out/game-attract-title.png" >"$tmp/title.scr"
+printf '100 screenshot %s\n1300 screenshot %s\n' "$out/game-attract-title.png" \
+	"$out/game-attract-demo.png" >"$tmp/title.scr"
 "$BIN" --script "$tmp/title.scr" --config-dir "$tmp/etc" --state-dir "$tmp/state2" \
 	--set game.render_width=640 --set game.render_height=480 >/dev/null
 ls -1 "$out"/game-*.png

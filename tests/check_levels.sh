@@ -1,7 +1,8 @@
 #!/bin/sh
 # The built-in levels' compiled-in PWAD (engine/map/lvl_wad.c) is exactly what
 # tools/mklevels makes of levels/arena*.txt (docs/maps.md, "The built-in
-# levels"). Needs $BUILD/tools/mklevels (make tools).
+# levels"), and app/demo_game.h what tools/mkdemo.sh makes of levels/demo.scr
+# (the attract demo). Needs $BUILD/tools/mklevels (make tools).
 set -u
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
@@ -16,4 +17,11 @@ if ! cmp -s "$BUILD/lvl_wad.c.new" engine/map/lvl_wad.c; then
 	echo "     regenerate: $gen levels/arena*.txt > engine/map/lvl_wad.c"
 	exit 1
 fi
-echo "check-levels: engine/map/lvl_wad.c matches tools/mklevels levels/arena*.txt"
+# the attract demo's script, compiled in (app/demo.c)
+tools/mkdemo.sh levels/demo.scr > "$BUILD/demo_game.h.new" || exit 1
+if ! cmp -s "$BUILD/demo_game.h.new" app/demo_game.h; then
+	echo "FAIL app/demo_game.h differs from what tools/mkdemo.sh makes of levels/demo.scr;"
+	echo "     regenerate: tools/mkdemo.sh levels/demo.scr > app/demo_game.h"
+	exit 1
+fi
+echo "check-levels: engine/map/lvl_wad.c matches tools/mklevels levels/arena*.txt, app/demo_game.h tools/mkdemo.sh levels/demo.scr"

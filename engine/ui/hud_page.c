@@ -64,7 +64,8 @@ void hud_page_attract(const struct sim *s, const struct hud_colours *c, struct r
 		hud_coin_prompt(s, c, f, f->h - 30 * sc);
 		break;
 	case SIM_PAGE_DEMO:
-		hud_text_centre(f, c, 4 * sc, 2 * sc, c->yellow, "DEMO");
+		/* under the demo's own HUD line (the stage clock) */
+		hud_text_centre(f, c, 16 * sc, 2 * sc, c->yellow, "DEMO");
 		hud_coin_prompt(s, c, f, f->h - 30 * sc);
 		break;
 	case SIM_PAGE_TITLE:

@@ -60,6 +60,11 @@ struct ap {
 	int detour;
 	int deaths;                    /* lives lost */
 	int nshots, nhits;             /* shots fired, shots that hit */
+	/* the first tick the stage showed cleared (0: not yet), and the
+	 * kills and the weapon held then (--demo's checks) */
+	uint32_t clear_t, clear_kills;
+	int demo;                      /* --demo: a clear ends the route */
+	uint8_t clear_weapon;
 	/* the way being walked */
 	int cur;
 	double lastd;

@@ -284,7 +284,9 @@ int ap_go(struct ap *a, const struct ap_step *st)
 	double best = 1e18;
 
 	a->npath = 0;
-	while (ap_dist(a, st->x, st->y) > st->tol) {
+	/* --demo: a cleared stage ends the walk (the next one is not the
+	 * grid's map) */
+	while (ap_dist(a, st->x, st->y) > st->tol && !(a->demo && a->clear_t)) {
 		double px, py;
 		uint16_t act = 0;
 		int aimed, j;

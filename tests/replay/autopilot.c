@@ -6,6 +6,7 @@
  *   autopilot --wad FILE [--wad FILE...] --map NAME [--set S.K=V...]
  *             --route ROUTE [--out SCRIPT] [--inter N] [--verbose | --trace]
  *   autopilot --wad FILE --map NAME --explore X,Y[,KEYS]
+ *   autopilot --level N --demo --route ROUTE [--out SCRIPT]
  *
  * It loads the content with the daemon's own code (app/ct.c), starts the
  * sim as the daemon does with no configuration files and the --set
@@ -51,6 +52,19 @@
  * restarts the walk from the map's start with what was done kept (the
  * game's rule). No cheats: the route and the game's own settings
  * (difficulty, lives: --set) must do.
+ *
+ * --level N plays built-in level N instead of a WAD's map (the stages that
+ * follow it too). --demo writes the attract demo (levels/demo.scr, app/demo.c):
+ * the game starts in play, without coin or START, by the demo's rules
+ * (every setting at its default, 0, but the difficulty: --set
+ * game.difficulty=D, default 1); the route's goal is the stage cleared
+ * (every enemy dead, phase 2) instead of the exit, and its last step should
+ * end with the last kill (a step still going when the next stage starts
+ * walks on the wrong map); then it stands and fights what the next stage
+ * sends until the attract page's end (SIM_DEMO_TICKS); the script's first line names the map, its content hash and the
+ * difficulty ("# demo: ARENA1 HASH D"), which the daemon checks before
+ * it plays the demo, and its checks are the clear's tick, the score, the
+ * kills and the weapon held, then the page end's kills and score.
  *
  * --explore X,Y[,KEYS], for writing routes: no play; prints the way from
  * the map's start to (X, Y) with every door and tagged sector open (locked
@@ -126,6 +140,11 @@ void ap_tick(struct ap *a, uint16_t want)
 			a->s.w.sec[a->s.pl.sector].special);
 	cmd_build(&a->cs, &c);
 	sim_tick(&a->s, &c);
+	if (!a->clear_t && a->s.g.phase == G_PH_CLEAR) {
+		a->clear_t = a->s.tick - 1;
+		a->clear_kills = a->s.g.kills;
+		a->clear_weapon = a->s.pl.weapon;
+	}
 	if (a->s.tick > AP_MAX_TICKS)
 		ap_die(a, NULL, "more than %d ticks", AP_MAX_TICKS);
 }
@@ -256,11 +275,59 @@ static void ap_cfg_err(void *user, const char *file, int line, const char *msg)
 	fprintf(stderr, "autopilot: %s: %s\n", file, msg);
 }
 
+/* --demo: the route played from the start in play until the stage is
+ * cleared, then standing and fighting until the attract page's end
+ * (SIM_DEMO_TICKS); the script and its checks. */
+static int ap_demo(struct ap *a, const struct ct *ct, const struct ap_step *steps, int nsteps,
+		   const char *outp)
+{
+	uint32_t clear_t;
+
+	fprintf(a->out, "# demo: %s %016llx %u\n", ct->map->name,
+		(unsigned long long)ct->map->content_hash, a->s.set.difficulty);
+	fprintf(a->out, "# The attract demo (app/demo.c): written by tests/replay/autopilot from\n"
+		"# %s (see it and tests/replay/README.md): %s, from the start in play\n"
+		"# until every enemy is dead. Regenerate: tests/replay/autopilot.sh; then\n"
+		"# tools/mkdemo.sh levels/demo.scr > app/demo_game.h.\n", a->route, ct->what);
+	if (a->s.mode != SIM_PLAY)
+		ap_die(a, NULL, "the demo did not start in play");
+	for (int i = 0; i < nsteps && !a->clear_t; i++)
+		ap_do(a, &steps[i]);
+	for (int i = 0; i < 600 && !a->clear_t; i++)
+		ap_stand_tick(a);
+	if (!a->clear_t)
+		ap_die(a, NULL, "the route ended with %u enemies alive", a->s.g.alive);
+	clear_t = a->clear_t;
+	fprintf(stderr, "autopilot: %s: cleared on tick %u, health %d, ammo %u, kills %u, score %u, "
+		"lives lost %d, shots %d (%d hit), weapon %u\n", ct->map->name, clear_t,
+		a->s.pl.health / FX_ONE, a->s.pl.ammo, a->clear_kills, a->s.g.score, a->deaths,
+		a->nshots, a->nhits, a->clear_weapon);
+	fprintf(a->out, "%u expect phase == %d\n", clear_t, G_PH_CLEAR);
+	fprintf(a->out, "%u expect kills == %u\n", clear_t, a->clear_kills);
+	fprintf(a->out, "%u expect weapon == %u\n", clear_t, a->clear_weapon);
+	/* the rest of the page: the next stage, standing and fighting what
+	 * comes (its way is not on the grid, which is the first stage's) */
+	while (a->s.tick < SIM_DEMO_TICKS)
+		ap_stand_tick(a);
+	fprintf(stderr, "autopilot: %s: at the page's end (tick %u): stage %u, kills %u, score %u, "
+		"health %d, lives lost %d\n", ct->map->name, a->s.tick - 1, a->s.g.stage + 1,
+		a->s.g.kills, a->s.g.score, a->s.pl.health / FX_ONE, a->deaths);
+	fprintf(a->out, "%u expect kills == %u\n", a->s.tick - 1, a->s.g.kills);
+	fprintf(a->out, "%u expect score == %u\n", a->s.tick - 1, a->s.g.score);
+	fprintf(a->out, "%u end\n", a->s.tick - 1);
+	if (outp && fclose(a->out) != 0) {
+		fprintf(stderr, "autopilot: %s: %s\n", outp, strerror(errno));
+		return 2;
+	}
+	return 0;
+}
+
 static int ap_usage(void)
 {
 	fprintf(stderr, "usage: autopilot --wad FILE [--wad FILE...] --map NAME [--set S.K=V...] "
 			"--route ROUTE [--out SCRIPT] [--inter N] [--verbose | --trace]\n"
-			"       autopilot --wad FILE --map NAME --explore X,Y[,KEYS]\n");
+			"       autopilot --wad FILE --map NAME --explore X,Y[,KEYS]\n"
+			"       autopilot --level N --demo [--set S.K=V...] --route ROUTE [--out SCRIPT]\n");
 	return 2;
 }
 
@@ -274,7 +341,7 @@ int main(int argc, char **argv)
 	struct ct ct;
 	char err[512];
 	const char *outp = NULL;
-	int nsteps, inter = 240, explore = 0;
+	int nsteps, inter = 240, explore = 0, demo = 0;
 	double ex_x = 0, ex_y = 0;
 	unsigned ex_keys = 0;
 
@@ -285,12 +352,18 @@ int main(int argc, char **argv)
 			a.verbose = argv[i][2] == 'v' ? 1 : 2;
 			continue;
 		}
+		if (strcmp(argv[i], "--demo") == 0) {
+			demo = a.demo = 1;
+			continue;
+		}
 		if (!v)
 			return ap_usage();
 		if (strcmp(argv[i], "--wad") == 0 && spec.nwads < CT_MAX_WADS)
 			spec.wads[spec.nwads++] = v;
 		else if (strcmp(argv[i], "--map") == 0)
 			spec.map = v;
+		else if (strcmp(argv[i], "--level") == 0)
+			spec.level = atoi(v);
 		else if (strcmp(argv[i], "--set") == 0) {
 			if (cfg_set(&c, v, ap_cfg_err, NULL) < 0)
 				return 2;
@@ -308,7 +381,8 @@ int main(int argc, char **argv)
 			return ap_usage();
 		i++;
 	}
-	if (!spec.nwads || !spec.map || (!a.route && !explore))
+	if ((spec.nwads ? !spec.map : spec.level < 1) || (!a.route && !explore) ||
+	    (demo && (explore || spec.nwads)))
 		return ap_usage();
 	nsteps = explore ? 0 : ap_read_route(a.route, steps, AP_MAX_STEPS);
 	if (nsteps < 0)
@@ -320,6 +394,13 @@ int main(int argc, char **argv)
 	/* the daemon's settings (app/app.c setup_game) and start (keep_start
 	 * with nothing kept: the default tables; then the content's sounds) */
 	cfg_settings(&c, &set);
+	if (demo) {
+		/* app/demo.c's rules for the recorded demo */
+		uint8_t diff = set.difficulty;
+		memset(&set, 0, sizeof(set));
+		set.difficulty = diff;
+		set.start_in_play = 1;
+	}
 	sim_init_stages(&a.s, (const struct map *const *)ct.maps, ct.nmaps, &set, NULL, NULL);
 	sim_set_sounds(&a.s, ct.sounds);
 	cmd_reset(&a.cs);
@@ -373,6 +454,9 @@ int main(int argc, char **argv)
 		fprintf(stderr, "autopilot: %s: %s\n", outp, strerror(errno));
 		return 2;
 	}
+	ap_grid(&a);
+	if (demo)
+		return ap_demo(&a, &ct, steps, nsteps, outp);
 	ap_grid(&a);
 	fprintf(a.out, "# Written by tests/replay/autopilot from %s (see it and README.md):\n",
 		a.route);
