@@ -218,7 +218,7 @@ static void levels_are_textured_by_name(void **state)
 /* Which sectors a player can walk to from the start, on the sector graph:
  * through two-sided lines where the step up is at most SIM_MAX_STEP (any
  * drop) and the opening at least the player's height. A door's sector (the
- * back of a manual door line, specials 1 and 117) counts with its ceiling
+ * back of a manual door line, specials 1, 31, 117, 118) counts with its ceiling
  * opened to its lowest neighbour's less 4 (Doom's rule); a lift (a sector
  * tagged by a lift line, specials 10, 62, 88, 120..123) counts at every
  * height from its lowest neighbour's floor to its own. A rule of the
@@ -227,7 +227,7 @@ static void levels_are_textured_by_name(void **state)
 
 static int is_door_special(int sp)
 {
-	return sp == 1 || sp == 117;
+	return sp == 1 || sp == 31 || sp == 117 || sp == 118;
 }
 
 static int is_lift_special(int sp)
