@@ -1,7 +1,7 @@
 /*
  * lvl_builtin: the levels compiled into the daemon (map.h: lvl_builtin).
  *
- * They are real maps in Doom's format: levels/arena1.txt .. arena3.txt
+ * They are real maps in Doom's format: levels/arena1.txt .. arena8.txt
  * describe them (geometry, the built-in set's texture and flat names,
  * things), tools/mklevels writes them as one PWAD and that PWAD as C
  * (engine/map/lvl_wad.c), and this file loads it through the same loaders as
@@ -9,7 +9,7 @@
  * set; the node builder makes the BSP. docs/maps.md, "The built-in
  * levels", says how to change and regenerate them.
  *
- * Level i is the i-th map in the PWAD (ARENA1, ARENA2, ARENA3), the order
+ * Level i is the i-th map in the PWAD (ARENA1 .. ARENA8), the order
  * the game plays them: rising difficulty.
  */
 #include "engine/map/lvl_builtin.h"

@@ -6,6 +6,8 @@
  *   autopilot --wad FILE [--wad FILE...] --map NAME [--set S.K=V...]
  *             --route ROUTE [--out SCRIPT] [--inter N] [--verbose | --trace]
  *   autopilot --wad FILE --map NAME --explore X,Y[,KEYS]
+ *   autopilot --level N ... (a built-in stage and the ones after it,
+ *             instead of --wad and --map: tests/replay/stages)
  *   autopilot --level N --demo --route ROUTE [--out SCRIPT]
  *
  * It loads the content with the daemon's own code (app/ct.c), starts the
@@ -327,6 +329,7 @@ static int ap_usage(void)
 	fprintf(stderr, "usage: autopilot --wad FILE [--wad FILE...] --map NAME [--set S.K=V...] "
 			"--route ROUTE [--out SCRIPT] [--inter N] [--verbose | --trace]\n"
 			"       autopilot --wad FILE --map NAME --explore X,Y[,KEYS]\n"
+			"       (--level N instead of --wad and --map: a built-in stage)\n"
 			"       autopilot --level N --demo [--set S.K=V...] --route ROUTE [--out SCRIPT]\n");
 	return 2;
 }
@@ -381,8 +384,8 @@ int main(int argc, char **argv)
 			return ap_usage();
 		i++;
 	}
-	if ((spec.nwads ? !spec.map : spec.level < 1) || (!a.route && !explore) ||
-	    (demo && (explore || spec.nwads)))
+	if ((spec.level > 0) == (spec.nwads > 0) || (spec.nwads && !spec.map) ||
+	    (!a.route && !explore) || (demo && (explore || spec.nwads)))
 		return ap_usage();
 	nsteps = explore ? 0 : ap_read_route(a.route, steps, AP_MAX_STEPS);
 	if (nsteps < 0)
@@ -460,8 +463,8 @@ int main(int argc, char **argv)
 	ap_grid(&a);
 	fprintf(a.out, "# Written by tests/replay/autopilot from %s (see it and README.md):\n",
 		a.route);
-	fprintf(a.out, "# %s %s, from the start to the exit and the intermission page.\n",
-		ct.what, spec.map);
+	fprintf(a.out, "# %s%s%s, from the start to the exit and the intermission page.\n",
+		ct.what, spec.map ? " " : "", spec.map ? spec.map : "");
 	/* coin-up and start, as the other scripts */
 	while (a.s.tick < 10)
 		ap_tick(&a, 0);
@@ -479,7 +482,7 @@ int main(int argc, char **argv)
 	if (a.s.g.phase != G_PH_INTER)
 		ap_die(&a, NULL, "the route ended without the map's exit");
 	fprintf(stderr, "autopilot: %s: exit taken on tick %u (%u ticks into the map), health %d, "
-		"ammo %u, kills %u, score %u, lives lost %d, shots %d (%d hit)\n", spec.map,
+		"ammo %u, kills %u, score %u, lives lost %d, shots %d (%d hit)\n", ct.what,
 		a.s.tick - 1, a.s.w.exit_t, a.s.pl.health / FX_ONE, a.s.pl.ammo, a.s.g.kills, a.s.g.score,
 		a.deaths, a.nshots, a.nhits);
 	fprintf(a.out, "%u expect phase == %d\n", a.s.tick - 1, G_PH_INTER);

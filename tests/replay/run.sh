@@ -228,4 +228,11 @@ while [ "$off" -lt "$HDR" ]; do
 done
 check "every header byte flipped fails --verify ($HDR flips)${passed_flips:+; passed at:$passed_flips}" \
 	$([ -z "$passed_flips" ]; echo $?)
+# The stage recordings (tests/replay/stages) replay to the balance table of
+# docs/game.md (tests/replay/balance.sh: docs cannot go stale), and each
+# still clears its stage.
+sh tests/replay/balance.sh --check >"$tmp/bal.out" 2>&1
+rc=$?
+check "$(tail -n 1 "$tmp/bal.out")" "$rc"
+[ "$rc" -eq 0 ] || sed 's/^/  /' "$tmp/bal.out"
 exit "$fail"

@@ -6,6 +6,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
+#include <limits.h>
 #include <stdint.h>
 #include <string.h>
 #include <cmocka.h>
@@ -89,12 +90,12 @@ static void every_stage_is_playable(void **state)
 }
 
 /* The total health of the enemies, and their damage per second, grow
- * from stage to stage; hard adds enemies on stages 2 and 3. */
+ * from stage to stage; hard adds enemies on every stage after the first. */
 static void stages_grow_harder(void **state)
 {
 	int64_t prev_hp = 0, prev_dps = 0;
 	(void)state;
-	for (int i = 0; i < 3; i++) {
+	for (int i = 0; i < lvl_builtin_count(); i++) {
 		static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0 }, hard = { 1, 0, 1, 2, 3, 100, 1, 0, 0 };
 		struct map *m;
 		struct sim s, h;
@@ -117,12 +118,13 @@ static void stages_grow_harder(void **state)
 	}
 }
 
-/* The compiled-in PWAD holds ARENA1..3 in play order, and lvl_builtin
+/* The compiled-in PWAD holds ARENA1..8 in play order, and lvl_builtin
  * gives exactly what loading that WAD's map with tex_builtin's set gives. */
 static void levels_are_the_compiled_in_wad(void **state)
 {
-	static const char *const want[] = { "ARENA1", "ARENA2", "ARENA3" };
-	char names[8][9], err[160];
+	static const char *const want[] = { "ARENA1", "ARENA2", "ARENA3", "ARENA4",
+					    "ARENA5", "ARENA6", "ARENA7", "ARENA8" };
+	char names[16][9], err[160];
 	struct tex_set *t;
 	struct wad *w;
 	(void)state;
@@ -130,9 +132,9 @@ static void levels_are_the_compiled_in_wad(void **state)
 	assert_int_equal(wad_new(&w), 0);
 	assert_int_equal(wad_add(w, lvl_wad, lvl_wad_len, "lvl_wad", err, sizeof err), 0);
 	assert_int_equal(memcmp(lvl_wad, "PWAD", 4), 0);
-	assert_int_equal(map_list_wad(w, names, 8), 3);
-	assert_int_equal(lvl_builtin_count(), 3);
-	for (int i = 0; i < 3; i++) {
+	assert_int_equal(map_list_wad(w, names, 16), 8);
+	assert_int_equal(lvl_builtin_count(), 8);
+	for (int i = 0; i < 8; i++) {
 		struct map *a, *b;
 		assert_string_equal(names[i], want[i]);
 		assert_int_equal(lvl_builtin(i, &a), 0);
@@ -186,7 +188,11 @@ static void levels_are_textured_by_name(void **state)
 				}
 			}
 		}
-		assert_int_equal(grates, i == 0 ? 2 : 0);   /* both sides of one line */
+		/* two sides for each grated line (levels/arena*.txt, `mid
+		 * AR_GRATE`): ARENA1 and ARENA4 one line each; ARENA5 and ARENA8
+		 * a window grated on both faces (two lines); ARENA7 two such */
+		static const int want_grates[] = { 2, 0, 0, 2, 4, 0, 8, 4 };
+		assert_int_equal(grates, want_grates[i]);
 		for (uint32_t k = 0; k < m->num_sectors; k++) {
 			assert_true(m->sectors[k].floor_tex < t->num_flats - 1);
 			assert_true(m->sectors[k].ceil_tex < t->num_flats - 1);
@@ -209,6 +215,136 @@ static void levels_are_textured_by_name(void **state)
 	tex_free(t);
 }
 
+/* Which sectors a player can walk to from the start, on the sector graph:
+ * through two-sided lines where the step up is at most SIM_MAX_STEP (any
+ * drop) and the opening at least the player's height. A door's sector (the
+ * back of a manual door line, specials 1, 31, 117, 118) counts with its ceiling
+ * opened to its lowest neighbour's less 4 (Doom's rule); a lift (a sector
+ * tagged by a lift line, specials 10, 62, 88, 120..123) counts at every
+ * height from its lowest neighbour's floor to its own. A rule of the
+ * test, independent of the sim's movement code: it reads only the map. */
+#define REACH_MAX 64
+
+static int is_door_special(int sp)
+{
+	return sp == 1 || sp == 31 || sp == 117 || sp == 118;
+}
+
+static int is_lift_special(int sp)
+{
+	return sp == 10 || sp == 62 || sp == 88 || (sp >= 120 && sp <= 123);
+}
+
+static void reachable_sectors(const struct map *m, uint32_t start, uint8_t *reach)
+{
+	fx_t lo[REACH_MAX], hi[REACH_MAX], ceil[REACH_MAX];
+	uint32_t n = m->num_sectors;
+	int changed = 1;
+	assert_true(n <= REACH_MAX);
+	for (uint32_t s = 0; s < n; s++) {
+		lo[s] = hi[s] = m->sectors[s].floor_h;
+		ceil[s] = m->sectors[s].ceil_h;
+		reach[s] = s == start;
+	}
+	for (uint32_t k = 0; k < m->num_lines; k++) {
+		const struct map_line *l = &m->lines[k];
+		if (l->side[1] == MAP_NONE)
+			continue;
+		uint32_t back = m->sides[l->side[1]].sector;
+		if (is_door_special(l->special)) {
+			fx_t c = INT32_MAX;
+			for (uint32_t j = 0; j < m->num_lines; j++) {
+				const struct map_line *o = &m->lines[j];
+				if (o->side[1] == MAP_NONE)
+					continue;
+				for (int sd = 0; sd < 2; sd++) {
+					uint32_t a = m->sides[o->side[sd]].sector;
+					uint32_t b = m->sides[o->side[!sd]].sector;
+					if (a == back && b != back && m->sectors[b].ceil_h < c)
+						c = m->sectors[b].ceil_h;
+				}
+			}
+			ceil[back] = c - 4 * FX_ONE;
+		}
+		if (is_lift_special(l->special))
+			for (uint32_t s = 0; s < n; s++)
+				if (m->sectors[s].tag == l->tag) {
+					for (uint32_t j = 0; j < m->num_lines; j++) {
+						const struct map_line *o = &m->lines[j];
+						if (o->side[1] == MAP_NONE)
+							continue;
+						for (int sd = 0; sd < 2; sd++) {
+							uint32_t a = m->sides[o->side[sd]].sector;
+							uint32_t b = m->sides[o->side[!sd]].sector;
+							if (a == s && m->sectors[b].floor_h < lo[s])
+								lo[s] = m->sectors[b].floor_h;
+						}
+					}
+				}
+	}
+	while (changed) {
+		changed = 0;
+		for (uint32_t k = 0; k < m->num_lines; k++) {
+			const struct map_line *l = &m->lines[k];
+			if (l->side[1] == MAP_NONE)
+				continue;
+			for (int sd = 0; sd < 2; sd++) {
+				uint32_t a = m->sides[l->side[sd]].sector;
+				uint32_t b = m->sides[l->side[!sd]].sector;
+				fx_t c = ceil[a] < ceil[b] ? ceil[a] : ceil[b];
+				/* b's lowest floor against a's highest: the best step */
+				fx_t f = lo[b] > hi[a] ? lo[b] : hi[a];
+				if (!reach[a] || reach[b] || lo[b] - hi[a] > SIM_MAX_STEP ||
+				    c - f < SIM_PLAYER_HEIGHT)
+					continue;
+				reach[b] = 1;
+				changed = 1;
+			}
+		}
+	}
+}
+
+/* Every stage can be finished: stages 4..8 have an exit switch (special
+ * 11) whose front sector the player can walk to from the start, and a
+ * weapon pickup; stages 1..3 end when their enemies are dead. Every
+ * pickup lies in a sector the player can reach. */
+static void every_stage_can_be_finished(void **state)
+{
+	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+	(void)state;
+	assert_int_equal(lvl_builtin_count(), 8);
+	for (int i = 0; i < lvl_builtin_count(); i++) {
+		struct map *m;
+		struct sim s;
+		uint8_t reach[REACH_MAX];
+		int exits = 0, weapons = 0;
+		assert_int_equal(lvl_builtin(i, &m), 0);
+		sim_init(&s, m, &set);
+		reachable_sectors(m, map_point_sector(m, s.pl.x, s.pl.y), reach);
+		for (uint32_t k = 0; k < m->num_lines; k++) {
+			const struct map_line *l = &m->lines[k];
+			if (l->special != 11)
+				continue;
+			exits++;
+			assert_int_equal(l->side[1], MAP_NONE);   /* a wall switch */
+			if (!reach[m->sides[l->side[0]].sector])
+				fail_msg("level %d: the exit switch (line %u) cannot be reached", i, k);
+		}
+		assert_int_equal(exits, i >= 3);
+		assert_int_equal(s.w.has_exit, i >= 3);
+		for (int k = 0; k < s.g.num_pickups; k++) {
+			const struct g_pickup *p = &s.g.pk[k];
+			weapons += p->kind == G_P_WEAPON;
+			if (!reach[map_point_sector(m, p->x, p->y)])
+				fail_msg("level %d: pickup %d (type %d) at (%d, %d) cannot be reached", i,
+					 k, p->type, p->x >> 16, p->y >> 16);
+		}
+		if (i >= 3)
+			assert_true(weapons >= 1);
+		map_free(m);
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -216,6 +352,7 @@ int main(void)
 		cmocka_unit_test(levels_are_textured_by_name),
 		cmocka_unit_test(every_stage_is_playable),
 		cmocka_unit_test(stages_grow_harder),
+		cmocka_unit_test(every_stage_can_be_finished),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

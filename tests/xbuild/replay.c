@@ -24,6 +24,14 @@
  *     --rehash OUT      write the recording again as format 3 with the
  *                       state, frame and audio hashes of this replay
  *     --bench           print ticks per second to stderr
+ *     --balance         print, at the end, a line per stage played:
+ *                       "balance STAGE MAP TICKS DAMAGE SHOTS HITS KILLS
+ *                       DEATHS" (tests/replay/balance.sh, docs/game.md):
+ *                       the ticks fought on it (phase PLAY) until its end
+ *                       (exit or clear), the player's health lost (every
+ *                       drop, deaths included), shots fired and shots that
+ *                       hit an enemy (the sim's shot_t and shot), kills and
+ *                       lives lost there; read from the sim as it runs
  *     --modes           print to stderr, at the end, how many times the
  *                       game entered each mode ("modes: attract 3 play 2
  *                       gameover 2 initials 1 service 0"): the soak test's
@@ -88,7 +96,7 @@ struct rp_opts {
 	const char *file, *rehash;
 	const char *wads[CT_MAX_WADS], *map;
 	int nwads;
-	int render, quiet, verify, bench, modes;
+	int render, quiet, verify, bench, modes, balance;
 	int w, h, level;
 	int64_t until;
 };
@@ -96,7 +104,7 @@ struct rp_opts {
 static int rp_usage(void)
 {
 	fprintf(stderr, "usage: replay [--no-render] [--size WxH] [--level N] [--wad F --map M] [--until T] "
-			"[--quiet] [--verify] [--rehash OUT] [--bench] [--modes] FILE\n");
+			"[--quiet] [--verify] [--rehash OUT] [--bench] [--modes] [--balance] FILE\n");
 	return 2;
 }
 
@@ -113,6 +121,8 @@ static int rp_args(int argc, char **argv, struct rp_opts *o)
 			o->render = 0;
 		} else if (strcmp(a, "--quiet") == 0) {
 			o->quiet = 1;
+		} else if (strcmp(a, "--balance") == 0) {
+			o->balance = 1;
 		} else if (strcmp(a, "--verify") == 0) {
 			o->verify = 1;
 		} else if (strcmp(a, "--bench") == 0) {
@@ -303,8 +313,45 @@ static double rp_now(void)
 	return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
 }
 
+/* --balance: what happened on each stage, measured from the sim tick by
+ * tick (nothing here changes it). A stage's row starts when its fighting
+ * starts and ends when it is left (the intermission after an exit, or the
+ * clear banner); a stage played twice (a loop) adds to its row. */
+struct rp_bal {
+	uint32_t ticks, damage, shots, hits, kills, deaths;
+	int seen, done;
+};
+
+static void rp_bal_tick(struct rp_bal *b, int nb, const struct sim *before, const struct sim *s)
+{
+	int st = s->g.stage;
+
+	if (s->mode != SIM_PLAY || before->mode != SIM_PLAY || st < 0 || st >= nb ||
+	    before->g.stage != st)
+		return;
+	b += st;
+	b->seen = 1;
+	if (s->g.phase == G_PH_PLAY)
+		b->ticks++;
+	if (s->pl.health < before->pl.health)
+		b->damage += (uint32_t)((before->pl.health - s->pl.health + FX_ONE - 1) / FX_ONE);
+	/* a shot resets shot_t to 0 (then the tick's end counts it up) */
+	if (s->g.shot_t < before->g.shot_t) {
+		b->shots++;
+		b->hits += s->g.shot == G_SHOT_ENEMY;
+	}
+	if (s->g.kills > before->g.kills)
+		b->kills += s->g.kills - before->g.kills;
+	if (s->g.phase == G_PH_DEAD && before->g.phase != G_PH_DEAD)
+		b->deaths++;
+	if ((s->g.phase == G_PH_INTER || s->g.phase == G_PH_CLEAR) && before->g.phase == G_PH_PLAY)
+		b->done = 1;
+}
+
 int main(int argc, char **argv)
 {
+	static struct rp_bal bal[CT_MAX_STAGES];
+	static struct sim before;
 	struct rp_opts o;
 	struct rec_reader *rd = NULL;
 	struct rec_writer *wr = NULL;
@@ -438,7 +485,11 @@ int main(int argc, char **argv)
 		if (rc <= 0)
 			break;
 		mode = sim.mode;
+		if (o.balance)
+			before = sim;
 		sim_tick(&sim, &rt.cmd);
+		if (o.balance)
+			rp_bal_tick(bal, ct.nmaps, &before, &sim);
 		if (sim.mode != mode && (unsigned)sim.mode < SIM_MODE_COUNT)
 			entered[sim.mode]++;
 		demo_tick(&demo, &sim);
@@ -473,6 +524,11 @@ int main(int argc, char **argv)
 			el > 0 ? t / el : 0.0,
 			o.render ? "rendering" : "no rendering");
 	}
+	for (int k = 0; o.balance && k < ct.nmaps; k++)
+		if (bal[k].seen)
+			printf("balance %d %s %u %u %u %u %u %u %s\n", run.level + k, ct.maps[k]->name,
+			       bal[k].ticks, bal[k].damage, bal[k].shots, bal[k].hits, bal[k].kills,
+			       bal[k].deaths, bal[k].done ? "cleared" : "unfinished");
 	if (o.modes) {
 		fprintf(stderr, "modes:");
 		for (int k = 0; k < SIM_MODE_COUNT; k++)

@@ -1,0 +1,96 @@
+#!/bin/sh
+# The balance table of docs/game.md (issue 16 item 9), measured, not
+# guessed: every stage recording tests/replay/stages/arenaN.rec (the
+# autopilot's clearing run of built-in stage N: arenaN.route -> arenaN.scr,
+# recorded by the daemon) is replayed through the engine by the headless
+# replayer of tests/xbuild (replay.c, --balance: per stage the ticks
+# fought until the exit, the health lost, shots fired and hit, kills and
+# lives lost, read from the sim tick by tick), and the rows become the
+# table between the markers "<!-- balance: begin -->" and
+# "<!-- balance: end -->" in docs/game.md.
+#
+#   tests/replay/balance.sh             write the table into docs/game.md
+#   tests/replay/balance.sh --check     exit 1 when docs/game.md's table is
+#                                       not what the recordings give now
+#   tests/replay/balance.sh --record [BIN]
+#                                       first write the scripts again with
+#                                       the autopilot (build/tests/autopilot)
+#                                       and record them with the daemon BIN
+#                                       (default build/arcaded): after a
+#                                       change of a stage or of the rules
+set -eu
+cd "$(dirname "$0")/../.."
+mode=write
+case "${1:-}" in
+--check) mode=check ;;
+--record) mode=record ;;
+"") ;;
+*) echo "usage: $0 [--check | --record [BIN]]" >&2; exit 2 ;;
+esac
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+dir=tests/replay/stages
+# the stages' recordings are made with these settings (easy, nine lives:
+# the autopilot is no champion; a recording keeps its settings)
+SET="--set game.difficulty=0 --set game.lives=9"
+
+if [ "$mode" = record ]; then
+	BIN=${2:-build/arcaded}
+	for route in "$dir"/arena*.route; do
+		n=$(basename "$route" .route); n=${n#arena}
+		# shellcheck disable=SC2086
+		build/tests/autopilot --level "$n" $SET --route "$route" --out "$dir/arena$n.scr"
+		# shellcheck disable=SC2086
+		"$BIN" --config-dir "$tmp/none" --state-dir "$tmp/state" --level "$n" $SET \
+			--script "$dir/arena$n.scr" --record "$dir/arena$n.rec" >/dev/null
+	done
+	mode=write
+fi
+
+# the replayer, built as tests/xbuild/run.sh builds it (engine only)
+WARN="-std=c11 -Wall -Wextra -Werror -Wshadow -Wvla -Wstrict-prototypes -Wmissing-prototypes"
+# shellcheck disable=SC2046
+${CC:-cc} -O2 $WARN -fno-strict-aliasing -I. -D_GNU_SOURCE $(sh tests/xbuild/src.sh) \
+	-o "$tmp/replay"
+
+{
+	echo "| stage | map | time to the exit | damage taken | shots fired | shots hit | kills | lives lost |"
+	echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
+	for rec in "$dir"/arena*.rec; do
+		"$tmp/replay" --no-render --quiet --balance "$rec" >"$tmp/row" || {
+			echo "balance: $rec: the replay failed" >&2
+			exit 1
+		}
+		# only the recording's own stage (the first row): the next one
+		# may have begun during the intermission page
+		head -n 1 "$tmp/row" | awk -v rec="$rec" '
+			$1 != "balance" || $10 != "cleared" {
+				print "balance: " rec ": the stage was not cleared: " $0 > "/dev/stderr"; exit 1 }
+			{ printf "| %d | %s | %.1f s | %d | %d | %d (%d%%) | %d | %d |\n",
+				$2, $3, $4 / 60, $5, $6, $7, $6 ? 100 * $7 / $6 : 0, $8, $9 }'
+	done
+} >"$tmp/table"
+
+begin='<!-- balance: begin -->'
+end='<!-- balance: end -->'
+doc=docs/game.md
+grep -q "^$begin\$" "$doc" && grep -q "^$end\$" "$doc" || {
+	echo "balance: $doc has no '$begin' / '$end' markers" >&2
+	exit 1
+}
+awk -v b="$begin" -v e="$end" -v tf="$tmp/table" '
+	$0 == b { print; while ((getline l < tf) > 0) print l; skip = 1; next }
+	$0 == e { skip = 0 }
+	!skip { print }' "$doc" >"$tmp/doc"
+if [ "$mode" = check ]; then
+	if ! cmp -s "$doc" "$tmp/doc"; then
+		echo "balance: $doc's table is not what the stage recordings give now:" >&2
+		diff "$doc" "$tmp/doc" >&2 || true
+		echo "(tests/replay/balance.sh writes it)" >&2
+		exit 1
+	fi
+	echo "balance: $doc's table equals the replays of $(ls "$dir"/arena*.rec | wc -l) stage recordings"
+else
+	cp "$tmp/doc" "$doc"
+	cat "$tmp/table"
+fi
