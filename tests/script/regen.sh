@@ -19,7 +19,10 @@ for scr in tests/script/*.scr tests/script/game/*.scr; do
 	name=$(basename "$scr" .scr)
 	rm -rf "$tmp/run"; mkdir "$tmp/run"
 	rc=0
-	(cd "$tmp/run" && "$BIN" --script "$top/$scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
+	# "# set: KEY=VALUE" lines: settings the script runs with (--set)
+	sets=$(sed -n 's/^# set: *\([^ ]*\).*/--set \1/p' "$scr" | tr '\n' ' ')
+	# shellcheck disable=SC2086
+	(cd "$tmp/run" && "$BIN" --script "$top/$scr" $sets --config-dir "$tmp/etc" --state-dir "$tmp/state" \
 		--set display.backend=file --set display.file="$tmp/fb" \
 		--set display.file_format=xrgb8888 --set display.file_width=640 \
 		--set display.file_height=480 >/dev/null 2>&1) || rc=$?

@@ -2,6 +2,7 @@
 # Script tests: runs every tests/script/*.scr through the real daemon,
 # headless on a file framebuffer, and checks
 #  - the exit status (0, or the value of a "# expect-exit: N" line),
+#    the script run with the settings of its "# set: KEY=VALUE" lines,
 #  - every "# expect-stderr: TEXT" line appears in stderr,
 #  - every "# expect-file: NAME" exists afterwards (relative to the run's
 #    working directory, a fresh temporary one) and is a PNG,
@@ -31,7 +32,10 @@ for scr in tests/script/*.scr tests/script/game/*.scr; do
 	want_exit=$(sed -n 's/^# expect-exit: *\([0-9]*\).*/\1/p' "$scr" | head -n 1)
 	want_exit=${want_exit:-0}
 	rm -rf "$tmp/run"; mkdir "$tmp/run"
-	(cd "$tmp/run" && "$BIN" --script "$top/$scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
+	# "# set: KEY=VALUE" lines: settings the script runs with (--set)
+	sets=$(sed -n 's/^# set: *\([^ ]*\).*/--set \1/p' "$scr" | tr '\n' ' ')
+	# shellcheck disable=SC2086
+	(cd "$tmp/run" && "$BIN" --script "$top/$scr" $sets --config-dir "$tmp/etc" --state-dir "$tmp/state" \
 		--set display.backend=file --set display.file="$tmp/fb" \
 		--set display.file_format=xrgb8888 --set display.file_width=640 \
 		--set display.file_height=480 >"$tmp/out" 2>"$tmp/err")

@@ -135,7 +135,10 @@ record() { # $1 script, $2 output name, rest: daemon options
 	fi
 }
 for s in tests/replay/*.scr tests/script/*.scr; do
-	record "$s" "$(basename "$(dirname "$s")")-$(basename "$s" .scr)"
+	# with the settings of its "# set: KEY=VALUE" lines (tests/script/run.sh)
+	sets=$(sed -n 's/^# set: *\([^ ]*\).*/--set \1/p' "$s" | tr '\n' ' ')
+	# shellcheck disable=SC2086
+	record "$s" "$(basename "$(dirname "$s")")-$(basename "$s" .scr)" $sets
 done
 record tests/replay/game.scr settings-game --set game.coins_per_credit=3 --set game.freeplay=1
 # a rate that 60 does not divide: the mixer carries the remainder
