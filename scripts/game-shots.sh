@@ -4,7 +4,8 @@
 # (tests/script/game/flow.scr): the service menu, play with the HUD and
 # minimap, game over with the continue countdown, initials entry, and the
 # new score in attract; plus the attract title page, and the stage clock's
-# HURRY UP and the idle player's STILL THERE? from their scripts.
+# HURRY UP and the idle player's STILL THERE? from their scripts, and a
+# thrower's missile in flight.
 # Usage: scripts/game-shots.sh [path/to/arcaded]
 set -eu
 cd "$(dirname "$0")/.."
@@ -42,6 +43,19 @@ for s in hurry idle; do
 		--state-dir "$tmp/state-$s" --set game.render_width=640 \
 		--set game.render_height=480 >/dev/null)
 done
+# The thrower's missile in flight: projectile_hit.scr's start (easy, stage
+# 1's thrower behind the pillar), the player turned towards the thrower,
+# its second missile 39 ticks out.
+{
+	awk '/^#/ || $1 <= 25' tests/script/projectile_hit.scr
+	echo "26 press turn_left"
+	echo "47 release turn_left"
+	echo "200 screenshot $out/game-thrower.png"
+	echo "201 end"
+} >"$tmp/thrower.scr"
+(cd "$tmp" && "$BIN" --script "$tmp/thrower.scr" --config-dir "$tmp/etc" \
+	--state-dir "$tmp/state-thrower" --set game.difficulty=0 --set game.render_width=640 \
+	--set game.render_height=480 >/dev/null)
 printf '100 screenshot %s\n1300 screenshot %s\n' "$out/game-attract-title.png" \
 	"$out/game-attract-demo.png" >"$tmp/title.scr"
 "$BIN" --script "$tmp/title.scr" --config-dir "$tmp/etc" --state-dir "$tmp/state2" \

@@ -13,6 +13,8 @@
  * Otherwise it walks straight at the player with the player's own
  * collision (g_move); when a wall stops it, it walks a random detour
  * (left or right of its heading) for 16..31 ticks. Sentries never move.
+ * A thrower's attack is a missile (g_missile.c), moved after the enemies
+ * each tick.
  */
 #include <stddef.h>
 
@@ -61,6 +63,8 @@ void g_spawn_stage(struct sim *s)
 
 	g->num_enemies = 0;
 	g->num_pickups = 0;
+	g->num_missiles = 0;
+	g->mend = G_MEND_NONE;
 	for (uint32_t i = 0; i < m->num_things; i++) {
 		const struct map_thing *t = &m->things[i];
 		struct g_thing_info ti;
@@ -99,6 +103,10 @@ void g_enemies_reset(struct sim *s)
 {
 	struct g_game *g = &s->g;
 
+	/* the missiles of the last life are gone */
+	for (int i = 0; i < g->num_missiles; i++)
+		g->ms[i] = (struct g_missile){ 0 };
+	g->num_missiles = 0;
 	for (int i = 0; i < g->num_enemies; i++) {
 		struct g_enemy *e = &g->en[i];
 		if (e->state == G_E_DEAD)
@@ -228,6 +236,10 @@ static void g_enemy_tick(struct sim *s, int i)
 	if (e->timer == 0) {
 		e->timer = k->period;
 		e->flash = G_FLASH_TICKS;
+		if (e->kind == G_THROWER) {
+			g_missile_throw(s, i, g_enemy_damage(s, e->kind));
+			return;
+		}
 		g_cry(s, i, G_CRY_ATTACK);
 		g_hurt_player(s, g_enemy_damage(s, e->kind));
 	}
@@ -297,4 +309,6 @@ void g_enemies_tick(struct sim *s)
 {
 	for (int i = 0; i < s->g.num_enemies && s->g.phase == G_PH_PLAY; i++)
 		g_enemy_tick(s, i);
+	if (s->g.phase == G_PH_PLAY)
+		g_missiles_tick(s);
 }

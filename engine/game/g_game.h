@@ -7,6 +7,7 @@
  * split the rules by topic:
  *   g_thing.c   Doom thing types -> enemy kinds, pickups, lights
  *   g_enemy.c   enemy kinds, spawning from the map's things, chase, attack
+ *   g_missile.c the thrower's missiles
  *   g_combat.c  line of sight, the player's hitscan shots, damage, pickups
  *   g_weapon.c  the weapons' table, the weapon change, weapon pickups
  *   g_score.c   the high-score table and bookkeeping (and their bytes)
@@ -24,6 +25,7 @@
 
 #define G_MAX_ENEMIES 96
 #define G_MAX_PICKUPS 96
+#define G_MAX_MISSILES 32              /* thrown projectiles in flight or exploding */
 #define G_MAX_STAGES 32                /* Doom II's 32 maps */
 #define G_SCORES 10                    /* entries in the high-score table */
 #define G_NAME_LEN 3                   /* initials */
@@ -59,8 +61,10 @@ extern const struct g_weapon_info g_weapons[G_WEAPONS];
 #define G_REFIRE 12                    /* ticks between pistol shots: 5 per second */
 
 /* Enemy kinds. Each has fixed numbers (g_kinds); difficulty and the
- * stage loop scale damage and speed (g_enemy.c). */
-enum g_kind { G_GRUNT, G_BRUTE, G_SENTRY, G_KINDS };
+ * stage loop scale damage and speed (g_enemy.c). The thrower's attack is
+ * a missile (g_missile.c) that does the damage where it lands; the
+ * others' attacks hit at once. */
+enum g_kind { G_GRUNT, G_BRUTE, G_SENTRY, G_THROWER, G_KINDS };
 
 struct g_kind_info {
 	char name[8];                  /* "grunt" */
@@ -111,6 +115,37 @@ enum g_estate {
 	X(VAL, uint8_t, ambush, SIM_MAX(1))
 struct g_enemy {
 	G_ENEMY_FIELDS(SIM_MEMBER)
+};
+
+/* Missiles (g_missile.c): the thrower's fireballs, real moving objects.
+ * A missile flies in a straight line at G_MISSILE_SPEED per tick (Doom's
+ * imp ball, 10 units a 35 Hz tic, is 5.83 units a 60 Hz tick) and
+ * explodes on the first of: a wall (one-sided, blocking, or two-sided
+ * with an opening its G_MISSILE_HEIGHT does not fit in), the floor or
+ * ceiling, the player (its damage). Exploding (boom > 0) it stays where it
+ * stopped for G_MISSILE_BOOM ticks (the explosion's frames), harmless,
+ * then is removed. */
+#define G_MISSILE_SPEED ((fx_t)((int64_t)10 * 35 * FX_ONE / 60))
+#define G_MISSILE_RADIUS (6 * FX_ONE)
+#define G_MISSILE_HEIGHT (8 * FX_ONE)
+#define G_MISSILE_LAUNCH (32 * FX_ONE)  /* launch height above the thrower's feet */
+#define G_MISSILE_BOOM 18
+
+/* How the last missile ended, for tests and the HUD. */
+enum g_mend { G_MEND_NONE, G_MEND_WALL, G_MEND_PLANE, G_MEND_PLAYER };
+
+#define G_MISSILE_FIELDS(X) \
+	X(VAL, fx_t, x, SIM_COORD) \
+	X(VAL, fx_t, y, SIM_COORD) \
+	X(VAL, fx_t, z, SIM_COORD)                  /* its bottom */ \
+	X(VAL, fx_t, momx, SIM_ANY)                 /* per tick */ \
+	X(VAL, fx_t, momy, SIM_ANY) \
+	X(VAL, fx_t, momz, SIM_ANY) \
+	X(VAL, fx_t, damage, SIM_ANY)               /* 16.16, fixed at the throw */ \
+	X(VAL, uint8_t, boom, SIM_MAX(G_MISSILE_BOOM))  /* explosion ticks left; 0 flying */ \
+	X(VAL, uint8_t, owner, SIM_MAX(G_MAX_ENEMIES - 1))  /* the thrower's index */
+struct g_missile {
+	G_MISSILE_FIELDS(SIM_MEMBER)
 };
 
 /* Pickups: health (Doom's health items, armour and the health-giving
@@ -201,7 +236,10 @@ enum g_shot { G_SHOT_NONE, G_SHOT_WALL, G_SHOT_ENEMY, G_SHOT_MISS };
 	X(VAL, uint32_t, clock, SIM_ANY)            /* stage clock: ticks left */ \
 	X(VAL, uint16_t, idle_t, SIM_ANY)           /* ticks in play without input */ \
 	X(VAL, uint8_t, why, SIM_MAX(G_WHY_IDLE))   /* enum g_why: the last death */ \
-	X(VAL, uint32_t, time_bonus, SIM_ANY)       /* scored at the last clear or exit */
+	X(VAL, uint32_t, time_bonus, SIM_ANY)       /* scored at the last clear or exit */ \
+	X(VAL, uint8_t, num_missiles, SIM_MAX(G_MAX_MISSILES)) \
+	X(SUBS, g_missile, ms, G_MAX_MISSILES, p->num_missiles) \
+	X(VAL, uint8_t, mend, SIM_MAX(G_MEND_PLAYER))  /* enum g_mend: the last missile's end */
 struct g_game {
 	G_GAME_FIELDS(SIM_MEMBER)
 };

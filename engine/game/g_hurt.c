@@ -11,13 +11,15 @@
 #define G_HURT_TICKS 12
 
 /* Chance (of 256) that a hit makes an enemy flinch, per kind. */
-static const uint8_t g_pain_chance[G_KINDS] = { 200, 80, 128 };
+static const uint8_t g_pain_chance[G_KINDS] = { 200, 80, 128, 200 };
 
 /* Each kind's sounds, by G_CRY_* (g_local.h). */
 static const uint8_t g_cries[G_KINDS][G_CRIES] = {
 	[G_GRUNT] = { SFX_GRUNT_SIGHT, SFX_GRUNT_ATTACK, SFX_GRUNT_PAIN, SFX_GRUNT_DEATH },
 	[G_BRUTE] = { SFX_BRUTE_SIGHT, SFX_BRUTE_ATTACK, SFX_BRUTE_PAIN, SFX_BRUTE_DEATH },
 	[G_SENTRY] = { SFX_SENTRY_SIGHT, SFX_SENTRY_ATTACK, SFX_SENTRY_PAIN, SFX_SENTRY_DEATH },
+	/* the imp's: Doom's imp cries as the brute's, its throw the fireball's */
+	[G_THROWER] = { SFX_BRUTE_SIGHT, SFX_SENTRY_ATTACK, SFX_BRUTE_PAIN, SFX_BRUTE_DEATH },
 };
 
 void g_cry(struct sim *s, int i, int cry)

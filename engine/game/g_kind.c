@@ -11,4 +11,7 @@ const struct g_kind_info g_kinds[G_KINDS] = {
 		      1024 * FX_ONE, 10, 30, 15, 300 },
 	[G_SENTRY] = { "sentry", 20 * FX_ONE, 44 * FX_ONE, 50, 0, 768 * FX_ONE,
 		       1024 * FX_ONE, 12, 90, 45, 200 },
+	/* damage: its missile's, where it lands (g_missile.c) */
+	[G_THROWER] = { "thrower", 20 * FX_ONE, 40 * FX_ONE, 60, 2 * FX_ONE, 768 * FX_ONE,
+			1024 * FX_ONE, 10, 100, 40, 150 },
 };

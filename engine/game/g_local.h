@@ -34,6 +34,12 @@ int g_opening(const struct sim *s, const struct map_line *l, fx_t *floor, fx_t *
 /* Whether line l stops a body whose feet are at z (sim.h's rule). */
 int g_blocks(const struct sim *s, const struct map_line *l, fx_t z);
 
+/* Whether the circle (x, y, r) of a body with its bottom at z, `height`
+ * tall, that climbs no step (a missile), overlaps a line that stops it:
+ * one-sided, ML_BLOCKING, or two-sided with an opening whose floor is above
+ * z or whose ceiling is below z + height. */
+int g_wall_touch(const struct sim *s, fx_t x, fx_t y, fx_t r, fx_t z, fx_t height);
+
 /* Moves b by (momx, momy) in sub-steps of at most half its radius, pushed
  * out of walls (sliding), with Doom's x-only / y-only fallback; living
  * bodies other than b block it (a step that brings two bodies closer while
@@ -63,6 +69,18 @@ void g_noise(struct sim *s);
 fx_t g_enemy_damage(const struct sim *s, int kind);
 /* Chase speed per tick of kind k at the sim's difficulty and loop. */
 fx_t g_enemy_speed(const struct sim *s, int kind);
+
+/* ---- g_missile.c ----------------------------------------------------- */
+
+/* Enemy i throws a missile at the player (its attack sound) that does
+ * damage (16.16) where it hits. No missile when all G_MAX_MISSILES are in
+ * use. */
+void g_missile_throw(struct sim *s, int i, fx_t damage);
+/* One tick of every missile: flying ones move and may explode, exploding
+ * ones count down and are removed. */
+void g_missiles_tick(struct sim *s);
+/* Flying missiles (not those exploding). */
+int g_missiles_flying(const struct sim *s);
 
 /* ---- g_hurt.c: damage ----------------------------------------------- */
 

@@ -25,7 +25,10 @@ int g_opening(const struct sim *s, const struct map_line *l, fx_t *floor, fx_t *
 	return 0;
 }
 
-int g_blocks(const struct sim *s, const struct map_line *l, fx_t z)
+/* Whether line l stops a body with its feet at z, `height` tall, that
+ * climbs steps up to `step`: g_blocks with the player's numbers, the
+ * missiles' (g_wall_touch) with their own. */
+static int g_stops(const struct sim *s, const struct map_line *l, fx_t z, fx_t height, fx_t step)
 {
 	fx_t fl, cl;
 	int64_t floor, ceil;
@@ -34,8 +37,12 @@ int g_blocks(const struct sim *s, const struct map_line *l, fx_t z)
 		return 1;
 	floor = fl;
 	ceil = cl;
-	return floor - z > SIM_MAX_STEP || ceil - floor < SIM_PLAYER_HEIGHT ||
-	       ceil - z < SIM_PLAYER_HEIGHT;
+	return floor - z > step || ceil - floor < height || ceil - z < height;
+}
+
+int g_blocks(const struct sim *s, const struct map_line *l, fx_t z)
+{
+	return g_stops(s, l, z, SIM_PLAYER_HEIGHT, SIM_MAX_STEP);
 }
 
 /* |n / d| rounded up, for d > 0: pushes round away from the wall. */
@@ -103,34 +110,47 @@ static int g_push(fx_t *x, fx_t *y, fx_t r, const struct map_vertex *a,
 	return 1;
 }
 
-/* Pushes the circle at (*x, *y) out of every wall it overlaps. Returns 1 if
- * it then fits and moved no more than a radius per axis from (ox, oy) (so a
- * push can never carry it through a wall), else 0. Lines are tested only
- * when their bounding box, grown by the radius, contains the centre. */
-static int g_fit(const struct sim *s, fx_t r, fx_t z, fx_t ox, fx_t oy, fx_t *x, fx_t *y)
+/* Whether the circle (*x, *y, r) overlaps a wall that stops a body at z,
+ * `height` tall, climbing `step` (g_stops); with apply, pushes it out of
+ * each such wall in turn (g_push). Lines are tested only when their
+ * bounding box, grown by the radius, contains the centre. */
+static int g_walls(const struct sim *s, fx_t r, fx_t z, fx_t height, fx_t step, fx_t *x, fx_t *y,
+		   int apply)
 {
 	const struct map *m = s->map;
-	int iter, apply;
+	int hit = 0;
 
-	for (iter = 0; iter <= G_PUSH_ITERS; iter++) {
-		int hit = 0;
-		apply = iter < G_PUSH_ITERS;
-		for (uint32_t i = 0; i < m->num_lines && !(hit && !apply); i++) {
-			const struct map_line *l = &m->lines[i];
-			const struct map_vertex *a = &m->vertices[l->v1], *b = &m->vertices[l->v2];
-			int64_t lo, hi;
-			lo = (a->x < b->x ? a->x : b->x) - (int64_t)r;
-			hi = (a->x > b->x ? a->x : b->x) + (int64_t)r;
-			if (*x <= lo || *x >= hi)
-				continue;
-			lo = (a->y < b->y ? a->y : b->y) - (int64_t)r;
-			hi = (a->y > b->y ? a->y : b->y) + (int64_t)r;
-			if (*y <= lo || *y >= hi)
-				continue;
-			if (g_blocks(s, l, z) && g_push(x, y, r, a, b, apply))
-				hit = 1;
-		}
-		if (!hit)
+	for (uint32_t i = 0; i < m->num_lines && !(hit && !apply); i++) {
+		const struct map_line *l = &m->lines[i];
+		const struct map_vertex *a = &m->vertices[l->v1], *b = &m->vertices[l->v2];
+		int64_t lo, hi;
+		lo = (a->x < b->x ? a->x : b->x) - (int64_t)r;
+		hi = (a->x > b->x ? a->x : b->x) + (int64_t)r;
+		if (*x <= lo || *x >= hi)
+			continue;
+		lo = (a->y < b->y ? a->y : b->y) - (int64_t)r;
+		hi = (a->y > b->y ? a->y : b->y) + (int64_t)r;
+		if (*y <= lo || *y >= hi)
+			continue;
+		if (g_stops(s, l, z, height, step) && g_push(x, y, r, a, b, apply))
+			hit = 1;
+	}
+	return hit;
+}
+
+int g_wall_touch(const struct sim *s, fx_t x, fx_t y, fx_t r, fx_t z, fx_t height)
+{
+	return g_walls(s, r, z, height, 0, &x, &y, 0);
+}
+
+/* Pushes the circle at (*x, *y) out of every wall it overlaps. Returns 1 if
+ * it then fits and moved no more than a radius per axis from (ox, oy) (so a
+ * push can never carry it through a wall), else 0. */
+static int g_fit(const struct sim *s, fx_t r, fx_t z, fx_t ox, fx_t oy, fx_t *x, fx_t *y)
+{
+	for (int iter = 0; iter <= G_PUSH_ITERS; iter++) {
+		int apply = iter < G_PUSH_ITERS;
+		if (!g_walls(s, r, z, SIM_PLAYER_HEIGHT, SIM_MAX_STEP, x, y, apply))
 			break;
 		if (!apply)
 			return 0;

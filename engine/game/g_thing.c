@@ -4,9 +4,10 @@
  * The thing table th.h says what a Doom type number is (its sprite,
  * standing frame, and whether it is a monster, pickup, light or
  * decoration). This file adds the game's meaning: monsters become one of
- * the three enemy kinds by how they fight in Doom (hitscan soldiers are
- * grunts, melee and close-range monsters brutes, slow or floating ranged
- * monsters sentries, which stand their ground); health items, armour and
+ * the four enemy kinds by how they fight in Doom (hitscan soldiers are
+ * grunts, the imp a thrower of dodgeable missiles, melee and close-range
+ * monsters brutes, slow or floating ranged monsters sentries, which stand
+ * their ground); health items, armour and
  * the health-giving powerups (soulsphere, megasphere, berserk,
  * invulnerability) become health pickups, ammo ammo pickups, Doom's
  * weapons one of the game's three (g_weapon.c; one ammo for all); the six keys open Doom's locked
@@ -55,8 +56,9 @@ static const struct g_thing_row g_thing_rows[] = {
 	E(9, G_GRUNT, 4, 4, 6, 7, 11),                /* shotgun guy SPOS */
 	E(65, G_GRUNT, 4, 4, 6, 7, 13),               /* chaingunner CPOS */
 	E(84, G_GRUNT, 4, 5, 7, 8, 12),               /* wolfenstein SS SSWV */
+	/* throwers: a missile the player can dodge */
+	E(3001, G_THROWER, 4, 5, 7, 8, 12),           /* imp TROO */
 	/* brutes: melee and close range */
-	E(3001, G_BRUTE, 4, 5, 7, 8, 12),             /* imp TROO */
 	E(3002, G_BRUTE, 4, 5, 7, 8, 13),             /* demon SARG */
 	E(58, G_BRUTE, 4, 5, 7, 8, 13),               /* spectre SARG */
 	E(3006, G_BRUTE, 2, 2, 4, 5, 10),             /* lost soul SKUL */

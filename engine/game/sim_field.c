@@ -5,6 +5,7 @@
  */
 #include <string.h>
 
+#include "engine/game/g_local.h"
 #include "engine/game/sim.h"
 
 struct sim_field_def {
@@ -16,7 +17,7 @@ enum {
 	F_X, F_Y, F_Z, F_ANGLE, F_SECTOR, F_CREDITS, F_COINS, F_TICK, F_MODE,
 	F_SCORE, F_LIVES, F_HEALTH, F_AMMO, F_STAGE, F_ENEMIES, F_KILLS, F_CONTINUES,
 	F_COUNTDOWN, F_PAGE, F_PHASE, F_PLAYS, F_RANK, F_HISCORE, F_MENU, F_DIFFICULTY,
-	F_CLOCK, F_WHY, F_WEAPON, F_COUNT
+	F_CLOCK, F_WHY, F_WEAPON, F_MISSILES, F_MEND, F_COUNT
 };
 
 static const struct sim_field_def sim_fields[F_COUNT] = {
@@ -48,6 +49,8 @@ static const struct sim_field_def sim_fields[F_COUNT] = {
 	[F_CLOCK] = { "clock", SIM_FK_INT },
 	[F_WHY] = { "why", SIM_FK_INT },
 	[F_WEAPON] = { "weapon", SIM_FK_INT },
+	[F_MISSILES] = { "missiles", SIM_FK_INT },
+	[F_MEND] = { "mend", SIM_FK_INT },
 };
 
 int sim_field_count(void)
@@ -109,6 +112,11 @@ int64_t sim_field_value(const struct sim *s, int i)
 	case F_WHY: return s->g.why;
 	/* the weapon held, numbered from 1 as on the HUD (enum g_weapon + 1) */
 	case F_WEAPON: return s->pl.weapon + 1;
+	/* missiles flying (not exploding) */
+	case F_MISSILES: return g_missiles_flying(s);
+	/* how the last missile ended: 0 none yet, 1 wall, 2 floor or ceiling,
+	 * 3 the player (enum g_mend) */
+	case F_MEND: return s->g.mend;
 	default: return 0;
 	}
 }

@@ -10,6 +10,7 @@
  *   CLIP, AMMO   ammunition (a magazine; a box of bullets)
  *   BAR1 barrel, COLU lamp, CBRA candelabra, TRED torch
  *   PUFF, BLUD   a shot's spark on a wall, and blood on an enemy (4 frames)
+ *   BAL1         the thrower's missile: a fireball (A, B) and its burst (C..E)
  *   PISG, PISF   the player's pistol on the HUD (5 frames) and its flash
  *
  * The monsters have every frame the game shows (g_thing.c's table): four
@@ -550,6 +551,38 @@ static void tb_blood(struct tex_pic *p, int f)
 	}
 }
 
+/* The thrower's missile, frame 0..4: a fireball with a white-hot core and
+ * flames licking up (A, B), then its burst, growing and going dark
+ * (C, D, E). Drawn full bright by the game. */
+static void tb_ball(struct tex_pic *p, int f)
+{
+	int c = p->w / 2;
+
+	if (f < 2) {
+		tb_disc(p, c, c, 30, tp_c(PAL_RED, 4));
+		tb_disc(p, c, c, 16, tp_c(PAL_ORANGE, 2));
+		tb_disc(p, c, c, 5, tp_c(PAL_YELLOW, 0));
+		for (int k = 0; k < 10; k++) {
+			uint32_t h = tp_hash((uint32_t)k, (uint32_t)f, 97);
+			int x = (int)(h % 11u) - 5, y = -(int)((h >> 8) % 4u) - 5;
+
+			tp_set(p, c + x, c + y, tp_c(PAL_ORANGE, 1 + (int)((h >> 16) % 3u)));
+		}
+		return;
+	}
+	f -= 2;
+	for (int k = 0; k < 60 - f * 15; k++) {
+		uint32_t h = tp_hash((uint32_t)k, (uint32_t)f, 98);
+		int r = 5 + f * 3, x = (int)(h % (uint32_t)(2 * r + 1)) - r;
+		int y = (int)((h >> 8) % (uint32_t)(2 * r + 1)) - r;
+
+		if (x * x + y * y <= r * r)
+			tp_set(p, c + x, c + y, tp_c(f ? PAL_RED : PAL_ORANGE, 1 + f * 3));
+	}
+	if (f == 0)
+		tb_disc(p, c, c, 9, tp_c(PAL_YELLOW, 1));
+}
+
 /* The player's pistol seen from behind and above: the slide's top narrowing
  * towards the muzzle, its back face with the rear sight, and the hand
  * round the grip with the thumb along the side. The recoil frames B..E
@@ -593,7 +626,7 @@ static void tb_pistol(struct tex_pic *p)
 /* ---- the list ------------------------------------------------------------------------ */
 
 enum {
-	TB_BARREL, TB_LAMP, TB_CANDELABRA, TB_TORCH, TB_MEDIKIT, TB_CLIP, TB_AMMO, TB_PUFF,
+	TB_BARREL, TB_LAMP, TB_CANDELABRA, TB_TORCH, TB_MEDIKIT, TB_CLIP, TB_AMMO, TB_PUFF, TB_BALL,
 	TB_BLOOD, TB_PISTOL, TB_PFLASH,
 };
 
@@ -615,6 +648,9 @@ static const struct tb_one tb_ones[] = {
 	{ "PUFFC0", 16, 16, TB_PUFF, 2 },    { "PUFFD0", 16, 16, TB_PUFF, 3 },
 	{ "BLUDA0", 16, 16, TB_BLOOD, 0 },   { "BLUDB0", 16, 16, TB_BLOOD, 1 },
 	{ "BLUDC0", 16, 16, TB_BLOOD, 2 },   { "BLUDD0", 16, 16, TB_BLOOD, 3 },
+	{ "BAL1A0", 24, 24, TB_BALL, 0 },    { "BAL1B0", 24, 24, TB_BALL, 1 },
+	{ "BAL1C0", 32, 32, TB_BALL, 2 },    { "BAL1D0", 32, 32, TB_BALL, 3 },
+	{ "BAL1E0", 32, 32, TB_BALL, 4 },
 	{ "PISGA0", 48, 70, TB_PISTOL, 0 },  { "PISGB0", 48, 78, TB_PISTOL, 0 },
 	{ "PISGC0", 48, 75, TB_PISTOL, 0 },  { "PISGD0", 48, 72, TB_PISTOL, 0 },
 	{ "PISGE0", 48, 71, TB_PISTOL, 0 },  { "PISFA0", 28, 22, TB_PFLASH, 0 },
@@ -653,10 +689,13 @@ static void tb_make_one(struct tex_pic *p, const struct tb_one *o)
 	case TB_AMMO: tb_ammo(p); break;
 	case TB_PUFF:
 	case TB_BLOOD:
+	case TB_BALL:
 		if (o->kind == TB_PUFF)
 			tb_puff(p, o->arg);
-		else
+		else if (o->kind == TB_BLOOD)
 			tb_blood(p, o->arg);
+		else
+			tb_ball(p, o->arg);
 		p->top = (int16_t)(p->h / 2);
 		break;
 	case TB_PISTOL:

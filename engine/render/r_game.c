@@ -32,6 +32,8 @@
 #define R_STANDIN_DECOR "BAR1"
 #define R_SPR_PUFF "PUFF"
 #define R_SPR_BLOOD "BLUD"
+#define R_SPR_MISSILE "BAL1"           /* Doom's imp ball: A, B flying; C, D, E exploding */
+#define R_MISSILE_ANIM 4               /* ticks per flying frame */
 
 struct r_out {
 	const struct tex_set *t;
@@ -136,6 +138,15 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite
 		      th->angle, r_sprite_index(t, ti.sprite, ti.cls == G_C_LIGHT ? R_STANDIN_LIGHT : R_STANDIN_DECOR),
 		      ti.stand + (ti.frames > 1 ? (int)(s->tick / R_ANIM % ti.frames) : 0),
 		      ti.bright, 0);
+	}
+	for (int i = 0; i < s->g.num_missiles; i++) {
+		const struct g_missile *ms = &s->g.ms[i];
+		/* flying: A and B in turn; exploding: C, D, E over G_MISSILE_BOOM */
+		int frame = ms->boom ? 2 + (G_MISSILE_BOOM - ms->boom) * 3 / G_MISSILE_BOOM
+				     : (int)(s->tick / R_MISSILE_ANIM % 2);
+		/* the pictures are centred (BAL1's offsets): at the ball's middle */
+		r_put(&o, ms->x, ms->y, ms->z + G_MISSILE_HEIGHT / 2, 0,
+		      r_sprite_index(t, R_SPR_MISSILE, R_SPR_PUFF), frame, 1, 0);
 	}
 	if ((s->g.shot == G_SHOT_WALL || s->g.shot == G_SHOT_ENEMY) && s->g.shot_t < R_PUFF_TICKS) {
 		int spr = tex_find_sprite(t, s->g.shot == G_SHOT_WALL ? R_SPR_PUFF : R_SPR_BLOOD);
@@ -258,7 +269,7 @@ void r_game_want(const struct tex_set *t, const struct map *m, uint8_t *want_pic
 {
 	static const char fixed[][5] = { R_STANDIN_ENEMY, R_STANDIN_HEALTH, R_STANDIN_PICKUP,
 					 R_STANDIN_LIGHT, R_STANDIN_DECOR, R_SPR_PUFF,
-					 R_SPR_BLOOD };
+					 R_SPR_BLOOD, R_SPR_MISSILE };
 
 	for (size_t i = 0; i < sizeof(fixed) / sizeof(fixed[0]); i++)
 		tex_want_sprite(t, fixed[i], want_pics);

@@ -43,7 +43,9 @@ void r_game_view(const struct sim *s, struct r_view *v);
 /* Fills out (up to max) with the sprites of the current tick for
  * r_render: enemies (frames by state: standing A, walking, attacking with
  * a full-bright firing frame, pain, dying into the corpse), pickups not
- * taken, the map's lights and decorations (cycling their frames), and the
+ * taken, the map's lights and decorations (cycling their frames), the
+ * missiles (BAL1, full bright: A and B flying, C..E exploding; the puff
+ * stands in for a set without BAL1), and the
  * puff (PUFF) or blood (BLUD) of the last shot for R_PUFF_TICKS ticks. Sprite
  * numbers come from t by Doom's names; a name t lacks is drawn as a
  * stand-in of t (POSS for enemies, MEDI, CLIP, COLU, BAR1), and failing
@@ -54,13 +56,14 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite
 
 /* Marks in want_pics (tex_want_sprite) every sprite r_game_sprites may
  * draw on map m: each thing's own sprite (enemies and pickups come only
- * from the map's things) and the fixed stand-ins, puff and blood. For a
+ * from the map's things) and the fixed stand-ins, puff, blood and the missile. For a
  * set loaded by tex_load_wad_names. */
 void r_game_want(const struct tex_set *t, const struct map *m, uint8_t *want_pics);
 
 /* The most sprites r_game_sprites can produce for a sim on map m: enemies,
- * pickups, the map's things and the puff. */
-#define R_GAME_SPRITES_MAX(m) (G_MAX_ENEMIES + G_MAX_PICKUPS + (int)(m)->num_things + 1)
+ * pickups, missiles, the map's things and the puff. */
+#define R_GAME_SPRITES_MAX(m) \
+	(G_MAX_ENEMIES + G_MAX_PICKUPS + G_MAX_MISSILES + (int)(m)->num_things + 1)
 
 /* The map's things as sprites for a still view (viewers, the renderer
  * tests and the cross-check; the game builds its own from the sim, see

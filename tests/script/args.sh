@@ -1,8 +1,10 @@
 # Sourced by tests/script/run.sh and regen.sh (so a script's frame is
 # stored and checked with the same command line).
-# script_args FILE: the daemon options a script names on its "# args:"
-# lines (words without spaces or quotes, e.g. "# args: --grid builtin"
-# plays the built-in grid map, which has no enemies).
+# script_args FILE: the daemon options a script names: the words of its
+# "# args:" lines (no spaces or quotes inside a word, e.g.
+# "# args: --grid builtin" plays the built-in grid map, which has no
+# enemies), and "--set KEY=VALUE" for each "# set: KEY=VALUE" line (a
+# setting the script runs with, e.g. "# set: game.difficulty=0").
 script_args() {
-	sed -n 's/^# args: //p' "$1"
+	sed -n -e 's/^# args: //p' -e 's/^# set: *\([^ ]*\).*/--set \1/p' "$1"
 }

@@ -2,6 +2,7 @@
 # Script tests: runs every tests/script/*.scr through the real daemon,
 # headless on a file framebuffer, and checks
 #  - the exit status (0, or the value of a "# expect-exit: N" line),
+#    the script run with the settings of its "# set: KEY=VALUE" lines,
 #  - every "# expect-stderr: TEXT" line appears in stderr,
 #  - every "# expect-file: NAME" exists afterwards (relative to the run's
 #    working directory, a fresh temporary one) and is a PNG,

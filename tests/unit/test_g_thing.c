@@ -19,13 +19,13 @@ static int kind_of(uint16_t type)
 	return ti.kind;
 }
 
-static void monsters_map_to_the_three_kinds(void **state)
+static void monsters_map_to_the_four_kinds(void **state)
 {
 	(void)state;
 	assert_int_equal(kind_of(3004), G_GRUNT);   /* zombieman */
 	assert_int_equal(kind_of(9), G_GRUNT);      /* shotgun guy */
 	assert_int_equal(kind_of(65), G_GRUNT);     /* chaingunner */
-	assert_int_equal(kind_of(3001), G_BRUTE);   /* imp */
+	assert_int_equal(kind_of(3001), G_THROWER); /* imp: fireballs */
 	assert_int_equal(kind_of(3002), G_BRUTE);   /* demon */
 	assert_int_equal(kind_of(3003), G_BRUTE);   /* baron */
 	assert_int_equal(kind_of(3005), G_SENTRY);  /* cacodemon */
@@ -148,7 +148,7 @@ static void skill_bits_select_difficulties(void **state)
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(monsters_map_to_the_three_kinds),
+		cmocka_unit_test(monsters_map_to_the_four_kinds),
 		cmocka_unit_test(every_th_monster_is_an_enemy_with_its_sprite),
 		cmocka_unit_test(pickups_give_health_or_ammo),
 		cmocka_unit_test(lights_decorations_and_the_rest),

@@ -117,6 +117,7 @@ for g in golden-attract golden-game golden-walk; do
 	fi
 done
 top=$(pwd)
+. tests/script/args.sh
 top_bin=$(realpath "$BIN")
 record() { # $1 script, $2 output name, rest: daemon options
 	s=$1; n=$2; shift 2
@@ -135,7 +136,10 @@ record() { # $1 script, $2 output name, rest: daemon options
 	fi
 }
 for s in tests/replay/*.scr tests/script/*.scr; do
-	record "$s" "$(basename "$(dirname "$s")")-$(basename "$s" .scr)"
+	# with the options of its "# args:" and "# set:" lines, as
+	# tests/script/run.sh runs it
+	# shellcheck disable=SC2046
+	record "$s" "$(basename "$(dirname "$s")")-$(basename "$s" .scr)" $(script_args "$s")
 done
 record tests/replay/game.scr settings-game --set game.coins_per_credit=3 --set game.freeplay=1
 # a rate that 60 does not divide: the mixer carries the remainder
