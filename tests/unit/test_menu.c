@@ -54,7 +54,7 @@ static void in_menu(struct sim *s, const struct sim_settings *set)
 	assert_int_equal(s->menu.cursor, MENU_I_INPUT);
 }
 
-static const struct sim_settings base = { 1, 0, 0, 1, 3, 100, 1, 0, 0 };
+static const struct sim_settings base = { 1, 0, 0, 1, 3, 100, 1, 0, 0, 0 };
 
 static void the_cursor_moves_and_wraps_and_pages_open_and_close(void **state)
 {
@@ -219,7 +219,7 @@ static void settings_change_with_left_and_right(void **state)
 
 static void factory_defaults_restore_every_setting(void **state)
 {
-	static const struct sim_settings odd = { 7, 1, 0, 3, 9, 30, 0, 17, G_IDLE_OFF };
+	static const struct sim_settings odd = { 7, 1, 0, 3, 9, 30, 0, 17, G_IDLE_OFF, 0 };
 	struct sim s;
 	(void)state;
 	in_menu(&s, &odd);
