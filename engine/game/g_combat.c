@@ -146,19 +146,22 @@ fx_t g_aim(const struct sim *s, ang_t a)
 		return p->pitch;
 	n = g_ray_enemies(s, &r, entry, cand);
 	for (int k = 0; k < n; k++) {
+		/* the middle of its body where the line enters its circle, else
+		 * (an edge or a sill hides that) near its top, then near its feet */
+		static const fx_t at[] = { G_BODY_HEIGHT / 2, G_BODY_HEIGHT - 8 * FX_ONE, 8 * FX_ONE };
 		const struct g_enemy *e = &s->g.en[cand[k]];
-		int64_t d = entry[k], rise = (int64_t)e->z + G_BODY_HEIGHT / 2 - p->viewz;
-		fx_t slope;
-		if (d < FX_ONE)
-			d = FX_ONE;
-		/* the middle of its body where the line enters its circle */
-		if (rise >= (((int64_t)G_AUTOAIM_MAX * d) >> FX_SHIFT) ||
-		    rise <= -(((int64_t)G_AUTOAIM_MAX * d) >> FX_SHIFT))
-			continue;              /* out of the aim's reach */
-		slope = (fx_t)((rise << FX_SHIFT) / d);
-		r.slope = slope;
-		if (g_wall_along(s, &r, d) == d)
-			return slope;
+		int64_t d = entry[k] < FX_ONE ? FX_ONE : entry[k];
+		for (size_t h = 0; h < sizeof(at) / sizeof(at[0]); h++) {
+			int64_t rise = (int64_t)e->z + at[h] - p->viewz;
+			fx_t slope;
+			if (rise >= (((int64_t)G_AUTOAIM_MAX * d) >> FX_SHIFT) ||
+			    rise <= -(((int64_t)G_AUTOAIM_MAX * d) >> FX_SHIFT))
+				continue;      /* out of the aim's reach */
+			slope = (fx_t)((rise << FX_SHIFT) / d);
+			r.slope = slope;
+			if (g_wall_along(s, &r, d) == d)
+				return slope;
+		}
 	}
 	return p->pitch;
 }

@@ -16,7 +16,7 @@ enum {
 	F_X, F_Y, F_Z, F_ANGLE, F_SECTOR, F_CREDITS, F_COINS, F_TICK, F_MODE,
 	F_SCORE, F_LIVES, F_HEALTH, F_AMMO, F_STAGE, F_ENEMIES, F_KILLS, F_CONTINUES,
 	F_COUNTDOWN, F_PAGE, F_PHASE, F_PLAYS, F_RANK, F_HISCORE, F_MENU, F_DIFFICULTY,
-	F_CLOCK, F_WHY, F_WEAPON, F_COUNT
+	F_CLOCK, F_WHY, F_WEAPON, F_PITCH, F_COUNT
 };
 
 static const struct sim_field_def sim_fields[F_COUNT] = {
@@ -48,6 +48,7 @@ static const struct sim_field_def sim_fields[F_COUNT] = {
 	[F_CLOCK] = { "clock", SIM_FK_INT },
 	[F_WHY] = { "why", SIM_FK_INT },
 	[F_WEAPON] = { "weapon", SIM_FK_INT },
+	[F_PITCH] = { "pitch", SIM_FK_INT },
 };
 
 int sim_field_count(void)
@@ -109,6 +110,8 @@ int64_t sim_field_value(const struct sim *s, int i)
 	case F_WHY: return s->g.why;
 	/* the weapon held, numbered from 1 as on the HUD (enum g_weapon + 1) */
 	case F_WEAPON: return s->pl.weapon + 1;
+	/* vertical aim in look steps (G_PITCH_STEP): -30 down .. 30 up */
+	case F_PITCH: return s->pl.pitch / G_PITCH_STEP;
 	default: return 0;
 	}
 }
