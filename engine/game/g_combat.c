@@ -172,7 +172,7 @@ fx_t g_aim(const struct sim *s, ang_t a)
  * else it ends on the nearest wall or at its range. Sets *x, *y, *z to
  * where it ended and returns enum g_shot. The lines it reached get their
  * gun specials. */
-static int g_ray(struct sim *s, ang_t a, fx_t slope, int dmg, fx_t *x, fx_t *y, fx_t *z)
+static int g_trace(const struct sim *s, ang_t a, fx_t slope, fx_t *x, fx_t *y, fx_t *z, int *who)
 {
 	const struct sim_player *p = &s->pl;
 	struct g_line3 r = { p->x, p->y, p->viewz, tab_cos(a), tab_sin(a), slope };
@@ -189,15 +189,36 @@ static int g_ray(struct sim *s, ang_t a, fx_t slope, int dmg, fx_t *x, fx_t *y, 
 		*x = (fx_t)(p->x + ((entry[k] * r.cx) >> FX_SHIFT));
 		*y = (fx_t)(p->y + ((entry[k] * r.cy) >> FX_SHIFT));
 		*z = hz;
-		g_shoot_lines(s, p->x, p->y, *x, *y);
-		g_hurt_enemy(s, cand[k], dmg);
+		*who = cand[k];
 		return G_SHOT_ENEMY;
 	}
 	*x = (fx_t)(p->x + ((wall * r.cx) >> FX_SHIFT));
 	*y = (fx_t)(p->y + ((wall * r.cy) >> FX_SHIFT));
 	*z = g_line3_z(&r, wall);
-	g_shoot_lines(s, p->x, p->y, *x, *y);
+	*who = -1;
 	return wall < range ? G_SHOT_WALL : G_SHOT_MISS;
+}
+
+/* g_trace, then its effects: the lines reached get their gun specials,
+ * the enemy hit takes dmg. */
+static int g_ray(struct sim *s, ang_t a, fx_t slope, int dmg, fx_t *x, fx_t *y, fx_t *z)
+{
+	int who, r = g_trace(s, a, slope, x, y, z, &who);
+
+	g_shoot_lines(s, s->pl.x, s->pl.y, *x, *y);
+	if (who >= 0)
+		g_hurt_enemy(s, who, dmg);
+	return r;
+}
+
+int g_shot_reaches(const struct sim *s, int i)
+{
+	const struct g_enemy *e = &s->g.en[i];
+	ang_t a = tab_atan2(e->y - s->pl.y, e->x - s->pl.x);
+	fx_t x, y, z;
+	int who;
+
+	return g_trace(s, a, g_aim(s, a), &x, &y, &z, &who) == G_SHOT_ENEMY && who == i;
 }
 
 void g_fire(struct sim *s)

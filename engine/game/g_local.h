@@ -107,6 +107,9 @@ void g_fire(struct sim *s);
  * auto-aim (set.free_aim 0) the one to the middle of the nearest enemy in
  * its line that it can reach within G_AUTOAIM_MAX, else the pitch's. */
 fx_t g_aim(const struct sim *s, ang_t a);
+/* Whether a shot now, along the line to enemy i's centre with the slope
+ * g_aim gives, would hit enemy i (for test tools that pick targets). */
+int g_shot_reaches(const struct sim *s, int i);
 /* Takes the pickups the player touches (when they are of use). */
 void g_pickups_tick(struct sim *s);
 
