@@ -44,7 +44,9 @@ void cmd_build(struct cmd_state *s, struct sim_cmd *out)
 				 (active(s, ACT_USE) ? SIM_BT_USE : 0) |
 				 (active(s, ACT_START) ? SIM_BT_START : 0) |
 				 (active(s, ACT_SERVICE) ? SIM_BT_SERVICE : 0) |
-				 (active(s, ACT_WEAPON) ? SIM_BT_WEAPON : 0));
+				 (active(s, ACT_WEAPON) ? SIM_BT_WEAPON : 0) |
+				 (active(s, ACT_LOOK_UP) ? SIM_BT_LOOK_UP : 0) |
+				 (active(s, ACT_LOOK_DOWN) ? SIM_BT_LOOK_DOWN : 0));
 	out->coins = (uint8_t)(coins > UINT8_MAX ? UINT8_MAX : coins);
 	memset(s->presses, 0, sizeof(s->presses));
 }

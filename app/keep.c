@@ -113,12 +113,13 @@ static void keep_settings(struct keep *k, const struct sim *s, int w, int h)
 	int n = snprintf(ini, sizeof(ini),
 			 "[game]\ncoins_per_credit = %u\nfreeplay = %s\ndifficulty = %u\nlives = %u\n"
 			 "volume = %u\nattract_sound = %u\nstage_time = %u\nidle_out = %s\n"
+			 "autoaim = %s\n"
 			 "render_width = %d\nrender_height = %d\n",
 			 st->coins_per_credit, st->freeplay ? "yes" : "no", st->difficulty,
 			 st->lives, st->volume, st->attract_sound,
 			 st->stage_time == G_STAGE_TIME_OFF ? 0
 			 : st->stage_time ? st->stage_time : G_STAGE_TIME_DEFAULT,
-			 cfg_idle_name(st->idle_out), w, h);
+			 cfg_idle_name(st->idle_out), st->free_aim ? "off" : "on", w, h);
 	keep_save(k, "settings.ini", NULL, ini, (size_t)n);
 }
 

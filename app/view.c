@@ -56,7 +56,7 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	if (hud_world(s)) {
 		int n = r_game_sprites(s, tex, v->spr, v->spr_max);
 		const struct map *m = r_game_live(&v->live, s, tex);
-		r_game_view(s, &rv);
+		r_game_view(s, f->w, &rv);
 		if (v->world)
 			v->world(v->world_ctx, m, tex, &rv, v->spr, n, f);
 		else

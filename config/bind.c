@@ -38,6 +38,8 @@ static const struct {
 	{ ACT_COIN, { "KEY_5" } },
 	{ ACT_SERVICE, { "KEY_9", "KEY_F2" } },
 	{ ACT_WEAPON, { "KEY_Z", "KEY_TAB" } },
+	{ ACT_LOOK_UP, { "KEY_PAGEUP" } },
+	{ ACT_LOOK_DOWN, { "KEY_PAGEDOWN" } },
 };
 
 void bind_defaults(struct bind_table *b)

@@ -95,6 +95,7 @@ static const struct cfg_key cfg_keys[] = {
 	CFG_INTKEY(game, stage_time, game.stage_time, 0, 30),
 	{ .section = "game", .key = "idle_out", .type = CFG_T_INDEX,
 	  .off = offsetof(struct cfg, game.idle_out), .names = cfg_idles },
+	CFG_BOOLKEY(game, autoaim, game.autoaim),
 	CFG_STRKEY(game, wad, game.wad, CFG_T_STR),
 	CFG_STRKEY(game, maps, game.maps, CFG_T_STR),
 	CFG_STRKEY(game, content_dirs, game.content_dirs, CFG_T_STR),
@@ -143,6 +144,7 @@ void cfg_settings(const struct cfg *c, struct sim_settings *set)
 	/* the file's 0 is "no clock"; the sim's 0 is its default */
 	set->stage_time = c->game.stage_time == 0 ? G_STAGE_TIME_OFF : (uint8_t)c->game.stage_time;
 	set->idle_out = (uint8_t)c->game.idle_out;
+	set->free_aim = (uint8_t)!c->game.autoaim;
 }
 
 void cfg_defaults(struct cfg *c)
@@ -169,6 +171,7 @@ void cfg_defaults(struct cfg *c)
 		   "/usr/share/games/doom /var/lib/arcaded/content");
 	c->game.attract_sound = 1;
 	c->game.stage_time = 5;
+	c->game.autoaim = 1;
 	cfg_setstr(c->audio.output, sizeof(c->audio.output), "auto");
 	cfg_setstr(c->audio.device, sizeof(c->audio.device), "default");
 	c->audio.rate = 48000;

@@ -45,6 +45,7 @@ struct cfg {
 		int attract_sound;           /* 0 off, 1 on, N: once every N attract cycles (1) */
 		int stage_time;              /* the stage clock, minutes 1..30, 0 off (5) */
 		int idle_out;                /* a player gone 30 s: life (0) | end (1) | off (2) */
+		int autoaim;                 /* vertical auto-aim 0/1 (1) */
 		char wad[512];               /* WAD files, blank-separated, IWAD first ("" none) */
 		char maps[256];              /* maps or episodes from them ("" the first map) */
 		char content_dirs[512];      /* where the service menu's content picker looks

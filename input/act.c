@@ -20,6 +20,8 @@ static const char *const act_names[ACT_COUNT] = {
 	[ACT_COIN] = "coin",
 	[ACT_SERVICE] = "service",
 	[ACT_WEAPON] = "weapon",
+	[ACT_LOOK_UP] = "look_up",
+	[ACT_LOOK_DOWN] = "look_down",
 };
 
 const char *act_name(int a)

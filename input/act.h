@@ -17,11 +17,13 @@ enum act {
 	ACT_COIN,
 	ACT_SERVICE,
 	ACT_WEAPON,                     /* change to the next weapon owned */
+	ACT_LOOK_UP,                    /* vertical aim: held raises the view */
+	ACT_LOOK_DOWN,                  /* held lowers it; both centre it */
 	ACT_COUNT
 };
 
 /* "forward", "back", "turn_left", "turn_right", "strafe_left",
- * "strafe_right", "fire", "use", "start", "coin", "service", "weapon"; NULL
+ * "strafe_right", "fire", "use", "start", "coin", "service", "weapon", "look_up", "look_down"; NULL
  * if out of range. */
 const char *act_name(int a);
 /* Action by name (case-insensitive), or -1. */

@@ -83,6 +83,7 @@ size_t rec_header_encode(uint8_t *out, const struct rec_header *h)
 		out[47] = h->set.attract_sound;
 		out[37] = h->set.stage_time;
 		out[38] = h->set.idle_out;
+		out[39] = h->set.free_aim;
 		le_put32(out + 80, h->audio_rate);
 		le_put32(out + 84, h->audio_version);
 		le_put64(out + 88, h->sound_hash);
@@ -188,7 +189,7 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 	}
 	/* Reserved bytes are 0 as written: a flip there is damage, not a
 	 * field this build may skip. */
-	if (rec_nonzero(buf, d.version >= REC_VERSION_3 ? 39 : 37, 40, err, errlen))
+	if (d.version < REC_VERSION_3 && rec_nonzero(buf, 37, 40, err, errlen))
 		return -EINVAL;
 	if (d.version >= REC_VERSION_2) {
 		d.render_w = le_get16(buf + 40);
@@ -265,6 +266,7 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		d.set.attract_sound = buf[47];
 		d.set.stage_time = buf[37];
 		d.set.idle_out = buf[38];
+		d.set.free_aim = buf[39];
 		d.audio_rate = le_get32(buf + 80);
 		d.audio_version = le_get32(buf + 84);
 		d.sound_hash = le_get64(buf + 88);
@@ -285,6 +287,10 @@ int rec_header_decode(const uint8_t *buf, size_t len, struct rec_header *h, char
 		if (d.set.idle_out >= G_IDLE_COUNT) {
 			txt_set(err, errlen, "idle_out %u out of range 0..%d", d.set.idle_out,
 				G_IDLE_COUNT - 1);
+			return -EINVAL;
+		}
+		if (d.set.free_aim > 1) {
+			txt_set(err, errlen, "free_aim %u out of range 0..1", d.set.free_aim);
 			return -EINVAL;
 		}
 		if ((d.hash_flags & REC_HAS_AUDIO) &&

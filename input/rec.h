@@ -15,7 +15,8 @@
  *  36  1  lives 0..9, 0 meaning the default (0 in engine version 1)
  *  37  3  reserved 0; version 3 (engine version 5 on): stage_time 0..30 or
  *        255 (off) (37)
- *        and idle_out 0..2 (38), 39 reserved 0
+ *        and idle_out 0..2 (38); 39 reserved 0 until engine version 7,
+ *        then free_aim 0..1 (0: vertical auto-aim, the default)
  *  40  ... records: the command, REC_CMD_SIZE bytes:
  *        int8 forward, int8 side, int16 turn, uint8 buttons, uint8 coins
  *
@@ -98,13 +99,15 @@
  * sounds (twelve sounds more, so twelve more lengths in the state); 5: the
  * stage clock, hurry up, the idle player and the time bonus (g_pace.c),
  * with their settings stage_time and idle_out; 6: weapons (g_weapon.c: the
- * player's weapons and the one held, SIM_BT_WEAPON, weapon pickups) */
+ * player's weapons and the one held, SIM_BT_WEAPON, weapon pickups); 7:
+ * the thrower's missiles (g_missile.c), vertical aim (the player's pitch,
+ * SIM_BT_LOOK_UP/DOWN, shots as slopes, auto-aim and its setting free_aim) */
 #define REC_ENGINE_VERSION 7
 /* sim_snapshot_size() at REC_ENGINE_VERSION. A field added to the sim's
  * state (engine/game/sim_table.h) changes the size and every state hash:
  * raise REC_ENGINE_VERSION and set this to the new size, together
  * (test_rec fails on the size until then, as a reminder of the version). */
-#define REC_ENGINE_SNAPSHOT 97899
+#define REC_ENGINE_SNAPSHOT 97904
 /* Bumped whenever the renderer draws any frame differently (engine/render/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */

@@ -207,6 +207,20 @@ enum g_phase {
 /* set.idle_out: what happens to a player who is gone. */
 enum g_idle { G_IDLE_LIFE, G_IDLE_END, G_IDLE_OFF, G_IDLE_COUNT };
 
+/* Vertical aim: the player's pitch is the slope of the line of sight
+ * (height per unit of distance, 16.16; positive looks up). Each tick
+ * LOOK_UP or LOOK_DOWN is held it moves G_PITCH_STEP, within
+ * +/-G_PITCH_MAX (Doom's auto-aim reach, 100 of 160: about 32 degrees); both
+ * held centre it. It stays where it was left and is level after a respawn
+ * or a new stage. With auto-aim (set.free_aim 0) a shot whose line has an
+ * enemy in it horizontally takes the slope that hits the nearest visible
+ * one within G_AUTOAIM_MAX, else the pitch's slope (g_combat.c). */
+#define G_PITCH_MAX (FX_ONE * 5 / 8)
+#define G_PITCH_STEP (G_PITCH_MAX / 30)  /* the whole range in half a second */
+#define G_AUTOAIM_MAX (FX_ONE * 5 / 8)
+/* Every enemy's body is this tall above its feet, for shots (Doom's 56). */
+#define G_BODY_HEIGHT (56 * FX_ONE)
+
 /* Why the player died, for the banner. */
 enum g_why { G_WHY_KILLED, G_WHY_TIME, G_WHY_IDLE };
 

@@ -121,6 +121,13 @@ int g_sight(const struct sim *s, fx_t x1, fx_t y1, fx_t z1, fx_t x2, fx_t y2, fx
 /* The player's shot with the held weapon: its pellets fanned about the
  * view centre (g_combat.c); called on a FIRE level when g_weapon_can_fire. */
 void g_fire(struct sim *s);
+/* The slope a shot along angle a takes from the eye (g_combat.c): with
+ * auto-aim (set.free_aim 0) the one to the middle of the nearest enemy in
+ * its line that it can reach within G_AUTOAIM_MAX, else the pitch's. */
+fx_t g_aim(const struct sim *s, ang_t a);
+/* Whether a shot now, along the line to enemy i's centre with the slope
+ * g_aim gives, would hit enemy i (for test tools that pick targets). */
+int g_shot_reaches(const struct sim *s, int i);
 /* Takes the pickups the player touches (when they are of use). */
 void g_pickups_tick(struct sim *s);
 

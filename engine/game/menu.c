@@ -189,6 +189,9 @@ static void menu_change(struct sim *s, int dir)
 		t->idle_out = menu_step(t->idle_out >= G_IDLE_COUNT ? G_IDLE_OFF : t->idle_out, dir,
 					0, G_IDLE_COUNT - 1);
 		break;
+	case MENU_S_AUTOAIM:
+		t->free_aim = (uint8_t)!t->free_aim;
+		break;
 	case MENU_S_RES:
 		m->res = menu_step(m->res, dir, 0, MENU_RES_COUNT);
 		return;
@@ -226,6 +229,7 @@ static void menu_settings(struct sim *s, uint8_t pressed, uint8_t nav)
 			s->set.attract_sound = MENU_DEFAULT_ATTRACT_SOUND;
 			s->set.stage_time = G_STAGE_TIME_DEFAULT;
 			s->set.idle_out = G_IDLE_LIFE;
+			s->set.free_aim = 0;
 			m->res = 0;
 			s->set_gen++;
 			menu_blip(s, SFX_MENU_SELECT);

@@ -94,12 +94,13 @@ enum menu_item { MENU_I_INPUT, MENU_I_DISPLAY, MENU_I_SOUND, MENU_I_SETTINGS, ME
 /* Items of the settings page. */
 enum menu_setting { MENU_S_DIFFICULTY, MENU_S_LIVES, MENU_S_COINS, MENU_S_FREEPLAY,
 		    MENU_S_VOLUME, MENU_S_ATTRACT_SOUND, MENU_S_STAGE_TIME, MENU_S_IDLE,
+		    MENU_S_AUTOAIM,
 		    MENU_S_RES, MENU_S_DEFAULTS, MENU_S_BACK, MENU_SETTINGS_COUNT };
 
 /* The factory settings MENU_S_DEFAULTS restores: 1 coin per credit, no
  * free play, NORMAL difficulty, 3 lives, volume 80%, attract sound on,
  * a 5-minute stage clock (G_STAGE_TIME_DEFAULT), an idle player loses a
- * life, the configured render size. */
+ * life, vertical auto-aim on, the configured render size. */
 #define MENU_DEFAULT_DIFFICULTY 1
 #define MENU_DEFAULT_VOLUME 80
 #define MENU_DEFAULT_ATTRACT_SOUND 1

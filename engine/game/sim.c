@@ -224,11 +224,28 @@ static fx_t sim_friction(fx_t v)
 	return (fx_t)(v < 0 ? -a : a);
 }
 
+/* The pitch from the look buttons (g_game.h G_PITCH_*): held moves it,
+ * both centre it; it turns even while the player is held still. */
+static void sim_look(struct sim_player *p, uint8_t buttons)
+{
+	uint8_t look = buttons & (SIM_BT_LOOK_UP | SIM_BT_LOOK_DOWN);
+
+	if (look == (SIM_BT_LOOK_UP | SIM_BT_LOOK_DOWN))
+		p->pitch = 0;
+	else if (look == SIM_BT_LOOK_UP)
+		p->pitch = p->pitch + G_PITCH_STEP > G_PITCH_MAX ? G_PITCH_MAX
+								 : p->pitch + G_PITCH_STEP;
+	else if (look == SIM_BT_LOOK_DOWN)
+		p->pitch = p->pitch - G_PITCH_STEP < -G_PITCH_MAX ? -G_PITCH_MAX
+								   : p->pitch - G_PITCH_STEP;
+}
+
 static void sim_player_move(struct sim *s, const struct sim_cmd *cmd)
 {
 	struct sim_player *p = &s->pl;
 	int64_t mx = p->momx, my = p->momy;
 
+	sim_look(p, cmd->buttons);
 	if (p->freeze) {
 		/* held still after a teleport (Doom's reactiontime) */
 		p->freeze--;

@@ -48,6 +48,10 @@ struct snd_set;
 #define SIM_BT_SERVICE 0x08
 /* weapon change: a press takes the next weapon the player owns */
 #define SIM_BT_WEAPON 0x10
+/* vertical aim, levels: held moves the pitch; both held centre it (g_game.h
+ * G_PITCH_*) */
+#define SIM_BT_LOOK_UP 0x20
+#define SIM_BT_LOOK_DOWN 0x40
 
 /* One tick of player input: exactly what a recording stores (6 bytes,
  * see input/rec.h). forward/side: -127..127 of full speed (positive is
@@ -96,7 +100,10 @@ enum sim_page { SIM_PAGE_TITLE, SIM_PAGE_SCORES, SIM_PAGE_DEMO, SIM_PAGE_COUNT }
 	 * the maximum count as the maximum (g_game.h) */ \
 	X(VAL, uint8_t, stage_time, SIM_ANY) \
 	/* a player gone idle: enum g_idle; above counts as G_IDLE_OFF */ \
-	X(VAL, uint8_t, idle_out, SIM_ANY)
+	X(VAL, uint8_t, idle_out, SIM_ANY) \
+	/* 0: vertical auto-aim (the default), 1: shots follow the pitch only \
+	 * (config game.autoaim off) */ \
+	X(VAL, uint8_t, free_aim, SIM_ANY)
 struct sim_settings {
 	SIM_SETTINGS_FIELDS(SIM_MEMBER)
 };
@@ -110,6 +117,8 @@ struct sim_settings {
 	X(VAL, fx_t, momx, SIM_ANY)                 /* momentum per tick */ \
 	X(VAL, fx_t, momy, SIM_ANY) \
 	X(VAL, ang_t, angle, SIM_ANY)               /* view direction */ \
+	/* vertical aim: the slope of the line of sight, 16.16 (G_PITCH_*) */ \
+	X(VAL, fx_t, pitch, SIM_RANGE(-G_PITCH_MAX, G_PITCH_MAX)) \
 	X(VAL, uint32_t, sector, SIM_SECTOR)        /* sector under (x, y) */ \
 	/* 16.16; dead at 0 or below */ \
 	X(VAL, fx_t, health, SIM_RANGE(0, G_HEALTH_MAX * FX_ONE)) \

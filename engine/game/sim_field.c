@@ -17,7 +17,7 @@ enum {
 	F_X, F_Y, F_Z, F_ANGLE, F_SECTOR, F_CREDITS, F_COINS, F_TICK, F_MODE,
 	F_SCORE, F_LIVES, F_HEALTH, F_AMMO, F_STAGE, F_ENEMIES, F_KILLS, F_CONTINUES,
 	F_COUNTDOWN, F_PAGE, F_PHASE, F_PLAYS, F_RANK, F_HISCORE, F_MENU, F_DIFFICULTY,
-	F_CLOCK, F_WHY, F_WEAPON, F_MISSILES, F_MEND, F_COUNT
+	F_CLOCK, F_WHY, F_WEAPON, F_MISSILES, F_MEND, F_PITCH, F_COUNT
 };
 
 static const struct sim_field_def sim_fields[F_COUNT] = {
@@ -51,6 +51,7 @@ static const struct sim_field_def sim_fields[F_COUNT] = {
 	[F_WEAPON] = { "weapon", SIM_FK_INT },
 	[F_MISSILES] = { "missiles", SIM_FK_INT },
 	[F_MEND] = { "mend", SIM_FK_INT },
+	[F_PITCH] = { "pitch", SIM_FK_INT },
 };
 
 int sim_field_count(void)
@@ -117,6 +118,8 @@ int64_t sim_field_value(const struct sim *s, int i)
 	/* how the last missile ended: 0 none yet, 1 wall, 2 floor or ceiling,
 	 * 3 the player (enum g_mend) */
 	case F_MEND: return s->g.mend;
+	/* vertical aim in look steps (G_PITCH_STEP): -30 down .. 30 up */
+	case F_PITCH: return s->pl.pitch / G_PITCH_STEP;
 	default: return 0;
 	}
 }

@@ -256,13 +256,16 @@ void r_live_free(struct r_live *l)
 	memset(l, 0, sizeof(*l));
 }
 
-void r_game_view(const struct sim *s, struct r_view *v)
+void r_game_view(const struct sim *s, int w, struct r_view *v)
 {
 	v->x = s->pl.x;
 	v->y = s->pl.y;
 	v->z = s->pl.viewz;
 	v->angle = s->pl.angle;
-	v->shear = 0;
+	/* the pitch's slope times the focal length (w / 2 pixels): the point
+	 * straight ahead along the pitch lands on the middle row, as the shot
+	 * goes; the same angle at every resolution */
+	v->shear = (int32_t)(((int64_t)s->pl.pitch * (w > 0 ? w / 2 : 0)) >> FX_SHIFT);
 }
 
 void r_game_want(const struct tex_set *t, const struct map *m, uint8_t *want_pics)

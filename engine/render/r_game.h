@@ -37,8 +37,10 @@ const struct map *r_game_live(struct r_live *l, const struct sim *s, const struc
 /* NULL-safe; frees l's arrays. */
 void r_live_free(struct r_live *l);
 
-/* The camera for the current tick. */
-void r_game_view(const struct sim *s, struct r_view *v);
+/* The camera for the current tick, for a frame w pixels wide: the
+ * player's pitch (vertical aim) becomes the shear, so that the line of
+ * sight along the pitch is the middle row (focal length w / 2). */
+void r_game_view(const struct sim *s, int w, struct r_view *v);
 
 /* Fills out (up to max) with the sprites of the current tick for
  * r_render: enemies (frames by state: standing A, walking, attacking with

@@ -247,6 +247,7 @@ static void menu_settings_page(struct menu_ctx *m)
 	menu_item(m, mn->cursor == MENU_S_STAGE_TIME, "STAGE CLOCK", clock);
 	menu_item(m, mn->cursor == MENU_S_IDLE, "IDLE PLAYER",
 		  idles[s->set.idle_out < G_IDLE_COUNT ? s->set.idle_out : G_IDLE_OFF]);
+	menu_item(m, mn->cursor == MENU_S_AUTOAIM, "AUTO-AIM", s->set.free_aim ? "OFF" : "ON");
 	menu_item(m, mn->cursor == MENU_S_RES, "RENDER SIZE", res);
 	menu_item(m, mn->cursor == MENU_S_DEFAULTS, "FACTORY DEFAULTS", NULL);
 	menu_item(m, mn->cursor == MENU_S_BACK, "BACK", NULL);

@@ -56,8 +56,9 @@ static int ap_enemy(struct ap *a)
 		if (d > 700.0 * 700 || (e->state == G_E_IDLE && d > 384.0 * 384))
 			continue;
 		if (!g_sight(s, s->pl.x, s->pl.y, s->pl.viewz, e->x, e->y,
-			     e->z + g_kinds[e->kind].eye))
-			continue;
+			     e->z + g_kinds[e->kind].eye) ||
+		    !g_shot_reaches(s, i))
+			continue;              /* seen, but a shot cannot reach it */
 		best = i;
 		bd = d;
 	}

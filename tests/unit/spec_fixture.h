@@ -15,7 +15,7 @@
 
 /* One coin a credit, straight into play, easy, 100% volume, the default
  * stage clock, no idle-out (the specials' tests wait without input). */
-static const struct sim_settings spec_play = { 1, 0, 1, 0, 0, 100, 1, 0, G_IDLE_OFF };
+static const struct sim_settings spec_play = { 1, 0, 1, 0, 0, 100, 1, 0, G_IDLE_OFF, 0 };
 static const struct sim_cmd spec_none = { 0 };
 static const struct sim_cmd spec_use_cmd = { .buttons = SIM_BT_USE };
 

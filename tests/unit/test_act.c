@@ -24,6 +24,8 @@ static void test_names_are_the_documented_ones(void **state)
 	assert_string_equal(act_name(ACT_COIN), "coin");
 	assert_string_equal(act_name(ACT_SERVICE), "service");
 	assert_string_equal(act_name(ACT_WEAPON), "weapon");
+	assert_string_equal(act_name(ACT_LOOK_UP), "look_up");
+	assert_string_equal(act_name(ACT_LOOK_DOWN), "look_down");
 }
 
 static void test_out_of_range_has_no_name(void **state)

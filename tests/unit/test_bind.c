@@ -70,6 +70,8 @@ static void test_defaults_bind_the_documented_keys(void **state)
 	expect_keys(&b, ACT_COIN, KEY_5, -1);
 	expect_keys(&b, ACT_SERVICE, KEY_9, KEY_F2);
 	expect_keys(&b, ACT_WEAPON, KEY_Z, KEY_TAB);
+	expect_keys(&b, ACT_LOOK_UP, KEY_PAGEUP, -1);
+	expect_keys(&b, ACT_LOOK_DOWN, KEY_PAGEDOWN, -1);
 }
 
 static void test_file_replaces_a_whole_action_list(void **state)
@@ -455,6 +457,8 @@ static void test_format_writes_every_action_of_every_section(void **state)
 		"coin = KEY_5\n"
 		"service = KEY_9, KEY_F2\n"
 		"weapon = KEY_Z, KEY_TAB\n"
+		"look_up = KEY_PAGEUP\n"
+		"look_down = KEY_PAGEDOWN\n"
 		"\n"
 		"[device \"usb-1-1.2\"]\n"
 		"forward = BTN_DPAD_UP\n"
@@ -468,7 +472,9 @@ static void test_format_writes_every_action_of_every_section(void **state)
 		"start =\n"
 		"coin =\n"
 		"service =\n"
-		"weapon =\n";
+		"weapon =\n"
+		"look_up =\n"
+		"look_down =\n";
 	int key[ACT_COUNT][BIND_MAX];
 	struct bind_table b, back;
 	char buf[2048];

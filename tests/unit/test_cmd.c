@@ -76,6 +76,19 @@ static void tap_within_one_tick_still_presses(void **state)
 	assert_int_equal(c.buttons, SIM_BT_WEAPON);
 	cmd_build(&s, &c);
 	assert_int_equal(c.buttons, 0);
+	/* the look buttons are levels, each its own bit */
+	cmd_action(&s, ACT_LOOK_UP, 1);
+	cmd_build(&s, &c);
+	assert_int_equal(c.buttons, SIM_BT_LOOK_UP);
+	cmd_build(&s, &c);
+	assert_int_equal(c.buttons, SIM_BT_LOOK_UP);
+	cmd_action(&s, ACT_LOOK_UP, 0);
+	cmd_action(&s, ACT_LOOK_DOWN, 1);
+	cmd_build(&s, &c);
+	assert_int_equal(c.buttons, SIM_BT_LOOK_DOWN);
+	cmd_action(&s, ACT_LOOK_DOWN, 0);
+	cmd_build(&s, &c);
+	assert_int_equal(c.buttons, 0);
 }
 
 static void each_coin_edge_counts_once(void **state)

@@ -12,10 +12,11 @@
 #include "engine/map/lvl_builtin.h"
 #include "engine/map/map.h"
 #include "g_fixture.h"
+#include "map_fixture.h"
 
 #define U(v) fx_from_int(v)
 
-static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 
 static const struct sim_cmd idle = { 0 };
 static const struct sim_cmd fire = { .buttons = SIM_BT_FIRE };
@@ -39,7 +40,7 @@ static void sight_crosses_an_open_room_but_not_a_pillar(void **state)
 {
 	static const struct gf_box pillar = { 500, 200, 600, 300 };
 	struct map *m = arena(NULL, 0, &pillar, 1);
-	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 	struct sim sim, *sm = &sim;
 	fx_t z = U(40);
 	(void)state;
@@ -59,7 +60,7 @@ static void sight_crosses_an_open_room_but_not_a_pillar(void **state)
 static void sight_through_a_window_depends_on_the_heights(void **state)
 {
 	struct map *m;
-	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 	struct sim sim, *sm = &sim;
 	(void)state;
 	assert_int_equal(lvl_builtin(0, &m), 0);
@@ -341,6 +342,127 @@ static void ammo_is_capped(void **state)
 	map_free(m);
 }
 
+/*
+ * Vertical aim: a hall (floor 0, ceiling 256) x 0..768 with a ledge (floor
+ * 96) x 768..1024 across its east end; the player at (128, 256) facing
+ * east (eye 41), a grunt on the ledge at (900, 256) (feet 96, top 152). The
+ * shot's line enters the grunt's circle 752 units out and crosses the
+ * ledge's riser 640 out: it hits for slopes from 55/640 (over the riser's
+ * top) to 111/752 (under the grunt's top), about 0.086 to 0.148.
+ */
+static struct map *ledge(void)
+{
+	static const int v[][2] = { { 0, 0 }, { 0, 512 }, { 768, 512 }, { 768, 0 },
+				    { 1024, 512 }, { 1024, 0 } };
+	static const struct fix_sector sc[] = { { 0, 256, 160 }, { 96, 256, 160 } };
+	static const struct fix_line l[] = {
+		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
+		{ 2, 4, 1, -1 }, { 4, 5, 1, -1 }, { 5, 3, 1, -1 },
+	};
+	static const struct fix_map f = { v, 6, sc, 2, l, 7, 128, 256, 0 };
+	static const struct fix_thing t[] = { { 900, 256, ANG180, 3004, 0 } };
+	struct map *m = fix_alloc_things(&f, t, 1);
+
+	assert_non_null(m);
+	assert_int_equal(map_finish(m, NULL, 0), 0);
+	return m;
+}
+
+/* The sim on the ledge map with auto-aim on (free 0) or off, the pitch
+ * raised by `up` ticks of LOOK_UP, then one shot. */
+static void ledge_shot(struct sim *s, const struct map *m, int free, int up)
+{
+	struct sim_settings set = normal;
+	struct sim_cmd look = { .buttons = SIM_BT_LOOK_UP };
+
+	set.free_aim = (uint8_t)free;
+	sim_init(s, m, &set);
+	assert_int_equal(s->g.num_enemies, 1);
+	assert_int_equal(s->g.en[0].z, U(96));
+	run(s, &look, up);
+	assert_int_equal(s->pl.pitch, up * G_PITCH_STEP);
+	sim_tick(s, &fire);
+}
+
+static void the_pitch_moves_by_steps_within_its_range_and_both_centre(void **state)
+{
+	struct map *m = arena(NULL, 0, NULL, 0);
+	struct sim s;
+	const struct sim_cmd up = { .buttons = SIM_BT_LOOK_UP };
+	const struct sim_cmd down = { .buttons = SIM_BT_LOOK_DOWN };
+	const struct sim_cmd both = { .buttons = SIM_BT_LOOK_UP | SIM_BT_LOOK_DOWN };
+	(void)state;
+	sim_init(&s, m, &normal);
+	assert_int_equal(s.pl.pitch, 0);
+	run(&s, &up, 3);
+	assert_int_equal(s.pl.pitch, 3 * G_PITCH_STEP);
+	run(&s, &idle, 10);                    /* released: it stays */
+	assert_int_equal(s.pl.pitch, 3 * G_PITCH_STEP);
+	run(&s, &up, 100);
+	assert_int_equal(s.pl.pitch, G_PITCH_MAX);
+	run(&s, &down, 200);
+	assert_int_equal(s.pl.pitch, -G_PITCH_MAX);
+	sim_tick(&s, &both);
+	assert_int_equal(s.pl.pitch, 0);
+	map_free(m);
+}
+
+static void a_raised_pitch_hits_the_ledge_enemy_and_level_misses_it(void **state)
+{
+	struct map *m = ledge();
+	struct sim s;
+	(void)state;
+	/* auto-aim off, level: the shot meets the riser (its lower part) */
+	ledge_shot(&s, m, 1, 0);
+	assert_int_equal(s.g.shot, G_SHOT_WALL);
+	assert_int_equal(s.g.shot_x, U(768));
+	assert_int_equal(s.g.en[0].health, 30);
+	/* five steps up (slope 0.104): into the grunt's body */
+	ledge_shot(&s, m, 1, 5);
+	assert_int_equal(s.g.shot, G_SHOT_ENEMY);
+	assert_int_equal(s.g.en[0].health, 30 - G_SHOT_DAMAGE);
+	assert_true(s.g.shot_z > U(96) && s.g.shot_z < U(152));
+	/* eight (0.167): over its head, on to the far wall */
+	ledge_shot(&s, m, 1, 8);
+	assert_int_equal(s.g.shot, G_SHOT_WALL);
+	assert_int_equal(s.g.shot_x, U(1024));
+	assert_int_equal(s.g.en[0].health, 30);
+	map_free(m);
+}
+
+static void the_ledges_lower_wall_stops_a_shot_that_would_reach_the_body(void **state)
+{
+	struct map *m = ledge();
+	struct sim s;
+	(void)state;
+	/* four steps (0.083): 94.3 high at the riser (top 96), though 103.7
+	 * where it would enter the grunt, inside its body */
+	ledge_shot(&s, m, 1, 4);
+	assert_int_equal(s.g.shot, G_SHOT_WALL);
+	assert_int_equal(s.g.shot_x, U(768));
+	assert_true(s.g.shot_z < U(96));
+	assert_int_equal(s.g.en[0].health, 30);
+	map_free(m);
+}
+
+static void auto_aim_hits_the_ledge_enemy_level(void **state)
+{
+	struct map *m = ledge();
+	struct sim s;
+	(void)state;
+	ledge_shot(&s, m, 0, 0);
+	assert_int_equal(s.g.shot, G_SHOT_ENEMY);
+	assert_int_equal(s.g.en[0].health, 30 - G_SHOT_DAMAGE);
+	/* at the middle of its body (124) where the line enters (752 out) */
+	assert_true(s.g.shot_z >= U(123) && s.g.shot_z <= U(125));
+	/* an enemy beyond auto-aim's reach (slope 5/8) is not aimed at: the
+	 * grunt lifted to 600 (middle 587 high at 752: slope 0.73) */
+	sim_init(&s, m, &normal);
+	s.g.en[0].z = U(600);
+	assert_int_equal(g_aim(&s, s.pl.angle), 0);
+	map_free(m);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -358,6 +480,10 @@ int main(void)
 		cmocka_unit_test(a_chasing_enemy_slides_round_a_pillar_and_stays_out_of_walls),
 		cmocka_unit_test(pickups_heal_and_give_ammo_only_when_useful),
 		cmocka_unit_test(ammo_is_capped),
+		cmocka_unit_test(the_pitch_moves_by_steps_within_its_range_and_both_centre),
+		cmocka_unit_test(a_raised_pitch_hits_the_ledge_enemy_and_level_misses_it),
+		cmocka_unit_test(the_ledges_lower_wall_stops_a_shot_that_would_reach_the_body),
+		cmocka_unit_test(auto_aim_hits_the_ledge_enemy_level),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

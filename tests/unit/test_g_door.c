@@ -22,7 +22,7 @@
 #include "engine/sound/snd.h"
 #include "map_fixture.h"
 
-static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1, 0, 0 };
+static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1, 0, 0, 0 };
 
 /* Room A (x 0..256, sector 0) | door (256..272, sector 1, floor and
  * ceiling 0) | room B (272..528, sector 2); ceilings 128 but B's 100, so

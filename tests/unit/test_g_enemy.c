@@ -14,7 +14,7 @@
 #include "engine/map/map.h"
 #include "g_fixture.h"
 
-static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 static const struct sim_cmd fire = { .buttons = SIM_BT_FIRE };
 
 /* In one room, behind a pillar (out of sight) and 1800 units away: the

@@ -273,7 +273,7 @@ static void lose_every_life(struct flow *f)
 
 static void play_flow(struct flow *f)
 {
-	static const struct sim_settings set = { 1, 0, 0, 0, 0, 100, 1, 0, 0 };  /* what the app passes today */
+	static const struct sim_settings set = { 1, 0, 0, 0, 0, 100, 1, 0, 0, 0 };  /* what the app passes today */
 	const struct map *mp[3];
 
 	memset(f, 0, sizeof(*f));
@@ -464,7 +464,7 @@ static void the_committed_script_is_the_flow(void **state)
 	struct scr *scr;
 	char err[256];
 	const struct map *mp[3];
-	static const struct sim_settings set = { 1, 0, 0, 0, 0, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 0, 0, 0, 100, 1, 0, 0, 0 };
 	struct cmd_state cs;
 	struct sim s;
 	size_t len, k = 0;

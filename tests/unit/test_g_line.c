@@ -23,7 +23,7 @@
 #include "input/io.h"
 #include "spec_fixture.h"
 
-static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1, 0, 0 };
+static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1, 0, 0, 0 };
 
 /* Room A (x 0..256) | sector 1 (256..272, floor 0, ceiling 128, tag 1) |
  * room B; line 1 (y = 128, A's north wall) has `wall`, line 2 (x = 256)

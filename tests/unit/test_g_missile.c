@@ -17,7 +17,7 @@
 
 #define U(v) fx_from_int(v)
 
-static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 static const struct sim_cmd idle = { 0 };
 
 static struct map *arena(const struct gf_thing *th, int n)

@@ -29,7 +29,7 @@ static void run(struct sim *s, const struct sim_cmd *c, int n)
  * idle rule `idle`, in gf_arena with the things th. */
 static struct map *start(struct sim *s, int minutes, int idle, const struct gf_thing *th, int n)
 {
-	struct sim_settings set = { 1, 0, 1, 0, 3, 100, 1, (uint8_t)minutes, (uint8_t)idle };
+	struct sim_settings set = { 1, 0, 1, 0, 3, 100, 1, (uint8_t)minutes, (uint8_t)idle, 0 };
 	struct map *m = gf_arena(th, n, NULL, 0);
 
 	assert_non_null(m);

@@ -22,7 +22,7 @@
 
 #define U(v) fx_from_int(v)
 
-static const struct sim_settings play = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+static const struct sim_settings play = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 static const struct sim_cmd idle = { 0 };
 
 static struct map *room;
@@ -210,7 +210,7 @@ static void sounds_end_after_their_length(void **state)
 
 static void attract_sound_setting(void **state)
 {
-	struct sim_settings set = { 1, 0, 0, 1, 3, 100, 0, 0, 0 };
+	struct sim_settings set = { 1, 0, 0, 1, 3, 100, 0, 0, 0, 0 };
 	const uint32_t cycle = SIM_TITLE_TICKS + SIM_SCORES_TICKS + SIM_DEMO_TICKS;
 	struct sim s;
 	(void)state;
@@ -244,7 +244,7 @@ static void attract_sound_setting(void **state)
 
 static void game_events_start_their_sounds(void **state)
 {
-	struct sim_settings set = { 1, 0, 0, 1, 3, 100, 0, 0, 0 };
+	struct sim_settings set = { 1, 0, 0, 1, 3, 100, 0, 0, 0, 0 };
 	struct sim s;
 	(void)state;
 	sim_init(&s, room, &set);
@@ -289,7 +289,7 @@ static void game_events_start_their_sounds(void **state)
 
 static void the_demo_is_heard_only_with_attract_sound(void **state)
 {
-	struct sim_settings set = { 1, 0, 0, 1, 3, 100, 0, 0, 0 };
+	struct sim_settings set = { 1, 0, 0, 1, 3, 100, 0, 0, 0, 0 };
 	struct mix_voice v[MIX_VOICES_MAX];
 	struct snd_set *sounds;
 	struct sim s, demo;

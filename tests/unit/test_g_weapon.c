@@ -18,7 +18,7 @@
 #define U(v) fx_from_int(v)
 
 /* start_in_play, NORMAL, 3 lives */
-static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 
 static const struct sim_cmd idle = { 0 };
 static const struct sim_cmd fire = { .buttons = SIM_BT_FIRE };

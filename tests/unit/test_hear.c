@@ -24,7 +24,7 @@ static struct hear h;
 static void a_coin_is_heard_in_its_tick(void **state)
 {
 	static const struct gf_thing t[] = { { 64, 64, 0, 1, 0 } };
-	struct sim_settings set = { 1, 0, 0, 1, 3, 100, 0, 0, 0 };
+	struct sim_settings set = { 1, 0, 0, 1, 3, 100, 0, 0, 0, 0 };
 	struct map *m = gf_room(256, 256, t, 1, NULL, 0);
 	struct snd_set *sounds;
 	struct sim s;

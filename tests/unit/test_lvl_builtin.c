@@ -58,7 +58,7 @@ static int overlaps_wall(const struct sim *sm, fx_t x, fx_t y, fx_t z, fx_t r)
 
 static void every_stage_is_playable(void **state)
 {
-	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 	(void)state;
 	assert_true(lvl_builtin_count() >= 3);
 	for (int i = 0; i < lvl_builtin_count(); i++) {
@@ -96,7 +96,7 @@ static void stages_grow_harder(void **state)
 	int64_t prev_hp = 0, prev_dps = 0;
 	(void)state;
 	for (int i = 0; i < lvl_builtin_count(); i++) {
-		static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0 }, hard = { 1, 0, 1, 2, 3, 100, 1, 0, 0 };
+		static const struct sim_settings normal = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 }, hard = { 1, 0, 1, 2, 3, 100, 1, 0, 0, 0 };
 		struct map *m;
 		struct sim s, h;
 		int64_t hp = 0, dps = 0;
@@ -310,7 +310,7 @@ static void reachable_sectors(const struct map *m, uint32_t start, uint8_t *reac
  * pickup lies in a sector the player can reach. */
 static void every_stage_can_be_finished(void **state)
 {
-	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 	(void)state;
 	assert_int_equal(lvl_builtin_count(), 8);
 	for (int i = 0; i < lvl_builtin_count(); i++) {

@@ -54,7 +54,7 @@ static void in_menu(struct sim *s, const struct sim_settings *set)
 	assert_int_equal(s->menu.cursor, MENU_I_INPUT);
 }
 
-static const struct sim_settings base = { 1, 0, 0, 1, 3, 100, 1, 0, 0 };
+static const struct sim_settings base = { 1, 0, 0, 1, 3, 100, 1, 0, 0, 0 };
 
 static void the_cursor_moves_and_wraps_and_pages_open_and_close(void **state)
 {
@@ -196,6 +196,14 @@ static void settings_change_with_left_and_right(void **state)
 	assert_int_equal(s.set.idle_out, G_IDLE_LIFE);
 	assert_int_equal(s.set_gen, 15 + 3 + G_STAGE_TIME_DEFAULT + 3);
 	press(&s, DOWN);
+	press(&s, RIGHT);                      /* auto-aim: on (the default) to off and back */
+	assert_int_equal(s.set.free_aim, 1);
+	press(&s, LEFT);
+	assert_int_equal(s.set.free_aim, 0);
+	press(&s, RIGHT);
+	assert_int_equal(s.set.free_aim, 1);
+	assert_int_equal(s.set_gen, 21 + G_STAGE_TIME_DEFAULT + 3);
+	press(&s, DOWN);
 	press(&s, RIGHT);
 	assert_int_equal(s.menu.res, 1);
 	menu_res_size(s.menu.res, &w, &h);
@@ -204,7 +212,7 @@ static void settings_change_with_left_and_right(void **state)
 	press(&s, LEFT);
 	press(&s, LEFT);                       /* 0 (as configured) wraps to the last */
 	assert_int_equal(s.menu.res, MENU_RES_COUNT);
-	assert_int_equal(s.set_gen, 26);       /* the size is not a game setting */
+	assert_int_equal(s.set_gen, 29);       /* the size is not a game setting */
 	press(&s, DOWN);
 	press(&s, DOWN);
 	press(&s, FIRE);                       /* BACK */
@@ -219,7 +227,7 @@ static void settings_change_with_left_and_right(void **state)
 
 static void factory_defaults_restore_every_setting(void **state)
 {
-	static const struct sim_settings odd = { 7, 1, 0, 3, 9, 30, 0, 17, G_IDLE_OFF };
+	static const struct sim_settings odd = { 7, 1, 0, 3, 9, 30, 0, 17, G_IDLE_OFF, 1 };
 	struct sim s;
 	(void)state;
 	in_menu(&s, &odd);
@@ -243,6 +251,7 @@ static void factory_defaults_restore_every_setting(void **state)
 	assert_int_equal(s.set.attract_sound, 1);
 	assert_int_equal(s.set.stage_time, G_STAGE_TIME_DEFAULT);
 	assert_int_equal(s.set.idle_out, G_IDLE_LIFE);
+	assert_int_equal(s.set.free_aim, 0);
 	assert_int_equal(s.menu.res, 0);
 	assert_int_equal(s.set_gen, 1);
 	assert_int_equal(s.menu.page, MENU_SETTINGS);

@@ -19,7 +19,7 @@
 #include "g_fixture.h"
 #include "map_fixture.h"
 
-static const struct sim_settings play = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+static const struct sim_settings play = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 
 static void sprites_follow_the_state(void **state)
 {
@@ -192,7 +192,7 @@ static void heights_at_the_bound_play_and_draw_without_overflow(void **state)
 			struct r_view rv;
 
 			sim_tick(&s, &c);
-			r_game_view(&s, &rv);
+			r_game_view(&s, f.w, &rv);
 			r_render(r, m, ts, &rv, NULL, 0, &f);
 		}
 		assert_true(s.pl.viewz == s.pl.z + SIM_VIEW_HEIGHT || s.pl.health <= 0);

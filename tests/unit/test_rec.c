@@ -572,6 +572,7 @@ static void test_v3_header_every_byte_is_checked(void **state)
 	h.set.attract_sound = 1;
 	h.set.stage_time = 7;
 	h.set.idle_out = G_IDLE_END;
+	h.set.free_aim = 1;
 	h.count = 7;
 	h.render_w = 320;
 	h.render_h = 240;
@@ -590,6 +591,8 @@ static void test_v3_header_every_byte_is_checked(void **state)
 	assert_int_equal(b[38], G_IDLE_END);
 	assert_int_equal(back.set.stage_time, 7);
 	assert_int_equal(back.set.idle_out, G_IDLE_END);
+	assert_int_equal(b[39], 1);            /* auto-aim off */
+	assert_int_equal(back.set.free_aim, 1);
 	/* out of range, with a good sum: refused by name */
 	h.set.stage_time = G_STAGE_TIME_MAX + 1;
 	assert_int_equal(rec_header_decode(f, rec_header_encode(f, &h), &back, err, sizeof(err)),
@@ -601,6 +604,11 @@ static void test_v3_header_every_byte_is_checked(void **state)
 			 -EINVAL);
 	assert_string_equal(err, "idle_out 3 out of range 0..2");
 	h.set.idle_out = G_IDLE_END;
+	h.set.free_aim = 2;
+	assert_int_equal(rec_header_decode(f, rec_header_encode(f, &h), &back, err, sizeof(err)),
+			 -EINVAL);
+	assert_string_equal(err, "free_aim 2 out of range 0..1");
+	h.set.free_aim = 1;
 	for (size_t i = 0; i < n; i++) {
 		memcpy(f, b, n);
 		f[i] ^= 0x01;

@@ -34,7 +34,7 @@ static struct sim *sim;
 static int setup(void **state)
 {
 	struct ct_spec spec = { .level = 1 };
-	static const struct sim_settings set = { 1, 0, 0, 1, 3, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 0, 1, 3, 100, 1, 0, 0, 0 };
 	char err[256];
 
 	(void)state;

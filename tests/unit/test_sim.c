@@ -19,8 +19,8 @@
 #define R (SIM_PLAYER_RADIUS)
 #define TOL (FX_ONE / 256)             /* how close to a wall "stops at" means */
 
-static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1, 0, 0 };
-static const struct sim_settings attract2 = { 2, 0, 0, 0, 0, 100, 1, 0, 0 };
+static const struct sim_settings play = { 1, 0, 1, 0, 0, 100, 1, 0, 0, 0 };
+static const struct sim_settings attract2 = { 2, 0, 0, 0, 0, 100, 1, 0, 0, 0 };
 
 /* A room 2048 x 256 with the start at (sx, sy) facing a. */
 static struct map *room(int sx, int sy, ang_t a)
@@ -407,7 +407,7 @@ static void start_needs_a_credit_and_a_fresh_press(void **state)
 
 static void freeplay_starts_without_credits(void **state)
 {
-	static const struct sim_settings fp = { 1, 1, 0, 0, 0, 100, 1, 0, 0 };
+	static const struct sim_settings fp = { 1, 1, 0, 0, 0, 100, 1, 0, 0, 0 };
 	struct map *m = room(64, 64, 0);
 	struct sim s;
 	struct sim_cmd c = { .coins = 1 };
@@ -426,7 +426,7 @@ static void freeplay_starts_without_credits(void **state)
 
 static void attract_ignores_movement_and_start_resets_the_player(void **state)
 {
-	static const struct sim_settings fp = { 1, 1, 0, 0, 0, 100, 1, 0, 0 };
+	static const struct sim_settings fp = { 1, 1, 0, 0, 0, 100, 1, 0, 0, 0 };
 	struct map *m = room(300, 100, ANG90);
 	struct sim s;
 	struct sim_cmd c = { .forward = 127, .side = 50, .turn = 1000 };
@@ -573,12 +573,22 @@ static void view_follows_the_player(void **state)
 	(void)state;
 	sim_init(&s, m, &play);
 	memset(&v, 0x55, sizeof v);
-	r_game_view(&s, &v);
+	r_game_view(&s, 320, &v);
 	assert_int_equal(v.x, s.pl.x);
 	assert_int_equal(v.y, s.pl.y);
 	assert_int_equal(v.z, SIM_VIEW_HEIGHT);
 	assert_int_equal(v.angle, s.pl.angle);
 	assert_int_equal(v.shear, 0);
+	/* looking up by a slope of 1/2: the horizon 80 rows down at 320
+	 * wide (focal 160), 320 at 1280; looking down moves it up */
+	s.pl.pitch = FX_HALF;
+	r_game_view(&s, 320, &v);
+	assert_int_equal(v.shear, 80);
+	r_game_view(&s, 1280, &v);
+	assert_int_equal(v.shear, 320);
+	s.pl.pitch = -FX_HALF;
+	r_game_view(&s, 320, &v);
+	assert_int_equal(v.shear, -80);
 	map_free(m);
 }
 
@@ -623,7 +633,7 @@ static void kill_all(struct sim *s)
 
 static void clearing_a_stage_scores_a_bonus_and_loads_the_next(void **state)
 {
-	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 	const struct map *maps[2];
 	struct map *a, *b;
 	struct sim s;
@@ -683,7 +693,7 @@ static void a_map_without_enemies_is_never_cleared(void **state)
 
 static void dying_costs_a_life_and_respawns_with_enemies_reset(void **state)
 {
-	static const struct sim_settings set = { 1, 0, 1, 1, 2, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 2, 100, 1, 0, 0, 0 };
 	struct map *a, *b;
 	struct sim s;
 	(void)state;
@@ -722,7 +732,7 @@ static void die(struct sim *s)
 
 static void the_last_life_leads_to_the_continue_countdown(void **state)
 {
-	static const struct sim_settings set = { 1, 0, 0, 1, 1, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 0, 1, 1, 100, 1, 0, 0, 0 };
 	struct map *a, *b;
 	struct sim s;
 	(void)state;
@@ -760,7 +770,7 @@ static void the_last_life_leads_to_the_continue_countdown(void **state)
 
 static void a_low_score_goes_back_to_attract_after_the_countdown(void **state)
 {
-	static const struct sim_settings set = { 1, 0, 1, 1, 1, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 1, 100, 1, 0, 0, 0 };
 	struct map *a, *b;
 	struct sim s;
 	(void)state;
@@ -779,7 +789,7 @@ static void a_low_score_goes_back_to_attract_after_the_countdown(void **state)
 
 static void initials_are_chosen_letter_by_letter_and_enter_the_table(void **state)
 {
-	static const struct sim_settings set = { 1, 0, 1, 1, 1, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 1, 100, 1, 0, 0, 0 };
 	static const struct sim_cmd fwd = { .forward = 127 }, left = { .turn = 384 };
 	struct map *a, *b;
 	struct sim s;
@@ -826,7 +836,7 @@ static void initials_are_chosen_letter_by_letter_and_enter_the_table(void **stat
 
 static void initials_time_out_with_the_letters_shown(void **state)
 {
-	static const struct sim_settings set = { 1, 0, 1, 1, 1, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 1, 100, 1, 0, 0, 0 };
 	struct map *a, *b;
 	struct sim s;
 	(void)state;
@@ -903,7 +913,7 @@ static void bookkeeping_counts_coins_plays_and_time(void **state)
 
 static void the_table_given_at_init_decides_initials(void **state)
 {
-	static const struct sim_settings set = { 1, 0, 1, 1, 1, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 1, 1, 100, 1, 0, 0, 0 };
 	struct g_scores high;
 	struct map *a, *b;
 	const struct map *mp;
@@ -938,7 +948,7 @@ static void difficulty_picks_things_by_skill_bits(void **state)
 	(void)state;
 	assert_non_null(m);
 	for (int d = 0; d < 4; d++) {
-		struct sim_settings set = { 1, 0, 1, (uint8_t)d, 1, 100, 1, 0, 0 };
+		struct sim_settings set = { 1, 0, 1, (uint8_t)d, 1, 100, 1, 0, 0, 0 };
 		struct sim s;
 		sim_init(&s, m, &set);
 		assert_int_equal(s.g.num_enemies, want[d]);
@@ -952,7 +962,7 @@ static void difficulty_scales_speed(void **state)
 	static const int pct[4] = { 80, 100, 115, 130 };
 	(void)state;
 	for (int d = 0; d < 4; d++) {
-		struct sim_settings set = { 1, 0, 1, (uint8_t)d, 1, 100, 1, 0, 0 };
+		struct sim_settings set = { 1, 0, 1, (uint8_t)d, 1, 100, 1, 0, 0, 0 };
 		struct sim s;
 		sim_init(&s, m, &set);
 		assert_int_equal(g_enemy_speed(&s, G_BRUTE), 7 * FX_HALF * pct[d] / 100);

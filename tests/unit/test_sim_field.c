@@ -41,7 +41,7 @@ static void values_read_the_state(void **state)
 {
 	static const struct gf_thing t[] = { { 100, 128, ANG90, 1, 0 }, { 400, 128, 0, 3004, 0 },
 					      { 500, 128, 0, 3001, 0 } };
-	static const struct sim_settings set = { 1, 0, 1, 2, 3, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 1, 2, 3, 100, 1, 0, 0, 0 };
 	struct map *m = gf_room(1024, 256, t, 3, NULL, 0);
 	struct sim s;
 	(void)state;

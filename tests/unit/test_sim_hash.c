@@ -19,9 +19,9 @@
 #include "g_fixture.h"
 
 /* Brutal, one life, no free play: games end soon. */
-static const struct sim_settings set = { 1, 0, 0, 3, 1, 100, 1, 0, 0 };
+static const struct sim_settings set = { 1, 0, 0, 3, 1, 100, 1, 0, 0, 0 };
 /* Other settings for the sim restored into: the snapshot brings its own. */
-static const struct sim_settings other = { 4, 1, 0, 0, 9, 100, 1, 0, 0 };
+static const struct sim_settings other = { 4, 1, 0, 0, 9, 100, 1, 0, 0, 0 };
 
 struct stages {
 	struct map *m[G_MAX_STAGES];
@@ -613,7 +613,7 @@ static void every_listed_limit_is_enforced(void **state)
 /* Snapshot encoding: little-endian fields at fixed offsets. */
 static void the_snapshot_is_little_endian_fields_in_order(void **state)
 {
-	static const uint8_t settings[] = { 1, 0, 0, 3, 1, 100, 1, 0, 0 },
+	static const uint8_t settings[] = { 1, 0, 0, 3, 1, 100, 1, 0, 0, 0 },
 			     tick[] = { 0x44, 0x33, 0x22, 0x11 },
 			     mode[] = { SIM_GAMEOVER, 0, 0, 0 }, credits[] = { 0x0d, 0x0c, 0x0b, 0x0a };
 	struct stages st;
@@ -632,11 +632,11 @@ static void the_snapshot_is_little_endian_fields_in_order(void **state)
 		assert_int_equal(b[i], (uint8_t)(h >> (8 * i)));
 	assert_int_equal(b[8], 0);                      /* attract shows stage 0 */
 	assert_int_equal(b[9], st.n);
-	assert_memory_equal(b + 10, settings, 9);
-	assert_memory_equal(b + 19, tick, 4);
-	assert_memory_equal(b + 23, mode, 4);
-	/* after page 27, attract_cycle 28..31 and mode_t 32..35 */
-	assert_memory_equal(b + 36, credits, 4);
+	assert_memory_equal(b + 10, settings, 10);
+	assert_memory_equal(b + 20, tick, 4);
+	assert_memory_equal(b + 24, mode, 4);
+	/* after page 28, attract_cycle 29..32 and mode_t 33..36 */
+	assert_memory_equal(b + 37, credits, 4);
 	free(b);
 	stages_free(&st);
 }

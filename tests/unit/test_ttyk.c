@@ -446,7 +446,7 @@ static void test_long_paste_fills_queue_and_resumes(void **state)
 static int menu_moves(const int *arrive_ms, int ticks)
 {
 	static const struct gf_thing th[] = { { 100, 100, 0, 1, 0 } };
-	static const struct sim_settings set = { 1, 0, 0, 1, 3, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 0, 1, 3, 100, 1, 0, 0, 0 };
 	struct map *m = gf_room(512, 512, th, 1, NULL, 0);
 	struct sim *s = calloc(1, sizeof(*s));
 	struct ttyk k;

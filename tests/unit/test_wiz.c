@@ -98,6 +98,8 @@ static void defaults_by_hand(int k[ACT_COUNT][BIND_MAX])
 	k[ACT_COIN][0] = KEY_5;
 	k[ACT_SERVICE][0] = KEY_9, k[ACT_SERVICE][1] = KEY_F2;
 	k[ACT_WEAPON][0] = KEY_Z, k[ACT_WEAPON][1] = KEY_TAB;
+	k[ACT_LOOK_UP][0] = KEY_PAGEUP;
+	k[ACT_LOOK_DOWN][0] = KEY_PAGEDOWN;
 }
 
 /* Sets action a of k to exactly the one code c (or none for -1). */
