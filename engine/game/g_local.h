@@ -317,4 +317,28 @@ void g_pace_bonus(struct sim *s);
 /* The player dies now (phase PLAY only), for the reason why (enum g_why). */
 void g_player_dies(struct sim *s, int why);
 
+/* ---- g_turn: two players alternating ----------------------------------- */
+
+/* Loads stage i (sim.c): its map, enemies and pickups, the player at its
+ * start, the clock full, phase PLAY. */
+void sim_start_stage(struct sim *s, int i);
+
+/* A new game of `players` (1 or 2), after g and the player were set for
+ * player 1 at stage 0: player 1 is up; player 2 waits with the same
+ * start (full lives, stage 1, the pistol and G_AMMO_START). With two, the
+ * "PLAYER 1" page comes first. */
+void g_turn_begin(struct sim *s, int players);
+
+/* The player up lost a life and plays on (lives left, or a continue
+ * taken), with their health, ammo and weapons set for the next life: when
+ * the other player is still in the game, the two change places and the
+ * other's turn begins with the "PLAYER n" page and their stage from its
+ * start. Returns 1 if the turn passed, 0 if the player up goes on. */
+int g_turn_pass(struct sim *s);
+
+/* The game of the player up is over (no continue, initials done): when
+ * the other player is still in the game, their turn begins as in
+ * g_turn_pass and 1 is returned; else 0 (the game is over). */
+int g_turn_over(struct sim *s);
+
 #endif

@@ -122,8 +122,9 @@ static void sim_spawn(struct sim *s)
 	sim_settle(s);
 }
 
-/* Loads stage i: its map, enemies and pickups, the player at its start. */
-static void sim_start_stage(struct sim *s, int i)
+/* Loads stage i: its map, enemies and pickups, the player at its start
+ * (g_local.h: g_turn.c starts a player's turn with it). */
+void sim_start_stage(struct sim *s, int i)
 {
 	s->g.stage = (uint8_t)i;
 	s->map = s->stages[i];
@@ -147,7 +148,7 @@ static void sim_full_health(struct sim *s)
 		s->pl.ammo = G_AMMO_START;
 }
 
-static void sim_new_game(struct sim *s)
+static void sim_new_game(struct sim *s, int players)
 {
 	memset(&s->g, 0, sizeof s->g);
 	s->g.lives = (uint8_t)g_lives_setting(s);
@@ -158,6 +159,7 @@ static void sim_new_game(struct sim *s)
 	s->mode = SIM_PLAY;
 	s->mode_t = 0;
 	sim_start_stage(s, 0);
+	g_turn_begin(s, players);
 }
 
 /* Back to attract at `page`: the world is stage 0 again, seen by the idle
@@ -196,7 +198,7 @@ void sim_init_stages(struct sim *s, const struct map *const *maps, int n,
 	if (books)
 		s->books = *books;
 	if (set->start_in_play)
-		sim_new_game(s);
+		sim_new_game(s, 1);
 	else
 		sim_attract(s, SIM_PAGE_TITLE);
 }
@@ -290,14 +292,15 @@ static void sim_coins(struct sim *s, uint8_t coins)
 		s->snd.credit_t = G_CREDIT_DELAY;
 }
 
-/* Spends a credit for a start or continue; 0 if there is none. */
-static int sim_pay(struct sim *s)
+/* Spends n credits (a credit a player) for a start or continue; 0 if there
+ * are fewer. */
+static int sim_pay(struct sim *s, uint32_t n)
 {
 	if (s->set.freeplay)
 		return 1;
-	if (s->credits == 0)
+	if (s->credits < n)
 		return 0;
-	s->credits--;
+	s->credits -= n;
 	return 1;
 }
 
@@ -311,6 +314,8 @@ static void sim_life_lost(struct sim *s)
 	if (g->lives > 0) {
 		sim_full_health(s);
 		g_weapon_reset(s);
+		if (g_turn_pass(s))
+			return;                /* the other player's turn */
 		g_enemies_reset(s);
 		g->phase = G_PH_PLAY;
 		g->phase_t = 0;
@@ -406,6 +411,16 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd, uint8_t pres
 		if (g->phase_t >= G_CLEAR_TICKS)
 			sim_next_stage(s, g->stage + 1 < s->num_stages ? g->stage + 1 : 0);
 		break;
+	case G_PH_TURN:
+		/* the "PLAYER n" page: the stage waits, its clock full */
+		g->phase_t++;
+		if (g->phase_t >= G_TURN_TICKS) {
+			g->phase = G_PH_PLAY;
+			g->phase_t = 0;
+			g->stage_t = 0;        /* the STAGE banner after the page */
+			g_pace_start(s);
+		}
+		break;
 	case G_PH_INTER:
 	default:
 		/* the intermission: FIRE or USE goes on after a second */
@@ -421,7 +436,8 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 {
 	int rank;
 
-	if ((pressed & SIM_BT_START) && sim_pay(s)) {
+	/* either start button continues the game of the player up */
+	if ((pressed & (SIM_BT_START | SIM_BT_START2)) && sim_pay(s, 1)) {
 		struct g_game *g = &s->g;
 		if (g->continues < UINT8_MAX)
 			g->continues++;
@@ -431,9 +447,12 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 		g_enemies_reset(s);
 		g->phase = G_PH_PLAY;
 		g->phase_t = 0;
-		sim_spawn(s);
-		s->mode = SIM_PLAY;
-		s->mode_t = 0;
+		/* a life was lost: the other player's turn, if they are in */
+		if (!g_turn_pass(s)) {
+			sim_spawn(s);
+			s->mode = SIM_PLAY;
+			s->mode_t = 0;
+		}
 		g_sound_play(s, SFX_START, G_SRC_ANNOUNCE);
 		return;
 	}
@@ -448,7 +467,8 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 		return;
 	rank = g_scores_rank(&s->scores, s->g.score);
 	if (rank < 0) {
-		sim_attract(s, SIM_PAGE_TITLE);
+		if (!g_turn_over(s))
+			sim_attract(s, SIM_PAGE_TITLE);
 		return;
 	}
 	s->mode = SIM_INITIALS;
@@ -468,7 +488,8 @@ static void sim_initials_done(struct sim *s)
 	s->scores_gen++;
 	s->new_rank = s->ini_rank;
 	s->ini_rank = -1;
-	sim_attract(s, SIM_PAGE_SCORES);
+	if (!g_turn_over(s))
+		sim_attract(s, SIM_PAGE_SCORES);
 }
 
 static void sim_initials_tick(struct sim *s, uint8_t pressed, uint8_t nav)
@@ -499,11 +520,15 @@ static void sim_attract_tick(struct sim *s, uint8_t pressed)
 	static const uint32_t len[SIM_PAGE_COUNT] = { SIM_TITLE_TICKS, SIM_SCORES_TICKS,
 						      SIM_DEMO_TICKS };
 
-	if ((pressed & SIM_BT_START) && sim_pay(s)) {
-		s->plays++;
-		s->books.plays++;
+	/* 2P start: two players' credits; plays count a game a player */
+	int players = (pressed & SIM_BT_START2) && sim_pay(s, 2) ? 2
+		      : (pressed & SIM_BT_START) && sim_pay(s, 1) ? 1 : 0;
+
+	if (players) {
+		s->plays += (uint32_t)players;
+		s->books.plays += (uint32_t)players;
 		s->books_gen++;
-		sim_new_game(s);
+		sim_new_game(s, players);
 		g_sound_play(s, SFX_START, G_SRC_ANNOUNCE);
 		return;
 	}

@@ -16,7 +16,8 @@ enum {
 	F_X, F_Y, F_Z, F_ANGLE, F_SECTOR, F_CREDITS, F_COINS, F_TICK, F_MODE,
 	F_SCORE, F_LIVES, F_HEALTH, F_AMMO, F_STAGE, F_ENEMIES, F_KILLS, F_CONTINUES,
 	F_COUNTDOWN, F_PAGE, F_PHASE, F_PLAYS, F_RANK, F_HISCORE, F_MENU, F_DIFFICULTY,
-	F_CLOCK, F_WHY, F_WEAPON, F_COUNT
+	F_CLOCK, F_WHY, F_WEAPON, F_PLAYERS, F_UP, F_SCORE1, F_SCORE2, F_LIVES1, F_LIVES2,
+	F_COUNT
 };
 
 static const struct sim_field_def sim_fields[F_COUNT] = {
@@ -48,6 +49,12 @@ static const struct sim_field_def sim_fields[F_COUNT] = {
 	[F_CLOCK] = { "clock", SIM_FK_INT },
 	[F_WHY] = { "why", SIM_FK_INT },
 	[F_WEAPON] = { "weapon", SIM_FK_INT },
+	[F_PLAYERS] = { "players", SIM_FK_INT },
+	[F_UP] = { "up", SIM_FK_INT },
+	[F_SCORE1] = { "score1", SIM_FK_INT },
+	[F_SCORE2] = { "score2", SIM_FK_INT },
+	[F_LIVES1] = { "lives1", SIM_FK_INT },
+	[F_LIVES2] = { "lives2", SIM_FK_INT },
 };
 
 int sim_field_count(void)
@@ -109,6 +116,16 @@ int64_t sim_field_value(const struct sim *s, int i)
 	case F_WHY: return s->g.why;
 	/* the weapon held, numbered from 1 as on the HUD (enum g_weapon + 1) */
 	case F_WEAPON: return s->pl.weapon + 1;
+	/* players in the game (1, 2; 0 before the first) and whose turn it
+	 * is, numbered as on the HUD (1 or 2) */
+	case F_PLAYERS: return s->players;
+	case F_UP: return s->up + 1;
+	/* each player's score and lives: the player up's from the game, the
+	 * other's from the waiting seat */
+	case F_SCORE1: return s->up == 0 ? s->g.score : s->wait.score;
+	case F_SCORE2: return s->up == 1 ? s->g.score : s->wait.score;
+	case F_LIVES1: return s->up == 0 ? s->g.lives : s->wait.lives;
+	case F_LIVES2: return s->up == 1 ? s->g.lives : s->wait.lives;
 	default: return 0;
 	}
 }
