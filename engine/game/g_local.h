@@ -317,11 +317,21 @@ void g_pace_bonus(struct sim *s);
 /* The player dies now (phase PLAY only), for the reason why (enum g_why). */
 void g_player_dies(struct sim *s, int why);
 
-/* ---- g_turn: two players alternating ----------------------------------- */
+/* ---- sim_input: the command's coins, credits and directions (sim.c) ---- */
 
-/* Loads stage i (sim.c): its map, enemies and pickups, the player at its
- * start, the clock full, phase PLAY. */
-void sim_start_stage(struct sim *s, int i);
+/* cmd's coins: coins_total, books and coin_rem count them, each
+ * coins_per_credit of them make a credit (with its sounds). */
+void sim_coins(struct sim *s, uint8_t coins);
+
+/* Spends n credits (a credit a player) for a start or continue, nothing in
+ * free play; 0 if there are fewer. */
+int sim_pay(struct sim *s, uint32_t n);
+
+/* This tick's menu and initials directions (MENU_NAV_*): new ones, and
+ * held ones every SIM_NAV_REPEAT ticks after SIM_NAV_DELAY. */
+uint8_t sim_nav(struct sim *s, const struct sim_cmd *c);
+
+/* ---- g_turn: two players alternating ----------------------------------- */
 
 /* A new game of `players` (1 or 2), after g and the player were set for
  * player 1 at stage 0: player 1 is up; player 2 waits with the same
@@ -331,14 +341,16 @@ void g_turn_begin(struct sim *s, int players);
 
 /* The player up lost a life and plays on (lives left, or a continue
  * taken), with their health, ammo and weapons set for the next life: when
- * the other player is still in the game, the two change places and the
- * other's turn begins with the "PLAYER n" page and their stage from its
- * start. Returns 1 if the turn passed, 0 if the player up goes on. */
+ * the other player is still in the game, the two change places (g, pl and
+ * wait; g.stage is the new player's) and 1 is returned: the caller (sim.c)
+ * then starts that stage behind the "PLAYER n" page. 0: the player up goes
+ * on. */
 int g_turn_pass(struct sim *s);
 
 /* The game of the player up is over (no continue, initials done): when
- * the other player is still in the game, their turn begins as in
- * g_turn_pass and 1 is returned; else 0 (the game is over). */
+ * the other player is still in the game, the two change places as in
+ * g_turn_pass, the finished player marked out, and 1 is returned; else 0
+ * (the game is over). */
 int g_turn_over(struct sim *s);
 
 #endif

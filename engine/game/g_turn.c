@@ -27,8 +27,8 @@ static void g_turn_save(const struct sim *s, struct g_seat *t)
 	t->weapon = s->pl.weapon;
 }
 
-/* The other player comes up: the seats change places, their stage starts
- * behind the "PLAYER n" page. */
+/* The other player comes up: the seats change places (sim.c then loads
+ * their stage behind the "PLAYER n" page). */
 static void g_turn_swap(struct sim *s)
 {
 	struct g_seat in = s->wait;
@@ -44,10 +44,7 @@ static void g_turn_swap(struct sim *s)
 	s->pl.ammo = in.ammo;
 	s->pl.weapons = in.weapons;
 	s->pl.weapon = in.weapon;
-	s->mode = SIM_PLAY;
-	s->mode_t = 0;
-	sim_start_stage(s, in.stage);
-	s->g.phase = G_PH_TURN;
+	s->g.stage = in.stage;
 }
 
 void g_turn_begin(struct sim *s, int players)

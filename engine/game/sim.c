@@ -32,8 +32,6 @@
 #define SIM_RNG_SEED 0x2545f491u
 #define SIM_SPAWN_INSET (32 * FX_ONE)  /* no player start: this far off a wall */
 #define SIM_DEAD_VIEW (8 * FX_ONE)     /* eye height of a dead player */
-#define SIM_NAV_DELAY 20               /* ticks before a held direction repeats */
-#define SIM_NAV_REPEAT 6               /* ticks between repeats */
 #define SIM_FANFARE_AT 30              /* the stage fanfare: ticks into the CLEAR phase */
 
 /* Names as arrays, not pointers: the tables stay read-only data. */
@@ -122,9 +120,8 @@ static void sim_spawn(struct sim *s)
 	sim_settle(s);
 }
 
-/* Loads stage i: its map, enemies and pickups, the player at its start
- * (g_local.h: g_turn.c starts a player's turn with it). */
-void sim_start_stage(struct sim *s, int i)
+/* Loads stage i: its map, enemies and pickups, the player at its start. */
+static void sim_start_stage(struct sim *s, int i)
 {
 	s->g.stage = (uint8_t)i;
 	s->map = s->stages[i];
@@ -139,6 +136,34 @@ void sim_start_stage(struct sim *s, int i)
 	g_spawn_stage(s);
 	sim_spawn(s);
 	g_pace_start(s);
+}
+
+/* The other player's turn (g_turn.c changed the seats): their stage from
+ * its start, behind the "PLAYER n" page. */
+static void sim_turn_start(struct sim *s)
+{
+	s->mode = SIM_PLAY;
+	s->mode_t = 0;
+	sim_start_stage(s, s->g.stage);
+	s->g.phase = G_PH_TURN;
+}
+
+/* g_turn_pass and g_turn_over, and the new player's stage when the turn
+ * passed. */
+static int sim_turn_pass(struct sim *s)
+{
+	if (!g_turn_pass(s))
+		return 0;
+	sim_turn_start(s);
+	return 1;
+}
+
+static int sim_turn_over(struct sim *s)
+{
+	if (!g_turn_over(s))
+		return 0;
+	sim_turn_start(s);
+	return 1;
 }
 
 static void sim_full_health(struct sim *s)
@@ -271,39 +296,6 @@ static void sim_player_move(struct sim *s, const struct sim_cmd *cmd)
 	}
 }
 
-static void sim_coins(struct sim *s, uint8_t coins)
-{
-	uint32_t per = s->set.coins_per_credit ? s->set.coins_per_credit : 1;
-	uint32_t credits = s->credits;
-
-	if (!coins)
-		return;
-	s->coins_total += coins;
-	s->books.coins += coins;
-	s->books_gen++;
-	s->coin_rem += coins;
-	while (s->coin_rem >= per) {
-		s->coin_rem -= per;
-		s->credits++;
-	}
-	/* the coin's clink; a credit's chime right after it */
-	g_sound_play(s, SFX_COIN, G_SRC_COIN);
-	if (s->credits != credits)
-		s->snd.credit_t = G_CREDIT_DELAY;
-}
-
-/* Spends n credits (a credit a player) for a start or continue; 0 if there
- * are fewer. */
-static int sim_pay(struct sim *s, uint32_t n)
-{
-	if (s->set.freeplay)
-		return 1;
-	if (s->credits < n)
-		return 0;
-	s->credits -= n;
-	return 1;
-}
-
 /* The player lost a life (the death phase ended). */
 static void sim_life_lost(struct sim *s)
 {
@@ -314,7 +306,7 @@ static void sim_life_lost(struct sim *s)
 	if (g->lives > 0) {
 		sim_full_health(s);
 		g_weapon_reset(s);
-		if (g_turn_pass(s))
+		if (sim_turn_pass(s))
 			return;                /* the other player's turn */
 		g_enemies_reset(s);
 		g->phase = G_PH_PLAY;
@@ -448,7 +440,7 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 		g->phase = G_PH_PLAY;
 		g->phase_t = 0;
 		/* a life was lost: the other player's turn, if they are in */
-		if (!g_turn_pass(s)) {
+		if (!sim_turn_pass(s)) {
 			sim_spawn(s);
 			s->mode = SIM_PLAY;
 			s->mode_t = 0;
@@ -467,7 +459,7 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 		return;
 	rank = g_scores_rank(&s->scores, s->g.score);
 	if (rank < 0) {
-		if (!g_turn_over(s))
+		if (!sim_turn_over(s))
 			sim_attract(s, SIM_PAGE_TITLE);
 		return;
 	}
@@ -488,7 +480,7 @@ static void sim_initials_done(struct sim *s)
 	s->scores_gen++;
 	s->new_rank = s->ini_rank;
 	s->ini_rank = -1;
-	if (!g_turn_over(s))
+	if (!sim_turn_over(s))
 		sim_attract(s, SIM_PAGE_SCORES);
 }
 
@@ -542,31 +534,6 @@ static void sim_attract_tick(struct sim *s, uint8_t pressed)
 		s->page = (uint8_t)((s->page + 1) % SIM_PAGE_COUNT);
 		s->mode_t = 0;
 	}
-}
-
-/* Directions held in cmd, as MENU_NAV_* bits: forward is up, back is
- * down, turning or strafing left is left, right is right. */
-static uint8_t sim_dirs(const struct sim_cmd *c)
-{
-	return (uint8_t)((c->forward > 0 ? MENU_NAV_UP : 0) | (c->forward < 0 ? MENU_NAV_DOWN : 0) |
-			 (c->turn > 0 || c->side < 0 ? MENU_NAV_LEFT : 0) |
-			 (c->turn < 0 || c->side > 0 ? MENU_NAV_RIGHT : 0));
-}
-
-/* This tick's navigation: new directions, and held ones every
- * SIM_NAV_REPEAT ticks after SIM_NAV_DELAY. */
-static uint8_t sim_nav(struct sim *s, const struct sim_cmd *c)
-{
-	uint8_t held = sim_dirs(c), nav = (uint8_t)(held & ~s->prev_nav);
-
-	if (held != s->prev_nav)
-		s->nav_t = 0;
-	else if (s->nav_t < UINT16_MAX)
-		s->nav_t++;
-	if (held && s->nav_t >= SIM_NAV_DELAY && (s->nav_t - SIM_NAV_DELAY) % SIM_NAV_REPEAT == 0)
-		nav |= held;
-	s->prev_nav = held;
-	return nav;
 }
 
 void sim_tick(struct sim *s, const struct sim_cmd *cmd)
