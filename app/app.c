@@ -154,7 +154,8 @@ static void step_command(void *ctx, struct loop_tick *k)
 	struct app *a = ctx;
 
 	if (!a->tape.rep)
-		cmd_build(&a->ctl.cs, &k->rt.cmd);
+		/* the controls of the player whose turn it is */
+		cmd_build_for(&a->ctl.cs, a->sim.up, &k->rt.cmd);
 	op_command(&a->op, &k->rt.cmd);
 }
 

@@ -33,18 +33,36 @@ static int axis(const struct cmd_state *s, int pos, int neg, int full)
 	return (active(s, pos) ? full : 0) - (active(s, neg) ? full : 0);
 }
 
+/* cmd_build_for's offset: player 2's moves in player 1's order */
+_Static_assert(ACT_P2_BACK - ACT_P2_FORWARD == ACT_BACK - ACT_FORWARD &&
+		       ACT_P2_TURN_LEFT - ACT_P2_FORWARD == ACT_TURN_LEFT - ACT_FORWARD &&
+		       ACT_P2_TURN_RIGHT - ACT_P2_FORWARD == ACT_TURN_RIGHT - ACT_FORWARD &&
+		       ACT_P2_STRAFE_LEFT - ACT_P2_FORWARD == ACT_STRAFE_LEFT - ACT_FORWARD &&
+		       ACT_P2_STRAFE_RIGHT - ACT_P2_FORWARD == ACT_STRAFE_RIGHT - ACT_FORWARD,
+	       "player 2's move actions follow player 1's order");
+
 void cmd_build(struct cmd_state *s, struct sim_cmd *out)
 {
-	uint16_t coins = s->presses[ACT_COIN];
+	cmd_build_for(s, 0, out);
+}
 
-	out->forward = (int8_t)axis(s, ACT_FORWARD, ACT_BACK, CMD_MOVE);
-	out->side = (int8_t)axis(s, ACT_STRAFE_RIGHT, ACT_STRAFE_LEFT, CMD_MOVE);
-	out->turn = (int16_t)axis(s, ACT_TURN_LEFT, ACT_TURN_RIGHT, CMD_TURN_SPEED);
-	out->buttons = (uint8_t)((active(s, ACT_FIRE) ? SIM_BT_FIRE : 0) |
-				 (active(s, ACT_USE) ? SIM_BT_USE : 0) |
+void cmd_build_for(struct cmd_state *s, int up, struct sim_cmd *out)
+{
+	uint16_t coins = s->presses[ACT_COIN];
+	/* player 2's actions sit ACT_P2_FORWARD - ACT_FORWARD further on, in
+	 * player 1's order */
+	int o = up ? ACT_P2_FORWARD - ACT_FORWARD : 0;
+
+	out->forward = (int8_t)axis(s, o + ACT_FORWARD, o + ACT_BACK, CMD_MOVE);
+	out->side = (int8_t)axis(s, o + ACT_STRAFE_RIGHT, o + ACT_STRAFE_LEFT, CMD_MOVE);
+	out->turn = (int16_t)axis(s, o + ACT_TURN_LEFT, o + ACT_TURN_RIGHT, CMD_TURN_SPEED);
+	out->buttons = (uint8_t)((active(s, up ? ACT_P2_FIRE : ACT_FIRE) ? SIM_BT_FIRE : 0) |
+				 (active(s, up ? ACT_P2_USE : ACT_USE) ? SIM_BT_USE : 0) |
 				 (active(s, ACT_START) ? SIM_BT_START : 0) |
+				 (active(s, ACT_START2) ? SIM_BT_START2 : 0) |
 				 (active(s, ACT_SERVICE) ? SIM_BT_SERVICE : 0) |
-				 (active(s, ACT_WEAPON) ? SIM_BT_WEAPON : 0) |
+				 (active(s, up ? ACT_P2_WEAPON : ACT_WEAPON) ? SIM_BT_WEAPON : 0) |
+				 /* one pair of look controls for whoever is up */
 				 (active(s, ACT_LOOK_UP) ? SIM_BT_LOOK_UP : 0) |
 				 (active(s, ACT_LOOK_DOWN) ? SIM_BT_LOOK_DOWN : 0));
 	out->coins = (uint8_t)(coins > UINT8_MAX ? UINT8_MAX : coins);

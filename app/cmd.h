@@ -35,6 +35,12 @@ void cmd_action(struct cmd_state *s, int a, int down);
  * coin. Consumes the press counts. */
 void cmd_build(struct cmd_state *s, struct sim_cmd *out);
 
+/* cmd_build for the player whose turn it is (struct sim's up: 0 player 1,
+ * 1 player 2): moves, turns, FIRE, USE and WEAPON come from that player's
+ * actions (player 2's: ACT_P2_*); START, START2, COIN and SERVICE are the
+ * cabinet's, whoever is up. cmd_build is cmd_build_for player 1. */
+void cmd_build_for(struct cmd_state *s, int up, struct sim_cmd *out);
+
 /* The actions held now, for the operator's summary: "none", or each held
  * action's name with the number of controls holding it, as
  * "fire (1), turn_left (2)". Always NUL-terminated; cut short (ending in

@@ -184,7 +184,8 @@ void keep_flight_open(struct keep *k, int keep, int max_mb, uint64_t map_hash,
 void keep_flight_before(struct keep *k, const struct sim *s, const struct sim_cmd *cmd)
 {
 	k->snap_taken = 0;
-	if (k->fr && !k->game && s->mode == SIM_ATTRACT && (cmd->buttons & SIM_BT_START)) {
+	if (k->fr && !k->game && s->mode == SIM_ATTRACT &&
+	    (cmd->buttons & (SIM_BT_START | SIM_BT_START2))) {
 		sim_snapshot(s, k->snap);
 		k->snap_taken = 1;
 		k->snap_plays = s->plays;

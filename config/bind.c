@@ -20,8 +20,11 @@
 
 /* Defaults: arrows and WASD (A/D strafe, arrows turn), the 1/5/9 start,
  * coin and service keys of MAME's defaults, F2 as a second service key, Z
- * (MAME's player 1 button 5; R and Q are player 2's) and Tab to change
- * weapons. */
+ * (MAME's player 1 button 5) and Tab to change weapons. Player 2: MAME's
+ * 2 start and player 2 keys (R F D G move and turn, A fires, S uses, Q
+ * changes weapons), as a keyboard encoder types them; some are player 1's
+ * WASD too, which is harmless: the command reads only the actions of the
+ * player whose turn it is (app/cmd.h). */
 static const struct {
 	int act;
 	const char *keys[BIND_MAX];
@@ -40,6 +43,14 @@ static const struct {
 	{ ACT_WEAPON, { "KEY_Z", "KEY_TAB" } },
 	{ ACT_LOOK_UP, { "KEY_PAGEUP" } },
 	{ ACT_LOOK_DOWN, { "KEY_PAGEDOWN" } },
+	{ ACT_START2, { "KEY_2" } },
+	{ ACT_P2_FORWARD, { "KEY_R" } },
+	{ ACT_P2_BACK, { "KEY_F" } },
+	{ ACT_P2_TURN_LEFT, { "KEY_D" } },
+	{ ACT_P2_TURN_RIGHT, { "KEY_G" } },
+	{ ACT_P2_FIRE, { "KEY_A" } },
+	{ ACT_P2_USE, { "KEY_S" } },
+	{ ACT_P2_WEAPON, { "KEY_Q" } },
 };
 
 void bind_defaults(struct bind_table *b)

@@ -22,6 +22,16 @@ static const char *const act_names[ACT_COUNT] = {
 	[ACT_WEAPON] = "weapon",
 	[ACT_LOOK_UP] = "look_up",
 	[ACT_LOOK_DOWN] = "look_down",
+	[ACT_START2] = "start2",
+	[ACT_P2_FORWARD] = "p2_forward",
+	[ACT_P2_BACK] = "p2_back",
+	[ACT_P2_TURN_LEFT] = "p2_turn_left",
+	[ACT_P2_TURN_RIGHT] = "p2_turn_right",
+	[ACT_P2_STRAFE_LEFT] = "p2_strafe_left",
+	[ACT_P2_STRAFE_RIGHT] = "p2_strafe_right",
+	[ACT_P2_FIRE] = "p2_fire",
+	[ACT_P2_USE] = "p2_use",
+	[ACT_P2_WEAPON] = "p2_weapon",
 };
 
 const char *act_name(int a)

@@ -101,13 +101,15 @@
  * with their settings stage_time and idle_out; 6: weapons (g_weapon.c: the
  * player's weapons and the one held, SIM_BT_WEAPON, weapon pickups); 7:
  * the thrower's missiles (g_missile.c), vertical aim (the player's pitch,
- * SIM_BT_LOOK_UP/DOWN, shots as slopes, auto-aim and its setting free_aim) */
+ * SIM_BT_LOOK_UP/DOWN, shots as slopes, auto-aim and its setting
+ * free_aim), two players alternating (g_turn.c: players, up, the waiting
+ * player's seat, phase G_PH_TURN, SIM_BT_START2) */
 #define REC_ENGINE_VERSION 7
 /* sim_snapshot_size() at REC_ENGINE_VERSION. A field added to the sim's
  * state (engine/game/sim_table.h) changes the size and every state hash:
  * raise REC_ENGINE_VERSION and set this to the new size, together
  * (test_rec fails on the size until then, as a reminder of the version). */
-#define REC_ENGINE_SNAPSHOT 97904
+#define REC_ENGINE_SNAPSHOT 97923
 /* Bumped whenever the renderer draws any frame differently (engine/render/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */

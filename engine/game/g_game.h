@@ -173,14 +173,17 @@ enum g_phase {
 	G_PH_PLAY,                     /* fighting */
 	G_PH_DEAD,                     /* the player died: G_DEAD_TICKS, then respawn or game over */
 	G_PH_CLEAR,                    /* every enemy is dead: G_CLEAR_TICKS, then the next stage */
-	G_PH_INTER                     /* the map's exit was taken: the intermission page
+	G_PH_INTER,                    /* the map's exit was taken: the intermission page
 					* (kills, items, secrets, time), then the next stage */
+	G_PH_TURN                      /* two players: the "PLAYER n" page (G_TURN_TICKS)
+					* before the player up starts their stage */
 };
 
 #define G_DEAD_TICKS 120
 #define G_CLEAR_TICKS 150
 #define G_INTER_TICKS 600              /* the intermission: 10 s, or FIRE/USE after 1 s */
 #define G_INTER_MIN 60
+#define G_TURN_TICKS 150               /* the "PLAYER n" page between turns: 2.5 s */
 #define G_BANNER_TICKS 120             /* "STAGE n" shown after a stage starts */
 #define G_CONTINUE_TICKS 600           /* 10 s continue countdown */
 #define G_INITIALS_TICKS 1800          /* 30 s to enter initials */
@@ -233,7 +236,7 @@ enum g_shot { G_SHOT_NONE, G_SHOT_WALL, G_SHOT_ENEMY, G_SHOT_MISS };
 	X(VAL, uint8_t, continues, SIM_ANY)         /* used in this game */ \
 	X(VAL, uint8_t, stage, SIM_MAX(s->num_stages - 1))  /* index into the sim's stages */ \
 	X(VAL, uint8_t, loop, SIM_ANY)              /* times every stage was cleared */ \
-	X(VAL, uint8_t, phase, SIM_MAX(G_PH_INTER)) /* enum g_phase */ \
+	X(VAL, uint8_t, phase, SIM_MAX(G_PH_TURN))  /* enum g_phase */ \
 	X(VAL, uint16_t, phase_t, SIM_ANY)          /* ticks in the phase */ \
 	X(VAL, uint32_t, stage_t, SIM_ANY)          /* ticks since the stage started */ \
 	X(VAL, uint32_t, kills, SIM_ANY)            /* in this game */ \
@@ -256,6 +259,26 @@ enum g_shot { G_SHOT_NONE, G_SHOT_WALL, G_SHOT_ENEMY, G_SHOT_MISS };
 	X(VAL, uint8_t, mend, SIM_MAX(G_MEND_PLAYER))  /* enum g_mend: the last missile's end */
 struct g_game {
 	G_GAME_FIELDS(SIM_MEMBER)
+};
+
+/* Two players alternating (g_turn.c): what the player who waits for their
+ * turn keeps. The player up has theirs in struct g_game and sim_player;
+ * at each swap the two change places. The stage clock is not kept: every
+ * turn begins with a new life, which gets a full clock (g_pace.c). */
+#define G_SEAT_FIELDS(X) \
+	X(VAL, uint32_t, score, SIM_ANY) \
+	X(VAL, uint8_t, lives, SIM_ANY) \
+	X(VAL, uint8_t, continues, SIM_ANY) \
+	X(VAL, uint8_t, stage, SIM_MAX(s->num_stages - 1)) \
+	X(VAL, uint8_t, loop, SIM_ANY) \
+	X(VAL, uint32_t, kills, SIM_ANY) \
+	X(VAL, uint16_t, ammo, SIM_ANY) \
+	X(VAL, uint8_t, weapons, SIM_MAX(G_W_BIT(G_WEAPONS) - 1)) \
+	X(VAL, uint8_t, weapon, SIM_MAX(G_WEAPONS - 1)) \
+	/* 1: this player's game is over (no continue taken) */ \
+	X(VAL, uint8_t, out, SIM_MAX(1))
+struct g_seat {
+	G_SEAT_FIELDS(SIM_MEMBER)
 };
 
 /* High-score table, best first; the sim gets it at init and changes it

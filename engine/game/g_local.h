@@ -342,4 +342,40 @@ void g_pace_bonus(struct sim *s);
 /* The player dies now (phase PLAY only), for the reason why (enum g_why). */
 void g_player_dies(struct sim *s, int why);
 
+/* ---- sim_input: the command's coins, credits and directions (sim.c) ---- */
+
+/* cmd's coins: coins_total, books and coin_rem count them, each
+ * coins_per_credit of them make a credit (with its sounds). */
+void sim_coins(struct sim *s, uint8_t coins);
+
+/* Spends n credits (a credit a player) for a start or continue, nothing in
+ * free play; 0 if there are fewer. */
+int sim_pay(struct sim *s, uint32_t n);
+
+/* This tick's menu and initials directions (MENU_NAV_*): new ones, and
+ * held ones every SIM_NAV_REPEAT ticks after SIM_NAV_DELAY. */
+uint8_t sim_nav(struct sim *s, const struct sim_cmd *c);
+
+/* ---- g_turn: two players alternating ----------------------------------- */
+
+/* A new game of `players` (1 or 2), after g and the player were set for
+ * player 1 at stage 0: player 1 is up; player 2 waits with the same
+ * start (full lives, stage 1, the pistol and G_AMMO_START). With two, the
+ * "PLAYER 1" page comes first. */
+void g_turn_begin(struct sim *s, int players);
+
+/* The player up lost a life and plays on (lives left, or a continue
+ * taken), with their health, ammo and weapons set for the next life: when
+ * the other player is still in the game, the two change places (g, pl and
+ * wait; g.stage is the new player's) and 1 is returned: the caller (sim.c)
+ * then starts that stage behind the "PLAYER n" page. 0: the player up goes
+ * on. */
+int g_turn_pass(struct sim *s);
+
+/* The game of the player up is over (no continue, initials done): when
+ * the other player is still in the game, the two change places as in
+ * g_turn_pass, the finished player marked out, and 1 is returned; else 0
+ * (the game is over). */
+int g_turn_over(struct sim *s);
+
 #endif

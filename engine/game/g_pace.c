@@ -40,7 +40,7 @@ int g_pace_hurry(const struct sim *s)
 static int g_pace_input(const struct sim_cmd *c)
 {
 	return c->forward || c->side || c->turn || c->coins ||
-	       (c->buttons & (SIM_BT_FIRE | SIM_BT_USE | SIM_BT_START | SIM_BT_WEAPON));
+	       (c->buttons & (SIM_BT_FIRE | SIM_BT_USE | SIM_BT_START | SIM_BT_START2 | SIM_BT_WEAPON));
 }
 
 static int g_idle_setting(const struct sim *s)

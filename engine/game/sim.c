@@ -32,8 +32,6 @@
 #define SIM_RNG_SEED 0x2545f491u
 #define SIM_SPAWN_INSET (32 * FX_ONE)  /* no player start: this far off a wall */
 #define SIM_DEAD_VIEW (8 * FX_ONE)     /* eye height of a dead player */
-#define SIM_NAV_DELAY 20               /* ticks before a held direction repeats */
-#define SIM_NAV_REPEAT 6               /* ticks between repeats */
 #define SIM_FANFARE_AT 30              /* the stage fanfare: ticks into the CLEAR phase */
 
 /* Names as arrays, not pointers: the tables stay read-only data. */
@@ -140,6 +138,34 @@ static void sim_start_stage(struct sim *s, int i)
 	g_pace_start(s);
 }
 
+/* The other player's turn (g_turn.c changed the seats): their stage from
+ * its start, behind the "PLAYER n" page. */
+static void sim_turn_start(struct sim *s)
+{
+	s->mode = SIM_PLAY;
+	s->mode_t = 0;
+	sim_start_stage(s, s->g.stage);
+	s->g.phase = G_PH_TURN;
+}
+
+/* g_turn_pass and g_turn_over, and the new player's stage when the turn
+ * passed. */
+static int sim_turn_pass(struct sim *s)
+{
+	if (!g_turn_pass(s))
+		return 0;
+	sim_turn_start(s);
+	return 1;
+}
+
+static int sim_turn_over(struct sim *s)
+{
+	if (!g_turn_over(s))
+		return 0;
+	sim_turn_start(s);
+	return 1;
+}
+
 static void sim_full_health(struct sim *s)
 {
 	s->pl.health = G_HEALTH_MAX * FX_ONE;
@@ -147,7 +173,7 @@ static void sim_full_health(struct sim *s)
 		s->pl.ammo = G_AMMO_START;
 }
 
-static void sim_new_game(struct sim *s)
+static void sim_new_game(struct sim *s, int players)
 {
 	memset(&s->g, 0, sizeof s->g);
 	s->g.lives = (uint8_t)g_lives_setting(s);
@@ -158,6 +184,7 @@ static void sim_new_game(struct sim *s)
 	s->mode = SIM_PLAY;
 	s->mode_t = 0;
 	sim_start_stage(s, 0);
+	g_turn_begin(s, players);
 }
 
 /* Back to attract at `page`: the world is stage 0 again, seen by the idle
@@ -196,7 +223,7 @@ void sim_init_stages(struct sim *s, const struct map *const *maps, int n,
 	if (books)
 		s->books = *books;
 	if (set->start_in_play)
-		sim_new_game(s);
+		sim_new_game(s, 1);
 	else
 		sim_attract(s, SIM_PAGE_TITLE);
 }
@@ -286,38 +313,6 @@ static void sim_player_move(struct sim *s, const struct sim_cmd *cmd)
 	}
 }
 
-static void sim_coins(struct sim *s, uint8_t coins)
-{
-	uint32_t per = s->set.coins_per_credit ? s->set.coins_per_credit : 1;
-	uint32_t credits = s->credits;
-
-	if (!coins)
-		return;
-	s->coins_total += coins;
-	s->books.coins += coins;
-	s->books_gen++;
-	s->coin_rem += coins;
-	while (s->coin_rem >= per) {
-		s->coin_rem -= per;
-		s->credits++;
-	}
-	/* the coin's clink; a credit's chime right after it */
-	g_sound_play(s, SFX_COIN, G_SRC_COIN);
-	if (s->credits != credits)
-		s->snd.credit_t = G_CREDIT_DELAY;
-}
-
-/* Spends a credit for a start or continue; 0 if there is none. */
-static int sim_pay(struct sim *s)
-{
-	if (s->set.freeplay)
-		return 1;
-	if (s->credits == 0)
-		return 0;
-	s->credits--;
-	return 1;
-}
-
 /* The player lost a life (the death phase ended). */
 static void sim_life_lost(struct sim *s)
 {
@@ -328,6 +323,8 @@ static void sim_life_lost(struct sim *s)
 	if (g->lives > 0) {
 		sim_full_health(s);
 		g_weapon_reset(s);
+		if (sim_turn_pass(s))
+			return;                /* the other player's turn */
 		g_enemies_reset(s);
 		g->phase = G_PH_PLAY;
 		g->phase_t = 0;
@@ -423,6 +420,16 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd, uint8_t pres
 		if (g->phase_t >= G_CLEAR_TICKS)
 			sim_next_stage(s, g->stage + 1 < s->num_stages ? g->stage + 1 : 0);
 		break;
+	case G_PH_TURN:
+		/* the "PLAYER n" page: the stage waits, its clock full */
+		g->phase_t++;
+		if (g->phase_t >= G_TURN_TICKS) {
+			g->phase = G_PH_PLAY;
+			g->phase_t = 0;
+			g->stage_t = 0;        /* the STAGE banner after the page */
+			g_pace_start(s);
+		}
+		break;
 	case G_PH_INTER:
 	default:
 		/* the intermission: FIRE or USE goes on after a second */
@@ -438,7 +445,8 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 {
 	int rank;
 
-	if ((pressed & SIM_BT_START) && sim_pay(s)) {
+	/* either start button continues the game of the player up */
+	if ((pressed & (SIM_BT_START | SIM_BT_START2)) && sim_pay(s, 1)) {
 		struct g_game *g = &s->g;
 		if (g->continues < UINT8_MAX)
 			g->continues++;
@@ -448,9 +456,12 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 		g_enemies_reset(s);
 		g->phase = G_PH_PLAY;
 		g->phase_t = 0;
-		sim_spawn(s);
-		s->mode = SIM_PLAY;
-		s->mode_t = 0;
+		/* a life was lost: the other player's turn, if they are in */
+		if (!sim_turn_pass(s)) {
+			sim_spawn(s);
+			s->mode = SIM_PLAY;
+			s->mode_t = 0;
+		}
 		g_sound_play(s, SFX_START, G_SRC_ANNOUNCE);
 		return;
 	}
@@ -465,7 +476,8 @@ static void sim_gameover_tick(struct sim *s, uint8_t pressed)
 		return;
 	rank = g_scores_rank(&s->scores, s->g.score);
 	if (rank < 0) {
-		sim_attract(s, SIM_PAGE_TITLE);
+		if (!sim_turn_over(s))
+			sim_attract(s, SIM_PAGE_TITLE);
 		return;
 	}
 	s->mode = SIM_INITIALS;
@@ -485,7 +497,8 @@ static void sim_initials_done(struct sim *s)
 	s->scores_gen++;
 	s->new_rank = s->ini_rank;
 	s->ini_rank = -1;
-	sim_attract(s, SIM_PAGE_SCORES);
+	if (!sim_turn_over(s))
+		sim_attract(s, SIM_PAGE_SCORES);
 }
 
 static void sim_initials_tick(struct sim *s, uint8_t pressed, uint8_t nav)
@@ -516,11 +529,15 @@ static void sim_attract_tick(struct sim *s, uint8_t pressed)
 	static const uint32_t len[SIM_PAGE_COUNT] = { SIM_TITLE_TICKS, SIM_SCORES_TICKS,
 						      SIM_DEMO_TICKS };
 
-	if ((pressed & SIM_BT_START) && sim_pay(s)) {
-		s->plays++;
-		s->books.plays++;
+	/* 2P start: two players' credits; plays count a game a player */
+	int players = (pressed & SIM_BT_START2) && sim_pay(s, 2) ? 2
+		      : (pressed & SIM_BT_START) && sim_pay(s, 1) ? 1 : 0;
+
+	if (players) {
+		s->plays += (uint32_t)players;
+		s->books.plays += (uint32_t)players;
 		s->books_gen++;
-		sim_new_game(s);
+		sim_new_game(s, players);
 		g_sound_play(s, SFX_START, G_SRC_ANNOUNCE);
 		return;
 	}
@@ -534,31 +551,6 @@ static void sim_attract_tick(struct sim *s, uint8_t pressed)
 		s->page = (uint8_t)((s->page + 1) % SIM_PAGE_COUNT);
 		s->mode_t = 0;
 	}
-}
-
-/* Directions held in cmd, as MENU_NAV_* bits: forward is up, back is
- * down, turning or strafing left is left, right is right. */
-static uint8_t sim_dirs(const struct sim_cmd *c)
-{
-	return (uint8_t)((c->forward > 0 ? MENU_NAV_UP : 0) | (c->forward < 0 ? MENU_NAV_DOWN : 0) |
-			 (c->turn > 0 || c->side < 0 ? MENU_NAV_LEFT : 0) |
-			 (c->turn < 0 || c->side > 0 ? MENU_NAV_RIGHT : 0));
-}
-
-/* This tick's navigation: new directions, and held ones every
- * SIM_NAV_REPEAT ticks after SIM_NAV_DELAY. */
-static uint8_t sim_nav(struct sim *s, const struct sim_cmd *c)
-{
-	uint8_t held = sim_dirs(c), nav = (uint8_t)(held & ~s->prev_nav);
-
-	if (held != s->prev_nav)
-		s->nav_t = 0;
-	else if (s->nav_t < UINT16_MAX)
-		s->nav_t++;
-	if (held && s->nav_t >= SIM_NAV_DELAY && (s->nav_t - SIM_NAV_DELAY) % SIM_NAV_REPEAT == 0)
-		nav |= held;
-	s->prev_nav = held;
-	return nav;
 }
 
 void sim_tick(struct sim *s, const struct sim_cmd *cmd)

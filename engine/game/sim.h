@@ -52,6 +52,8 @@ struct snd_set;
  * G_PITCH_*) */
 #define SIM_BT_LOOK_UP 0x20
 #define SIM_BT_LOOK_DOWN 0x40
+/* the 2P start: a two-player game (two credits), or a continue */
+#define SIM_BT_START2 0x80
 
 /* One tick of player input: exactly what a recording stores (6 bytes,
  * see input/rec.h). forward/side: -127..127 of full speed (positive is
@@ -162,6 +164,12 @@ struct sim_player {
 	X(VAL, uint32_t, rng, SIM_ANY)              /* the sim's own RNG state */ \
 	X(SUB, sim_player, pl) \
 	X(SUB, g_game, g) \
+	/* players in the game: 1, or 2 alternating (0 before the first game) */ \
+	X(VAL, uint8_t, players, SIM_MAX(2)) \
+	/* whose turn it is: 0 player 1, 1 player 2 (the app reads player 2's \
+	 * controls for the command while it is 1) */ \
+	X(VAL, uint8_t, up, SIM_MAX(1)) \
+	X(SUB, g_seat, wait)                        /* the player waiting for their turn */ \
 	X(SUB, g_world, w)                          /* the current map as the game changed it */ \
 	X(SUB, g_sound, snd)                        /* the sounds playing (g_sound.h) */ \
 	X(VAL, uint16_t, countdown, SIM_ANY)        /* GAMEOVER: ticks left to continue */ \

@@ -17,7 +17,8 @@ enum {
 	F_X, F_Y, F_Z, F_ANGLE, F_SECTOR, F_CREDITS, F_COINS, F_TICK, F_MODE,
 	F_SCORE, F_LIVES, F_HEALTH, F_AMMO, F_STAGE, F_ENEMIES, F_KILLS, F_CONTINUES,
 	F_COUNTDOWN, F_PAGE, F_PHASE, F_PLAYS, F_RANK, F_HISCORE, F_MENU, F_DIFFICULTY,
-	F_CLOCK, F_WHY, F_WEAPON, F_MISSILES, F_MEND, F_PITCH, F_COUNT
+	F_CLOCK, F_WHY, F_WEAPON, F_MISSILES, F_MEND, F_PITCH, F_PLAYERS, F_UP, F_SCORE1,
+	F_SCORE2, F_LIVES1, F_LIVES2, F_COUNT
 };
 
 static const struct sim_field_def sim_fields[F_COUNT] = {
@@ -52,6 +53,12 @@ static const struct sim_field_def sim_fields[F_COUNT] = {
 	[F_MISSILES] = { "missiles", SIM_FK_INT },
 	[F_MEND] = { "mend", SIM_FK_INT },
 	[F_PITCH] = { "pitch", SIM_FK_INT },
+	[F_PLAYERS] = { "players", SIM_FK_INT },
+	[F_UP] = { "up", SIM_FK_INT },
+	[F_SCORE1] = { "score1", SIM_FK_INT },
+	[F_SCORE2] = { "score2", SIM_FK_INT },
+	[F_LIVES1] = { "lives1", SIM_FK_INT },
+	[F_LIVES2] = { "lives2", SIM_FK_INT },
 };
 
 int sim_field_count(void)
@@ -120,6 +127,16 @@ int64_t sim_field_value(const struct sim *s, int i)
 	case F_MEND: return s->g.mend;
 	/* vertical aim in look steps (G_PITCH_STEP): -30 down .. 30 up */
 	case F_PITCH: return s->pl.pitch / G_PITCH_STEP;
+	/* players in the game (1, 2; 0 before the first) and whose turn it
+	 * is, numbered as on the HUD (1 or 2) */
+	case F_PLAYERS: return s->players;
+	case F_UP: return s->up + 1;
+	/* each player's score and lives: the player up's from the game, the
+	 * other's from the waiting seat */
+	case F_SCORE1: return s->up == 0 ? s->g.score : s->wait.score;
+	case F_SCORE2: return s->up == 1 ? s->g.score : s->wait.score;
+	case F_LIVES1: return s->up == 0 ? s->g.lives : s->wait.lives;
+	case F_LIVES2: return s->up == 1 ? s->g.lives : s->wait.lives;
 	default: return 0;
 	}
 }

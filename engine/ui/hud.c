@@ -34,7 +34,7 @@ void hud_minimap_rect(const struct r_frame *f, int *x, int *y, int *size)
 int hud_world(const struct sim *s)
 {
 	if (s->mode == SIM_PLAY)
-		return s->g.phase != G_PH_INTER;
+		return s->g.phase != G_PH_INTER && s->g.phase != G_PH_TURN;
 	return s->mode == SIM_GAMEOVER || s->mode == SIM_ATTRACT;
 }
 
@@ -420,10 +420,19 @@ static void hud_play(const struct sim *s, const struct hud_env *env, const struc
 	msg_cat(buf, sizeof(buf), "STAGE ");
 	hud_cat_num(buf, sizeof(buf), s->g.stage + 1u, 1, '0');
 	hud_text_right(f, c, f->w - 2 * sc, ty, sc, c->white, buf);
-	buf[0] = '\0';
-	msg_cat(buf, sizeof(buf), "SCORE ");
-	hud_cat_num(buf, sizeof(buf), s->g.score, 6, '0');
-	hud_text(f, c, 2 * sc, 2 * sc, sc, c->white, buf);
+	if (s->players == 2) {
+		/* both scores, the player up's bright */
+		for (int n = 0; n < 2; n++) {
+			hud_up_text(s, n, buf, sizeof(buf));
+			hud_text(f, c, 2 * sc + n * v_text_width("1UP 000000  ", sc), 2 * sc, sc,
+				 n == s->up ? c->white : c->grey, buf);
+		}
+	} else {
+		buf[0] = '\0';
+		msg_cat(buf, sizeof(buf), "SCORE ");
+		hud_cat_num(buf, sizeof(buf), s->g.score, 6, '0');
+		hud_text(f, c, 2 * sc, 2 * sc, sc, c->white, buf);
+	}
 	buf[0] = '\0';
 	msg_cat(buf, sizeof(buf), "LIVES ");
 	hud_cat_num(buf, sizeof(buf), s->g.lives, 1, '0');
@@ -452,6 +461,8 @@ void hud_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f)
 	case SIM_PLAY:
 		if (s->g.phase == G_PH_INTER)
 			hud_page_inter(s, &c, f);
+		else if (s->g.phase == G_PH_TURN)
+			hud_page_turn(s, &c, f);
 		else
 			hud_play(s, env, &c, f);
 		break;

@@ -40,5 +40,11 @@ void hud_page_initials(const struct sim *s, const struct hud_colours *c, struct 
 /* The intermission after a map's exit (phase G_PH_INTER): kills, items,
  * secrets, time, score, the next map. */
 void hud_page_inter(const struct sim *s, const struct hud_colours *c, struct r_frame *f);
+/* Two players: the "PLAYER n" page between turns (phase G_PH_TURN): the
+ * player up, their stage and lives, both scores. */
+void hud_page_turn(const struct sim *s, const struct hud_colours *c, struct r_frame *f);
+/* Two players: "1UP 001234" (n 0) or "2UP 000500" (n 1), player n's score
+ * (the player up's from the game, the other's from the waiting seat). */
+void hud_up_text(const struct sim *s, int n, char *buf, size_t len);
 
 #endif

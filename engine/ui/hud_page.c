@@ -27,6 +27,16 @@ static void hud_coin_prompt(const struct sim *s, const struct hud_colours *c, st
 	hud_text_centre(f, c, y + 12 * sc, sc, c->white, buf);
 }
 
+/* In a two-player game, "PLAYER n  " for the player up. */
+static void hud_player_cat(const struct sim *s, char *buf, size_t len)
+{
+	if (s->players != 2)
+		return;
+	msg_cat(buf, len, "PLAYER ");
+	hud_cat_num(buf, len, s->up + 1u, 1, '0');
+	msg_cat(buf, len, "  ");
+}
+
 /* The high-score table, the new entry (new_rank) blinking. */
 static void hud_scores(const struct sim *s, const struct hud_colours *c, struct r_frame *f)
 {
@@ -96,6 +106,7 @@ void hud_page_gameover(const struct sim *s, const struct hud_colours *c, struct 
 
 	v_remap_par(f, 0, 0, f->w, f->h, c->dim, c->par);
 	hud_text_centre(f, c, y, 3 * sc, c->red, "GAME OVER");
+	hud_player_cat(s, buf, sizeof(buf));
 	msg_cat(buf, sizeof(buf), "SCORE ");
 	hud_cat_num(buf, sizeof(buf), s->g.score, 1, '0');
 	hud_text_centre(f, c, y + 32 * sc, sc, c->white, buf);
@@ -113,6 +124,7 @@ void hud_page_initials(const struct sim *s, const struct hud_colours *c, struct 
 	char buf[48] = "";
 
 	hud_text_centre(f, c, y, 2 * sc, c->yellow, "NEW HIGH SCORE");
+	hud_player_cat(s, buf, sizeof(buf));
 	msg_cat(buf, sizeof(buf), "RANK ");
 	hud_cat_num(buf, sizeof(buf), (uint64_t)s->ini_rank + 1, 1, '0');
 	msg_cat(buf, sizeof(buf), "   SCORE ");
@@ -199,4 +211,35 @@ void hud_page_inter(const struct sim *s, const struct hud_colours *c, struct r_f
 	}
 	if (s->g.phase_t >= G_INTER_MIN && hud_blink(s))
 		hud_text_centre(f, c, f->h - 24 * sc, sc, c->yellow, "PRESS FIRE");
+}
+
+void hud_up_text(const struct sim *s, int n, char *buf, size_t len)
+{
+	buf[0] = '\0';
+	hud_cat_num(buf, len, (uint64_t)n + 1, 1, '0');
+	msg_cat(buf, len, "UP ");
+	hud_cat_num(buf, len, n == s->up ? s->g.score : s->wait.score, 6, '0');
+}
+
+void hud_page_turn(const struct sim *s, const struct hud_colours *c, struct r_frame *f)
+{
+	int sc = hud_scale(f), y = f->h / 4;
+	char buf[48] = "";
+
+	msg_cat(buf, sizeof(buf), "PLAYER ");
+	hud_cat_num(buf, sizeof(buf), s->up + 1u, 1, '0');
+	hud_text_centre(f, c, y, 4 * sc, s->up ? c->cyan : c->yellow, buf);
+	if (hud_blink(s))
+		hud_text_centre(f, c, y + 40 * sc, sc, c->white, "GET READY");
+	buf[0] = '\0';
+	msg_cat(buf, sizeof(buf), "STAGE ");
+	hud_cat_num(buf, sizeof(buf), s->g.stage + 1u, 1, '0');
+	msg_cat(buf, sizeof(buf), "   LIVES ");
+	hud_cat_num(buf, sizeof(buf), s->g.lives, 1, '0');
+	hud_text_centre(f, c, y + 58 * sc, sc, c->white, buf);
+	for (int n = 0; n < 2; n++) {
+		hud_up_text(s, n, buf, sizeof(buf));
+		hud_text_centre(f, c, y + (80 + 12 * n) * sc, sc, n == s->up ? c->white : c->grey,
+				buf);
+	}
 }

@@ -154,7 +154,14 @@ static void test_lookup_returns_every_action_of_a_key(void **state)
 	assert_int_equal(acts[0], ACT_FIRE);
 	assert_int_equal(bind_lookup(&b, KEY_W, acts, ACT_COIN), 1);
 	assert_int_equal(acts[0], ACT_FORWARD);
-	assert_int_equal(bind_lookup(&b, KEY_Q, acts, ACT_COUNT), 0);
+	assert_int_equal(bind_lookup(&b, KEY_P, acts, ACT_COUNT), 0);
+	/* a key of both players: each player's action (the command reads the
+	 * one up's) */
+	assert_int_equal(bind_lookup(&b, KEY_A, acts, ACT_COUNT), 2);
+	assert_int_equal(acts[0], ACT_STRAFE_LEFT);
+	assert_int_equal(acts[1], ACT_P2_FIRE);
+	assert_int_equal(bind_lookup(&b, KEY_2, acts, ACT_COUNT), 1);
+	assert_int_equal(acts[0], ACT_START2);
 	assert_int_equal(bind_lookup(&b, -1, acts, ACT_COUNT), 0);
 
 	assert_int_equal(load(&b, "[keyboard]\nuse = space\nstart = space, 1\n", &e), 0);
@@ -459,6 +466,16 @@ static void test_format_writes_every_action_of_every_section(void **state)
 		"weapon = KEY_Z, KEY_TAB\n"
 		"look_up = KEY_PAGEUP\n"
 		"look_down = KEY_PAGEDOWN\n"
+		"start2 = KEY_2\n"
+		"p2_forward = KEY_R\n"
+		"p2_back = KEY_F\n"
+		"p2_turn_left = KEY_D\n"
+		"p2_turn_right = KEY_G\n"
+		"p2_strafe_left =\n"
+		"p2_strafe_right =\n"
+		"p2_fire = KEY_A\n"
+		"p2_use = KEY_S\n"
+		"p2_weapon = KEY_Q\n"
 		"\n"
 		"[device \"usb-1-1.2\"]\n"
 		"forward = BTN_DPAD_UP\n"
@@ -474,7 +491,17 @@ static void test_format_writes_every_action_of_every_section(void **state)
 		"service =\n"
 		"weapon =\n"
 		"look_up =\n"
-		"look_down =\n";
+		"look_down =\n"
+		"start2 =\n"
+		"p2_forward =\n"
+		"p2_back =\n"
+		"p2_turn_left =\n"
+		"p2_turn_right =\n"
+		"p2_strafe_left =\n"
+		"p2_strafe_right =\n"
+		"p2_fire =\n"
+		"p2_use =\n"
+		"p2_weapon =\n";
 	int key[ACT_COUNT][BIND_MAX];
 	struct bind_table b, back;
 	char buf[2048];

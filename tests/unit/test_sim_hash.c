@@ -666,7 +666,7 @@ static void out_of_range_values_are_refused(void **state)
 		case 4: a->g.num_pickups = G_MAX_PICKUPS + 1; break;
 		case 5: a->g.alive = (uint16_t)(a->g.num_enemies + 1); break;
 		case 6: a->g.stage = (uint8_t)st.n; break;
-		case 7: a->g.phase = G_PH_INTER + 1; break;
+		case 7: a->g.phase = G_PH_TURN + 1; break;
 		case 8: a->g.shot = G_SHOT_MISS + 1; break;
 		case 9: a->g.en[0].kind = G_KINDS; break;
 		case 10: a->g.en[0].state = G_E_DEAD + 1; break;
@@ -693,9 +693,13 @@ static void out_of_range_values_are_refused(void **state)
 		case 31: a->menu.yes = 2; break;
 		case 32: a->menu.res = MENU_RES_COUNT + 1; break;
 		case 33: a->menu.done = MENU_ITEMS; break;
+		case 34: a->players = 3; break;
+		case 35: a->up = 2; break;
+		case 36: a->wait.stage = (uint8_t)st.n; break;
+		case 37: a->wait.out = 2; break;
 		default: break;
 		}
-		if (i > 33)
+		if (i > 37)
 			break;
 		sim_snapshot(a, buf);
 		fresh(b, &st);
@@ -709,7 +713,7 @@ static void out_of_range_values_are_refused(void **state)
 		assert_memory_equal(b, keep, sizeof(*b));
 		cases++;
 	}
-	assert_int_equal(cases, 33);
+	assert_int_equal(cases, 37);
 	/* in a spare slot (past the count) the same value is no state: accepted */
 	reach(a, &st, ST_PLAY);
 	a->g.en[a->g.num_enemies].kind = 200;

@@ -100,6 +100,15 @@ static void defaults_by_hand(int k[ACT_COUNT][BIND_MAX])
 	k[ACT_WEAPON][0] = KEY_Z, k[ACT_WEAPON][1] = KEY_TAB;
 	k[ACT_LOOK_UP][0] = KEY_PAGEUP;
 	k[ACT_LOOK_DOWN][0] = KEY_PAGEDOWN;
+	/* player 2: MAME's 2 start and player 2 keys */
+	k[ACT_START2][0] = KEY_2;
+	k[ACT_P2_FORWARD][0] = KEY_R;
+	k[ACT_P2_BACK][0] = KEY_F;
+	k[ACT_P2_TURN_LEFT][0] = KEY_D;
+	k[ACT_P2_TURN_RIGHT][0] = KEY_G;
+	k[ACT_P2_FIRE][0] = KEY_A;
+	k[ACT_P2_USE][0] = KEY_S;
+	k[ACT_P2_WEAPON][0] = KEY_Q;
 }
 
 /* Sets action a of k to exactly the one code c (or none for -1). */
@@ -313,6 +322,10 @@ static void a_keyboard_without_ident_binds_in_keyboard(void **state)
 	only(want, ACT_TURN_RIGHT, KEY_D);
 	only(want, ACT_STRAFE_LEFT, KEY_COMMA);
 	only(want, ACT_STRAFE_RIGHT, KEY_DOT);
+	/* the wizard takes a key off every other action: player 2's too */
+	only(want, ACT_P2_USE, -1);
+	only(want, ACT_P2_FIRE, -1);
+	only(want, ACT_P2_TURN_LEFT, -1);
 	expect_section((const int (*)[BIND_MAX])out.key, (const int (*)[BIND_MAX])want);
 }
 
