@@ -2,7 +2,7 @@
  * demo: the attract demo (app/demo.c). On the first built-in level it is
  * the recorded game (levels/demo.scr): played through demo_tick under a
  * main sim held on the DEMO page, it scores, kills every enemy and clears
- * the stage, by the recorded rules whatever the cabinet's settings (a
+ * the stage with the spread gun in hand, by the recorded rules whatever the cabinet's settings (a
  * cabinet set to BRUTAL with one life plays the same demo, tick for tick,
  * as one at the factory settings); on other content (the grid map) it is
  * the walk about. Independent reasons for the numbers: ARENA1 has four
@@ -35,7 +35,8 @@ static void on_demo_page(struct sim *m, const struct ct *ct, const struct sim_se
 
 /* Plays the demo for n ticks; the first tick the stage showed cleared
  * (UINT32_MAX: never), and the kills and the score then. */
-static uint32_t play(struct demo *d, struct sim *m, uint32_t n, uint32_t *kills, uint32_t *score)
+static uint32_t play(struct demo *d, struct sim *m, uint32_t n, uint32_t *kills, uint32_t *score,
+		     uint8_t *weapon)
 {
 	uint32_t clear_t = UINT32_MAX;
 
@@ -48,6 +49,7 @@ static uint32_t play(struct demo *d, struct sim *m, uint32_t n, uint32_t *kills,
 			clear_t = t;
 			*kills = d->sim.g.kills;
 			*score = d->sim.g.score;
+			*weapon = d->sim.pl.weapon;
 		}
 	}
 	return clear_t;
@@ -61,6 +63,7 @@ static void the_demo_game_clears_the_first_level(void **state)
 	struct sim *m = calloc(1, sizeof(*m));
 	struct demo *d = calloc(1, sizeof(*d)), *d2 = calloc(1, sizeof(*d2));
 	uint32_t kills, score, clear_t, kills2, score2;
+	uint8_t weapon = G_W_PISTOL, weapon2 = G_W_PISTOL;
 	char err[256];
 	int diff;
 
@@ -77,10 +80,12 @@ static void the_demo_game_clears_the_first_level(void **state)
 
 	set.difficulty = 1;
 	on_demo_page(m, ct, &set);
-	clear_t = play(d, m, SIM_DEMO_TICKS, &kills, &score);
+	clear_t = play(d, m, SIM_DEMO_TICKS, &kills, &score, &weapon);
 	assert_true(clear_t < SIM_DEMO_TICKS);
 	assert_int_equal(kills, 4);
 	assert_true(score > 0);
+	/* the spread gun at the stairs' foot (levels/arena1.txt) is taken */
+	assert_int_equal(weapon, G_W_SPREAD);
 
 	/* another cabinet: BRUTAL, one life, no stage clock; the same game */
 	assert_int_equal(demo_init(d2, ct, err, sizeof(err)), 0);
@@ -88,7 +93,8 @@ static void the_demo_game_clears_the_first_level(void **state)
 	set.lives = 1;
 	set.stage_time = 255;
 	on_demo_page(m, ct, &set);
-	assert_int_equal(play(d2, m, SIM_DEMO_TICKS, &kills2, &score2), clear_t);
+	assert_int_equal(play(d2, m, SIM_DEMO_TICKS, &kills2, &score2, &weapon2), clear_t);
+	assert_int_equal(weapon2, weapon);
 	assert_int_equal(kills2, kills);
 	assert_int_equal(score2, score);
 	assert_int_equal(sim_hash(&d2->sim), sim_hash(&d->sim));
