@@ -157,7 +157,7 @@ fx_t g_aim(const struct sim *s, ang_t a)
 			if (rise >= (((int64_t)G_AUTOAIM_MAX * d) >> FX_SHIFT) ||
 			    rise <= -(((int64_t)G_AUTOAIM_MAX * d) >> FX_SHIFT))
 				continue;      /* out of the aim's reach */
-			slope = (fx_t)((rise << FX_SHIFT) / d);
+			slope = (fx_t)(rise * FX_ONE / d);  /* a multiply: rise may be negative */
 			r.slope = slope;
 			if (g_wall_along(s, &r, d) == d)
 				return slope;

@@ -94,7 +94,7 @@
 
 struct rp_opts {
 	const char *file, *rehash;
-	const char *wads[CT_MAX_WADS], *map;
+	const char *wads[CT_MAX_WADS], *map, *grid;
 	int nwads;
 	int render, quiet, verify, bench, modes, balance;
 	int w, h, level;
@@ -103,7 +103,7 @@ struct rp_opts {
 
 static int rp_usage(void)
 {
-	fprintf(stderr, "usage: replay [--no-render] [--size WxH] [--level N] [--wad F --map M] [--until T] "
+	fprintf(stderr, "usage: replay [--no-render] [--size WxH] [--level N] [--wad F --map M | --grid G] [--until T] "
 			"[--quiet] [--verify] [--rehash OUT] [--bench] [--modes] [--balance] FILE\n");
 	return 2;
 }
@@ -144,6 +144,9 @@ static int rp_args(int argc, char **argv, struct rp_opts *o)
 			i++;
 		} else if (strcmp(a, "--map") == 0 && v) {
 			o->map = v;
+			i++;
+		} else if (strcmp(a, "--grid") == 0 && v) {
+			o->grid = v;
 			i++;
 		} else if (strcmp(a, "--until") == 0 && v) {
 			o->until = strtoll(v, NULL, 10);
@@ -409,7 +412,8 @@ int main(int argc, char **argv)
 	for (int i = 0; i < o.nwads; i++)
 		spec.wads[spec.nwads++] = o.wads[i];
 	spec.map = o.map;
-	if (o.nwads) {
+	spec.grid = o.grid;     /* a grid map, as the daemon's --grid */
+	if (o.nwads || o.grid) {
 		run.level = 0;
 		run.map_name = o.map;
 	}

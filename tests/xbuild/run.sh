@@ -139,7 +139,11 @@ for s in tests/replay/*.scr tests/script/*.scr; do
 	# with the options of its "# args:" and "# set:" lines, as
 	# tests/script/run.sh runs it
 	# shellcheck disable=SC2046
-	record "$s" "$(basename "$(dirname "$s")")-$(basename "$s" .scr)" $(script_args "$s")
+	n="$(basename "$(dirname "$s")")-$(basename "$s" .scr)"
+	record "$s" "$n" $(script_args "$s")
+	# its content options (a grid map: "# args: --grid builtin"), which
+	# its replays need too
+	sed -n 's/^# args: //p' "$s" > "$tmp/rec/$n.args"
 done
 record tests/replay/game.scr settings-game --set game.coins_per_credit=3 --set game.freeplay=1
 # a rate that 60 does not divide: the mixer carries the remainder
@@ -183,7 +187,8 @@ compare() {
 ticks=0
 before=$fail
 for rec in "$tmp"/rec/*.rec; do
-	compare "$(basename "$rec" .rec)" "$rec" 320x240
+	# shellcheck disable=SC2046
+	compare "$(basename "$rec" .rec)" "$rec" 320x240 $(cat "${rec%.rec}.args" 2>/dev/null)
 done
 # a Freedoom map, read from the WAD by every build
 W=/usr/share/games/doom/freedoom1.wad
