@@ -28,7 +28,7 @@ static uint8_t *work, *back;
 
 static void fz_setup(void)
 {
-	static const struct sim_settings set = { 1, 0, 0, 1, 3, 100, 1, 0, 0 };
+	static const struct sim_settings set = { 1, 0, 0, 1, 3, 100, 1, 0, 0, 0 };
 	const struct sim_cmd coin = { .coins = 1 }, start = { .buttons = SIM_BT_START };
 	struct sim_cmd go = { .forward = 100, .turn = 90 };
 	struct sim s;
