@@ -6,5 +6,13 @@
 # enemies), and "--set KEY=VALUE" for each "# set: KEY=VALUE" line (a
 # setting the script runs with, e.g. "# set: game.difficulty=0").
 script_args() {
-	sed -n -e 's/^# args: //p' -e 's/^# set: *\([^ ]*\).*/--set \1/p' "$1"
+	script_content_args "$1"
+	sed -n 's/^# set: *\([^ ]*\).*/--set \1/p' "$1"
+}
+
+# script_content_args FILE: its "# args:" words alone (the content
+# options a replay of its recording needs too; settings are in the
+# recording's header).
+script_content_args() {
+	sed -n 's/^# args: //p' "$1"
 }

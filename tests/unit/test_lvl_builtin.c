@@ -235,6 +235,27 @@ static int is_lift_special(int sp)
 	return sp == 10 || sp == 62 || sp == 88 || (sp >= 120 && sp <= 123);
 }
 
+/* The lowest ceiling (ceil 1) or floor (0) of the sectors next to sector
+ * sec across two-sided lines, or from if none is lower. */
+static fx_t lowest_neighbour(const struct map *m, uint32_t sec, int ceil, fx_t from)
+{
+	fx_t v = from;
+
+	for (uint32_t j = 0; j < m->num_lines; j++) {
+		const struct map_line *o = &m->lines[j];
+		if (o->side[1] == MAP_NONE)
+			continue;
+		for (int sd = 0; sd < 2; sd++) {
+			uint32_t a = m->sides[o->side[sd]].sector;
+			uint32_t b = m->sides[o->side[!sd]].sector;
+			fx_t h = ceil ? m->sectors[b].ceil_h : m->sectors[b].floor_h;
+			if (a == sec && b != sec && h < v)
+				v = h;
+		}
+	}
+	return v;
+}
+
 static void reachable_sectors(const struct map *m, uint32_t start, uint8_t *reach)
 {
 	fx_t lo[REACH_MAX], hi[REACH_MAX], ceil[REACH_MAX];
@@ -251,36 +272,12 @@ static void reachable_sectors(const struct map *m, uint32_t start, uint8_t *reac
 		if (l->side[1] == MAP_NONE)
 			continue;
 		uint32_t back = m->sides[l->side[1]].sector;
-		if (is_door_special(l->special)) {
-			fx_t c = INT32_MAX;
-			for (uint32_t j = 0; j < m->num_lines; j++) {
-				const struct map_line *o = &m->lines[j];
-				if (o->side[1] == MAP_NONE)
-					continue;
-				for (int sd = 0; sd < 2; sd++) {
-					uint32_t a = m->sides[o->side[sd]].sector;
-					uint32_t b = m->sides[o->side[!sd]].sector;
-					if (a == back && b != back && m->sectors[b].ceil_h < c)
-						c = m->sectors[b].ceil_h;
-				}
-			}
-			ceil[back] = c - 4 * FX_ONE;
-		}
+		if (is_door_special(l->special))
+			ceil[back] = lowest_neighbour(m, back, 1, INT32_MAX) - 4 * FX_ONE;
 		if (is_lift_special(l->special))
 			for (uint32_t s = 0; s < n; s++)
-				if (m->sectors[s].tag == l->tag) {
-					for (uint32_t j = 0; j < m->num_lines; j++) {
-						const struct map_line *o = &m->lines[j];
-						if (o->side[1] == MAP_NONE)
-							continue;
-						for (int sd = 0; sd < 2; sd++) {
-							uint32_t a = m->sides[o->side[sd]].sector;
-							uint32_t b = m->sides[o->side[!sd]].sector;
-							if (a == s && m->sectors[b].floor_h < lo[s])
-								lo[s] = m->sectors[b].floor_h;
-						}
-					}
-				}
+				if (m->sectors[s].tag == l->tag)
+					lo[s] = lowest_neighbour(m, s, 0, lo[s]);
 	}
 	while (changed) {
 		changed = 0;

@@ -143,7 +143,7 @@ for s in tests/replay/*.scr tests/script/*.scr; do
 	record "$s" "$n" $(script_args "$s")
 	# its content options (a grid map: "# args: --grid builtin"), which
 	# its replays need too
-	sed -n 's/^# args: //p' "$s" > "$tmp/rec/$n.args"
+	script_content_args "$s" > "$tmp/rec/$n.args"
 done
 record tests/replay/game.scr settings-game --set game.coins_per_credit=3 --set game.freeplay=1
 # a rate that 60 does not divide: the mixer carries the remainder
