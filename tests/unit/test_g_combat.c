@@ -392,18 +392,35 @@ static void the_pitch_moves_by_steps_within_its_range_and_both_centre(void **sta
 	const struct sim_cmd down = { .buttons = SIM_BT_LOOK_DOWN };
 	const struct sim_cmd both = { .buttons = SIM_BT_LOOK_UP | SIM_BT_LOOK_DOWN };
 	(void)state;
+	/* the documented numbers (docs/game.md): the reach is 5/8, and held,
+	 * the pitch goes from level to it in half a second: a step is 1/30 of
+	 * the reach rounded down (the division loses under 1/65536 a step),
+	 * so the half second's 30 steps come within 30/65536 of the top and
+	 * the next tick stops on it */
+	assert_int_equal(G_PITCH_MAX, FX_ONE * 5 / 8);
 	sim_init(&s, m, &normal);
 	assert_int_equal(s.pl.pitch, 0);
 	run(&s, &up, 3);
 	assert_int_equal(s.pl.pitch, 3 * G_PITCH_STEP);
 	run(&s, &idle, 10);                    /* released: it stays */
 	assert_int_equal(s.pl.pitch, 3 * G_PITCH_STEP);
-	run(&s, &up, 100);
+	run(&s, &up, SIM_TICRATE / 2 - 3 - 1);
+	assert_true(s.pl.pitch < G_PITCH_MAX - FX_ONE / 100);
+	sim_tick(&s, &up);                     /* the half second's last tick */
+	assert_true(s.pl.pitch > G_PITCH_MAX - 30);
+	assert_true(s.pl.pitch <= G_PITCH_MAX);
+	sim_tick(&s, &up);
 	assert_int_equal(s.pl.pitch, G_PITCH_MAX);
-	run(&s, &down, 200);
+	run(&s, &up, 100);                     /* held on: it stays at the top */
+	assert_int_equal(s.pl.pitch, G_PITCH_MAX);
+	run(&s, &down, SIM_TICRATE - 1);
+	assert_true(s.pl.pitch > -G_PITCH_MAX);
+	run(&s, &down, 100);
 	assert_int_equal(s.pl.pitch, -G_PITCH_MAX);
 	sim_tick(&s, &both);
 	assert_int_equal(s.pl.pitch, 0);
+	run(&s, &down, 2);                     /* down from level: negative */
+	assert_int_equal(s.pl.pitch, -2 * G_PITCH_STEP);
 	map_free(m);
 }
 
