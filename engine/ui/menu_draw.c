@@ -94,8 +94,20 @@ static void menu_diag_lines(struct menu_ctx *m, const struct hud_diag *d)
 	}
 }
 
-/* The actions as the game receives them, the coins, then the app's
- * lines when it gives some (the devices' raw controls, hud_env.diag). */
+/* One row of the input test: the name, and its state in green when
+ * held, else "--". */
+static void menu_input_row(struct menu_ctx *m, const char *name, const char *held)
+{
+	hud_text(m->f, m->c, m->x, m->y, m->sc, held ? m->c->green : m->c->white, name);
+	hud_text(m->f, m->c, m->x + 20 * V_CHAR * m->sc, m->y, m->sc,
+		 held ? m->c->green : m->c->dark, held ? held : "--");
+	m->y += 10 * m->sc;
+}
+
+/* The actions as the game receives them (the two look buttons on one row:
+ * UP, DOWN, or CENTRE for both, as the sim reads them), the coins, then
+ * the app's lines when it gives some (the devices' raw controls,
+ * hud_env.diag). */
 static void menu_input_page(struct menu_ctx *m, const struct hud_diag *d)
 {
 	const struct sim_cmd *c = &m->s->cmd;
@@ -109,15 +121,14 @@ static void menu_input_page(struct menu_ctx *m, const struct hud_diag *d)
 		"FORWARD", "BACK", "TURN LEFT", "TURN RIGHT", "STRAFE LEFT", "STRAFE RIGHT",
 		"FIRE", "USE", "START", "SERVICE", "WEAPON",
 	};
+	static const char *const look[4] = { NULL, "UP", "DOWN", "CENTRE" };
 	char buf[32] = "";
 
 	menu_title(m, "INPUT TEST", "SERVICE: BACK");
-	for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); i++) {
-		hud_text(m->f, m->c, m->x, m->y, m->sc, on[i] ? m->c->green : m->c->white, names[i]);
-		hud_text(m->f, m->c, m->x + 20 * V_CHAR * m->sc, m->y, m->sc,
-			 on[i] ? m->c->green : m->c->dark, on[i] ? "ON" : "--");
-		m->y += 10 * m->sc;
-	}
+	for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); i++)
+		menu_input_row(m, names[i], on[i] ? "ON" : NULL);
+	menu_input_row(m, "LOOK", look[(c->buttons & SIM_BT_LOOK_UP ? 1 : 0) +
+				       (c->buttons & SIM_BT_LOOK_DOWN ? 2 : 0)]);
 	msg_cat(buf, sizeof(buf), "COINS ");
 	hud_cat_num(buf, sizeof(buf), m->s->menu.coins_seen, 1, '0');
 	m->y += 4 * m->sc;

@@ -15,6 +15,7 @@
 #include "engine/map/map.h"
 #include "engine/render/r_main.h"
 #include "engine/ui/hud.h"
+#include "engine/ui/v_video.h"
 #include "g_fixture.h"
 
 #define W 320
@@ -261,6 +262,48 @@ static void the_input_test_lights_held_controls_green(void **state)
 	assert_true(held > none + 2 * 40);     /* two names and two "ON" */
 }
 
+/* Pixels s draws at scale 1: its glyphs' set bits. */
+static int text_pixels(const char *s)
+{
+	int n = 0;
+
+	for (; *s; s++)
+		for (int y = 0; y < 8; y++)
+			for (int x = 0; x < 8; x++)
+				n += v_glyph_bit(*s, x, y);
+	return n;
+}
+
+/* The look buttons share one row, the twelfth (34 + 11 x 10 = 144 at
+ * scale 1): "LOOK" and its state in green while held (UP, DOWN, CENTRE
+ * for both, as the sim reads them), nothing green when neither is. */
+static void the_input_test_shows_the_look_buttons(void **state)
+{
+	static const struct {
+		uint8_t buttons;
+		const char *state;
+	} cases[] = {
+		{ 0, NULL },
+		{ SIM_BT_LOOK_UP, "UP" },
+		{ SIM_BT_LOOK_DOWN, "DOWN" },
+		{ SIM_BT_LOOK_UP | SIM_BT_LOOK_DOWN, "CENTRE" },
+		{ SIM_BT_FIRE | SIM_BT_LOOK_DOWN, "DOWN" },
+	};
+	struct sim s;
+	(void)state;
+	sim_init(&s, room, &play);
+	s.mode = SIM_SERVICE;
+	s.menu.page = MENU_INPUT;
+	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
+		s.cmd.buttons = cases[i].buttons;
+		draw(&s);
+		assert_int_equal(count_in(0, 144, W, 10, col.green),
+				 cases[i].state ? text_pixels("LOOK") + text_pixels(cases[i].state) : 0);
+		assert_true(count_in(0, 144, W, 10, col.white) >=
+			    (cases[i].state ? 0 : text_pixels("LOOK")));
+	}
+}
+
 /* The app gives d, a heading and a line, to the next draw(). */
 static void give_lines(struct hud_diag *d, const char *heading, const char *line)
 {
@@ -272,8 +315,8 @@ static void give_lines(struct hud_diag *d, const char *heading, const char *line
 }
 
 /* The input test prints the app's lines (the devices' raw controls) under
- * the coins line: eleven action rows (WEAPON the last) 10 lines apart
- * from 34, 4 more, the coins line (12): from line 160 at scale 1. */
+ * the coins line: twelve action rows (LOOK the last) 10 lines apart
+ * from 34, 4 more, the coins line (12): from line 170 at scale 1. */
 static void the_input_test_prints_the_apps_lines_under_the_actions(void **state)
 {
 	static struct hud_diag d;
@@ -284,14 +327,14 @@ static void the_input_test_prints_the_apps_lines_under_the_actions(void **state)
 	s.menu.page = MENU_INPUT;
 	diag = NULL;
 	draw(&s);
-	assert_true(count_in(0, 148, W, 10, col.yellow) > 20);        /* COINS 0 */
-	assert_int_equal(count_in(0, 160, W, H - 160 - 14, col.yellow), 0);
-	assert_int_equal(count_in(0, 160, W, H - 160 - 14, col.white), 0);
+	assert_true(count_in(0, 158, W, 10, col.yellow) > 20);        /* COINS 0 */
+	assert_int_equal(count_in(0, 170, W, H - 170 - 14, col.yellow), 0);
+	assert_int_equal(count_in(0, 170, W, H - 170 - 14, col.white), 0);
 	give_lines(&d, "CONTROLS", "  EVDEV - KEY_UP DOWN -> FORWARD");
 	draw(&s);
-	assert_true(count_in(0, 160, W, 10, col.yellow) > 8 * 8);
-	assert_true(count_in(0, 170, W, 10, col.white) > 20 * 8);
-	assert_int_equal(count_in(0, 180, W, H - 180 - 14, col.white), 0);
+	assert_true(count_in(0, 170, W, 10, col.yellow) > 8 * 8);
+	assert_true(count_in(0, 180, W, 10, col.white) > 20 * 8);
+	assert_int_equal(count_in(0, 190, W, H - 190 - 14, col.white), 0);
 	diag = NULL;
 }
 
@@ -391,6 +434,7 @@ int main(void)
 		cmocka_unit_test(the_world_shows_under_play_gameover_and_attract_only),
 		cmocka_unit_test(the_countdown_number_changes_the_picture),
 		cmocka_unit_test(the_input_test_lights_held_controls_green),
+		cmocka_unit_test(the_input_test_shows_the_look_buttons),
 		cmocka_unit_test(every_menu_page_draws_something),
 		cmocka_unit_test(the_diagnostics_pages_print_the_apps_lines),
 		cmocka_unit_test(the_input_test_prints_the_apps_lines_under_the_actions),
