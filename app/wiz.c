@@ -17,7 +17,8 @@
 enum { WIZ_P_STEPS, WIZ_P_SUMMARY, WIZ_P_END };
 enum { WIZ_C_PENDING, WIZ_C_ASSIGNED, WIZ_C_SKIPPED };
 
-/* The steps: up, down, left, right as the stick moves, then the buttons. */
+/* The steps: up, down, left, right as the stick moves, then the buttons,
+ * then the optional controls (weapon, look) a small cabinet skips. */
 static const struct {
 	uint8_t act;
 	char prompt[16];               /* after "PRESS" */
@@ -35,6 +36,8 @@ static const struct {
 	{ ACT_COIN, "COIN", "COIN" },
 	{ ACT_SERVICE, "SERVICE", "SERVICE" },
 	{ ACT_WEAPON, "P1 WEAPON", "WEAPON" },
+	{ ACT_LOOK_UP, "P1 LOOK UP", "LOOK UP" },
+	{ ACT_LOOK_DOWN, "P1 LOOK DOWN", "LOOK DOWN" },
 };
 
 int wiz_step_action(int k)
@@ -546,9 +549,12 @@ static void wiz_legend(struct wiz_page *p, const struct wiz_ctl *const ctl[WIZ_S
 	}
 }
 
+/* The summary's rows are 9 lines apart (8 of text, 1 between) from line
+ * 36 at scale 1, so the 14 steps, the legend and the hold bar end above
+ * the three lines at the bottom of a 240-line frame. */
 static void wiz_summary_page(struct wiz_page *p, const struct wiz *w)
 {
-	int sc = p->sc, x = p->margin, y = 40 * sc, col2 = x + 13 * V_CHAR * sc;
+	int sc = p->sc, x = p->margin, y = 36 * sc, col2 = x + 13 * V_CHAR * sc;
 	uint64_t left = WIZ_SUMMARY_NS - (w->now - w->summary_from < WIZ_SUMMARY_NS ?
 					  w->now - w->summary_from : WIZ_SUMMARY_NS);
 	const struct wiz_ctl *secs[WIZ_STEPS];
@@ -556,7 +562,7 @@ static void wiz_summary_page(struct wiz_page *p, const struct wiz *w)
 	char buf[80], key[24];
 
 	wiz_centre(p, 26 * sc, sc, p->c.grey, "SUMMARY");
-	for (int k = 0; k < WIZ_STEPS; k++, y += 10 * sc) {
+	for (int k = 0; k < WIZ_STEPS; k++, y += 9 * sc) {
 		wiz_text(p, x, y, sc, p->c.white, wiz_order[k].label, col2 - x);
 		if (w->cap[k].state == WIZ_C_ASSIGNED) {
 			wiz_key_name(w->cap[k].c.code, key, sizeof(key));

@@ -10,8 +10,9 @@
  * Steps, one per action, in this order (WIZ_STEPS):
  *   P1 UP (forward), P1 DOWN (back), P1 LEFT (turn_left), P1 RIGHT
  *   (turn_right), P1 FIRE, P1 USE, P1 STRAFE LEFT, P1 STRAFE RIGHT,
- *   P1 START, COIN, SERVICE, P1 WEAPON (last: a cabinet with fewer
- *   buttons than actions skips it by holding, as any step).
+ *   P1 START, COIN, SERVICE, then the optional controls P1 WEAPON, P1
+ *   LOOK UP, P1 LOOK DOWN (last: a cabinet with fewer buttons than
+ *   actions skips them by holding, as any step).
  *
  * Rules of a step:
  *  - a control is assigned to the step's action on its RELEASE, when it
@@ -52,7 +53,7 @@
 struct pal;
 struct r_frame;
 
-#define WIZ_STEPS 12
+#define WIZ_STEPS 14
 #define WIZ_HOLD_NS 1000000000ull       /* hold to skip (steps) or discard (summary) */
 #define WIZ_IDLE_NS 60000000000ull      /* steps: no event for this long cancels */
 #define WIZ_SUMMARY_NS 10000000000ull   /* summary: no press for this long saves */
@@ -155,7 +156,7 @@ int wiz_step(const struct wiz *w);
 enum wiz_note wiz_last_note(const struct wiz *w, int *step, struct wiz_ctl *ctl);
 
 /* Draws the whole frame (any size; text scaled 1 per 240 lines as the
- * HUD's): the step's page (title, "STEP K OF 11", "PRESS" and the control
+ * HUD's): the step's page (title, "STEP K OF 14", "PRESS" and the control
  * asked for, the action, the note about the last capture with its device
  * and control, a bar while a control is held towards a skip, the hint
  * "HOLD ANY BUTTON 1 S TO SKIP"), or the summary (each action with the

@@ -28,7 +28,8 @@
 #define T0 (5 * S)                     /* any start time */
 
 /* The steps in the order wiz.h gives. */
-enum { UP, DOWN, LEFT, RIGHT, FIRE, USE, SLEFT, SRIGHT, START, COIN, SERVICE, WEAPON };
+enum { UP, DOWN, LEFT, RIGHT, FIRE, USE, SLEFT, SRIGHT, START, COIN, SERVICE, WEAPON, LOOKUP,
+       LOOKDOWN };
 
 static struct in_ident ident(const char *port, uint16_t vid, uint16_t pid, const char *name)
 {
@@ -133,7 +134,8 @@ static void the_steps_are_in_stick_then_button_order(void **state)
 {
 	static const int want[WIZ_STEPS] = { ACT_FORWARD, ACT_BACK, ACT_TURN_LEFT, ACT_TURN_RIGHT,
 					     ACT_FIRE, ACT_USE, ACT_STRAFE_LEFT, ACT_STRAFE_RIGHT,
-					     ACT_START, ACT_COIN, ACT_SERVICE, ACT_WEAPON };
+					     ACT_START, ACT_COIN, ACT_SERVICE, ACT_WEAPON,
+					     ACT_LOOK_UP, ACT_LOOK_DOWN };
 
 	(void)state;
 	for (int k = 0; k < WIZ_STEPS; k++)
@@ -175,6 +177,16 @@ static void a_hid_device_on_a_port_gets_its_own_section(void **state)
 	hold(&w, "hid", &hid, BTN_TRIGGER_HAPPY3, &t);
 	assert_int_equal(wiz_last_note(&w, &step, NULL), WIZ_N_SKIPPED);
 	assert_int_equal(step, WEAPON);
+	/* look up: a button (a second stick's up is the same: a code) */
+	assert_int_equal(wiz_step(&w), LOOKUP);
+	tap(&w, "hid", &hid, BTN_TRIGGER_HAPPY7, &t);
+	assert_int_equal(wiz_last_note(&w, &step, &c), WIZ_N_ASSIGNED);
+	assert_int_equal(step, LOOKUP);
+	assert_int_equal(c.code, BTN_TRIGGER_HAPPY7);
+	/* look down: skipped, as a pad with too few buttons does */
+	hold(&w, "hid", &hid, BTN_TRIGGER_HAPPY3, &t);
+	assert_int_equal(wiz_last_note(&w, &step, NULL), WIZ_N_SKIPPED);
+	assert_int_equal(step, LOOKDOWN);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
 
@@ -192,8 +204,9 @@ static void a_hid_device_on_a_port_gets_its_own_section(void **state)
 	only(want, ACT_STRAFE_RIGHT, BTN_TRIGGER_HAPPY6);
 	only(want, ACT_START, BTN_TRIGGER_HAPPY10);
 	only(want, ACT_COIN, BTN_TRIGGER_HAPPY9);
-	/* service and weapon: skipped, keep KEY_9, KEY_F2 and KEY_Z, KEY_TAB
-	 * from the copy of [keyboard] */
+	only(want, ACT_LOOK_UP, BTN_TRIGGER_HAPPY7);
+	/* service, weapon and look down: skipped, keep KEY_9, KEY_F2, KEY_Z,
+	 * KEY_TAB and KEY_PAGEDOWN from the copy of [keyboard] */
 	expect_section((const int (*)[BIND_MAX])section(&out, "usb-1-1")->key,
 		       (const int (*)[BIND_MAX])want);
 
@@ -205,6 +218,10 @@ static void a_hid_device_on_a_port_gets_its_own_section(void **state)
 	assert_int_equal(acts[0], ACT_FIRE);
 	assert_int_equal(bind_lookup_dev(&back, &hid, KEY_9, acts, ACT_COUNT), 1);
 	assert_int_equal(acts[0], ACT_SERVICE);
+	assert_int_equal(bind_lookup_dev(&back, &hid, BTN_TRIGGER_HAPPY7, acts, ACT_COUNT), 1);
+	assert_int_equal(acts[0], ACT_LOOK_UP);
+	assert_int_equal(bind_lookup_dev(&back, &hid, KEY_PAGEDOWN, acts, ACT_COUNT), 1);
+	assert_int_equal(acts[0], ACT_LOOK_DOWN);
 }
 
 /* The 1 s boundary: 999,999,999 ns is a press, 1 s a skip, whether the
@@ -244,7 +261,7 @@ static void holding_one_second_skips_and_keeps_the_old_binding(void **state)
 	assert_int_equal(wiz_last_note(&w, NULL, NULL), WIZ_N_SKIPPED);
 	t += 2 * S;
 	/* the rest skipped */
-	for (int k = RIGHT; k <= WEAPON; k++)
+	for (int k = RIGHT; k <= LOOKDOWN; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
@@ -281,7 +298,7 @@ static void a_control_assigned_twice_is_refused(void **state)
 	assert_int_equal(wiz_last_note(&w, &step, NULL), WIZ_N_TAKEN);
 	assert_int_equal(step, DOWN);
 	tap(&w, "evdev", NULL, KEY_SPACE, &t);         /* turn left = SPACE, off fire */
-	for (int k = RIGHT; k <= WEAPON; k++)
+	for (int k = RIGHT; k <= LOOKDOWN; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
@@ -310,7 +327,7 @@ static void a_keyboard_without_ident_binds_in_keyboard(void **state)
 	tap(&w, "tty", NULL, KEY_S, &t);               /* back = S */
 	tap(&w, NULL, NULL, KEY_A, &t);                /* turn left = A, off strafe left */
 	tap(&w, "gpio", &gpio, KEY_D, &t);             /* turn right = D, off strafe right */
-	for (int k = FIRE; k <= WEAPON; k++)
+	for (int k = FIRE; k <= LOOKDOWN; k++)
 		hold(&w, "gpio", &gpio, KEY_5, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
@@ -358,7 +375,7 @@ static void two_devices_in_one_run_get_two_sections(void **state)
 	assert_int_equal(wiz_last_note(&w, NULL, NULL), WIZ_N_ASSIGNED);
 	tap(&w, "hid", &a, BTN_TRIGGER_HAPPY3, &t);    /* A fire (replaces HAPPY1) */
 	tap(&w, "hid", &a, BTN_TRIGGER_HAPPY10, &t);   /* A use: off A's start */
-	for (int k = SLEFT; k <= WEAPON; k++)
+	for (int k = SLEFT; k <= LOOKDOWN; k++)
 		hold(&w, "evdev", NULL, KEY_SPACE, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
@@ -391,7 +408,7 @@ static void skipping_every_step_changes_nothing(void **state)
 	(void)state;
 	bind_defaults(&b);
 	wiz_start(&w, &b, t);
-	for (int k = UP; k <= WEAPON; k++)
+	for (int k = UP; k <= LOOKDOWN; k++)
 		hold(&w, "evdev", NULL, KEY_ENTER, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 0);
@@ -414,7 +431,7 @@ static void the_summary_saves_or_discards_and_idle_cancels(void **state)
 	t = T0;
 	wiz_start(&w, &b, t);
 	tap(&w, "evdev", NULL, KEY_I, &t);
-	for (int k = DOWN; k <= WEAPON; k++)
+	for (int k = DOWN; k <= LOOKDOWN; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	assert_int_equal(wiz_step(&w), WIZ_STEPS);
 	hold(&w, "evdev", NULL, KEY_L, &t);
@@ -431,7 +448,7 @@ static void the_summary_saves_or_discards_and_idle_cancels(void **state)
 	t = T0;
 	wiz_start(&w, &b, t);
 	tap(&w, "evdev", NULL, KEY_I, &t);
-	for (int k = DOWN; k <= WEAPON; k++)
+	for (int k = DOWN; k <= LOOKDOWN; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	/* the last hold ended the steps at its 1 s tick, 500 ms before t */
 	assert_int_equal(wiz_tick(&w, t - 500 * MS + WIZ_SUMMARY_NS - 1), WIZ_RUNNING);
@@ -518,7 +535,7 @@ static void no_room_for_another_section_is_refused(void **state)
 	tap(&w, "hid", &known, BTN_SOUTH, &t);
 	assert_int_equal(wiz_last_note(&w, NULL, NULL), WIZ_N_ASSIGNED);
 	assert_int_equal(wiz_step(&w), DOWN);
-	for (int k = DOWN; k <= WEAPON; k++)
+	for (int k = DOWN; k <= LOOKDOWN; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	save(&w, &t);
 	assert_int_equal(wiz_result(&w, &out), 1);
@@ -567,6 +584,8 @@ static void the_page_draws_the_prompt_and_notes_at_any_size(void **state)
 		/* 1920x1080: text scale 4, prompt up to 12: 1440 px fits 1888 */
 		{ 1920, 1080, SRIGHT, "P1 STRAFE RIGHT", 12 },
 		{ 1920, 1080, COIN, "COIN", 12 },
+		/* the last step: "P1 LOOK DOWN" 12 chars, 288 px at 3 fits 312 */
+		{ 320, 240, LOOKDOWN, "P1 LOOK DOWN", 3 },
 	};
 	struct hud_colours c;
 	struct bind_table b;
@@ -644,13 +663,58 @@ static void the_summary_lists_controls_with_section_letters(void **state)
 	tap(&w, "evdev", NULL, KEY_I, &t);              /* [A] KEYBOARD */
 	tap(&w, "hid", &hid, BTN_SOUTH, &t);            /* [B] USB-1-1 */
 	tap(&w, "evdev", NULL, KEY_K, &t);              /* [A] again */
-	for (int k = RIGHT; k <= WEAPON; k++)
+	for (int k = RIGHT; k <= LOOKDOWN; k++)
 		hold(&w, "evdev", NULL, KEY_L, &t);
 	wiz_draw(&w, &pal, &f);
 	assert_int_equal(count(&f, c.green), text_pixels("KEY_I [A]", 1) +
 						     text_pixels("BTN_SOUTH [B]", 1) +
 						     text_pixels("KEY_K [A]", 1));
 	assert_int_equal(count(&f, c.yellow), 0);
+	free(f.px);
+}
+
+/* The summary at 320x240 (scale 1) lists all 14 steps' names in white,
+ * 9 lines apart from line 36, so they end at 36 + 14 x 9 = 162, above the
+ * legend and the white lines at the bottom (from 240 - 36 = 204): the
+ * white pixels above 162 are exactly the 14 names' glyph bits, LOOK UP
+ * and LOOK DOWN last; LOOK UP's control in green, LOOK DOWN KEPT. */
+static void the_summary_fits_every_step_above_the_bottom_lines(void **state)
+{
+	static const char *const names[WIZ_STEPS] = {
+		"FORWARD", "BACK", "TURN LEFT", "TURN RIGHT", "FIRE", "USE", "STRAFE LEFT",
+		"STRAFE RIGHT", "START", "COIN", "SERVICE", "WEAPON", "LOOK UP", "LOOK DOWN",
+	};
+	struct r_frame f = { NULL, 320, 240, 320 };
+	struct hud_colours c;
+	struct bind_table b;
+	struct pal pal;
+	struct wiz w;
+	uint64_t t = T0;
+	int white = 0, green = 0, want = 0;
+
+	(void)state;
+	pal_builtin(&pal);
+	hud_colours(&pal, &c);
+	bind_defaults(&b);
+	f.px = malloc((size_t)f.w * (size_t)f.h);
+	assert_non_null(f.px);
+	wiz_start(&w, &b, t);
+	for (int k = UP; k < LOOKUP; k++)
+		hold(&w, "evdev", NULL, KEY_L, &t);
+	tap(&w, "evdev", NULL, KEY_PAGEUP, &t);         /* LOOK UP = KEY_PAGEUP [A] */
+	hold(&w, "evdev", NULL, KEY_L, &t);             /* LOOK DOWN kept */
+	assert_int_equal(wiz_step(&w), WIZ_STEPS);
+	wiz_draw(&w, &pal, &f);
+	for (int y = 0; y < 162; y++)
+		for (int x = 0; x < f.w; x++) {
+			white += f.px[y * f.pitch + x] == c.white;
+			green += f.px[y * f.pitch + x] == c.green;
+		}
+	for (int k = 0; k < WIZ_STEPS; k++)
+		want += text_pixels(names[k], 1);
+	assert_int_equal(white, want);
+	assert_int_equal(green, text_pixels("KEY_PAGEUP [A]", 1));
+	assert_int_equal(count(&f, c.green), green);
 	free(f.px);
 }
 
@@ -673,7 +737,7 @@ static void tiny_frames_are_safe(void **state)
 		assert_non_null(f.px);
 		wiz_start(&w, &b, t);
 		wiz_draw(&w, &pal, &f);
-		for (int k = UP; k <= WEAPON; k++)
+		for (int k = UP; k <= LOOKDOWN; k++)
 			hold(&w, "evdev", NULL, KEY_Z, &t);
 		wiz_draw(&w, &pal, &f);
 		free(f.px);
@@ -695,6 +759,7 @@ int main(void)
 		cmocka_unit_test(no_room_for_another_section_is_refused),
 		cmocka_unit_test(the_page_draws_the_prompt_and_notes_at_any_size),
 		cmocka_unit_test(the_summary_lists_controls_with_section_letters),
+		cmocka_unit_test(the_summary_fits_every_step_above_the_bottom_lines),
 		cmocka_unit_test(tiny_frames_are_safe),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);

@@ -557,8 +557,9 @@ joy_attach() {
 # A gamepad no profile names (pid.codes' test id 1209:0002, so only the
 # generic guess) is plugged into a cabinet whose wizard never saved: the
 # wizard starts, is answered with the pad's buttons 1..10 for the first
-# ten steps, the eleventh (SERVICE) and the twelfth (P1 WEAPON) are
-# skipped by holding button 1 for 1.4 s, and a short press on the summary
+# ten steps, the eleventh (SERVICE) and the optional last three (P1
+# WEAPON, P1 LOOK UP, P1 LOOK DOWN) are skipped by holding button 1 for
+# 1.4 s, and a short press on the summary
 # saves. The bindings file it wrote
 # must hold exactly those, and after a restart the pad's buttons do what
 # the wizard set (button 5 is FIRE) and the wizard does not ask again.
@@ -610,6 +611,8 @@ phase_wizard() {
 	done
 	pad_tap "$hg" 1 1400    # SERVICE: held 1 s, skipped
 	pad_tap "$hg" 1 1400    # P1 WEAPON: skipped too
+	pad_tap "$hg" 1 1400    # P1 LOOK UP: skipped
+	pad_tap "$hg" 1 1400    # P1 LOOK DOWN: skipped
 	shot wizard-summary
 	pad_tap "$hg" 2 150     # a short press on the summary saves
 	saved() { log_since "$t_w" | grep -q 'input wizard: bindings saved in /var/lib/arcaded/bindings.ini'; }
