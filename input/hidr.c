@@ -119,7 +119,8 @@ struct hidr_ctl {
 	int32_t last;          /* value last reported */
 	int32_t cur;           /* value of the report being decoded */
 	int8_t dir;            /* -1, 0, +1 from the digital thresholds */
-	int8_t axis;           /* 0: X gives left/right, 1: Y gives up/down, -1: none */
+	int8_t axis;           /* 0: X gives left/right, 1: Y gives up/down,
+				  2: the look axis gives look up/down, -1: none */
 	bool armed;
 };
 
@@ -154,6 +155,10 @@ void hidr_default_opts(struct hidr_opts *o)
 	o->press = 500;
 	o->release = 350;
 }
+
+/* The look axis's codes (hidr.h): Linux has no code for a second stick's
+ * directions, and no pad uses these two. */
+static const uint16_t hidr_look[2] = { BTN_GEAR_UP, BTN_GEAR_DOWN };
 
 static const uint16_t hidr_dirs[2][4] = {
 	{ BTN_DPAD_UP, BTN_DPAD_DOWN, BTN_DPAD_LEFT, BTN_DPAD_RIGHT },
@@ -416,6 +421,36 @@ static int build(struct hidr *r, struct hidr_build *b)
 	return r->payload ? 0 : -ENOMEM;
 }
 
+/* The look axis (hidr.h): player 1's first axis declared with the Generic
+ * Desktop usage the options name, else (auto) Rz, else Ry; never one that
+ * gives directions already. By the declared usage, not the code: a
+ * repeated X renumbered to ABS_RY (DragonRise) is no second stick. */
+static struct hidr_ctl *look_axis(struct hidr *r, uint16_t usage_id)
+{
+	for (size_t i = 0; i < r->nctl; i++) {
+		struct hidr_ctl *c = &r->ctl[i];
+
+		if (c->what == HIDR_C_AXIS && c->player == 1 && c->axis < 0 &&
+		    HIDD_PAGE(c->usage) == HIDD_PAGE_DESKTOP && HIDD_ID(c->usage) == usage_id)
+			return c;
+	}
+	return NULL;
+}
+
+static void find_look(struct hidr *r)
+{
+	struct hidr_ctl *c;
+
+	if (r->o.look == HIDR_LOOK_NONE)
+		return;
+	if (r->o.look)
+		c = look_axis(r, r->o.look);
+	else if (!(c = look_axis(r, HIDD_GD_X + 5)))        /* Rz */
+		c = look_axis(r, HIDD_GD_X + 4);            /* Ry */
+	if (c)
+		c->axis = 2;
+}
+
 int hidr_new(const struct hidd_desc *d, const struct hidr_opts *opts, struct hidr **out)
 {
 	struct hidr_build b = { { 0 }, NULL };
@@ -453,6 +488,7 @@ int hidr_new(const struct hidd_desc *d, const struct hidr_opts *opts, struct hid
 	free(b.seen);
 	if (rc < 0)
 		goto fail;
+	find_look(r);
 	*out = r;
 	return 0;
 fail:
@@ -534,7 +570,9 @@ static void axis_dirs(const struct hidr *r, struct hidr_ctl *c, int32_t v, uint6
 		c->dir = 0;
 	if (c->dir == 0 && mag >= press && mag > 0)
 		c->dir = v < 0 ? -1 : 1;
-	if (c->dir != 0) {
+	if (c->dir != 0 && c->axis == 2) {
+		hold(bits, hidr_look[c->dir < 0 ? 0 : 1]);
+	} else if (c->dir != 0) {
 		int d = c->axis == 0 ? (c->dir < 0 ? HIDR_LEFT : HIDR_RIGHT)
 				     : (c->dir < 0 ? HIDR_UP : HIDR_DOWN);
 
@@ -719,7 +757,8 @@ size_t hidr_describe(const struct hidr *r, char *buf, size_t len)
 					HIDD_PAGE(c->usage), HIDD_ID(c->usage), c->code,
 					(long long)c->cmin, (long long)c->ccen, (long long)c->cmax,
 					c->axis == 0 ? ", left/right" :
-					c->axis == 1 ? ", up/down" : "");
+					c->axis == 1 ? ", up/down" :
+					c->axis == 2 ? ", look up/down" : "");
 				break;
 			case HIDR_C_HAT:
 				txt_put(&t, "hat -> directions");

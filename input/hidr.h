@@ -36,6 +36,17 @@
  *     logical range with the centre in its middle (rounded down), except
  *     for throttle, accelerator and brake, which rest at their minimum.
  *
+ * The look axis (vertical aim, a pad's second stick): player 1's first
+ * axis declared as Rz, else as Ry (the second stick's vertical axis on
+ * most pads: Z and Rz, or Rx and Ry), or as the Generic Desktop usage the
+ * option look names (HIDR_LOOK_NONE: no look axis); by the declared
+ * usage, so a repeated X renumbered to ABS_RY is not one; never an axis
+ * read as X or Y. It keeps its IN_ABS events and
+ * gives two more controls through the digital thresholds, as Y gives up
+ * and down: BTN_GEAR_UP when pushed up (negative), BTN_GEAR_DOWN when
+ * pulled down (Linux has no code for a second stick's directions; no pad
+ * uses these two). The bindings name them (look_up = BTN_GEAR_UP).
+ *
  * Digital thresholds: with v the calibrated value, a direction is pressed
  * when |v| reaches press (per mille of full deflection) and released when
  * it falls below release (hysteresis: no chatter at the threshold). Y grows
@@ -82,7 +93,11 @@ struct hidr_opts {
 	uint16_t release;           /* per mille, <= press; default 350 */
 	uint16_t p2_first_button;   /* 0: none */
 	uint16_t p2_x, p2_y;        /* Generic Desktop usage ids, 0: none */
+	uint16_t look;              /* the look axis: a Generic Desktop usage id,
+				       0 auto, HIDR_LOOK_NONE none */
 };
+
+#define HIDR_LOOK_NONE 0xffff
 
 struct hidr;
 

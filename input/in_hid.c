@@ -172,6 +172,12 @@ static int spec_term(struct in_hid_spec *s, char *t, char *why, size_t whylen)
 		if (num_parse(v, 1, 65535, &n) < 0)
 			goto bad;
 		s->opts.p2_first_button = (uint16_t)n;
+	} else if (strcmp(t, "look") == 0) {
+		a = strcasecmp(v, "none") == 0 ? HIDR_LOOK_NONE :
+		    strcasecmp(v, "auto") == 0 ? 0 : axis_usage(v);
+		if (a < 0)
+			goto bad;
+		s->opts.look = (uint16_t)a;
 	} else if (strcmp(t, "p2_x") == 0 || strcmp(t, "p2_y") == 0) {
 		a = axis_usage(v);
 		if (a < 0)

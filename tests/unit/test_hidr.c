@@ -206,6 +206,109 @@ static void test_dualshock3_resting_reports_give_nothing(void **state)
 	close_dev(&x);
 }
 
+/* The look axis on a real pad with a second stick: the DualShock 3's
+ * report 1 has X, Y, Z, Rz in bytes 6..9 (with the id byte; 0..255, centre
+ * 127 by default), Rz the right stick's vertical. Rz is the look axis:
+ * pushed up (small values) it holds BTN_GEAR_UP, pulled down BTN_GEAR_DOWN,
+ * through the digital thresholds: pressed at 500 per mille, i.e. 16383;
+ * up at raw 63 is -(64 x 32767 / 127) = -16512 (pressed), at 64 -16254
+ * (not); released under 350 per mille (11468): at raw 82, -11610, still
+ * held, at 83, -11352, released. Its IN_ABS events stay. */
+static void test_dualshock3_right_stick_vertical_looks_up_and_down(void **state)
+{
+	static struct fix_reports reps;
+	struct hidr_opts o;
+	struct dev x;
+	uint8_t rep[49];
+
+	(void)state;
+	assert_true(fix_reports("054C_0268_dualshock3-usb", &reps) > 0);
+	assert_int_equal(reps.len[0], sizeof(rep));
+	memcpy(rep, reps.b[0], sizeof(rep));             /* the pad at rest, recorded */
+	open_fixture(&x, "054C_0268_dualshock3-usb");
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 0);
+	rep[9] = 64;                                     /* not far enough */
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 1);
+	expect_ev(&x, 0, IN_ABS, ABS_RZ, -(63 * 32767 / 127));
+	rep[9] = 63;
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 2);
+	expect_ev(&x, 0, IN_KEY, BTN_GEAR_UP, 1);
+	expect_ev(&x, 1, IN_ABS, ABS_RZ, -(64 * 32767 / 127));
+	rep[9] = 82;                                     /* hysteresis: still up */
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 1);
+	expect_ev(&x, 0, IN_ABS, ABS_RZ, -(45 * 32767 / 127));
+	rep[9] = 83;
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 2);
+	expect_ev(&x, 0, IN_KEY, BTN_GEAR_UP, 0);
+	rep[9] = 255;                                    /* pulled down */
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 2);
+	expect_ev(&x, 0, IN_KEY, BTN_GEAR_DOWN, 1);
+	expect_ev(&x, 1, IN_ABS, ABS_RZ, 32767);
+	rep[9] = reps.b[0][9];                           /* back to rest */
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 2);
+	expect_ev(&x, 0, IN_KEY, BTN_GEAR_DOWN, 0);
+	expect_ev(&x, 1, IN_ABS, ABS_RZ, 0);
+	/* the left stick is still the d-pad, the right stick's X (Z) nothing */
+	rep[8] = 0;
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 1);
+	expect_ev(&x, 0, IN_ABS, ABS_Z, -32767);
+	rep[7] = 0;
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 2);
+	expect_ev(&x, 0, IN_KEY, BTN_DPAD_UP, 1);
+	close_dev(&x);
+
+	/* look=none: Rz is an axis only; look=z: Z looks instead */
+	hidr_default_opts(&o);
+	o.look = HIDR_LOOK_NONE;
+	{
+		static uint8_t b[4096];
+		long n = fix_desc("054C_0268_dualshock3-usb", b, sizeof(b));
+
+		assert_true(n > 0);
+		open_dev(&x, b, (size_t)n, &o);
+		memcpy(rep, reps.b[0], sizeof(rep));
+		assert_int_equal(feed(&x, rep, sizeof(rep), T0), 0);
+		rep[9] = 0;
+		assert_int_equal(feed(&x, rep, sizeof(rep), T0), 1);
+		expect_ev(&x, 0, IN_ABS, ABS_RZ, -32767);
+		close_dev(&x);
+		o.look = 0x32;
+		open_dev(&x, b, (size_t)n, &o);
+		memcpy(rep, reps.b[0], sizeof(rep));
+		assert_int_equal(feed(&x, rep, sizeof(rep), T0), 0);
+		rep[9] = 0;
+		assert_int_equal(feed(&x, rep, sizeof(rep), T0), 1);
+		rep[8] = 255;
+		assert_int_equal(feed(&x, rep, sizeof(rep), T0), 2);
+		expect_ev(&x, 0, IN_KEY, BTN_GEAR_DOWN, 1);
+		expect_ev(&x, 1, IN_ABS, ABS_Z, 32767);
+		close_dev(&x);
+	}
+}
+
+/* A stick held off centre when the first report comes is no look: the
+ * look axis, as X and Y, must be seen inside its deadzone once. */
+static void test_a_look_axis_held_from_the_start_holds_nothing(void **state)
+{
+	static struct fix_reports reps;
+	struct dev x;
+	uint8_t rep[49];
+
+	(void)state;
+	assert_true(fix_reports("054C_0268_dualshock3-usb", &reps) > 0);
+	memcpy(rep, reps.b[0], sizeof(rep));
+	open_fixture(&x, "054C_0268_dualshock3-usb");
+	rep[9] = 0;
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 1);
+	expect_ev(&x, 0, IN_ABS, ABS_RZ, -32767);
+	rep[9] = reps.b[0][9];
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 1);
+	rep[9] = 0;
+	assert_int_equal(feed(&x, rep, sizeof(rep), T0), 2);
+	expect_ev(&x, 0, IN_KEY, BTN_GEAR_UP, 1);
+	close_dev(&x);
+}
+
 static void test_xbox_resting_triggers_and_centred_sticks_give_nothing(void **state)
 {
 	uint8_t rep[17] = { 0x01, 0x00, 0x80, 0x00, 0x80, 0x00, 0x80, 0x00, 0x80 };
@@ -645,6 +748,8 @@ int main(void)
 		cmocka_unit_test(test_genius_keyboard_codes),
 		cmocka_unit_test(test_icade_letter_keys),
 		cmocka_unit_test(test_dualshock3_resting_reports_give_nothing),
+		cmocka_unit_test(test_dualshock3_right_stick_vertical_looks_up_and_down),
+		cmocka_unit_test(test_a_look_axis_held_from_the_start_holds_nothing),
 		cmocka_unit_test(test_xbox_resting_triggers_and_centred_sticks_give_nothing),
 		cmocka_unit_test(test_identical_reports_give_nothing),
 		cmocka_unit_test(test_stick_thresholds_with_hysteresis),

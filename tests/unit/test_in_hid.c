@@ -80,6 +80,14 @@ static void test_spec_terms(void **state)
 	assert_int_equal(s.opts.p2_first_button, 11);
 	assert_int_equal(s.opts.p2_x, 0x32);
 	assert_int_equal(s.opts.p2_y, 0x33);
+	/* the look axis: auto (0) unless named, or none */
+	assert_int_equal(s.opts.look, 0);
+	assert_int_equal(in_hid_parse_spec("hid:look=ry", &s, why, sizeof(why)), 0);
+	assert_int_equal(s.opts.look, 0x34);
+	assert_int_equal(in_hid_parse_spec("hid:look=none", &s, why, sizeof(why)), 0);
+	assert_int_equal(s.opts.look, HIDR_LOOK_NONE);
+	assert_int_equal(in_hid_parse_spec("hid:look=auto", &s, why, sizeof(why)), 0);
+	assert_int_equal(s.opts.look, 0);
 }
 
 static void test_spec_auto_detect_forms(void **state)
@@ -111,6 +119,7 @@ static void test_spec_errors_name_the_term(void **state)
 		{ "hid:deadzone=1001", "bad term 'deadzone=1001' in HID device spec" },
 		{ "hid:if=x", "bad term 'if=x' in HID device spec" },
 		{ "hid:p2_x=q", "bad term 'p2_x=q' in HID device spec" },
+		{ "hid:look=up", "bad term 'look=up' in HID device spec" },
 		{ "hid:split=both", "bad term 'split=both' in HID device spec" },
 		{ "hid:press=300,release=400", "release (400) above press (300)" },
 	};

@@ -622,12 +622,13 @@ phase_wizard() {
 	# The section of the pad's port, as the file has it, action by action.
 	got=$(awk -v s="[device \"usb-$port\"]" '$0 == s { on = 1; next } /^\[/ { on = 0 }
 		on && / = / { printf "%s=%s;", $1, $3 }' "$f" 2>/dev/null)
-	want="forward=BTN_TRIGGER_HAPPY1;back=BTN_TRIGGER_HAPPY2;turn_left=BTN_TRIGGER_HAPPY3;turn_right=BTN_TRIGGER_HAPPY4;strafe_left=BTN_TRIGGER_HAPPY7;strafe_right=BTN_TRIGGER_HAPPY8;fire=BTN_TRIGGER_HAPPY5;use=BTN_TRIGGER_HAPPY6;start=BTN_TRIGGER_HAPPY9;coin=BTN_TRIGGER_HAPPY10;"
+	want="forward=BTN_TRIGGER_HAPPY1;back=BTN_TRIGGER_HAPPY2;turn_left=BTN_TRIGGER_HAPPY3;turn_right=BTN_TRIGGER_HAPPY4;strafe_left=BTN_TRIGGER_HAPPY7;strafe_right=BTN_TRIGGER_HAPPY8;fire=BTN_TRIGGER_HAPPY5;use=BTN_TRIGGER_HAPPY6;start=BTN_TRIGGER_HAPPY9;coin=BTN_TRIGGER_HAPPY10;look_up=BTN_GEAR_UP;look_down=BTN_GEAR_DOWN;"
 	svc=$(awk -v s="[device \"usb-$port\"]" '$0 == s { on = 1; next } /^\[/ { on = 0 }
 		on && $1 == "service" { print }' "$f" 2>/dev/null)
 	meta=$(stat -c '%U %a' "$f" 2>&1)
 	# SERVICE was skipped: it keeps what the pad had, the generic gamepad
-	# profile's empty list (a cabinet's service switch is its own).
+	# profile's empty list (a cabinet's service switch is its own); so do
+	# LOOK UP and LOOK DOWN, the profile's second stick (BTN_GEAR_*).
 	check wizard-saved "$f ($meta), section usb-$port: ${got:-none}; skipped: '$svc'" \
 		sh -c "[ '$got' = '$want' ] && [ '$svc' = 'service =' ] && [ '$meta' = 'arcaded 600' ] && [ ! -e $f.tmp ]"
 	# The new bindings after a restart, and no second wizard.
