@@ -78,6 +78,9 @@ static void test_shipped_profiles_load_in_name_order(void **state)
 	assert_string_equal(s->p[2].file, "xinmo-16c0-05e1.ini");
 	assert_string_equal(s->p[3].file, "zz-generic-gamepad.ini");
 	assert_string_equal(s->p[0].name, "DragonRise Zero Delay encoder");
+	/* the generic gamepad looks with the HID decoder's look axis (hidr.h) */
+	assert_int_equal(s->p[3].key[ACT_LOOK_UP][0], BTN_GEAR_UP);
+	assert_int_equal(s->p[3].key[ACT_LOOK_DOWN][0], BTN_GEAR_DOWN);
 	/* every HID option string is a valid set of HID spec terms */
 	for (int i = 0; i < s->n; i++) {
 		struct in_hid_spec spec;
