@@ -121,14 +121,14 @@ static void menu_input_page(struct menu_ctx *m, const struct hud_diag *d)
 		"FORWARD", "BACK", "TURN LEFT", "TURN RIGHT", "STRAFE LEFT", "STRAFE RIGHT",
 		"FIRE", "USE", "START", "SERVICE", "WEAPON",
 	};
-	static const char *const look[4] = { NULL, "UP", "DOWN", "CENTRE" };
+	static const char look[4][8] = { "", "UP", "DOWN", "CENTRE" };
+	int l = (c->buttons & SIM_BT_LOOK_UP ? 1 : 0) + (c->buttons & SIM_BT_LOOK_DOWN ? 2 : 0);
 	char buf[32] = "";
 
 	menu_title(m, "INPUT TEST", "SERVICE: BACK");
 	for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); i++)
 		menu_input_row(m, names[i], on[i] ? "ON" : NULL);
-	menu_input_row(m, "LOOK", look[(c->buttons & SIM_BT_LOOK_UP ? 1 : 0) +
-				       (c->buttons & SIM_BT_LOOK_DOWN ? 2 : 0)]);
+	menu_input_row(m, "LOOK", l ? look[l] : NULL);
 	msg_cat(buf, sizeof(buf), "COINS ");
 	hud_cat_num(buf, sizeof(buf), m->s->menu.coins_seen, 1, '0');
 	m->y += 4 * m->sc;
