@@ -182,7 +182,7 @@ cp "$B/ref-600.png" "$ref"
 # a turn's play: the turn's page ends at tick 156, player 1's life at
 # 1956, player 2's page at 2226), and they differ (the HUD marks the
 # player up), so a screen that matches the second shows player 2 up.
-twop_ref() { # name, ticks..., then the script's lines
+twop_ref() { # name, two ticks, then script lines (those up to each tick's end)
 	tn=$1
 	ta=$2
 	tb=$3
@@ -191,7 +191,8 @@ twop_ref() { # name, ticks..., then the script's lines
 		rm -rf "$B/refstate-$tn"
 		mkdir -p "$B/refstate-$tn"
 		{ printf '2 tap coin\n4 tap coin\n6 tap start2\n6 expect players == 2\n'
-		  printf '%s\n' "$@"; printf '%d end\n' "$n"; } > "$B/ref-$tn-$n.scr"
+		  printf '%s\n' "$@" | awk -v n="$n" '$1 + 0 <= n + 0'; printf '%d end\n' "$n"; } \
+			> "$B/ref-$tn-$n.scr"
 		"$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --state-dir "$B/refstate-$tn" \
 			--set game.stage_time=0 --set game.idle_out=life \
 			--script "$B/ref-$tn-$n.scr" --screenshot "$B/ref-$tn-$n.png" > "$B/ref.log" 2>&1 ||
