@@ -499,7 +499,9 @@ judge() {
 		screen twop-p2-start-view "$H" match "$r2" "$res/twop-p2-start.ppm" "$bpp"
 		screen twop-p1-stick-not-p2 "$H" match "$r2" "$res/twop-p1-stick.ppm" "$bpp"
 		screen twop-second-device-drives-p2 \
-			sh -c '! "$1" match "$2" "$3" "$4" && "$1" differ "$5" "$3"' sh \
+			sh -c 'if "$1" match "$2" "$3" "$4" > /dev/null; then
+				echo "the screen is still player 2'"'"'s start view"; exit 1; fi
+				"$1" differ "$5" "$3"' sh \
 			"$H" "$r2" "$res/twop-p2-turned.ppm" "$bpp" "$res/twop-p1-stick.ppm"
 	fi
 	has after-stop && screen sigterm-console-shows-text "$H" text "$res/after-stop.ppm"
