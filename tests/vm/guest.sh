@@ -1022,12 +1022,14 @@ phase_twin() {
 # player 1 action has, so it can only act through player 2's controls).
 # With idle_out = life (a drop-in read after zz-vm.ini) player 1, who
 # turns once and then touches nothing, loses a life 30 s of game time
-# later; player 2 then comes up at the stage's start, which is the
-# reference frame (stage clock off, no input: a still view). While player
-# 2 is up, the joystick's stick must not move the view (the screen still
-# matches the reference) and the keyboard's G must turn it. The host
-# judges the screens (tests/vm/run.sh: twop-*); the guest checks that the
-# daemon read every control of both devices.
+# later; player 2 then comes up at the stage's start. Both start views
+# are references the host renders headless (tests/vm/run.sh: ref-twop-p1,
+# ref-twop-p2; still with the stage clock off and no input, and they
+# differ: the HUD marks the player up). While player 2 is up, the
+# joystick's stick must not move the view (the screen still matches
+# player 2's reference) and the keyboard's G must turn it. The host
+# judges the screens (run.sh: twop-*); the guest checks that the daemon
+# read every control of both devices.
 phase_twop() {
 	if ! err=$(joy_gadget arcjoy) || ! err=$(gadget_modules); then
 		fail twop-devices "$err"
