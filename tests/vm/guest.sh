@@ -1078,10 +1078,10 @@ phase_twop() {
 	# 30 s of game time without input, the death, the "PLAYER 2" page:
 	# then the start view again
 	t_p2=$(now)
-	if shot_match twop-p2-start 150 twop-p2; then
+	if shot_match twop-p2-start 240 twop-p2; then
 		pass twop-p2-up "player 2's start view $(sub "$t_p2" "$(now)") s after player 1's last input (idle out, then player 2's turn)"
 	else
-		fail twop-p2-up "the screen never showed player 2's start view within 150 s after player 1's last input"
+		fail twop-p2-up "the screen never showed player 2's start view within 240 s after player 1's last input"
 	fi
 	t_up=$(now)
 	# player 1's stick while player 2 is up: the view must not move
