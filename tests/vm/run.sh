@@ -42,7 +42,7 @@
 # ARCADED_VM_CACHE (kernel cache, default
 # ${XDG_CACHE_HOME:-$HOME/.cache}/arcaded-vm); ARCADED_VM_KERNEL (kernel
 # version instead of linux-image-amd64's); ARCADED_VM_TIMEOUT (seconds per
-# boot, default 900: a guard against a hung guest; an idle
+# boot, default 1200: a guard against a hung guest; an idle
 # machine boots and tests each in under 2 minutes, a loaded one can take 5+);
 # ARCADED_VM_PHASES (to debug: only these guest phases of each boot,
 # comma-separated, e.g. phase_boot,phase_twop; the others and the screens
@@ -56,7 +56,7 @@ top=$(pwd)
 BUILD=${BUILD:-build}
 B=$top/$BUILD/vm
 CACHE=${ARCADED_VM_CACHE:-${XDG_CACHE_HOME:-${HOME:-/root}/.cache}/arcaded-vm}
-TIMEOUT=${ARCADED_VM_TIMEOUT:-900}
+TIMEOUT=${ARCADED_VM_TIMEOUT:-1200}
 boots=${*:-fb32 fb16 latefb kms}
 
 skip() {
