@@ -42,18 +42,21 @@
 # ARCADED_VM_CACHE (kernel cache, default
 # ${XDG_CACHE_HOME:-$HOME/.cache}/arcaded-vm); ARCADED_VM_KERNEL (kernel
 # version instead of linux-image-amd64's); ARCADED_VM_TIMEOUT (seconds per
-# boot, default 900: a guard against a hung guest; an idle
-# machine boots and tests each in under 2 minutes, a loaded one can take 5+).
+# boot, default 1200: a guard against a hung guest; an idle
+# machine boots and tests each in under 2 minutes, a loaded one can take 5+);
+# ARCADED_VM_PHASES (to debug: only these guest phases of each boot,
+# comma-separated, e.g. phase_boot,phase_twop; the others and the screens
+# they take are counted as skipped, and the run exits 77 when nothing failed).
 #
-# Exit status: 0 all passed, 1 a failure, 77 skipped (QEMU cannot run here;
-# printed loudly).
+# Exit status: 0 all passed, 1 a failure, 77 skipped (QEMU cannot run here,
+# printed loudly; or parts skipped by ARCADED_VM_PHASES).
 set -u
 cd "$(dirname "$0")/../.."
 top=$(pwd)
 BUILD=${BUILD:-build}
 B=$top/$BUILD/vm
 CACHE=${ARCADED_VM_CACHE:-${XDG_CACHE_HOME:-${HOME:-/root}/.cache}/arcaded-vm}
-TIMEOUT=${ARCADED_VM_TIMEOUT:-900}
+TIMEOUT=${ARCADED_VM_TIMEOUT:-1200}
 boots=${*:-fb32 fb16 latefb kms}
 
 skip() {
@@ -172,6 +175,37 @@ done
 cmp -s "$B/ref-600.png" "$B/ref-1800.png" ||
 	die "the start view of a game still changes with no input after 10 s (ticks 600 and 1800 differ): the screen comparison needs a still frame"
 cp "$B/ref-600.png" "$ref"
+# Two players (guest.sh phase_twop, which sets game.idle_out = life): the
+# start view of a two-player game with player 1 up and, after player 1
+# gave no input for 30 s and lost the life, with player 2 up. Each is
+# still (two ticks far apart are equal; the idle warning comes 20 s into
+# a turn's play: the turn's page ends at tick 156, player 1's life at
+# 1956, player 2's page at 2226), and they differ (the HUD marks the
+# player up), so a screen that matches the second shows player 2 up.
+twop_ref() { # name, two ticks, then script lines (those up to each tick's end)
+	tn=$1
+	ta=$2
+	tb=$3
+	shift 3
+	for n in "$ta" "$tb"; do
+		rm -rf "$B/refstate-$tn"
+		mkdir -p "$B/refstate-$tn"
+		{ printf '2 tap coin\n4 tap coin\n6 tap start2\n6 expect players == 2\n'
+		  printf '%s\n' "$@" | awk -v n="$n" '$1 + 0 <= n + 0'; printf '%d end\n' "$n"; } \
+			> "$B/ref-$tn-$n.scr"
+		"$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --state-dir "$B/refstate-$tn" \
+			--set game.stage_time=0 --set game.idle_out=life \
+			--script "$B/ref-$tn-$n.scr" --screenshot "$B/ref-$tn-$n.png" > "$B/ref.log" 2>&1 ||
+			{ cat "$B/ref.log"; die "reference frame $tn"; }
+	done
+	cmp -s "$B/ref-$tn-$ta.png" "$B/ref-$tn-$tb.png" ||
+		die "the $tn start view still changes with no input (ticks $ta and $tb differ)"
+	cp "$B/ref-$tn-$ta.png" "$B/ref-$tn.png"
+}
+twop_ref twop-p1 600 1200 "600 expect up == 1" "1200 expect up == 1"
+twop_ref twop-p2 2600 3300 "2600 expect up == 2" "2600 expect phase == 0" "3300 expect up == 2"
+cmp -s "$B/ref-twop-p1.png" "$B/ref-twop-p2.png" &&
+	die "the two-player start views with player 1 up and with player 2 up are the same picture"
 render_w=$("$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --print-config |
 	sed -n 's/^render_width *= *//p')
 render_h=$("$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --print-config |
@@ -179,11 +213,14 @@ render_h=$("$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --print-confi
 
 passed=0
 failed=0
+skipped=0
 failures=""
-result() { # PASS|FAIL name detail
+result() { # PASS|FAIL|SKIP name detail
 	echo "$1 $2${3:+: $3}"
 	if [ "$1" = PASS ]; then
 		passed=$((passed + 1))
+	elif [ "$1" = SKIP ]; then
+		skipped=$((skipped + 1))
 	else
 		failed=$((failed + 1))
 		failures="$failures $2"
@@ -214,6 +251,7 @@ boot() {
 	base="console=ttyS0 quiet loglevel=3 panic=-1 no_timer_check i8042.noaux"
 	base="$base vt.global_cursor_default=0 systemd.unit=multi-user.target"
 	base="$base systemd.show_status=0 arcaded.vm=$name"
+	[ -n "${ARCADED_VM_PHASES:-}" ] && base="$base arcaded.phases=$ARCADED_VM_PHASES"
 	# Modules udev would load for the emulated PC's other hardware and the
 	# CPU's features: seconds each under emulation, of no use here.
 	base="$base modprobe.blacklist=floppy,ata_piix,pata_acpi,ata_generic,pcspkr,kvm,kvm_amd"
@@ -283,6 +321,10 @@ boot() {
 			n=$(basename "$r")
 			[ -e "$res/ack/$n" ] && continue
 			rq=$(cat "$r")
+			# "match" compares with the game's start view, "match NAME"
+			# with the reference $B/ref-NAME.png
+			rf=$ref
+			case $rq in match\ *) rf=$B/ref-${rq#match }.png; rq=match ;; esac
 			case $rq in key\ *)
 				# "key QCODE MS": a key on QEMU's PS/2 keyboard
 				read -r _ kq kms < "$r"
@@ -301,7 +343,7 @@ boot() {
 			"$H" shot "$sock" "$res/$n.ppm" > "$res/shot-$n.log" 2>&1
 			if [ "$rq" = match ]; then
 				# NAME-K of a series: compare now, keep the last as NAME.
-				"$H" match "$ref" "$res/$n.ppm" "$bpp" > "$res/ack/.$n" 2>&1 &&
+				"$H" match "$rf" "$res/$n.ppm" "$bpp" > "$res/ack/.$n" 2>&1 &&
 					sed -i 's/^/match /' "$res/ack/.$n"
 				cp "$res/$n.ppm" "$res/${n%-*}.ppm"
 				mv "$res/ack/.$n" "$res/ack/$n"
@@ -339,7 +381,7 @@ boot() {
 	# Guest results: lines "PASS|FAIL name detail", "FIGURE text".
 	while read -r kind rest; do
 		case $kind in
-		PASS | FAIL) result "$kind" "$name-${rest%%:*}" "$(echo "${rest#*:}" | sed 's/^ //')" ;;
+		PASS | FAIL | SKIP) result "$kind" "$name-${rest%%:*}" "$(echo "${rest#*:}" | sed 's/^ //')" ;;
 		FIGURE) figure "$name: $rest" ;;
 		esac
 	done < "$res/results.txt"
@@ -363,7 +405,8 @@ screens_of() {
 	fb16) echo "attract-1 attract-2 play-start play-moved hp-before hp-turned" \
 		"hp-still-1 hp-still-2 hp-still-3 hp-still-4 hp-still-5" \
 		"hid-replug-still-1 hid-replug-still-2 hid-replug-still-3 hid-replug-still-4" \
-		"hid-replug-still-5 after-stop" ;;
+		"hid-replug-still-5 twop-p1-start twop-p1-turned twop-p2-start twop-p1-stick" \
+		"twop-p2-turned after-stop" ;;
 	latefb) echo "late-screen gl-screen" ;;
 	kms) echo "attract-1 attract-2 play-start play-moved vt-away vt-back after-stop" ;;
 	*) echo "" ;;
@@ -385,6 +428,10 @@ judge() {
 	for w in $want; do
 		if [ -e "$res/$w.ppm" ]; then
 			result PASS "$name-screendump-$w" "taken"
+		elif [ -n "${ARCADED_VM_PHASES:-}" ]; then
+			# its phase did not run: it and the checks of it are skipped
+			result SKIP "$name-screendump-$w" "ARCADED_VM_PHASES=$ARCADED_VM_PHASES"
+			want=$(echo "$want" | sed "s/ $w / /")
 		else
 			result FAIL "$name-screendump-$w" "the guest never took it (see $res/results.txt)"
 		fi
@@ -439,6 +486,24 @@ judge() {
 		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/gpio-still-1.ppm" "$res/gpio-still-2.ppm"
 	has gpio-fired && screen gpio-changes-screen "$H" differ "$res/gpio-still-2.ppm" "$res/gpio-fired.ppm"
 	has hid-replug-still-5 && screen hid-replug-no-stuck-input still_pair hid-replug-still
+	# Two players (guest.sh phase_twop): player 1's start view, then the
+	# joystick turned player 1; player 2's start view (player 2 up); then
+	# the joystick's stick did not move the view and the second device's
+	# key (player 2's turn right) did.
+	if has twop-p2-turned; then
+		r1=$B/ref-twop-p1.png
+		r2=$B/ref-twop-p2.png
+		screen twop-p1-start-view "$H" match "$r1" "$res/twop-p1-start.ppm" "$bpp"
+		screen twop-p1-stick-drives-p1 \
+			sh -c '! "$1" match "$2" "$3" "$4"' sh "$H" "$r1" "$res/twop-p1-turned.ppm" "$bpp"
+		screen twop-p2-start-view "$H" match "$r2" "$res/twop-p2-start.ppm" "$bpp"
+		screen twop-p1-stick-not-p2 "$H" match "$r2" "$res/twop-p1-stick.ppm" "$bpp"
+		screen twop-second-device-drives-p2 \
+			sh -c 'if "$1" match "$2" "$3" "$4" > /dev/null; then
+				echo "the screen is still player 2'"'"'s start view"; exit 1; fi
+				"$1" differ "$5" "$3"' sh \
+			"$H" "$r2" "$res/twop-p2-turned.ppm" "$bpp" "$res/twop-p1-stick.ppm"
+	fi
 	has after-stop && screen sigterm-console-shows-text "$H" text "$res/after-stop.ppm"
 	# KMS: switched away, the other terminal's text is on the screen (the
 	# daemon dropped DRM master, so fbcon could set its mode); back, the
@@ -553,5 +618,6 @@ echo
 echo "vm: figures:$figures"
 echo "vm: whole VM test $(secs "$t_all" "$(now)") s"
 [ -n "$failures" ] && echo "vm: failed:$failures"
-echo "vm: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+echo "vm: $passed passed, $failed failed${ARCADED_VM_PHASES:+, $skipped skipped (ARCADED_VM_PHASES)}"
+[ "$failed" -eq 0 ] || exit 1
+[ "$skipped" -eq 0 ] || exit 77
