@@ -4,6 +4,8 @@
  */
 #include "engine/map/mesh_builtin.h"
 
+#include <errno.h>
+
 /* meshes/key.obj: 32 vertices, 48 triangles */
 static const struct mesh_vert mesh_v_key[] = {
 	{ -655360, -131072, 786432 },
@@ -89,11 +91,6 @@ static const struct mesh_tri mesh_t_key[] = {
 	{ { 27, 30, 31 } },
 	{ { 28, 29, 25 } },
 	{ { 28, 25, 24 } },
-};
-
-const struct mesh mesh_builtin_key = {
-	.v = mesh_v_key, .t = mesh_t_key, .nv = 32, .nt = 48,
-	.radius = 786432, .zmin = 786432, .zmax = 1835008,
 };
 
 /* meshes/lamp.obj: 64 vertices, 112 triangles */
@@ -279,7 +276,18 @@ static const struct mesh_tri mesh_t_lamp[] = {
 	{ { 48, 55, 54 } },
 };
 
-const struct mesh mesh_builtin_lamp = {
-	.v = mesh_v_lamp, .t = mesh_t_lamp, .nv = 64, .nt = 112,
-	.radius = 605487, .zmin = 0, .zmax = 4456448,
-};
+int mesh_builtin_get(int id, struct mesh *out)
+{
+	switch (id) {
+	case MESH_B_KEY:
+		*out = (struct mesh){ .v = mesh_v_key, .t = mesh_t_key, .nv = 32, .nt = 48,
+				      .radius = 786432, .zmin = 786432, .zmax = 1835008 };
+		return 0;
+	case MESH_B_LAMP:
+		*out = (struct mesh){ .v = mesh_v_lamp, .t = mesh_t_lamp, .nv = 64, .nt = 112,
+				      .radius = 605487, .zmin = 0, .zmax = 4456448 };
+		return 0;
+	default:
+		return -ENOENT;
+	}
+}
