@@ -140,6 +140,12 @@ $(BUILD)/tools/%: tools/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< -lm
 
+# mkmeshes reads the OBJ files with the engine's own reader: linked with the
+# library (engine/map/mesh_builtin.c is its committed output).
+$(BUILD)/tools/mkmeshes: tools/mkmeshes.c $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< $(LIB) $(LDLIBS)
+
 # pinout draws with the daemon's own code (the GPIO spec parser, v_video,
 # the PNG writer): linked with the library.
 $(BUILD)/tools/pinout: tools/pinout.c $(LIB)
@@ -211,7 +217,7 @@ check-docs: $(BIN)
 	@BIN=$(BIN) tests/check_docs.sh
 
 # engine/map/lvl_wad.c is exactly what tools/mklevels makes of levels/*.txt.
-check-levels: $(BUILD)/tools/mklevels
+check-levels: $(BUILD)/tools/mklevels $(BUILD)/tools/mkmeshes
 	@BUILD=$(BUILD) tests/check_levels.sh
 
 bench: all

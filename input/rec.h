@@ -113,7 +113,7 @@
 /* Bumped whenever the renderer draws any frame differently (engine/render/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. */
-#define REC_RENDER_VERSION 6
+#define REC_RENDER_VERSION 7
 /* Bumped whenever the audio of any tick changes (the mixer, the built-in
  * sounds, a sound's lump): recorded audio hashes of another version are
  * not compared. 2: doors, lifts, switches and teleports sound. */

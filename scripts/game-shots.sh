@@ -5,7 +5,7 @@
 # minimap, game over with the continue countdown, initials entry, and the
 # new score in attract; plus the attract title page, and the stage clock's
 # HURRY UP and the idle player's STILL THERE? from their scripts, and a
-# thrower's missile in flight.
+# thrower's missile in flight, and a mesh (the floor lamp).
 # Usage: scripts/game-shots.sh [path/to/arcaded]
 set -eu
 cd "$(dirname "$0")/.."
@@ -55,6 +55,14 @@ done
 } >"$tmp/thrower.scr"
 (cd "$tmp" && "$BIN" --script "$tmp/thrower.scr" --config-dir "$tmp/etc" \
 	--state-dir "$tmp/state-thrower" --set game.difficulty=0 --set game.render_width=640 \
+	--set game.render_height=480 >/dev/null)
+# A mesh: stage 1's floor lamp (meshes/lamp.obj) near, from the hall's
+# west side: turned towards it and walked up to some 130 units.
+printf '%s\n' '0 tap coin' '1 tap start' '10 press turn_left' '56 release turn_left' \
+	'60 press forward' '95 release forward' "140 screenshot $out/game-mesh.png" '140 end' \
+	>"$tmp/mesh.scr"
+(cd "$tmp" && "$BIN" --script "$tmp/mesh.scr" --config-dir "$tmp/etc" \
+	--state-dir "$tmp/state-mesh" --set game.render_width=640 \
 	--set game.render_height=480 >/dev/null)
 printf '100 screenshot %s\n1300 screenshot %s\n' "$out/game-attract-title.png" \
 	"$out/game-attract-demo.png" >"$tmp/title.scr"

@@ -15,6 +15,7 @@
 #include "engine/game/g_game.h"
 #include "engine/game/sim.h"
 #include "engine/map/map.h"
+#include "engine/map/mesh_builtin.h"
 #include "engine/map/tex.h"
 #include "engine/map/th.h"
 #include "engine/render/r_main.h"
@@ -34,6 +35,7 @@
 #define R_SPR_BLOOD "BLUD"
 #define R_SPR_MISSILE "BAL1"           /* Doom's imp ball: A, B flying; C, D, E exploding */
 #define R_MISSILE_ANIM 4               /* ticks per flying frame */
+#define R_MESH_TURN (ANG90 / 35u)      /* a mesh's turn per tick: a quarter a second */
 
 struct r_out {
 	const struct tex_set *t;
@@ -75,6 +77,55 @@ static void r_put(struct r_out *o, fx_t x, fx_t y, fx_t z, ang_t a, int spr, int
 	r->sprite = (uint16_t)spr;
 	r->frame = (uint16_t)frame;
 	r->flags = bright ? R_SPR_FULLBRIGHT : 0;
+	r->mesh = 0;
+	r->colour = 0;
+}
+
+/* The built-in mesh thing type `type` is drawn with (0: its sprite) and
+ * the colour (r, g, b) it is drawn in: the keys (cards and skulls alike,
+ * in their key's colour) and the floor lamp. */
+static int r_mesh_of(uint16_t type, int *r, int *g, int *b)
+{
+	switch (type) {
+	case 5: case 40:                /* blue card, blue skull */
+		*r = 40, *g = 80, *b = 255;
+		return MESH_B_KEY;
+	case 6: case 39:                /* yellow */
+		*r = 255, *g = 224, *b = 0;
+		return MESH_B_KEY;
+	case 13: case 38:               /* red */
+		*r = 255, *g = 32, *b = 32;
+		return MESH_B_KEY;
+	case 2028:                      /* floor lamp: brass */
+		*r = 232, *g = 176, *b = 64;
+		return MESH_B_LAMP;
+	default:
+		return 0;
+	}
+}
+
+/* Adds thing type `type` at (x, y, z) as its mesh when it has one (lit by
+ * its sector, not full bright: the Lambert term shows its shape), turned
+ * a quarter turn a second by the tick alone (frames stay a function of
+ * the sim's state); 1 when added as a mesh. */
+static int r_put_mesh(struct r_out *o, const struct sim *s, uint16_t type, fx_t x, fx_t y, fx_t z)
+{
+	int cr, cg, cb, mesh = r_mesh_of(type, &cr, &cg, &cb);
+	struct r_sprite *r;
+
+	if (!mesh)
+		return 0;
+	if (o->n >= o->max)
+		return 1;
+	r = &o->out[o->n++];
+	memset(r, 0, sizeof(*r));
+	r->x = x;
+	r->y = y;
+	r->z = z;
+	r->angle = (ang_t)(s->tick * R_MESH_TURN);
+	r->mesh = (uint8_t)mesh;
+	r->colour = pal_nearest(&o->t->pal, cr, cg, cb);
+	return 1;
 }
 
 static void r_put_enemy(struct r_out *o, const struct g_enemy *e)
@@ -123,6 +174,9 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite
 			continue;
 		g_thing_info(p->type, &ti);
 		/* on its floor as it is now (a lift carries it) */
+		if (r_put_mesh(&o, s, p->type, p->x, p->y,
+			       s->w.sec[map_point_sector(m, p->x, p->y)].floor_h))
+			continue;
 		r_put(&o, p->x, p->y, s->w.sec[map_point_sector(m, p->x, p->y)].floor_h, 0,
 		      r_sprite_index(t, ti.sprite, p->kind == G_P_HEALTH ? R_STANDIN_HEALTH : R_STANDIN_PICKUP),
 		      ti.stand + (ti.frames > 1 ? (int)(s->tick / R_ANIM % ti.frames) : 0),
@@ -133,6 +187,9 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite
 		struct g_thing_info ti;
 		g_thing_info(th->type, &ti);
 		if ((ti.cls != G_C_LIGHT && ti.cls != G_C_DECOR) || !ti.sprite[0])
+			continue;
+		if (r_put_mesh(&o, s, th->type, th->x, th->y,
+			       s->w.sec[map_point_sector(m, th->x, th->y)].floor_h))
 			continue;
 		r_put(&o, th->x, th->y, s->w.sec[map_point_sector(m, th->x, th->y)].floor_h,
 		      th->angle, r_sprite_index(t, ti.sprite, ti.cls == G_C_LIGHT ? R_STANDIN_LIGHT : R_STANDIN_DECOR),

@@ -164,6 +164,12 @@ struct r_vis {
 	int flip;
 	int lvl;                        /* colormap level */
 	int order;                      /* index in the caller's list: ties */
+	/* a mesh (r_mesh.c) instead of a picture: mesh number (0: a sprite),
+	 * its rows y1..y2 on screen, colour, rotation and the thing's z */
+	int mesh, y1, y2;
+	uint8_t colour;
+	ang_t angle;
+	fx_t mz;
 };
 
 /* A run of rows y1..y2 of column x recorded by the walk: a wall part or
@@ -203,7 +209,11 @@ struct r_strip {
 	int32_t *band;                  /* nbands + 1 counts */
 	int32_t *spans;                 /* indices into ctx.spans crossing it */
 	int nspans, maxspans;
-	uint32_t written, spanned, empty, masked;
+	uint32_t written, spanned, empty, masked, degraded;
+	/* a mesh's box (r_mesh.c): colours and covered flags, inverse depths */
+	uint8_t *mbuf;
+	uint32_t *mdep;
+	int mbufcap, mdepcap;
 	uint64_t cost;                  /* of the last frame: ns (r_par.now) or pixels */
 };
 
@@ -281,6 +291,7 @@ struct r_ctx {
 	const struct tex_set *tex;
 	const uint8_t (*cmap)[256];     /* tex->pal.cmap */
 	uint8_t black;                  /* the palette's nearest to black */
+	uint8_t ident[256];             /* i -> i: the colormap of colours already lit */
 	uint8_t *px;
 	int pitch;
 	fx_t ex, ey, ez;                /* eye, x/y clamped to MAP_COORD_MAX */
@@ -369,6 +380,16 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr);
 /* Draws the projected sprites and masked middles back to front, in strip
  * s's columns only. */
 void r_things_draw(struct r_ctx *r, struct r_strip *s);
+
+/* r_mesh.c: meshes drawn as things */
+/* Fills the mesh fields of vs (and x1, x2, scale, gz, gzt) for sprite sp
+ * with a mesh: 0, 1 when the mesh is not drawn (too near, too far to the
+ * side or off the screen), -1 when sp->mesh is no built-in mesh. */
+int r_mesh_project(struct r_ctx *r, const struct r_sprite *sp, struct r_vis *vs);
+/* Draws mesh vs in columns vx1..vx2 (inside strip s) between the clip
+ * arrays ct (last row hidden above) and cb (first row hidden below). */
+void r_mesh_draw(struct r_ctx *r, struct r_strip *s, const struct r_vis *vs, int vx1, int vx2,
+		 const int16_t *ct, const int16_t *cb);
 
 /* r_strip.c: recording by the walk and the strip phase. The r_rec_*
  * functions take what r_draw draws (same requirements); when a list cannot

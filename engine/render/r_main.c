@@ -279,6 +279,8 @@ int r_new(int w, int h, struct r_ctx **out)
 		return -ENOMEM;
 	r->w = w;
 	r->h = h;
+	for (int i = 0; i < 256; i++)
+		r->ident[i] = (uint8_t)i;
 	/* disjoint non-adjacent runs in w columns: at most (w + 1) / 2, plus the
 	 * two sentinels and one being inserted */
 	r->maxsolid = w / 2 + 4;

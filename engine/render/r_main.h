@@ -53,6 +53,12 @@ struct r_sprite {
 	uint16_t sprite;               /* index into tex_set.sprites */
 	uint16_t frame;                /* 0 = frame A */
 	uint8_t flags;                 /* R_SPR_* */
+	/* A built-in mesh (engine/map/mesh_builtin.h) drawn instead of the
+	 * picture when not 0 (r_mesh.c): rotated by angle about its vertical
+	 * axis, standing at z, in palette colour `colour` lit by the sector
+	 * light and a Lambert term, clipped by the walls as a sprite is. */
+	uint8_t mesh;
+	uint8_t colour;
 };
 
 #define R_SPR_FULLBRIGHT 0x01          /* colormap 0, no fade (Doom's FF_FULLBRIGHT) */

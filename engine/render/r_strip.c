@@ -53,6 +53,8 @@ static void r_strips_free(struct r_strip *st, int n)
 		free(s->next);
 		free(s->band);
 		free(s->spans);
+		free(s->mbuf);
+		free(s->mdep);
 	}
 	free(st);
 }
@@ -113,7 +115,7 @@ void r_strip_reset(struct r_ctx *r)
 		struct r_strip *s = &r->strips[i];
 
 		s->ncols = s->nspans = 0;
-		s->written = s->spanned = s->empty = s->masked = 0;
+		s->written = s->spanned = s->empty = s->masked = s->degraded = 0;
 	}
 }
 
@@ -379,6 +381,7 @@ void r_strip_draw_all(struct r_ctx *r, const struct r_sprite *spr, int nspr, int
 		r->st.pixels_written += s->written + s->spanned;
 		r->st.pixels_empty += s->empty;
 		r->st.pixels_masked += s->masked;
+		r->st.degraded += s->degraded;
 	}
 	/* the next frame's order, from this frame's costs */
 	if (r->par.run && r->nstrips > 1)

@@ -134,6 +134,31 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 		uint32_t sec;
 		int x1, x2, pi, flip;
 
+		if (sp->mesh) {
+			struct r_vis mv = { 0 };
+			int rc;
+
+			mv.gx = gx;
+			mv.gy = gy;
+			rc = r_mesh_project(r, sp, &mv);
+			if (rc < 0)
+				r->st.missing++;
+			if (rc != 0)
+				continue;
+			sec = map_point_sector(r->map, gx, gy);
+			if (r->seen_ok && r->sec_seen[sec] != r->frame_no)
+				continue;
+			if (r->nvis == r->maxvis &&
+			    r_grow((void **)&r->vis, &r->maxvis, sizeof(*r->vis), r->nvis + 1) < 0) {
+				r->st.degraded++;
+				break;
+			}
+			mv.order = i;
+			mv.lvl = (sp->flags & R_SPR_FULLBRIGHT) ? 0 :
+				 r_scale_level(r, r_light_base(r->map->sectors[sec].light), mv.scale);
+			r->vis[r->nvis++] = mv;
+			continue;
+		}
 		r_to_view(r, gx, gy, &p);
 		if (p.d < R_SPR_NEAR || p.l > 4 * p.d || p.l < -4 * p.d)
 			continue;
@@ -179,6 +204,7 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 		vs->pic = pic;
 		vs->flip = flip;
 		vs->order = i;
+		vs->mesh = 0;
 		vs->lvl = (sp->flags & R_SPR_FULLBRIGHT) ? 0 :
 			  r_scale_level(r, r_light_base(r->map->sectors[sec].light), vs->scale);
 	}
@@ -231,6 +257,10 @@ static void r_draw_vis(struct r_ctx *r, struct r_strip *s, const struct r_vis *v
 			cb[x] = (int16_t)r->h;
 		if (ct[x] == -2)
 			ct[x] = -1;
+	}
+	if (vs->mesh) {
+		r_mesh_draw(r, s, vs, vx1, vx2, ct, cb);
+		return;
 	}
 	for (int x = vx1; x <= vx2; x++) {
 		/* (column centre - left edge) < 2^31 and u within the picture:

@@ -13,6 +13,7 @@
 #include "engine/game/sim.h"
 #include "engine/map/map.h"
 #include "engine/map/tex.h"
+#include "engine/map/mesh_builtin.h"
 #include "engine/map/th.h"
 #include "engine/render/r_game.h"
 #include "engine/render/r_main.h"
@@ -31,7 +32,7 @@ static void sprites_follow_the_state(void **state)
 		{ 500, 100, 0, 2012, 0 },                    /* medikit */
 		{ 600, 100, 0, 2048, 0 },                    /* bullets: AMMO */
 		{ 650, 100, 0, 2008, 0 },                    /* shells: SHEL, not in the set */
-		{ 700, 100, 0, 2028, 0 },                    /* floor lamp COLU */
+		{ 700, 100, 0, 2028, 0 },                    /* floor lamp: a mesh */
 		{ 800, 100, 0, TH_LIGHT_FIRST + 7, 0 },      /* arcaded light: invisible */
 		{ 900, 100, 0, 11, 0 },                      /* deathmatch start: not in this game */
 	};
@@ -65,8 +66,22 @@ static void sprites_follow_the_state(void **state)
 	assert_int_equal(out[3].sprite, medi);
 	assert_int_equal(out[4].sprite, ammo);
 	assert_int_equal(out[5].sprite, clip);          /* the shells' stand-in */
-	assert_int_equal(out[6].sprite, colu);
-	assert_int_equal(out[6].flags, R_SPR_FULLBRIGHT);
+	/* the lamp is its mesh, in brass, lit by its sector (not full bright:
+	 * the Lambert term shows its shape), turned by the tick alone: a
+	 * quarter turn (less the rounding of ANG90 / 35) a second */
+	assert_int_equal(out[6].mesh, MESH_B_LAMP);
+	assert_int_equal(out[6].colour, pal_nearest(&ts->pal, 232, 176, 64));
+	assert_int_equal(out[6].flags, 0);
+	assert_int_equal(out[6].x, fx_from_int(700));
+	assert_int_equal(out[6].angle, (ang_t)(s.tick * (ANG90 / 35)));
+	for (int i = 0; i < 6; i++)
+		assert_int_equal(out[i].mesh, 0);
+	s.tick += 35;
+	n = r_game_sprites(&s, ts, out, 16);
+	assert_int_equal(out[6].angle - (ang_t)(s.tick * (ANG90 / 35)), 0);
+	assert_true(out[6].angle - (ang_t)((s.tick - 35) * (ANG90 / 35)) == ANG90 - ANG90 % 35);
+	s.tick -= 35;
+	(void)colu;
 	/* max is respected */
 	assert_int_equal(r_game_sprites(&s, ts, out, 2), 2);
 	/* a taken pickup is not drawn; a corpse is drawn at its last death
