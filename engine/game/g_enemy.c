@@ -10,6 +10,12 @@
  * it attacks while the player's centre is within its range and in line of
  * sight: the first attack `reaction` ticks after it came into range, then
  * one every `period` ticks, each taking `damage` (scaled by difficulty).
+ * A kind with a wind-up (the grunt: G_GRUNT_WINDUP ticks) telegraphs each
+ * attack: its wind-up cry starts `windup` ticks before it, and the
+ * renderer shows the aiming frame for those ticks (g_enemy_winding); the
+ * player who leaves its range or sight before the end is not shot (the
+ * grunt goes back to the chase and starts over, as Doom's zombieman
+ * turns to its target and shoots only at the end of its aim frames).
  * Otherwise it walks straight at the player with the player's own
  * collision (g_move); when a wall stops it, it walks a random detour
  * (left or right of its heading) for 16..31 ticks. Sentries never move.
@@ -49,10 +55,49 @@ fx_t g_enemy_speed(const struct sim *s, int kind)
 	return (fx_t)((int64_t)g_kinds[kind].speed * pct / 100);
 }
 
+/* A flyer's height z kept within its sector's floor and ceiling. */
+static fx_t g_fly_clamp(const struct sim *s, const struct g_enemy *e, int64_t z)
+{
+	const struct g_sector *sec = &s->w.sec[e->sector];
+	int64_t hi = (int64_t)sec->ceil_h - G_BODY_HEIGHT;
+
+	if (z > hi)
+		z = hi;
+	if (z < sec->floor_h)
+		z = sec->floor_h;
+	return (fx_t)z;
+}
+
+/* Its sector, and its feet on the floor (a flyer: within the sector). */
 static void g_settle_enemy(const struct sim *s, struct g_enemy *e)
 {
 	e->sector = map_point_sector(s->map, e->x, e->y);
-	e->z = s->w.sec[e->sector].floor_h;
+	if (g_kinds[e->kind].fly)
+		e->z = g_fly_clamp(s, e, e->z);
+	else
+		e->z = s->w.sec[e->sector].floor_h;
+}
+
+/* At its spawn spot's height: a flyer G_FLY_SPAWN over the floor. */
+static void g_place_enemy(const struct sim *s, struct g_enemy *e)
+{
+	g_settle_enemy(s, e);
+	if (g_kinds[e->kind].fly)
+		e->z = g_fly_clamp(s, e, (int64_t)s->w.sec[e->sector].floor_h + G_FLY_SPAWN);
+}
+
+/* A flyer climbs or sinks towards G_FLY_ABOVE over the player's feet. */
+static void g_fly_height(const struct sim *s, struct g_enemy *e)
+{
+	int64_t want = (int64_t)s->pl.z + G_FLY_ABOVE, z = e->z;
+
+	if (want > z + G_FLY_CLIMB)
+		z += G_FLY_CLIMB;
+	else if (want < z - G_FLY_CLIMB)
+		z -= G_FLY_CLIMB;
+	else
+		z = want;
+	e->z = g_fly_clamp(s, e, z);
 }
 
 void g_spawn_stage(struct sim *s)
@@ -83,7 +128,7 @@ void g_spawn_stage(struct sim *s)
 			e->state = G_E_IDLE;
 			e->health = g_kinds[ti.kind].health;
 			e->ambush = (t->flags & G_TF_AMBUSH) != 0;
-			g_settle_enemy(s, e);
+			g_place_enemy(s, e);
 		} else if (ti.cls == G_C_PICKUP && g->num_pickups < G_MAX_PICKUPS) {
 			struct g_pickup *p = &g->pk[g->num_pickups++];
 			*p = (struct g_pickup){ 0 };
@@ -119,7 +164,7 @@ void g_enemies_reset(struct sim *s)
 		e->anim = 0;
 		e->stuck = 0;
 		e->flash = 0;
-		g_settle_enemy(s, e);
+		g_place_enemy(s, e);
 	}
 }
 
@@ -161,6 +206,9 @@ static void g_chase(struct sim *s, int i)
 	if (e->stuck) {
 		head = e->wander;
 		e->stuck--;
+	} else if (g_kinds[e->kind].fly && g_within(s, e, G_FLY_ORBIT)) {
+		/* circling in: the slant turns the straight line into a spiral */
+		head += (i & 1) ? (ang_t)0 - G_FLY_SLANT : G_FLY_SLANT;
 	}
 	e->angle = head;
 	b.x = e->x;
@@ -219,6 +267,8 @@ static void g_enemy_tick(struct sim *s, int i)
 	default:
 		break;
 	}
+	if (k->fly)
+		g_fly_height(s, e);
 	in_range = g_within(s, e, k->range) && g_sees(s, e);
 	if (!in_range) {
 		if (e->state == G_E_ATTACK)
@@ -233,6 +283,11 @@ static void g_enemy_tick(struct sim *s, int i)
 	}
 	if (e->timer)
 		e->timer--;
+	/* the wind-up: its cry as the last `windup` ticks start; the shot at
+	 * their end only if the player is still in range and sight (above:
+	 * breaking either sends the enemy back to the chase, no shot) */
+	if (k->windup && e->timer == k->windup)
+		g_cry(s, i, G_CRY_WINDUP);
 	if (e->timer == 0) {
 		e->timer = k->period;
 		e->flash = G_FLASH_TICKS;
@@ -305,10 +360,31 @@ void g_noise(struct sim *s)
 	}
 }
 
+/* A dead flyer falls to the floor, in every phase (the last kill's
+ * corpse falls while the stage is cleared). */
+static void g_fall(struct sim *s, struct g_enemy *e)
+{
+	fx_t floor = s->w.sec[e->sector].floor_h;
+
+	if (e->state != G_E_DEAD || !g_kinds[e->kind].fly || e->z <= floor)
+		return;
+	e->z = e->z - G_FLY_FALL < floor ? floor : e->z - G_FLY_FALL;
+}
+
 void g_enemies_tick(struct sim *s)
 {
-	for (int i = 0; i < s->g.num_enemies && s->g.phase == G_PH_PLAY; i++)
-		g_enemy_tick(s, i);
+	for (int i = 0; i < s->g.num_enemies; i++) {
+		g_fall(s, &s->g.en[i]);
+		if (s->g.phase == G_PH_PLAY)
+			g_enemy_tick(s, i);
+	}
 	if (s->g.phase == G_PH_PLAY)
 		g_missiles_tick(s);
+}
+
+int g_enemy_winding(const struct g_enemy *e)
+{
+	const struct g_kind_info *k = &g_kinds[e->kind % G_KINDS];
+
+	return e->state == G_E_ATTACK && k->windup && e->timer > 0 && e->timer <= k->windup;
 }

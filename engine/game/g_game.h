@@ -63,8 +63,9 @@ extern const struct g_weapon_info g_weapons[G_WEAPONS];
 /* Enemy kinds. Each has fixed numbers (g_kinds); difficulty and the
  * stage loop scale damage and speed (g_enemy.c). The thrower's attack is
  * a missile (g_missile.c) that does the damage where it lands; the
- * others' attacks hit at once. */
-enum g_kind { G_GRUNT, G_BRUTE, G_SENTRY, G_THROWER, G_KINDS };
+ * others' attacks hit at once, the grunt's after its G_GRUNT_WINDUP-tick
+ * wind-up (0.4 s). The flyer flies, circles in and bites. */
+enum g_kind { G_GRUNT, G_BRUTE, G_SENTRY, G_THROWER, G_FLYER, G_KINDS };
 
 struct g_kind_info {
 	char name[8];                  /* "grunt" */
@@ -78,10 +79,31 @@ struct g_kind_info {
 	uint8_t period;                /* ticks between attacks */
 	uint8_t reaction;              /* ticks from seeing in range to the first attack */
 	uint16_t score;                /* for a kill */
+	/* the attack's wind-up: the last `windup` ticks before each attack
+	 * the enemy shows its aiming frame and its wind-up cry sounds (a
+	 * telegraph); the attack needs line of sight until the end (0: none) */
+	uint8_t windup;
+	uint8_t fly;                   /* 1: flies (g_enemy.c: height, circling) */
 };
 
 /* The table, indexed by enum g_kind. */
 extern const struct g_kind_info g_kinds[G_KINDS];
+
+#define G_GRUNT_WINDUP 24              /* ticks: 0.4 s at 60 Hz */
+
+/* The flyer (Doom's lost soul, 3006): it flies, climbing or sinking
+ * G_FLY_CLIMB a tick towards G_FLY_ABOVE over the player's feet (within
+ * its sector's floor and ceiling), spawns G_FLY_SPAWN over its floor, and
+ * within G_FLY_ORBIT of the player circles in towards it, its heading
+ * G_FLY_SLANT off the straight line (to the left for an even index, the
+ * right for an odd one), until it is in bite range. Dead, it falls
+ * G_FLY_FALL a tick to the floor. */
+#define G_FLY_CLIMB (2 * FX_ONE)
+#define G_FLY_ABOVE (16 * FX_ONE)
+#define G_FLY_SPAWN (24 * FX_ONE)
+#define G_FLY_ORBIT (192 * FX_ONE)
+#define G_FLY_SLANT (ANG90 * 2 / 3)    /* 60 degrees */
+#define G_FLY_FALL (4 * FX_ONE)
 
 enum g_estate {
 	G_E_IDLE,                      /* has not seen the player */
@@ -373,6 +395,10 @@ int g_thing_at_difficulty(uint16_t flags, int d);
  * in the map's order (the load warns of more: app/pspec.c). */
 struct map;
 void g_spawn_count(const struct map *m, int d, int *enemies, int *pickups);
+
+/* Whether enemy e is in its attack's wind-up (g_kind_info.windup): the
+ * renderer shows its aiming frame then (g_enemy.c). */
+int g_enemy_winding(const struct g_enemy *e);
 
 /* Doom's thing flags. */
 #define G_TF_AMBUSH 0x0008

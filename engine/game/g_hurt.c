@@ -11,15 +11,22 @@
 #define G_HURT_TICKS 12
 
 /* Chance (of 256) that a hit makes an enemy flinch, per kind. */
-static const uint8_t g_pain_chance[G_KINDS] = { 200, 80, 128, 200 };
+static const uint8_t g_pain_chance[G_KINDS] = { 200, 80, 128, 200, 255 };
 
-/* Each kind's sounds, by G_CRY_* (g_local.h). */
+/* Each kind's sounds, by G_CRY_* (g_local.h); SFX_NONE for a wind-up
+ * the kind does not have. */
 static const uint8_t g_cries[G_KINDS][G_CRIES] = {
-	[G_GRUNT] = { SFX_GRUNT_SIGHT, SFX_GRUNT_ATTACK, SFX_GRUNT_PAIN, SFX_GRUNT_DEATH },
-	[G_BRUTE] = { SFX_BRUTE_SIGHT, SFX_BRUTE_ATTACK, SFX_BRUTE_PAIN, SFX_BRUTE_DEATH },
-	[G_SENTRY] = { SFX_SENTRY_SIGHT, SFX_SENTRY_ATTACK, SFX_SENTRY_PAIN, SFX_SENTRY_DEATH },
+	[G_GRUNT] = { SFX_GRUNT_SIGHT, SFX_GRUNT_ATTACK, SFX_GRUNT_PAIN, SFX_GRUNT_DEATH,
+		      SFX_GRUNT_WINDUP },
+	[G_BRUTE] = { SFX_BRUTE_SIGHT, SFX_BRUTE_ATTACK, SFX_BRUTE_PAIN, SFX_BRUTE_DEATH, SFX_NONE },
+	[G_SENTRY] = { SFX_SENTRY_SIGHT, SFX_SENTRY_ATTACK, SFX_SENTRY_PAIN, SFX_SENTRY_DEATH,
+		       SFX_NONE },
 	/* the imp's: Doom's imp cries as the brute's, its throw the fireball's */
-	[G_THROWER] = { SFX_BRUTE_SIGHT, SFX_SENTRY_ATTACK, SFX_BRUTE_PAIN, SFX_BRUTE_DEATH },
+	[G_THROWER] = { SFX_BRUTE_SIGHT, SFX_SENTRY_ATTACK, SFX_BRUTE_PAIN, SFX_BRUTE_DEATH,
+			SFX_NONE },
+	/* the lost soul's: the drone's warble and cries, the claw's bite */
+	[G_FLYER] = { SFX_SENTRY_SIGHT, SFX_BRUTE_ATTACK, SFX_SENTRY_PAIN, SFX_SENTRY_DEATH,
+		      SFX_NONE },
 };
 
 void g_cry(struct sim *s, int i, int cry)
@@ -75,6 +82,7 @@ void g_hurt_enemy(struct sim *s, int i, int dmg)
 		s->g.kills++;
 		s->g.score += g_kinds[e->kind].score;
 		g_cry(s, i, G_CRY_DEATH);
+		g_drop(s, i);
 		return;
 	}
 	if ((g_random(s) & 255) < g_pain_chance[e->kind]) {

@@ -60,7 +60,8 @@ void g_spawn_stage(struct sim *s);
 /* Puts the living enemies back at their spawn points, idle (after the
  * player lost a life). */
 void g_enemies_reset(struct sim *s);
-/* One tick of every enemy. */
+/* One tick of every enemy (in play; in other phases only a dead flyer
+ * falls) and of the missiles (in play). */
 void g_enemies_tick(struct sim *s);
 /* The player's shot is heard: idle enemies that are not deaf (ambush) in
  * the sectors the sound reaches wake. */
@@ -87,12 +88,20 @@ int g_missiles_flying(const struct sim *s);
 /* Takes dmg (16.16) off the player's health (in phase PLAY only); at 0 the
  * player dies (phase DEAD). */
 void g_hurt_player(struct sim *s, fx_t dmg);
-/* Damage to enemy i; kills give score. A hit may make it flinch (PAIN) or
- * wake it. */
+/* Damage to enemy i; kills give score (and its drop, g_drop). A hit may
+ * make it flinch (PAIN) or wake it. */
 void g_hurt_enemy(struct sim *s, int i, int dmg);
 
+/* ---- g_drop.c: what a dying enemy drops ----------------------------- */
+
+/* The Doom thing type an enemy of Doom type `enemy` drops, 0 none. */
+uint16_t g_drop_type(uint16_t enemy);
+/* Enemy i's drop, a new pickup where it stands: its index in s->g.pk, or
+ * -1 when it drops nothing or the pickups are full. */
+int g_drop(struct sim *s, int i);
+
 /* Enemy i's cry (G_CRY_*), where it stands; its next cry cuts this one. */
-enum { G_CRY_SIGHT, G_CRY_ATTACK, G_CRY_PAIN, G_CRY_DEATH, G_CRIES };
+enum { G_CRY_SIGHT, G_CRY_ATTACK, G_CRY_PAIN, G_CRY_DEATH, G_CRY_WINDUP, G_CRIES };
 void g_cry(struct sim *s, int i, int cry);
 
 /* ---- g_sight.c ------------------------------------------------------- */

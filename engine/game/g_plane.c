@@ -105,7 +105,8 @@ static int g_change(struct sim *s, uint32_t sec, int crush)
 		if (e->state == G_E_DEAD ||
 		    !g_touches(s, e->x, e->y, g_kinds[e->kind].radius, e->sector, sec))
 			continue;
-		if (e->sector == sec)
+		/* a flyer is lifted only when the floor reaches it */
+		if (e->sector == sec && (!g_kinds[e->kind].fly || e->z < s->w.sec[sec].floor_h))
 			e->z = s->w.sec[sec].floor_h;
 		if (!g_fits(s, e->sector, sec)) {
 			nofit = 1;

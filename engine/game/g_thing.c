@@ -4,8 +4,9 @@
  * The thing table th.h says what a Doom type number is (its sprite,
  * standing frame, and whether it is a monster, pickup, light or
  * decoration). This file adds the game's meaning: monsters become one of
- * the four enemy kinds by how they fight in Doom (hitscan soldiers are
- * grunts, the imp a thrower of dodgeable missiles, melee and close-range
+ * the five enemy kinds by how they fight in Doom (hitscan soldiers are
+ * grunts, the imp a thrower of dodgeable missiles, the lost soul a flyer
+ * that circles in at the player's height, melee and close-range
  * monsters brutes, slow or floating ranged monsters sentries, which stand
  * their ground); health items, armour and
  * the health-giving powerups (soulsphere, megasphere, berserk,
@@ -61,11 +62,12 @@ static const struct g_thing_row g_thing_rows[] = {
 	/* brutes: melee and close range */
 	E(3002, G_BRUTE, 4, 5, 7, 8, 13),             /* demon SARG */
 	E(58, G_BRUTE, 4, 5, 7, 8, 13),               /* spectre SARG */
-	E(3006, G_BRUTE, 2, 2, 4, 5, 10),             /* lost soul SKUL */
 	E(3003, G_BRUTE, 4, 5, 7, 8, 14),             /* baron of hell BOSS */
 	E(69, G_BRUTE, 4, 5, 7, 8, 14),               /* hell knight BOS2 */
 	E(66, G_BRUTE, 6, 8, 11, 11, 16),             /* revenant SKEL */
 	E(64, G_BRUTE, 6, 7, 16, 16, 25),             /* arch-vile VILE */
+	/* flyers: circling in, at the player's height, to bite */
+	E(3006, G_FLYER, 2, 2, 4, 5, 10),             /* lost soul SKUL */
 	/* sentries: ranged, standing their ground */
 	E(3005, G_SENTRY, 1, 2, 4, 6, 11),            /* cacodemon HEAD */
 	E(71, G_SENTRY, 3, 4, 6, 7, 12),              /* pain elemental PAIN */

@@ -417,6 +417,7 @@ static void sim_play_tick(struct sim *s, const struct sim_cmd *cmd, uint8_t pres
 			g_sound_play(s, SFX_FANFARE, G_SRC_MUSIC);
 		sim_player_move(s, cmd);
 		g_spec_tick(s);
+		g_enemies_tick(s);             /* the last kill, a flyer, falls */
 		if (g->phase_t >= G_CLEAR_TICKS)
 			sim_next_stage(s, g->stage + 1 < s->num_stages ? g->stage + 1 : 0);
 		break;

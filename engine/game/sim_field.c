@@ -18,7 +18,7 @@ enum {
 	F_SCORE, F_LIVES, F_HEALTH, F_AMMO, F_STAGE, F_ENEMIES, F_KILLS, F_CONTINUES,
 	F_COUNTDOWN, F_PAGE, F_PHASE, F_PLAYS, F_RANK, F_HISCORE, F_MENU, F_DIFFICULTY,
 	F_CLOCK, F_WHY, F_WEAPON, F_MISSILES, F_MEND, F_PITCH, F_PLAYERS, F_UP, F_SCORE1,
-	F_SCORE2, F_LIVES1, F_LIVES2, F_COUNT
+	F_SCORE2, F_LIVES1, F_LIVES2, F_WINDING, F_WINDCRY, F_COUNT
 };
 
 static const struct sim_field_def sim_fields[F_COUNT] = {
@@ -59,6 +59,8 @@ static const struct sim_field_def sim_fields[F_COUNT] = {
 	[F_SCORE2] = { "score2", SIM_FK_INT },
 	[F_LIVES1] = { "lives1", SIM_FK_INT },
 	[F_LIVES2] = { "lives2", SIM_FK_INT },
+	[F_WINDING] = { "winding", SIM_FK_INT },
+	[F_WINDCRY] = { "windcry", SIM_FK_INT },
 };
 
 int sim_field_count(void)
@@ -137,6 +139,20 @@ int64_t sim_field_value(const struct sim *s, int i)
 	case F_SCORE2: return s->up == 1 ? s->g.score : s->wait.score;
 	case F_LIVES1: return s->up == 0 ? s->g.lives : s->wait.lives;
 	case F_LIVES2: return s->up == 1 ? s->g.lives : s->wait.lives;
+	/* enemies in their attack's wind-up (g_enemy_winding) */
+	case F_WINDING: {
+		int n = 0;
+		for (int k = 0; k < s->g.num_enemies; k++)
+			n += g_enemy_winding(&s->g.en[k]);
+		return n;
+	}
+	/* channels playing a grunt's wind-up cry */
+	case F_WINDCRY: {
+		int n = 0;
+		for (int k = 0; k < G_SND_CHANNELS; k++)
+			n += s->snd.ch[k].sfx == SFX_GRUNT_WINDUP;
+		return n;
+	}
 	default: return 0;
 	}
 }

@@ -6,6 +6,7 @@
  *   POSS, SPOS   grunts (a soldier with a pistol; one with a helmet and a rifle)
  *   TROO, SARG   brutes (a horned clawed imp; a wide demon with a jaw)
  *   HEAD         the sentry (a hovering one-eyed drone)
+ *   SKUL         the flyer (a flaming skull)
  *   MEDI, STIM   health (a medikit; a small blue-cross pack)
  *   CLIP, AMMO   ammunition (a magazine; a box of bullets)
  *   BAR1 barrel, COLU lamp, CBRA candelabra, TRED torch
@@ -42,7 +43,8 @@ static uint8_t tb_t(struct tb_tone t, int d)
 enum { TB_HEAD_BARE, TB_HEAD_HELMET, TB_HEAD_HORNS, TB_HEAD_JAW };
 enum { TB_ARM_PISTOL, TB_ARM_RIFLE, TB_ARM_CLAWS };
 
-/* How a walking monster looks; TB_L_ORB is the drone, drawn by tb_orb. */
+/* How a monster looks; TB_L_ORB is the drone (tb_orb), TB_L_SKULL the
+ * flyer (tb_skull): neither walks. */
 struct tb_look {
 	struct tb_tone skin, cloth, legs, trim;
 	uint8_t eye;                   /* palette index */
@@ -50,7 +52,7 @@ struct tb_look {
 	uint8_t head, arm;
 };
 
-enum { TB_L_GRUNT, TB_L_GUNNER, TB_L_IMP, TB_L_DEMON, TB_L_ORB };
+enum { TB_L_GRUNT, TB_L_GUNNER, TB_L_IMP, TB_L_DEMON, TB_L_ORB, TB_L_SKULL };
 
 static const struct tb_look tb_looks[] = {
 	[TB_L_GRUNT] = { { PAL_TAN, 4 }, { PAL_GREEN, 7 }, { PAL_GREEN, 11 }, { PAL_BROWN, 8 },
@@ -63,6 +65,8 @@ static const struct tb_look tb_looks[] = {
 			 PAL_RGB(PAL_YELLOW, 1), 11, TB_HEAD_JAW, TB_ARM_CLAWS },
 	[TB_L_ORB] = { { PAL_SLATE, 5 }, { PAL_SLATE, 9 }, { PAL_GREY, 6 }, { PAL_YELLOW, 3 },
 		       PAL_RGB(PAL_RED, 3), 0, 0, 0 },
+	[TB_L_SKULL] = { { PAL_TAN, 1 }, { PAL_ORANGE, 2 }, { PAL_RED, 3 }, { PAL_YELLOW, 1 },
+			 PAL_RGB(PAL_RED, 2), 0, 0, 0 },
 };
 
 /* Poses: walking (rotations 1..5), and the one-picture frames. */
@@ -331,6 +335,82 @@ static void tb_orb(struct tex_pic *p, int pose, int rot, int crack)
 		}
 }
 
+/* ---- the flyer ------------------------------------------------------------------ */
+
+/* The flyer: a bone skull in a crown of flames, its eye sockets glowing
+ * (red walking, yellow aiming, white with the jaw dropped biting, shut in
+ * pain); rot 4..5 show the back of the cranium. phase flickers the flames;
+ * crack > 0 breaks it (its death), the flames going out. */
+static void tb_skull(struct tex_pic *p, int pose, int rot, int phase, int crack)
+{
+	const struct tb_look *lk = &tb_looks[TB_L_SKULL];
+	static const int8_t face_x[6] = { 0, 0, -3, -6, 0, 0 };
+	int cx = p->w / 2, cy = p->h - 16, rx = 11, ry = 10;
+	int fx = cx + face_x[rot], bite = pose == TB_P_FIRE ? 4 : 0;
+
+	for (int k = 0; k < 90 - crack * 18; k++) {                    /* the flames */
+		uint32_t h = tp_hash((uint32_t)k, (uint32_t)(phase + 2 * pose), 95);
+		int x = (int)(h % 27u) - 13, y = -(int)((h >> 8) % 18u) - 2;
+		int tall = 16 - (x < 0 ? -x : x);
+
+		if (-y > tall + 4)
+			continue;
+		tp_set(p, cx + x, cy - ry / 2 + y,
+		       tp_c(-y > tall / 2 ? lk->legs.ramp : lk->cloth.ramp, (int)((h >> 16) % 3u) + 1));
+	}
+	for (int y = -ry; y <= ry; y++) {                              /* the cranium */
+		for (int x = -rx; x <= rx; x++) {
+			if (x * x * ry * ry + y * y * rx * rx > rx * rx * ry * ry)
+				continue;
+			tp_set(p, cx + x, cy + y, tb_t(lk->skin, (x + y) * 3 / rx + (y > ry - 3)));
+		}
+	}
+	for (int x = -6; x <= 6; x++) {                                /* the jaw and teeth */
+		for (int y = 0; y < 5; y++)
+			tp_set(p, fx + x, cy + ry - 1 + y + (y >= 2 ? bite : 0),
+			       y == 1 && (x & 1) ? tp_c(PAL_GREY, 9) : tb_t(lk->skin, 2 + y / 2));
+		if (bite)
+			for (int y = 0; y < bite; y++)
+				tp_set(p, fx + x, cy + ry + 1 + y, PAL_BLACK);
+	}
+	if (rot <= 3) {                                                /* sockets, nose */
+		for (int e = 0; e < 2; e++) {
+			int ex = fx + (e ? 5 : -5);
+			uint8_t glow = pose == TB_P_FIRE ? tp_c(PAL_GREY, 0)
+				       : pose == TB_P_AIM ? tp_c(PAL_YELLOW, 1) : lk->eye;
+
+			if (rot == 3 && e == 0)
+				continue;
+			for (int y = -3; y <= 3; y++)
+				for (int x = -3; x <= 3; x++)
+					if (x * x + y * y <= 9)
+						tp_set(p, ex + x, cy - 2 + y,
+						       x * x + y * y <= 2 && pose != TB_P_HURT && !crack
+						       ? glow : PAL_BLACK);
+		}
+		tp_rect(p, fx - 1, cy + 3, 3, 3, PAL_BLACK);
+	}
+	for (int k = 0; k < crack * 3; k++) {                          /* cracks */
+		uint32_t h = tp_hash((uint32_t)k, 5, 96);
+		int x = cx - rx / 2 + (int)(h % (uint32_t)rx), y = cy - ry / 2 + (int)((h >> 8) % (uint32_t)ry);
+
+		for (int st = 0; st < 3 + crack * 2; st++) {
+			uint32_t g = tp_hash((uint32_t)k, (uint32_t)st, 97);
+
+			tp_set(p, x, y, PAL_BLACK);
+			x += (int)(g % 3) - 1;
+			y += (int)((g >> 4) % 3) - 1;
+		}
+	}
+	if (pose == TB_P_HURT)                                         /* sparks */
+		for (int k = 0; k < 8; k++) {
+			uint32_t h = tp_hash((uint32_t)k, 7, 98);
+
+			tp_set(p, cx - rx + (int)(h % (uint32_t)(2 * rx)),
+			       cy - ry + (int)((h >> 8) % (uint32_t)(2 * ry)), tp_c(PAL_YELLOW, 1 + k % 3));
+		}
+}
+
 /* ---- turning and squashing pictures ---------------------------------------------- */
 
 static int tb_fdiv(int a, int b)
@@ -388,6 +468,17 @@ static void tb_death(struct tex_pic *p, int look, int k, int n, int w, int h)
 	int step = 6 * (k + 1) / n;
 
 	memset(op, 0, sizeof op);
+	if (look == TB_L_SKULL) {
+		/* the flyer cracks as it falls (the sim drops it to the floor);
+		 * its corpse is the broken skull lying there */
+		tb_skull(&s, TB_P_DEAD, 1, k, k + 1);
+		if (k + 1 < n) {
+			tb_warp(p, &s, 0, 0, 0, 0, 256, 0, 0, 256);
+		} else {
+			tb_warp(p, &s, w / 2, h - 16, w / 2, h - 11, 256, 0, 0, 384);
+		}
+		return;
+	}
 	if (look == TB_L_ORB) {
 		tb_orb(&s, TB_P_DEAD, 1, k + 1);
 		if (k + 1 < n) {
@@ -671,6 +762,7 @@ static const struct tb_mon tb_mons[] = {
 	{ "TROO", TB_L_IMP, 4, 5, 7, 8, 12, 34, 56 },
 	{ "SARG", TB_L_DEMON, 4, 5, 7, 8, 13, 44, 56 },
 	{ "HEAD", TB_L_ORB, 1, 2, 4, 6, 11, 44, 44 },
+	{ "SKUL", TB_L_SKULL, 2, 2, 4, 5, 10, 36, 40 },
 };
 
 #define TB_N(a) ((int)(sizeof(a) / sizeof((a)[0])))
@@ -759,6 +851,9 @@ static void tb_make_mon(struct tex_pic *p, const struct tb_mon *m, int f, int ro
 	if (m->look == TB_L_ORB) {
 		tb_orb(p, pose, rot ? rot : 1, 0);
 		p->top = (int16_t)(p->h + 12);
+	} else if (m->look == TB_L_SKULL) {
+		/* the flyer's height is the sim's: its picture stands on its spot */
+		tb_skull(p, pose, rot ? rot : 1, f & 1, 0);
 	} else {
 		tb_human(p, &tb_looks[m->look], pose, rot ? rot : 1, f & 3);
 	}
@@ -784,7 +879,7 @@ static int tb_walk(struct tex_pic *pics, uint64_t *budget)
 
 		for (int f = 0; f <= m->death1; f++) {
 			int dead = f >= m->death0, walk = f < m->walk;
-			int w = dead && m->look != TB_L_ORB ? 2 * tb_looks[m->look].hw + 6 + m->h : m->w;
+			int w = dead && m->look < TB_L_ORB ? 2 * tb_looks[m->look].hw + 6 + m->h : m->w;
 
 			for (int rot = walk ? 1 : 0; rot <= (walk ? 5 : 0); rot++, n++) {
 				char name[9];

@@ -140,7 +140,12 @@ static void r_put_enemy(struct r_out *o, const struct g_enemy *e)
 		frame = ti.frames ? e->anim / R_ANIM % ti.frames : 0;
 		break;
 	case G_E_ATTACK:
-		frame = ti.attack + (e->flash ? 1 : 0);
+		/* a kind with a wind-up stands (frame A) until it starts, so
+		 * the aiming frame is its telegraph */
+		if (g_kinds[e->kind % G_KINDS].windup && !e->flash && !g_enemy_winding(e))
+			frame = 0;
+		else
+			frame = ti.attack + (e->flash ? 1 : 0);
 		bright = e->flash != 0;
 		break;
 	case G_E_PAIN:

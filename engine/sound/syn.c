@@ -54,6 +54,13 @@ static const struct syn_part syn_parts[] = {
 	P(GRUNT_PAIN, SQUARE, 0, 300, 165, 100, 4000, 10, 20)
 	P(GRUNT_DEATH, SAW, 0, 700, 280, 70, 12000, 10, 20)
 	P(GRUNT_DEATH, NOISE, 0, 500, 1800, 600, 4000, 10, 10)
+	/* a grunt's wind-up: a gun cocked, two metal clicks and a rising whine
+	 * for the 0.4 s before its shot */
+	P(GRUNT_WINDUP, NOISE, 0, 30, 7000, 7000, 11000, 0, 0)
+	N(GRUNT_WINDUP, SQUARE, 0, 60, 1500, 5000, 0, 20)
+	P(GRUNT_WINDUP, NOISE, 160, 30, 9000, 9000, 11000, 0, 0)
+	N(GRUNT_WINDUP, SQUARE, 160, 60, 2000, 5000, 0, 20)
+	P(GRUNT_WINDUP, TRI, 0, 400, 600, 1400, 4000, 30, 60)
 	/* brutes: a growl, a claw's swipe, a grunt, a long roar down */
 	P(BRUTE_SIGHT, SAW, 0, 600, 80, 140, 12000, 40, 50)
 	P(BRUTE_SIGHT, NOISE, 0, 600, 600, 900, 6000, 40, 50)

@@ -13,6 +13,11 @@ script_args() {
 # script_content_args FILE: its "# args:" words alone (the content
 # options a replay of its recording needs too; settings are in the
 # recording's header).
+# A word starting "@/" names a file of the tree ("# args: --grid
+# @/tests/script/maps/windup.txt"): "@" becomes the tree's top (the
+# directory the callers source this file from), as the daemon runs in a
+# directory of its own.
+script_top=$(pwd)
 script_content_args() {
-	sed -n 's/^# args: //p' "$1"
+	sed -n 's/^# args: //p' "$1" | sed "s|@/|$script_top/|g"
 }
