@@ -445,16 +445,24 @@ judge() {
 			result FAIL "$name-$tn" "$out"
 		fi
 	}
+	# Moved: at least 1 in 10 pixels differ (a turn or a walk moves most
+	# of the view, about half of it in these runs); not just any pixel,
+	# since the decorations drawn as meshes turn by themselves.
+	moved() { # A.ppm B.ppm
+		d=$("$H" differ "$1" "$2")
+		echo "$d (at least 1 in 10)"
+		echo "$d" | awk '$2 == "of" && $1 * 10 >= $3 { f = 1 } END { exit !f }'
+	}
 	if has attract-1; then
 		screen first-frame "$H" picture "$res/attract-1.ppm" "$render_w" "$render_h"
-		screen attract-animates "$H" differ "$res/attract-1.ppm" "$res/attract-2.ppm"
+		screen attract-animates moved "$res/attract-1.ppm" "$res/attract-2.ppm"
 	fi
 	has play-start && screen screen-is-frame "$H" match "$ref" "$res/play-start.ppm" "$bpp"
 	# The comparison must be able to fail: an attract screen is not that frame.
 	has attract-1 && screen screen-compare-rejects-attract \
 		sh -c '! "$1" match "$2" "$3" "$4"' sh "$H" "$ref" "$res/attract-1.ppm" "$bpp"
-	has play-moved && screen input-changes-screen "$H" differ "$res/play-start.ppm" "$res/play-moved.ppm"
-	has hp-turned && screen usb-keyboard-changes-screen "$H" differ "$res/hp-before.ppm" "$res/hp-turned.ppm"
+	has play-moved && screen input-changes-screen moved "$res/play-start.ppm" "$res/play-moved.ppm"
+	has hp-turned && screen usb-keyboard-changes-screen moved "$res/hp-before.ppm" "$res/hp-turned.ppm"
 	# no stuck input, as the screen shows it: of five screens a second
 	# apart, two that follow each other differ in under a tenth of the
 	# pixels. A held turn or move changes most of the 3D view between
@@ -479,12 +487,23 @@ judge() {
 		return $ok
 	}
 	has hp-still-5 && screen hotplug-no-stuck-input still_pair hp-still
-	has hid-turned && screen hid-changes-screen "$H" differ "$res/hid-before.ppm" "$res/hid-turned.ppm"
+	has hid-turned && screen hid-changes-screen moved "$res/hid-before.ppm" "$res/hid-turned.ppm"
+	# Still, 1 s apart: under 1 in 100 pixels differ. Not none: the
+	# decorations drawn as meshes turn by themselves (stage 1's lamps, 189
+	# pixels of 1280x800 in a second); a stuck turn or walk moves the whole
+	# view.
+	nearly_still() { # A.ppm B.ppm
+		d=$("$H" differ "$1" "$2")
+		echo "$d (limit: under 1 in 100)"
+		echo "$d" | awk '$2 == "of" && $1 * 100 < $3 { f = 1 } END { exit !f }'
+	}
 	has hid-still-2 && screen hid-no-stuck-input \
-		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/hid-still-1.ppm" "$res/hid-still-2.ppm"
+		nearly_still "$res/hid-still-1.ppm" "$res/hid-still-2.ppm"
 	has gpio-still-2 && screen gpio-still-before \
-		sh -c '! "$1" differ "$2" "$3"' sh "$H" "$res/gpio-still-1.ppm" "$res/gpio-still-2.ppm"
-	has gpio-fired && screen gpio-changes-screen "$H" differ "$res/gpio-still-2.ppm" "$res/gpio-fired.ppm"
+		nearly_still "$res/gpio-still-1.ppm" "$res/gpio-still-2.ppm"
+	# the HUD's ammunition count: the status line lies in the bottom eighth
+	# of the screen whether the frame fills it or is framed in black
+	has gpio-fired && screen gpio-changes-screen "$H" differ "$res/gpio-still-2.ppm" "$res/gpio-fired.ppm" 8
 	has hid-replug-still-5 && screen hid-replug-no-stuck-input still_pair hid-replug-still
 	# Two players (guest.sh phase_twop): player 1's start view, then the
 	# joystick turned player 1; player 2's start view (player 2 up); then
@@ -513,7 +532,7 @@ judge() {
 	has late-screen && screen late-fb-picture "$H" picture "$res/late-screen.ppm" "$render_w" "$render_h"
 	has gl-screen && screen gl-picture "$H" picture "$res/gl-screen.ppm" "$render_w" "$render_h"
 	if has wd-attract-1; then
-		screen watchdog-back-in-attract "$H" differ "$res/wd-attract-1.ppm" "$res/wd-attract-2.ppm"
+		screen watchdog-back-in-attract moved "$res/wd-attract-1.ppm" "$res/wd-attract-2.ppm"
 		screen watchdog-screen-is-frame "$H" match "$ref" "$res/wd-play.ppm" "$bpp"
 	fi
 	[ -n "$snd" ] && sound_checks

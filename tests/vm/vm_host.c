@@ -19,8 +19,12 @@
  *                                RGB565 as px.c does ((c * max + 127) / 255)
  *                                must equal the screen channel's top bits.
  *                                Prints the mismatch count; exit 0 on none
- *   vm_host differ A.ppm B.ppm   print how many pixels differ; exit 0 if
- *                                any do, 1 if the images are identical
+ *   vm_host differ A.ppm B.ppm [N]
+ *                                print how many pixels differ; exit 0 if
+ *                                any do, 1 if the images are identical;
+ *                                with N, only the bottom 1/N of the rows
+ *                                (the HUD's status line, away from
+ *                                decorations that turn by themselves)
  *   vm_host picture DUMP.ppm W H a frame of WxH is on screen: outside the
  *                                integer-scaled picture area everything is
  *                                black and inside it at least 8 colours
@@ -51,7 +55,7 @@ struct img {
 static int usage(void)
 {
 	fputs("usage: vm_host qmp SOCKET JSON | shot SOCKET FILE | match REF.png DUMP.ppm BPP |\n"
-	      "       differ A.ppm B.ppm | picture DUMP.ppm W H | text DUMP.ppm |\n"
+	      "       differ A.ppm B.ppm [N] | picture DUMP.ppm W H | text DUMP.ppm |\n"
 	      "       topng DUMP.ppm OUT.png\n",
 	      stderr);
 	return 2;
@@ -342,7 +346,7 @@ static int cmd_match(const char *refp, const char *dumpp, int bpp)
 	return bad ? 1 : 0;
 }
 
-static int cmd_differ(const char *ap, const char *bp)
+static int cmd_differ(const char *ap, const char *bp, int part)
 {
 	struct img a, b;
 	long n = 0;
@@ -357,9 +361,11 @@ static int cmd_differ(const char *ap, const char *bp)
 		printf("sizes differ: %dx%d and %dx%d\n", a.w, a.h, b.w, b.h);
 		n = 1;
 	} else {
-		for (size_t i = 0; i < (size_t)a.w * (size_t)a.h; i++)
+		int y0 = part > 0 ? a.h - a.h / part : 0;
+		for (size_t i = (size_t)y0 * (size_t)a.w; i < (size_t)a.w * (size_t)a.h; i++)
 			n += memcmp(a.rgb + i * 3, b.rgb + i * 3, 3) != 0;
-		printf("%ld of %ld pixels differ\n", n, (long)a.w * a.h);
+		printf("%ld of %ld pixels differ%s\n", n, (long)a.w * (a.h - y0),
+		       part > 0 ? " (the bottom rows)" : "");
 	}
 	free(a.rgb);
 	free(b.rgb);
@@ -429,7 +435,9 @@ int main(int argc, char **argv)
 	if (argc == 5 && strcmp(argv[1], "match") == 0)
 		return cmd_match(argv[2], argv[3], atoi(argv[4]));
 	if (argc == 4 && strcmp(argv[1], "differ") == 0)
-		return cmd_differ(argv[2], argv[3]);
+		return cmd_differ(argv[2], argv[3], 0);
+	if (argc == 5 && strcmp(argv[1], "differ") == 0 && atoi(argv[4]) > 0)
+		return cmd_differ(argv[2], argv[3], atoi(argv[4]));
 	if (argc == 5 && strcmp(argv[1], "picture") == 0)
 		return cmd_picture(argv[2], atoi(argv[3]), atoi(argv[4]));
 	if (argc == 3 && strcmp(argv[1], "text") == 0)
