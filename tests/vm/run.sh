@@ -157,53 +157,56 @@ for b in fb32 latefb; do
 		> "$ST/overlay-$b/etc/arcaded/zz-vm-boot.ini"
 done
 
-# The frame the daemon shows after coin and start: rendered headless by the
-# same binary with the installed configuration.
-ref=$B/ref-play.png
-mkdir -p "$B/refstate"
-# The comparison needs a still picture: with no input the start view of a
-# game must settle (the stage banner goes away) and then not change
-# (checked at two ticks far apart). The guest takes screendumps until one
-# matches, so a daemon slowed down by emulation gets there too.
-for n in 600 1800; do
-	printf '0 tap coin\n1 tap start\n2 expect mode == play\n%d end\n' "$n" > "$B/ref-$n.scr"
-	"$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --state-dir "$B/refstate" \
-		--set game.stage_time=0 --set game.idle_out=off \
-		--script "$B/ref-$n.scr" --screenshot "$B/ref-$n.png" > "$B/ref.log" 2>&1 ||
-		{ cat "$B/ref.log"; die "reference frame"; }
-done
-cmp -s "$B/ref-600.png" "$B/ref-1800.png" ||
-	die "the start view of a game still changes with no input after 10 s (ticks 600 and 1800 differ): the screen comparison needs a still frame"
-cp "$B/ref-600.png" "$ref"
-# Two players (guest.sh phase_twop, which sets game.idle_out = life): the
-# start view of a two-player game with player 1 up and, after player 1
-# gave no input for 30 s and lost the life, with player 2 up. Each is
-# still (two ticks far apart are equal; the idle warning comes 20 s into
-# a turn's play: the turn's page ends at tick 156, player 1's life at
-# 1956, player 2's page at 2226), and they differ (the HUD marks the
-# player up), so a screen that matches the second shows player 2 up.
-twop_ref() { # name, two ticks, then script lines (those up to each tick's end)
+# Reference frames, rendered headless by the same binary with the installed
+# configuration. The comparison needs a still picture: a start view must
+# settle (the stage banner goes away) and then not change, checked at two
+# ticks far apart; the guest takes screendumps until one matches, so a
+# daemon slowed down by emulation gets there too.
+# ref_still NAME IDLE_OUT START TICK_A TICK_B [LINES...]: the script is START
+# (the script lines that begin the game) plus those of LINES (expects) up to
+# each tick; writes $B/ref-NAME.png, the frame at TICK_A.
+ref_still() {
 	tn=$1
-	ta=$2
-	tb=$3
-	shift 3
+	idle=$2
+	start=$3
+	ta=$4
+	tb=$5
+	shift 5
 	for n in "$ta" "$tb"; do
 		rm -rf "$B/refstate-$tn"
 		mkdir -p "$B/refstate-$tn"
-		{ printf '2 tap coin\n4 tap coin\n6 tap start2\n6 expect players == 2\n'
-		  printf '%s\n' "$@" | awk -v n="$n" '$1 + 0 <= n + 0'; printf '%d end\n' "$n"; } \
+		{ printf '%s' "$start"
+		  printf '%s\n' "$@" | awk -v n="$n" 'NF && $1 + 0 <= n + 0'; printf '%d end\n' "$n"; } \
 			> "$B/ref-$tn-$n.scr"
 		"$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --state-dir "$B/refstate-$tn" \
-			--set game.stage_time=0 --set game.idle_out=life \
+			--set game.stage_time=0 --set game.idle_out="$idle" \
 			--script "$B/ref-$tn-$n.scr" --screenshot "$B/ref-$tn-$n.png" > "$B/ref.log" 2>&1 ||
 			{ cat "$B/ref.log"; die "reference frame $tn"; }
 	done
 	cmp -s "$B/ref-$tn-$ta.png" "$B/ref-$tn-$tb.png" ||
-		die "the $tn start view still changes with no input (ticks $ta and $tb differ)"
+		die "the $tn start view still changes with no input (ticks $ta and $tb differ): the screen comparison needs a still frame"
 	cp "$B/ref-$tn-$ta.png" "$B/ref-$tn.png"
 }
-twop_ref twop-p1 600 1200 "600 expect up == 1" "1200 expect up == 1"
-twop_ref twop-p2 2600 3300 "2600 expect up == 2" "2600 expect phase == 0" "3300 expect up == 2"
+# The frame the daemon shows after coin and start.
+ref_still play off '0 tap coin
+1 tap start
+2 expect mode == play
+' 600 1800
+ref=$B/ref-play.png
+# Two players (guest.sh phase_twop, which sets game.idle_out = life): the
+# start view of a two-player game with player 1 up and, after player 1
+# gave no input for 30 s and lost the life, with player 2 up. Each is
+# still (the idle warning comes 20 s into a turn's play: the turn's page
+# ends at tick 156, player 1's life at 1956, player 2's page at 2226), and
+# they differ (the HUD marks the player up), so a screen that matches the
+# second shows player 2 up.
+twop_start='2 tap coin
+4 tap coin
+6 tap start2
+6 expect players == 2
+'
+ref_still twop-p1 life "$twop_start" 600 1200 "600 expect up == 1" "1200 expect up == 1"
+ref_still twop-p2 life "$twop_start" 2600 3300 "2600 expect up == 2" "2600 expect phase == 0" "3300 expect up == 2"
 cmp -s "$B/ref-twop-p1.png" "$B/ref-twop-p2.png" &&
 	die "the two-player start views with player 1 up and with player 2 up are the same picture"
 render_w=$("$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --print-config |
