@@ -97,7 +97,7 @@ step soak tests/soak/run.sh build/arcaded
 step terminal-preview tests/term/run.sh build/arcaded
 step flight-recorder tests/flight/run.sh build/arcaded
 step hostile-maps tests/hostile/run.sh build/arcaded
-step fuzz make --no-print-directory fuzz FUZZ_SECONDS="${FUZZ_SECONDS:-20}"
+step fuzz make --no-print-directory -j"$JOBS" fuzz FUZZ_SECONDS="${FUZZ_SECONDS:-20}"
 
 echo
 [ -n "$failures" ] && echo "failed:$failures"

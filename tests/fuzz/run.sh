@@ -10,12 +10,12 @@ secs=$2
 cd "$(dirname "$0")/../.."
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-fail=0
-found=0
-for bin in "$dir"/fuzz_*; do
-	[ -x "$bin" ] || continue
-	case "$bin" in *.d) continue ;; esac
-	found=1
+# JOBS targets fuzz at once (default: the number of cores; each libFuzzer
+# run is one thread): each has its own scratch corpus and log, and the
+# reports are printed in the targets' order afterwards.
+JOBS=${JOBS:-$(nproc 2>/dev/null || echo 1)}
+one() { # $1: target binary; writes $scratch/<name>.report, exits 1 on failure
+	bin=$1
 	name=$(basename "$bin")
 	seeds=tests/fuzz/corpus/$name
 	crashes=tests/fuzz/crashes/$name
@@ -23,7 +23,8 @@ for bin in "$dir"/fuzz_*; do
 	if [ -d "$crashes" ] && [ -n "$(ls -A "$crashes" 2>/dev/null)" ]; then
 		if ! "$bin" "$crashes"/* >"$scratch/$name.regress" 2>&1; then
 			tail -n 30 "$scratch/$name.regress"
-			echo "FAIL $name: a kept crash input crashes again"; fail=1; continue
+			echo "FAIL $name: a kept crash input crashes again"
+			return 1
 		fi
 	fi
 	"$bin" -max_total_time="$secs" -print_final_stats=1 -artifact_prefix="$scratch/$name-" \
@@ -34,10 +35,37 @@ for bin in "$dir"/fuzz_*; do
 		tail -n 40 "$scratch/$name.log"
 		mkdir -p "$crashes"
 		for a in "$scratch/$name"-*; do [ -f "$a" ] && cp "$a" "$crashes/" && echo "kept $crashes/$(basename "$a")"; done
-		echo "FAIL $name after ${execs:-?} executions"; fail=1
-	else
-		echo "PASS $name: ${execs:-?} executions in ${secs} s, no crash"
+		echo "FAIL $name after ${execs:-?} executions"
+		return 1
 	fi
+	echo "PASS $name: ${execs:-?} executions in ${secs} s, no crash"
+}
+targets=""
+for bin in "$dir"/fuzz_*; do
+	[ -x "$bin" ] || continue
+	case "$bin" in *.d) continue ;; esac
+	targets="$targets $bin"
 done
-[ "$found" -eq 1 ] || { echo "no fuzz targets in $dir"; exit 1; }
+[ -n "$targets" ] || { echo "no fuzz targets in $dir"; exit 1; }
+# each worker takes the next target no other has claimed (mkdir is atomic)
+worker() {
+	for bin in $targets; do
+		name=$(basename "$bin")
+		mkdir "$scratch/$name.claim" 2>/dev/null || continue
+		one "$bin" >"$scratch/$name.report" 2>&1
+		echo $? >"$scratch/$name.rc"
+	done
+}
+w=0
+while [ "$w" -lt "$JOBS" ]; do
+	worker &
+	w=$((w + 1))
+done
+wait
+fail=0
+for bin in $targets; do
+	name=$(basename "$bin")
+	cat "$scratch/$name.report"
+	[ "$(cat "$scratch/$name.rc" 2>/dev/null || echo 1)" -eq 0 ] || fail=1
+done
 exit "$fail"

@@ -509,13 +509,19 @@ static void every_field_is_hashed_unless_spare_and_saved_in_place(void **state)
 			spare += f->spare;
 			sim_snapshot(u, y);
 			/* from the first listed field on (num_stages also feeds the
-			 * stages hash before it) */
-			for (size_t j = l.f[0].at; j < n; j++) {
-				int want = j == f->at ? (uint8_t)(x[j] + 1) : x[j];
-				if (y[j] != want)
-					fail_msg("start %d: %s.%s[%d] (snapshot byte %zu on): byte "
-						 "%zu is %d, want %d", k, f->tag, f->name, f->index,
-						 f->at, j, y[j], want);
+			 * stages hash before it): the field's own byte went up by one,
+			 * every other byte is as it was (memcmp first: this loop runs
+			 * once per field over the whole snapshot) */
+			y[f->at] = (uint8_t)(y[f->at] - 1);
+			if (memcmp(x + l.f[0].at, y + l.f[0].at, n - l.f[0].at) != 0) {
+				y[f->at] = (uint8_t)(y[f->at] + 1);
+				for (size_t j = l.f[0].at; j < n; j++) {
+					int want = j == f->at ? (uint8_t)(x[j] + 1) : x[j];
+					if (y[j] != want)
+						fail_msg("start %d: %s.%s[%d] (snapshot byte %zu on): "
+							 "byte %zu is %d, want %d", k, f->tag, f->name,
+							 f->index, f->at, j, y[j], want);
+				}
 			}
 		}
 		/* the PLAY start has spare enemy and pickup slots */
