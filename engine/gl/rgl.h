@@ -47,7 +47,9 @@ struct rgl_ctx;
 
 /* Counters of the last frame. */
 struct rgl_stats {
-	uint32_t walls, planes, sprites;   /* quads / polygons / billboards drawn */
+	uint32_t walls, planes, sprites;   /* quads / polygons / sprites drawn
+					    * (billboards and meshes) */
+	uint32_t meshes;                   /* of the sprites, meshes */
 	uint32_t triangles, draws;         /* sent to GL, draw calls (one pass) */
 	uint32_t missing;                  /* surfaces drawn with the fallback
 					    * checker, sprites skipped */
