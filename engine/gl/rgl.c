@@ -23,7 +23,8 @@
  *
  * Each pass draws the world (planes, decals with a depth offset, walls,
  * masked middles), then, with the depth buffer cleared in the sprites'
- * box, the masked middles' depth and the sprites one by one, each masked
+ * box, the masked middles' depth and the sprites and meshes one by one in
+ * the software renderer's order (a painter's algorithm), each masked
  * through the stencil buffer by the silhouettes Doom would clip it with
  * (rgl_sprites). Between the two, the world's depth gives per column the
  * farthest depth shown, from which the silhouettes' columns and the

@@ -10,8 +10,9 @@
  * masked middles alpha-tested), floors and ceilings as the convex polygons
  * of the BSP's subsectors (each cut from a large box by its ancestors'
  * partition lines, then by its own one-sided segs, as GL node builders
- * do), and sprites as billboards facing the view plane with Doom's
- * rotation choice. The projection is the software renderer's exactly: 90
+ * do), sprites as billboards facing the view plane with Doom's
+ * rotation choice, and the built-in meshes (r_sprite.mesh) as their own
+ * triangles, rotated and lit as the software renderer's r_mesh.c does. The projection is the software renderer's exactly: 90
  * degree horizontal field of view, focal length w/2, square pixels, horizon
  * at row centre h/2 + shear, near plane 1/4 unit. Light is the same: the
  * colour pass writes texel index, colormap level and a mode per pixel; the

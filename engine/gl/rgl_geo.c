@@ -28,6 +28,9 @@
  * its left offset to its width, top at z + top offset, the rotation and
  * mirroring Doom picks (the software renderer's formula and tables).
  *
+ * Meshes: the built-in mesh's triangles in the world, turned and placed
+ * in the software renderer's integer steps (rgl_mesh).
+ *
  * Positions are relative to the eye, so that floats keep their precision
  * where the depth buffer needs it. Everything a frame needs is rebuilt
  * each frame (sector heights move), except the polygons' x and y.

@@ -703,7 +703,7 @@ static int xc_args(int argc, char **argv, struct xc_opts *o)
 	o->seed = 1;
 	o->only_view = -1;
 	o->cover = 99;
-	o->mesh_min = 90;
+	o->mesh_min = 85;
 	o->mesh_least = 200;
 	o->probe_x = o->probe_y = -1;
 	for (int i = 1; i < argc; i++) {
