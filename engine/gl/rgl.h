@@ -12,9 +12,11 @@
  * partition lines, then by its own one-sided segs, as GL node builders
  * do), sprites as billboards facing the view plane with Doom's
  * rotation choice, and the built-in meshes (r_sprite.mesh) as their own
- * triangles, rotated and lit as the software renderer's r_mesh.c does. The projection is the software renderer's exactly: 90
- * degree horizontal field of view, focal length w/2, square pixels, horizon
- * at row centre h/2 + shear, near plane 1/4 unit. Light is the same: the
+ * triangles, rotated and lit as the software renderer's r_mesh.c does;
+ * sprites and meshes in the software renderer's order. The projection is
+ * the software renderer's exactly: 90 degree horizontal field of view,
+ * focal length w/2, square pixels, horizon at row centre h/2 + shear, near
+ * plane 1/4 unit. Light is the same: the
  * colour pass writes texel index, colormap level and a mode per pixel; the
  * CPU then looks each pixel up through the texture set's colormaps with
  * Doom's distance fade from the depth buffer, and draws the sky by the
@@ -28,7 +30,9 @@
  * planes seen from behind filled black, a missing upper or lower texture
  * showing the plane behind it, masked middles drawn once and showing over
  * planes their seg does not mark, sprites clipped by Doom's silhouettes
- * (not by walls) and drawn only in sectors Doom's walk would reach.
+ * (not by walls) and drawn only in sectors Doom's walk would reach, and
+ * sprites and meshes drawn over one another in Doom's order (a painter's
+ * algorithm: farther centre first), not depth-tested against each other.
  * Point-light maps (r_set_lmap) are not drawn.
  *
  * Not deterministic across Mesa versions or thread counts in its edge

@@ -53,7 +53,7 @@ enum rgl_texkind {
 /* Which passes draw a run of triangles (rgl.c): the world pass draws
  * planes, decals, walls and masked middles; then, with the depth buffer
  * cleared, the sprite pass draws silhouettes and masked middles into the
- * depth buffer only, and the sprites against it. Masked middles and
+ * depth buffer only, and the sprites and meshes against it. Masked middles and
  * sprites are alpha-tested, their textures clamped vertically (sprites
  * both ways). */
 enum rgl_pass {
@@ -63,7 +63,7 @@ enum rgl_pass {
 	RGL_MASKED,                     /* masked middle textures */
 	RGL_MDECAL,                     /* masked textures over a plane (offset) */
 	RGL_SIL,                        /* silhouettes: sprite clipping only */
-	RGL_SPRITE
+	RGL_SPRITE                      /* sprites and meshes (one run each) */
 };
 
 /* A seg's silhouettes (rgl_geo_sils): ends relative to the eye, heights
