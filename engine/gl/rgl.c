@@ -23,7 +23,8 @@
  *
  * Each pass draws the world (planes, decals with a depth offset, walls,
  * masked middles), then, with the depth buffer cleared in the sprites'
- * box, the masked middles' depth and the sprites one by one, each masked
+ * box, the masked middles' depth and the sprites and meshes one by one in
+ * the software renderer's order (a painter's algorithm), each masked
  * through the stencil buffer by the silhouettes Doom would clip it with
  * (rgl_sprites). Between the two, the world's depth gives per column the
  * farthest depth shown, from which the silhouettes' columns and the
@@ -111,7 +112,9 @@ int rgl_new(int w, int h, struct rgl_ctx **out, char *err, size_t errlen)
 	glShadeModel(GL_FLAT);
 	glDisable(GL_DITHER);
 	glDisable(GL_BLEND);
-	glDisable(GL_CULL_FACE);
+	glDisable(GL_CULL_FACE);       /* on only for meshes (rgl_sprites) */
+	glFrontFace(GL_CCW);           /* OBJ faces turn counter-clockwise */
+	glCullFace(GL_BACK);
 	glDisable(GL_LIGHTING);
 	glAlphaFunc(GL_GREATER, 0.5f);
 	glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -194,6 +197,7 @@ void rgl_free(struct rgl_ctx *g)
 	free(g->sprs);
 	free(g->runs);
 	free(g->sidx);
+	free(g->sord);
 	free(g->silv);
 	free(g);
 }
@@ -471,22 +475,67 @@ static void rgl_world(struct rgl_ctx *g, enum rgl_out out)
 	glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
-/* The sprites over the world, farthest first, with the depth buffer
- * cleared in their box and holding only the masked middles: each is
- * clipped, through the stencil buffer, by the silhouettes Doom's
- * R_DrawSprite would take as in front of it (not by the walls themselves:
- * where a silhouette is missing, e.g. a zero-height sector's walls, a
- * sprite shows through, as in Doom). Only sprites standing in a sector the
- * walk would reach are drawn. */
+/* The software renderer's drawing order of sprites and meshes (r_things.c):
+ * by the scale at their centre, smaller (farther) first, ties in the
+ * list's order. */
+static int rgl_sord_cmp(const void *a, const void *b)
+{
+	const struct rgl_sord *x = a, *y = b;
+
+	if (x->scale != y->scale)
+		return x->scale < y->scale ? -1 : 1;
+	return x->k < y->k ? -1 : x->k > y->k;
+}
+
+/* The depth buffer in window box (x0, y0)-(x1, y1) back to the masked
+ * middles alone (after a mesh wrote its own). */
+static void rgl_depth_reset(struct rgl_ctx *g, int x0, int y0, int x1, int y1)
+{
+	if (x1 <= x0 || y1 <= y0)
+		return;
+	glScissor(x0, y0, x1 - x0, y1 - y0);
+	glDepthMask(GL_TRUE);          /* glClear honours the mask */
+	glClear(GL_DEPTH_BUFFER_BIT);
+	glDisable(GL_STENCIL_TEST);
+	glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+	rgl_runs(g, 1u << RGL_MASKED, 1);
+	glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+	glEnable(GL_STENCIL_TEST);
+}
+
+/* The sprites and meshes over the world, with the depth buffer cleared in
+ * their box and holding only the masked middles, in the software
+ * renderer's order (farthest centre first: a painter's algorithm, as
+ * Doom's): each is clipped, through the stencil buffer, by the silhouettes
+ * Doom's R_DrawSprite would take as in front of it (not by the walls
+ * themselves: where a silhouette is missing, e.g. a zero-height sector's
+ * walls, a sprite shows through, as in Doom), and by the masked middles'
+ * depth, never by another sprite's: billboards write no depth, and a mesh's
+ * depth (which sorts its own triangles) is put back to the masked middles'
+ * in its box after it is drawn. Only those standing in a sector the walk
+ * would reach are drawn. */
 static void rgl_sprites(struct rgl_ctx *g, const struct map *m, enum rgl_out out)
 {
 	const struct rgl_vtx *v = g->vtx;
 	GLsizei stride = (GLsizei)sizeof(*v);
 	int x0 = g->sbox[0] < 0 ? 0 : g->sbox[0], y0 = g->sbox[1] < 0 ? 0 : g->sbox[1];
 	int x1 = g->sbox[2] > g->w ? g->w : g->sbox[2], y1 = g->sbox[3] > g->h ? g->h : g->sbox[3];
+	int nord = 0;
 
 	if (g->nvtx == 0 || g->st.sprites == 0 || x1 <= x0 || y1 <= y0)
 		return;
+	for (int i = 0; i < g->nitems; i++) {
+		uint32_t k = (uint32_t)g->items[i].key;
+
+		if ((g->items[i].key >> 32) != RGL_SPRITE || g->sec_seen[g->spr_sec[k]] != 1 ||
+		    g->sprs[k].x1 < g->sprs[k].x0 || nord >= g->maxsord)
+			continue;
+		g->sord[nord].scale = g->sprs[k].scale;
+		g->sord[nord].k = k;
+		g->sord[nord].item = i;
+		nord++;
+	}
+	qsort(g->sord, (size_t)nord, sizeof(*g->sord), rgl_sord_cmp);
 	glEnable(GL_SCISSOR_TEST);
 	glScissor(x0, y0, x1 - x0, y1 - y0);
 	glClear(GL_DEPTH_BUFFER_BIT);
@@ -495,22 +544,18 @@ static void rgl_sprites(struct rgl_ctx *g, const struct map *m, enum rgl_out out
 	glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 	glDepthFunc(GL_LEQUAL);
 	glEnable(GL_STENCIL_TEST);
-	for (int i = 0; i < g->nitems; i++) {
-		const struct rgl_item *it = &g->items[i];
-		uint32_t k = (uint32_t)it->key;
+	for (int o = 0; o < nord; o++) {
+		const struct rgl_item *it = &g->items[g->sord[o].item];
+		uint32_t k = g->sord[o].k;
 		const struct rgl_sprrec *sp = &g->sprs[k];
-		int n;
+		int n, sx0 = sp->x0 > x0 ? sp->x0 : x0, sx1 = sp->x1 + 1 < x1 ? sp->x1 + 1 : x1;
 
-		if ((it->key >> 32) != RGL_SPRITE || g->sec_seen[g->spr_sec[k]] != 1 || sp->x1 < sp->x0)
+		if (sx1 <= sx0)
 			continue;
 		n = rgl_geo_sprite_sils(g, m, (int)k, g->sidx);
 		glStencilFunc(GL_ALWAYS, 0, 1);
 		glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
 		if (n > 0) {
-			int sx0 = sp->x0 > x0 ? sp->x0 : x0, sx1 = sp->x1 + 1 < x1 ? sp->x1 + 1 : x1;
-
-			if (sx1 <= sx0)
-				continue;
 			/* the silhouettes in front of it, in its columns */
 			glScissor(sx0, y0, sx1 - sx0, y1 - y0);
 			glClear(GL_STENCIL_BUFFER_BIT);
@@ -527,14 +572,27 @@ static void rgl_sprites(struct rgl_ctx *g, const struct map *m, enum rgl_out out
 			glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 			glStencilFunc(GL_EQUAL, 0, 1);
 			glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+			glScissor(x0, y0, x1 - x0, y1 - y0);
 		}
+		/* a billboard is built in view space, a mesh in the world; a
+		 * mesh's faces turned away are not drawn (r_mesh.c skips them) */
 		glMatrixMode(GL_PROJECTION);
-		glLoadMatrixd(g->mat_view);
+		glLoadMatrixd(sp->mesh ? g->mat_world : g->mat_view);
+		glDepthMask(sp->mesh ? GL_TRUE : GL_FALSE);
+		if (sp->mesh)
+			glEnable(GL_CULL_FACE);
 		rgl_item_draw(g, it, out != RGL_OUT_COLOUR);
+		glDisable(GL_CULL_FACE);
 		glLoadMatrixd(g->mat_world);
 		glMatrixMode(GL_MODELVIEW);
-		glScissor(x0, y0, x1 - x0, y1 - y0);
+		if (sp->mesh) {
+			int by0 = sp->y0 > y0 ? sp->y0 : y0, by1 = sp->y1 < y1 ? sp->y1 : y1;
+
+			rgl_depth_reset(g, sx0, by0, sx1, by1);
+			glScissor(x0, y0, x1 - x0, y1 - y0);
+		}
 	}
+	glDepthMask(GL_TRUE);
 	glDisable(GL_STENCIL_TEST);
 	glDepthFunc(GL_LESS);
 	glDisable(GL_SCISSOR_TEST);

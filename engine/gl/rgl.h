@@ -10,10 +10,13 @@
  * masked middles alpha-tested), floors and ceilings as the convex polygons
  * of the BSP's subsectors (each cut from a large box by its ancestors'
  * partition lines, then by its own one-sided segs, as GL node builders
- * do), and sprites as billboards facing the view plane with Doom's
- * rotation choice. The projection is the software renderer's exactly: 90
- * degree horizontal field of view, focal length w/2, square pixels, horizon
- * at row centre h/2 + shear, near plane 1/4 unit. Light is the same: the
+ * do), sprites as billboards facing the view plane with Doom's
+ * rotation choice, and the built-in meshes (r_sprite.mesh) as their own
+ * triangles, rotated and lit as the software renderer's r_mesh.c does;
+ * sprites and meshes in the software renderer's order. The projection is
+ * the software renderer's exactly: 90 degree horizontal field of view,
+ * focal length w/2, square pixels, horizon at row centre h/2 + shear, near
+ * plane 1/4 unit. Light is the same: the
  * colour pass writes texel index, colormap level and a mode per pixel; the
  * CPU then looks each pixel up through the texture set's colormaps with
  * Doom's distance fade from the depth buffer, and draws the sky by the
@@ -27,7 +30,9 @@
  * planes seen from behind filled black, a missing upper or lower texture
  * showing the plane behind it, masked middles drawn once and showing over
  * planes their seg does not mark, sprites clipped by Doom's silhouettes
- * (not by walls) and drawn only in sectors Doom's walk would reach.
+ * (not by walls) and drawn only in sectors Doom's walk would reach, and
+ * sprites and meshes drawn over one another in Doom's order (a painter's
+ * algorithm: farther centre first), not depth-tested against each other.
  * Point-light maps (r_set_lmap) are not drawn.
  *
  * Not deterministic across Mesa versions or thread counts in its edge
@@ -47,7 +52,9 @@ struct rgl_ctx;
 
 /* Counters of the last frame. */
 struct rgl_stats {
-	uint32_t walls, planes, sprites;   /* quads / polygons / billboards drawn */
+	uint32_t walls, planes, sprites;   /* quads / polygons / sprites drawn
+					    * (billboards and meshes) */
+	uint32_t meshes;                   /* of the sprites, meshes */
 	uint32_t triangles, draws;         /* sent to GL, draw calls (one pass) */
 	uint32_t missing;                  /* surfaces drawn with the fallback
 					    * checker, sprites skipped */

@@ -28,6 +28,9 @@
  * its left offset to its width, top at z + top offset, the rotation and
  * mirroring Doom picks (the software renderer's formula and tables).
  *
+ * Meshes: the built-in mesh's triangles in the world, turned and placed
+ * in the software renderer's integer steps (rgl_mesh).
+ *
  * Positions are relative to the eye, so that floats keep their precision
  * where the depth buffer needs it. Everything a frame needs is rebuilt
  * each frame (sector heights move), except the polygons' x and y.
@@ -39,6 +42,7 @@
 
 #include "engine/core/tab.h"
 #include "engine/gl/rgl_local.h"
+#include "engine/map/mesh_builtin.h"
 #include "engine/render/r_id.h"
 #include "engine/render/r_main.h"
 
@@ -1176,6 +1180,7 @@ static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_s
 		g->sprs[i].gzt = zt;
 		g->sprs[i].gx = gx;
 		g->sprs[i].gy = gy;
+		g->sprs[i].scale = ((int64_t)g->w << 47) / d;
 		g->sbox[0] = bx0 < g->sbox[0] ? bx0 : g->sbox[0];
 		g->sbox[1] = by0 < g->sbox[1] ? by0 : g->sbox[1];
 		g->sbox[2] = bx1 > g->sbox[2] ? bx1 : g->sbox[2];
@@ -1203,6 +1208,128 @@ static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_s
 	return 0;
 }
 
+/* The software renderer's mesh light (r_mesh.c): towards (-2, 3, 6) / 7,
+ * up to RGL_MESH_SHADE colormap levels darker as a face turns away. */
+#define RGL_MESH_LX (-2.0)
+#define RGL_MESH_LY 3.0
+#define RGL_MESH_LZ 6.0
+#define RGL_MESH_SHADE 12
+
+/* Sprite i, a built-in mesh, as its own triangles in the world (eye
+ * relative, the world pass's matrix), facing outward (the sprite pass
+ * culls those turned away, as r_mesh.c skips them): rotated by the
+ * sprite's angle about its vertical axis with the same tables and the same
+ * integer steps to each vertex's map position as the software renderer
+ * (r_mesh.c), so that both draw one shape. Drawn under the same rule
+ * (whole or not at all: the cylinder of 3/2 its radius in front, beside
+ * and above and below the eye within four times its nearest depth) and
+ * clipped as a sprite (its record: the cylinder's screen box, the depth
+ * of its centre, its lowest and highest points). The id is the sprite's. */
+static int rgl_mesh(struct rgl_ctx *g, const struct map *m, const struct r_sprite *sp, int i)
+{
+	fx_t gx = rgl_clamp(sp->x), gy = rgl_clamp(sp->y);
+	int64_t dx = (int64_t)sp->x - g->ex, dy = (int64_t)sp->y - g->ey;
+	int64_t d = (dx * g->vcos + dy * g->vsin) >> FX_SHIFT;
+	int64_t l = (dx * g->vsin - dy * g->vcos) >> FX_SHIFT;
+	int64_t rr, dmin, zlo, zhi;
+	fx_t c = tab_cos(sp->angle), sn = tab_sin(sp->angle);
+	double f = g->w / 2.0, cy = g->h / 2.0 - g->shear, xmin = 1e30, xmax = -1e30;
+	double ymin = 1e30, ymax = -1e30;
+	struct mesh me;
+	struct rgl_surf s;
+	struct rgl_vtx *v;
+	uint32_t sec;
+	int base = 0;
+
+	if (mesh_builtin_get(sp->mesh, &me) < 0) {
+		g->st.missing++;
+		return 0;
+	}
+	rr = (int64_t)me.radius * 3 / 2 + FX_ONE;
+	dmin = d - rr;
+	zlo = (int64_t)sp->z + me.zmin - g->ez;
+	zhi = (int64_t)sp->z + me.zmax - g->ez;
+	if (dmin < RGL_SPR_NEAR || (l < 0 ? -l : l) + rr > 4 * dmin ||
+	    (zlo < 0 ? -zlo : zlo) > 4 * dmin || (zhi < 0 ? -zhi : zhi) > 4 * dmin)
+		return 0;
+	/* the screen box of the cylinder's corners (window coordinates, y up) */
+	for (int k = 0; k < 4; k++) {
+		double dd = (double)(k & 1 ? d + rr : dmin) / 65536.0;
+		double sx = f + f * ((double)(l + (k & 2 ? rr : -rr)) / 65536.0) / dd;
+		double sy = cy + f * ((double)(k & 2 ? zhi : zlo) / 65536.0) / dd;
+
+		xmin = sx < xmin ? sx : xmin;
+		xmax = sx > xmax ? sx : xmax;
+		ymin = sy < ymin ? sy : ymin;
+		ymax = sy > ymax ? sy : ymax;
+	}
+	if (xmax < 0 || xmin >= g->w || ymax < 0 || ymin >= g->h)
+		return 0;
+	sec = map_point_sector(m, gx, gy);
+	g->spr_sec[i] = sec;
+	if (!(sp->flags & R_SPR_FULLBRIGHT)) {
+		int64_t scale = ((int64_t)g->w << 47) / d;
+		int64_t fade = ((scale >> 16) * (((int64_t)RGL_FADE_DIST << 17) / g->w)) >> 32;
+
+		base = rgl_light_base(m->sectors[sec].light) -
+		       (fade > RGL_FADE_MAX ? RGL_FADE_MAX : (int)fade);
+		base = base < 0 ? 0 : base;
+	}
+	g->sprs[i].x0 = (int)floor(xmin);
+	g->sprs[i].x1 = (int)floor(xmax);
+	g->sprs[i].d = (double)d / 65536.0;
+	g->sprs[i].gz = (double)zlo / 65536.0;
+	g->sprs[i].gzt = (double)zhi / 65536.0;
+	g->sprs[i].gx = gx;
+	g->sprs[i].gy = gy;
+	g->sprs[i].mesh = 1;
+	g->sprs[i].scale = ((int64_t)g->w << 47) / d;
+	g->sprs[i].y0 = (int)floor(ymin);
+	g->sprs[i].y1 = (int)ceil(ymax) + 1;
+	g->sbox[0] = (int)floor(xmin) < g->sbox[0] ? (int)floor(xmin) : g->sbox[0];
+	g->sbox[1] = (int)floor(ymin) < g->sbox[1] ? (int)floor(ymin) : g->sbox[1];
+	g->sbox[2] = (int)ceil(xmax) + 1 > g->sbox[2] ? (int)ceil(xmax) + 1 : g->sbox[2];
+	g->sbox[3] = (int)ceil(ymax) + 1 > g->sbox[3] ? (int)ceil(ymax) + 1 : g->sbox[3];
+	for (uint32_t t = 0; t < me.nt; t++) {
+		double p[3][3], ux, uy, uz, wx, wy, wz, nx, ny, nz, len, lam;
+		int lvl;
+
+		for (int k = 0; k < 3; k++) {
+			const struct mesh_vert *mv = &me.v[me.t[t].v[k]];
+			/* r_mesh.c's map position, in its integer steps */
+			int64_t x = gx + (((int64_t)mv->x * c - (int64_t)mv->y * sn) >> FX_SHIFT);
+			int64_t y = gy + (((int64_t)mv->x * sn + (int64_t)mv->y * c) >> FX_SHIFT);
+			int64_t z = (int64_t)sp->z + mv->z;
+
+			p[k][0] = (double)(x - g->ex) / 65536.0;
+			p[k][1] = (double)(y - g->ey) / 65536.0;
+			p[k][2] = (double)(z - g->ez) / 65536.0;
+		}
+		/* the outward normal (the file's order) against the light */
+		ux = p[1][0] - p[0][0], uy = p[1][1] - p[0][1], uz = p[1][2] - p[0][2];
+		wx = p[2][0] - p[0][0], wy = p[2][1] - p[0][1], wz = p[2][2] - p[0][2];
+		nx = uy * wz - uz * wy;
+		ny = uz * wx - ux * wz;
+		nz = ux * wy - uy * wx;
+		len = sqrt(nx * nx + ny * ny + nz * nz);
+		lam = len > 0 ? (nx * RGL_MESH_LX + ny * RGL_MESH_LY + nz * RGL_MESH_LZ) / (7.0 * len) : 0;
+		lam = lam < 0 ? 0 : lam > 1 ? 1 : lam;
+		lvl = base + (int)((1.0 - lam) * RGL_MESH_SHADE);
+		lvl = lvl > PAL_LIGHTS - 1 ? PAL_LIGHTS - 1 : lvl;
+		rgl_surf(&s, RGL_SPRITE, RGL_TEXREF(RGL_TEX_NONE, 0), sp->colour, lvl, RGL_MODE_FIXED,
+			 r_id(R_IDK_SPRITE, (uint32_t)i));
+		s.key = ((uint64_t)RGL_SPRITE << 32) | (uint32_t)i;
+		v = rgl_push(g, &s, 3);
+		if (!v)
+			return -ENOMEM;
+		for (int k = 0; k < 3; k++)
+			rgl_set(&v[k], &s, p[k][0], p[k][1], p[k][2], 0, 0, 1);
+	}
+	g->st.sprites++;
+	g->st.meshes++;
+	return 0;
+}
+
 int rgl_geo_build(struct rgl_ctx *g, const struct map *m, const struct tex_set *t,
 		  const struct r_sprite *spr, int nspr)
 {
@@ -1214,6 +1341,7 @@ int rgl_geo_build(struct rgl_ctx *g, const struct map *m, const struct tex_set *
 	if (nspr > g->max_spr) {
 		uint32_t *ns = realloc(g->spr_sec, (size_t)nspr * sizeof(*ns));
 		struct rgl_sprrec *nr;
+		struct rgl_sord *no;
 
 		if (!ns)
 			return -ENOMEM;
@@ -1222,11 +1350,17 @@ int rgl_geo_build(struct rgl_ctx *g, const struct map *m, const struct tex_set *
 		if (!nr)
 			return -ENOMEM;
 		g->sprs = nr;
+		no = realloc(g->sord, (size_t)nspr * sizeof(*no));
+		if (!no)
+			return -ENOMEM;
+		g->sord = no;
+		g->maxsord = nspr;
 		g->max_spr = nspr;
 	}
 	for (int i = 0; i < nspr; i++) {
 		g->sprs[i].x0 = 0;
 		g->sprs[i].x1 = -1;
+		g->sprs[i].mesh = 0;
 	}
 	if ((int)m->num_sectors > g->max_seen) {
 		uint8_t *ns = realloc(g->sec_seen, m->num_sectors);
@@ -1243,7 +1377,7 @@ int rgl_geo_build(struct rgl_ctx *g, const struct map *m, const struct tex_set *
 		if (rgl_planes(g, m, t, i) < 0)
 			return -ENOMEM;
 	for (int i = 0; i < nspr; i++)
-		if (rgl_sprite(g, m, t, &spr[i], i) < 0)
+		if ((spr[i].mesh ? rgl_mesh(g, m, &spr[i], i) : rgl_sprite(g, m, t, &spr[i], i)) < 0)
 			return -ENOMEM;
 	return 0;
 }

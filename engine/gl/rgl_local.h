@@ -53,7 +53,7 @@ enum rgl_texkind {
 /* Which passes draw a run of triangles (rgl.c): the world pass draws
  * planes, decals, walls and masked middles; then, with the depth buffer
  * cleared, the sprite pass draws silhouettes and masked middles into the
- * depth buffer only, and the sprites against it. Masked middles and
+ * depth buffer only, and the sprites and meshes against it. Masked middles and
  * sprites are alpha-tested, their textures clamped vertically (sprites
  * both ways). */
 enum rgl_pass {
@@ -63,7 +63,7 @@ enum rgl_pass {
 	RGL_MASKED,                     /* masked middle textures */
 	RGL_MDECAL,                     /* masked textures over a plane (offset) */
 	RGL_SIL,                        /* silhouettes: sprite clipping only */
-	RGL_SPRITE
+	RGL_SPRITE                      /* sprites and meshes (one run each) */
 };
 
 /* A seg's silhouettes (rgl_geo_sils): ends relative to the eye, heights
@@ -88,11 +88,27 @@ struct rgl_silrun {
 };
 
 /* A sprite as drawn: its columns, depth, position (the map's, for Doom's
- * side test), feet and top above the eye; x1 < x0 when not drawn. */
+ * side test), feet and top above the eye; x1 < x0 when not drawn. A mesh:
+ * the columns of its screen box, the depth of its centre, its lowest and
+ * highest points. */
 struct rgl_sprrec {
 	int x0, x1;
 	double d, gz, gzt;
 	fx_t gx, gy;
+	int mesh;                       /* a mesh: triangles in the world (eye
+					 * relative), culled when turned away */
+	int y0, y1;                     /* a mesh: its screen box's rows (window
+					 * coordinates, y up, y1 past the last) */
+	int64_t scale;                  /* the software renderer's scale at its
+					 * centre, (w << 47) / depth: the drawing
+					 * order */
+};
+
+/* One entry of the sprites' drawing order (rgl_sprites). */
+struct rgl_sord {
+	int64_t scale;
+	uint32_t k;                     /* index in the sprite list */
+	int item;                       /* its run in items */
 };
 
 #define RGL_SKIRT 100000.0              /* "to the top (bottom) of the view" */
@@ -169,6 +185,8 @@ struct rgl_ctx {
 	struct rgl_silrun *runs;        /* the columns where they apply */
 	int nruns, maxruns;
 	struct rgl_sprrec *sprs;        /* per sprite in the list */
+	struct rgl_sord *sord;          /* their drawing order, maxsord entries */
+	int maxsord;
 	uint32_t *sidx;                 /* scratch: silhouette vertex indices */
 	int maxsidx;
 	float *colmax;                  /* per column: the farthest view depth */

@@ -104,27 +104,33 @@ static int r_mesh_of(uint16_t type, int *r, int *g, int *b)
 	}
 }
 
-/* Adds thing type `type` at (x, y, z) as its mesh when it has one (lit by
- * its sector, not full bright: the Lambert term shows its shape), turned
- * a quarter turn a second by the tick alone (frames stay a function of
- * the sim's state); 1 when added as a mesh. */
-static int r_put_mesh(struct r_out *o, const struct sim *s, uint16_t type, fx_t x, fx_t y, fx_t z)
+int r_game_mesh(const struct tex_set *t, uint16_t type, uint32_t tick, fx_t x, fx_t y, fx_t z,
+		struct r_sprite *out)
 {
 	int cr, cg, cb, mesh = r_mesh_of(type, &cr, &cg, &cb);
-	struct r_sprite *r;
 
 	if (!mesh)
 		return 0;
-	if (o->n >= o->max)
-		return 1;
-	r = &o->out[o->n++];
-	memset(r, 0, sizeof(*r));
-	r->x = x;
-	r->y = y;
-	r->z = z;
-	r->angle = (ang_t)(s->tick * R_MESH_TURN);
-	r->mesh = (uint8_t)mesh;
-	r->colour = pal_nearest(&o->t->pal, cr, cg, cb);
+	memset(out, 0, sizeof(*out));
+	out->x = x;
+	out->y = y;
+	out->z = z;
+	out->angle = (ang_t)(tick * R_MESH_TURN);
+	out->mesh = (uint8_t)mesh;
+	out->colour = pal_nearest(&t->pal, cr, cg, cb);
+	return 1;
+}
+
+/* Adds thing type `type` at (x, y, z) as its mesh when it has one
+ * (r_game_mesh, at the sim's tick); 1 when it has one. */
+static int r_put_mesh(struct r_out *o, const struct sim *s, uint16_t type, fx_t x, fx_t y, fx_t z)
+{
+	struct r_sprite sp;
+
+	if (!r_game_mesh(o->t, type, s->tick, x, y, z, &sp))
+		return 0;
+	if (o->n < o->max)
+		o->out[o->n++] = sp;
 	return 1;
 }
 
@@ -219,7 +225,9 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite
 	return o.n;
 }
 
-int r_map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out)
+/* r_map_sprites and r_map_things: meshes when with_meshes. */
+static int r_map_list(const struct map *m, const struct tex_set *t, int with_meshes,
+		      uint32_t tick, struct r_sprite *out)
 {
 	int n = 0;
 
@@ -231,10 +239,15 @@ int r_map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite 
 
 		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
 			continue;
+		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
+		/* on its floor, as the game puts pickups and decorations */
+		if (with_meshes && r_game_mesh(t, th->type, tick, th->x, th->y, sec->floor_h, &out[n])) {
+			n++;
+			continue;
+		}
 		s = tex_find_sprite(t, in->sprite);
 		if (s < 0)
 			continue;
-		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
 		out[n].x = th->x;
 		out[n].y = th->y;
 		out[n].z = (in->flags & TH_HANGING) ? sec->ceil_h - in->height * FX_ONE : sec->floor_h;
@@ -242,9 +255,21 @@ int r_map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite 
 		out[n].sprite = (uint16_t)s;
 		out[n].frame = (uint16_t)(in->frame - 'A');
 		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
+		out[n].mesh = 0;
+		out[n].colour = 0;
 		n++;
 	}
 	return n;
+}
+
+int r_map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out)
+{
+	return r_map_list(m, t, 0, 0, out);
+}
+
+int r_map_things(const struct map *m, const struct tex_set *t, uint32_t tick, struct r_sprite *out)
+{
+	return r_map_list(m, t, 1, tick, out);
 }
 
 /* Grows *p (of *cap elements of size elem) to n. 0 or -1. */

@@ -75,4 +75,22 @@ void r_game_want(const struct tex_set *t, const struct map *m, uint8_t *want_pic
  * m->num_things entries. Returns how many were stored. */
 int r_map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out);
 
+/* As r_map_sprites, but the things the game draws as built-in meshes (the
+ * keys, the floor lamp: r_game_mesh) are those meshes, on their sector's
+ * floor, turned as the game turns them at tick `tick`, whether or not t
+ * has their sprite (the cross-check's scene). out needs room for
+ * m->num_things entries. Returns how many were stored. */
+int r_map_things(const struct map *m, const struct tex_set *t, uint32_t tick, struct r_sprite *out);
+
+/* When thing type `type` is drawn as a built-in mesh (the key pickups,
+ * cards and skulls, in their key's colour; the floor lamp 2028 in brass),
+ * fills *out with it standing at (x, y, z), turned a quarter turn a second
+ * by the tick alone (frames stay a function of the sim's state), in t's
+ * palette colour, lit by its sector (not full bright: the Lambert term
+ * shows its shape), and returns 1; else 0 with *out untouched. The one
+ * rule for the game's sprites (r_game_sprites) and the still views'
+ * (r_map_things). */
+int r_game_mesh(const struct tex_set *t, uint16_t type, uint32_t tick, fx_t x, fx_t y, fx_t z,
+		struct r_sprite *out);
+
 #endif

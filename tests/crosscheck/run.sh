@@ -10,7 +10,11 @@
 # self-test: with the id buffers cleared (--blank-ids) xcheck must fail.
 # Then the mover views (--movers) of freedoom1 E1M1 and freedoom2 MAP01:
 # door sectors part open and lift sectors mid-travel, seen from in front;
-# they fail the same way, and the step fails when there are none.
+# they fail the same way, and the step fails when there are none. Then the
+# mesh views (--meshes) of the built-in levels, freedoom1 and freedoom2
+# MAP01: every key and floor lamp seen from around it; a view fails as
+# above or when its mesh pixels (200 or more) agree on fewer than 85%, and
+# the step fails when no mesh pixel was compared.
 # Usage: tests/crosscheck/run.sh [BUILD] [xcheck options...]
 #   BUILD: the folder holding libarcaded.a (default build); further
 #   arguments replace the default content and views (e.g. --wad F --map M).
@@ -27,7 +31,7 @@ rm -rf "$out/diff"
 $CC -I. -D_GNU_SOURCE -std=c11 -O2 -g -Wall -Wextra -Werror -Wshadow -Wvla \
 	-Wstrict-prototypes -Wmissing-prototypes -fno-strict-aliasing \
 	$(pkg-config --cflags osmesa libpng) -o "$out/xcheck" tests/crosscheck/xcheck.c \
-	tests/crosscheck/xc_move.c \
+	tests/crosscheck/xc_move.c tests/crosscheck/xc_mesh.c \
 	engine/gl/rgl.c engine/gl/rgl_geo.c "$BUILD/libarcaded.a" \
 	$(pkg-config --libs osmesa libpng) -lm -lpthread
 if [ $# -gt 0 ]; then
@@ -58,6 +62,19 @@ cat "$out/movers.log"
 # no mover view at all would prove nothing
 if ! grep -Eq '^xcheck: [1-9][0-9]* views' "$out/movers.log"; then
 	echo "crosscheck: FAIL: no mover views"
+	rc=1
+fi
+# The meshes (keys, the floor lamp) seen from around them, each view at a
+# tick of its own (docs/crosscheck.md): the same threshold, and a view with
+# 200 or more mesh pixels fails when fewer than 85% of them agree.
+echo "crosscheck: mesh views (keys and lamps from around them)"
+"$out/xcheck" --meshes --builtin --wad "$WADS/freedoom1.wad" \
+	--wad "$WADS/freedoom2.wad" --map MAP01 --size 320x200 --min 99.5 \
+	--mesh-min 85 --mesh-least 200 --diff "$out/diff" >"$out/meshes.log" || rc=1
+grep -v '^ ' "$out/meshes.log" | grep -Ev '^(built-in|freedoom)' || true
+# no mesh pixels at all would prove nothing
+if ! grep -Eq '^xcheck: mesh pixels [1-9]' "$out/meshes.log"; then
+	echo "crosscheck: FAIL: no mesh pixels compared"
 	rc=1
 fi
 exit $rc

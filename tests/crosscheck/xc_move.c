@@ -76,10 +76,7 @@ static int xcm_cross(double ax, double ay, double bx, double by, double cx, doub
 	return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
 }
 
-/* The eye's sector when (x, y) is a good place to look at (mx, my) from,
- * else MAP_NONE (the rules at the top of this file). */
-static uint32_t xcm_eye(const struct map *m, uint32_t mover, double x, double y, double mx,
-			double my)
+uint32_t xcm_eye(const struct map *m, uint32_t mover, double x, double y, double mx, double my)
 {
 	uint32_t s = map_point_sector(m, (fx_t)lround(x * 65536.0), (fx_t)lround(y * 65536.0));
 

@@ -25,6 +25,13 @@ struct xcm_view {
  * written). */
 int xcm_views(const struct map *m, struct xcm_view *out, int max);
 
+/* The eye's sector when (x, y) is a good place to look at (mx, my) from,
+ * else MAP_NONE: in a sector other than mover (MAP_NONE: any) at least 56
+ * units tall, at least 1 unit from every line and 16 from one-sided ones,
+ * clear of things, no one-sided line between the two points. Shared with
+ * the mesh views (xc_mesh.c). */
+uint32_t xcm_eye(const struct map *m, uint32_t mover, double x, double y, double mx, double my);
+
 /* From xcheck.c, shared by its random views and these: the squared
  * distance from (x, y) to line l, and whether (x, y) is clear of every
  * solid thing by a player's radius (1) or not (0). */

@@ -63,6 +63,7 @@
 #include "engine/render/r_game.h"
 #include "engine/render/r_id.h"
 #include "engine/render/r_main.h"
+#include "tests/crosscheck/xc_mesh.h"
 #include "tests/crosscheck/xc_move.h"
 
 #define XC_MAX_SETS 16
@@ -80,6 +81,11 @@ struct xc_opts {
 	int views, w, h, sprites, verbose, diff_all;
 	int only_view;                  /* --view K: only view K of each map, or -1 */
 	int movers;                     /* --movers: the mover views, not random ones */
+	int meshes;                     /* --meshes: the mesh views, not random ones */
+	double mesh_min;                /* --mesh-min PCT: least agreement on a mesh
+					 * view's mesh pixels */
+	long mesh_least;                /* --mesh-least N: mesh pixels a mesh view
+					 * needs for that rule to apply */
 	int blank;                      /* --blank-ids: clear the id buffers (self-test) */
 	double cover;                   /* --cover PCT: least share of pixels with a surface */
 	int probe_x, probe_y;           /* --probe X,Y: print both ids there, or -1 */
@@ -99,9 +105,16 @@ struct xc_run {
 	double t_sw, t_gl;
 	long views, failed;
 	double set_min, set_sum;
+	uint64_t set_mesh_px, set_mesh_same;   /* mesh_px, mesh_same at the set's start */
 	long set_views;
 	double cover_min;               /* the least surface coverage of any view, % */
 	uint64_t kinds[R_IDK_COUNT][R_IDK_COUNT];   /* disagreements: sw kind, gl kind */
+	/* mesh pixels (either renderer shows a mesh there) of every view, and
+	 * of those where both show the same surface; mesh views without any */
+	uint64_t mesh_px, mesh_same;
+	long mesh_blind;
+	double mesh_worst;              /* the least agreement on a mesh view's
+					 * mesh pixels, % */
 };
 
 static double xc_now(void)
@@ -292,6 +305,13 @@ static void xc_diff_image(struct xc_run *x, const struct tex_set *t, const char 
 		fprintf(stderr, "xcheck: %s: cannot write\n", path);
 }
 
+/* 1 when (normalised) id a shows one of the meshes of spr. */
+static int xc_is_mesh(uint32_t a, const struct r_sprite *spr, int nspr)
+{
+	return r_id_kind(a) == R_IDK_SPRITE && r_id_index(a) < (uint32_t)nspr &&
+	       spr[r_id_index(a)].mesh != 0;
+}
+
 /* Renders view v (number k of map name, described by what: "" for a random
  * view) with both renderers and compares the ids; counts the view and its
  * failures in x. Returns the share of agreeing pixels, %. */
@@ -302,7 +322,7 @@ static double xc_one(struct xc_run *x, const struct map *m, const struct tex_set
 	const struct xc_opts *o = x->o;
 	size_t npx = (size_t)o->w * (size_t)o->h;
 	struct r_view v = *vp;
-	long same = 0, csame = 0, sur_sw = 0, sur_gl = 0;
+	long same = 0, csame = 0, sur_sw = 0, sur_gl = 0, mpx = 0, msame = 0;
 	double pct, t0, cover;
 
 	t0 = xc_now();
@@ -335,6 +355,10 @@ static double xc_one(struct xc_run *x, const struct map *m, const struct tex_set
 		uint32_t a = xc_norm(x->ids_sw[p], cf, cc, m->num_sectors);
 		uint32_t b = xc_norm(x->ids_gl[p], cf, cc, m->num_sectors);
 
+		if (xc_is_mesh(a, spr, nspr) || xc_is_mesh(b, spr, nspr)) {
+			mpx++;
+			msame += a == b;
+		}
 		if (a == b)
 			same++;
 		else if (r_id_kind(a) < R_IDK_COUNT && r_id_kind(b) < R_IDK_COUNT)
@@ -342,6 +366,26 @@ static double xc_one(struct xc_run *x, const struct map *m, const struct tex_set
 		csame += x->fs.px[p] == x->fg.px[p];
 	}
 	pct = 100.0 * (double)same / (double)npx;
+	x->mesh_px += (uint64_t)mpx;
+	x->mesh_same += (uint64_t)msame;
+	if (o->meshes && mpx < o->mesh_least)
+		x->mesh_blind++;
+	if (o->meshes && mpx > 0 && mpx >= o->mesh_least) {
+		double mp = 100.0 * (double)msame / (double)mpx;
+
+		x->mesh_worst = mp < x->mesh_worst ? mp : x->mesh_worst;
+		if (o->verbose)
+			printf("  %-26s view %2d%s: mesh pixels %ld, %.2f%% agree\n", name, k, what,
+			       mpx, mp);
+		if (mp < o->mesh_min) {
+			printf("FAIL %s view %d%s at (%.1f, %.1f) angle %.1f: the mesh pixels agree "
+			       "on %.2f%% (%ld of %ld) < %.2f%%\n",
+			       name, k, what, v.x / 65536.0, v.y / 65536.0,
+			       v.angle * (360.0 / 4294967296.0), 100.0 * (double)msame / (double)mpx,
+			       msame, mpx, o->mesh_min);
+			x->failed++;
+		}
+	}
 	if (o->probe_x >= 0 && o->probe_x < o->w && o->probe_y >= 0 && o->probe_y < o->h) {
 		size_t p = (size_t)o->probe_y * (size_t)o->w + (size_t)o->probe_x;
 
@@ -424,6 +468,33 @@ static void xc_movers(struct xc_run *x, struct map *m, const struct tex_set *t, 
 	free(mv);
 }
 
+/* The mesh views of map m (xc_mesh.h), the things spr[0..nspr-1] made by
+ * r_map_things (remade at each view's tick). */
+static void xc_meshes(struct xc_run *x, const struct map *m, const struct tex_set *t,
+		      const char *name, struct r_sprite *spr, int nspr, const uint32_t *cf,
+		      const uint32_t *cc, double *worst, int *wk, double *sum, int *nv)
+{
+	int n = xcx_views(m, spr, nspr, NULL, 0);
+	struct xcx_view *mv = n > 0 ? calloc((size_t)n, sizeof(*mv)) : NULL;
+
+	if (n < 0 || (n > 0 && !mv)) {
+		fprintf(stderr, "xcheck: out of memory\n");
+		exit(2);
+	}
+	xcx_views(m, spr, nspr, mv, n);
+	for (int k = 0; k < n; k++) {
+		char what[40];
+
+		if (x->o->only_view >= 0 && k != x->o->only_view)
+			continue;
+		snprintf(what, sizeof(what), " (mesh %d, tick %u)", mv[k].sprite, mv[k].tick);
+		nspr = r_map_things(m, t, mv[k].tick, spr);
+		xc_tally(xc_one(x, m, t, name, k, &mv[k].v, spr, nspr, cf, cc, what), k, worst, wk,
+			 sum, nv);
+	}
+	free(mv);
+}
+
 /* Every view of one map: --views random ones, or with --movers the mover
  * views. The map's sector heights are changed and restored by the mover
  * views. Returns the worst agreement. */
@@ -442,8 +513,10 @@ static double xc_map(struct xc_run *x, struct map *m, const struct tex_set *t, c
 	}
 	for (const char *c = name; *c; c++)
 		rng = (rng ^ (uint8_t)*c) * 0x100000001b3ull;
-	nspr = o->sprites ? r_map_sprites(m, t, spr) : 0;
-	for (int k = 0; k < o->views && !o->movers; k++) {
+	nspr = o->sprites ? r_map_things(m, t, 0, spr) : 0;
+	if (o->meshes)
+		xc_meshes(x, m, t, name, spr, nspr, cf, cc, &worst, &wk, &sum, &nv);
+	for (int k = 0; k < o->views && !o->movers && !o->meshes; k++) {
 		struct r_view v;
 
 		if (xc_view(m, &rng, o->h, &v) < 0) {
@@ -453,12 +526,17 @@ static double xc_map(struct xc_run *x, struct map *m, const struct tex_set *t, c
 		}
 		if (o->only_view >= 0 && k != o->only_view)
 			continue;
+		/* the meshes turned as at a tick of the view's own */
+		nspr = o->sprites ? r_map_things(m, t, (uint32_t)(7 * k + 3), spr) : 0;
 		xc_tally(xc_one(x, m, t, name, k, &v, spr, nspr, cf, cc, ""), k, &worst, &wk, &sum,
 			 &nv);
 	}
 	if (o->movers)
 		xc_movers(x, m, t, name, spr, nspr, &worst, &wk, &sum, &nv, &ndoor);
-	if (nv > 0 && o->movers)
+	if (nv > 0 && o->meshes)
+		printf("%-28s %3d mesh views  min %7.3f%% (view %d)  mean %7.3f%%\n", name, nv, worst,
+		       wk, sum / nv);
+	else if (nv > 0 && o->movers)
 		printf("%-28s %3d mover views (%d door, %d lift)  min %7.3f%% (view %d)  "
 		       "mean %7.3f%%\n",
 		       name, nv, ndoor, nv - ndoor, worst, wk, sum / nv);
@@ -482,13 +560,22 @@ static void xc_set_begin(struct xc_run *x)
 	x->set_min = 100;
 	x->set_sum = 0;
 	x->set_views = 0;
+	x->set_mesh_px = x->mesh_px;
+	x->set_mesh_same = x->mesh_same;
 }
 
 static void xc_set_end(struct xc_run *x, const char *what, int nmaps)
 {
 	if (x->set_views > 0)
-		printf("== %s: %d maps, %ld %sviews, min %.3f%%, mean %.3f%%\n", what, nmaps,
-		       x->set_views, x->o->movers ? "mover " : "", x->set_min, x->set_sum / (double)x->set_views);
+		printf("== %s: %d maps, %ld %sviews, min %.3f%%, mean %.3f%%; mesh pixels %llu, "
+		       "%.2f%% agree\n",
+		       what, nmaps, x->set_views,
+		       x->o->movers ? "mover " : x->o->meshes ? "mesh " : "", x->set_min,
+		       x->set_sum / (double)x->set_views,
+		       (unsigned long long)(x->mesh_px - x->set_mesh_px),
+		       x->mesh_px > x->set_mesh_px ?
+			       100.0 * (double)(x->mesh_same - x->set_mesh_same) /
+				       (double)(x->mesh_px - x->set_mesh_px) : 100.0);
 }
 
 static int xc_builtin(struct xc_run *x)
@@ -616,6 +703,8 @@ static int xc_args(int argc, char **argv, struct xc_opts *o)
 	o->seed = 1;
 	o->only_view = -1;
 	o->cover = 99;
+	o->mesh_min = 85;
+	o->mesh_least = 200;
 	o->probe_x = o->probe_y = -1;
 	for (int i = 1; i < argc; i++) {
 		const char *a = argv[i], *b = i + 1 < argc ? argv[i + 1] : NULL;
@@ -659,6 +748,12 @@ static int xc_args(int argc, char **argv, struct xc_opts *o)
 			o->cover = atof(argv[++i]);
 		} else if (!strcmp(a, "--movers")) {
 			o->movers = 1;
+		} else if (!strcmp(a, "--meshes")) {
+			o->meshes = 1;
+		} else if (!strcmp(a, "--mesh-min") && b) {
+			o->mesh_min = atof(argv[++i]);
+		} else if (!strcmp(a, "--mesh-least") && b) {
+			o->mesh_least = atol(argv[++i]);
 		} else if (!strcmp(a, "--no-sprites")) {
 			o->sprites = 0;
 		} else if (!strcmp(a, "--verbose")) {
@@ -688,12 +783,14 @@ int main(int argc, char **argv)
 		fprintf(stderr, "usage: xcheck [--builtin] [--grid builtin|FILE] [--wad FILE "
 				"[--map NAME]]... [--views N] [--seed S] [--size WxH] [--min PCT] "
 				"[--diff DIR] [--diff-all] [--no-sprites] [--verbose] [--view K] "
-				"[--probe X,Y] [--cover PCT] [--blank-ids] [--movers]\n");
+				"[--probe X,Y] [--cover PCT] [--blank-ids] [--movers] [--meshes] "
+				"[--mesh-min PCT] [--mesh-least N]\n");
 		return 2;
 	}
 	memset(&x, 0, sizeof(x));
 	x.o = &o;
 	x.cover_min = 100;
+	x.mesh_worst = 100;
 	npx = (size_t)o.w * (size_t)o.h;
 	x.fs.w = x.fg.w = x.fs.pitch = x.fg.pitch = o.w;
 	x.fs.h = x.fg.h = o.h;
@@ -713,7 +810,11 @@ int main(int argc, char **argv)
 	}
 	r_set_idbuf(x.sw, x.ids_sw);
 	rgl_set_idbuf(x.gl, x.ids_gl);
-	if (o.movers)
+	if (o.meshes)
+		printf("xcheck: %dx%d, mesh views, threshold %.2f%%, on mesh pixels %.2f%% (views "
+		       "with %ld or more), GL: %s\n",
+		       o.w, o.h, o.min, o.mesh_min, o.mesh_least, rgl_name(x.gl));
+	else if (o.movers)
 		printf("xcheck: %dx%d, mover views, threshold %.2f%%, GL: %s\n", o.w, o.h, o.min,
 		       rgl_name(x.gl));
 	else
@@ -740,6 +841,14 @@ int main(int argc, char **argv)
 	printf("xcheck: %ld views, %ld failed; least surface coverage %.3f%%; render time "
 	       "software %.2f s, OSMesa %.2f s (both passes); total %.1f s\n",
 	       x.views, x.failed, x.cover_min, x.t_sw, x.t_gl, xc_now() - t0);
+	printf("xcheck: mesh pixels %llu, %llu agree (%.2f%%)", (unsigned long long)x.mesh_px,
+	       (unsigned long long)x.mesh_same,
+	       x.mesh_px ? 100.0 * (double)x.mesh_same / (double)x.mesh_px : 100.0);
+	if (o.meshes)
+		printf("; least on a mesh view %.2f%%; mesh views with fewer than %ld mesh "
+		       "pixels (not judged on them) %ld",
+		       x.mesh_worst, o.mesh_least, x.mesh_blind);
+	printf("\n");
 	r_free(x.sw);
 	rgl_free(x.gl);
 	free(x.fs.px);
