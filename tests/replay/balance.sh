@@ -10,8 +10,14 @@
 # "<!-- balance: end -->" in docs/game.md.
 #
 #   tests/replay/balance.sh             write the table into docs/game.md
+#                                       (then exit 1 if the curve does not
+#                                       rise, below)
 #   tests/replay/balance.sh --check     exit 1 when docs/game.md's table is
-#                                       not what the recordings give now
+#                                       not what the recordings give now,
+#                                       or when the curve does not rise:
+#                                       time to the exit and damage taken
+#                                       must each strictly grow from a
+#                                       stage to the next
 #   tests/replay/balance.sh --record [BIN]
 #                                       first write the scripts again with
 #                                       the autopilot (build/tests/autopilot)
@@ -63,13 +69,22 @@ ${CC:-cc} -O2 $WARN -fno-strict-aliasing -I. -D_GNU_SOURCE $(sh tests/xbuild/src
 		}
 		# only the recording's own stage (the first row): the next one
 		# may have begun during the intermission page
-		head -n 1 "$tmp/row" | awk -v rec="$rec" '
+		head -n 1 "$tmp/row" | awk -v rec="$rec" -v raw="$tmp/raw" '
 			$1 != "balance" || $10 != "cleared" {
 				print "balance: " rec ": the stage was not cleared: " $0 > "/dev/stderr"; exit 1 }
 			{ printf "| %d | %s | %.1f s | %d | %d | %d (%d%%) | %d | %d |\n",
-				$2, $3, $4 / 60, $5, $6, $7, $6 ? 100 * $7 / $6 : 0, $8, $9 }'
+				$2, $3, $4 / 60, $5, $6, $7, $6 ? 100 * $7 / $6 : 0, $8, $9
+			  print $2, $4, $5 >> raw }'
 	done
 } >"$tmp/table"
+
+# The curve rises: from each row to the next (stage order), the time to
+# the exit (in ticks, not the table's rounded seconds) and the damage
+# taken each strictly grow. Each pair that does not is named.
+rising=$(sort -n "$tmp/raw" | awk '
+	NR > 1 && $2 <= t { printf "balance: the time does not rise from stage %d to stage %d (%.1f s, then %.1f s)\n", s, $1, t / 60, $2 / 60 }
+	NR > 1 && $3 <= d { printf "balance: the damage does not rise from stage %d to stage %d (%d, then %d)\n", s, $1, d, $3 }
+	{ s = $1; t = $2; d = $3 }')
 
 begin='<!-- balance: begin -->'
 end='<!-- balance: end -->'
@@ -89,8 +104,18 @@ if [ "$mode" = check ]; then
 		echo "(tests/replay/balance.sh writes it)" >&2
 		exit 1
 	fi
-	echo "balance: $doc's table equals the replays of $(ls "$dir"/arena*.rec | wc -l) stage recordings"
+	if [ -n "$rising" ]; then
+		echo "$rising" >&2
+		echo "balance: the curve does not rise (time and damage must grow stage by stage)" >&2
+		exit 1
+	fi
+	echo "balance: $doc's table equals the replays of $(ls "$dir"/arena*.rec | wc -l) stage recordings; time and damage rise stage by stage"
 else
 	cp "$tmp/doc" "$doc"
 	cat "$tmp/table"
+	if [ -n "$rising" ]; then
+		echo "$rising" >&2
+		echo "balance: table written, but the curve does not rise: --check fails" >&2
+		exit 1
+	fi
 fi
