@@ -64,6 +64,8 @@ struct ap {
 	 * kills and the weapon held then (--demo's checks) */
 	uint32_t clear_t, clear_kills;
 	int demo;                      /* --demo: a clear ends the route */
+	int to_clear;                  /* a stage without an exit (built-in
+					* 1..3): its clear ends the route */
 	uint8_t clear_weapon;
 	/* the way being walked */
 	int cur;

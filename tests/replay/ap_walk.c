@@ -285,9 +285,9 @@ int ap_go(struct ap *a, const struct ap_step *st)
 	double best = 1e18;
 
 	a->npath = 0;
-	/* --demo: a cleared stage ends the walk (the next one is not the
-	 * grid's map) */
-	while (ap_dist(a, st->x, st->y) > st->tol && !(a->demo && a->clear_t)) {
+	/* --demo, or a stage without an exit: a cleared stage ends the walk
+	 * (the next one is not the grid's map) */
+	while (ap_dist(a, st->x, st->y) > st->tol && !((a->demo || a->to_clear) && a->clear_t)) {
 		double px, py;
 		uint16_t act = 0;
 		int aimed, j;

@@ -44,6 +44,10 @@
  * shows that page for --inter ticks (default 240) and ends the script
  * with checks that the daemon runs when it records it: mode play, phase 3
  * (the intermission), and the player's position and the score there.
+ * A map without an exit (built-in stages 1..3) ends when its enemies are
+ * dead instead: the route's goal is the clear (its steps end there), then
+ * the banner shows for up to --inter ticks; the checks are the clear's
+ * tick (phase G_PH_CLEAR), the kills and the score.
  *
  * On the way it fights: an awake enemy in sight within 700 units (or any
  * within 384) is turned to and shot when the shot passes well inside its
@@ -324,6 +328,51 @@ static int ap_demo(struct ap *a, const struct ct *ct, const struct ap_step *step
 	return 0;
 }
 
+/* A stage without an exit, after coin-up and start: the route played
+ * until the stage is cleared (every enemy dead), then the clear banner
+ * shown for up to `inter` ticks (not into the next stage); the checks
+ * are the clear's tick, the kills, the score. */
+static int ap_to_clear(struct ap *a, struct ct *ct, const struct ap_step *steps, int nsteps,
+		    int inter, const char *outp)
+{
+	uint32_t clear_t;
+
+	for (int i = 0; i < nsteps && !a->clear_t; i++) {
+		/* every enemy must die: one left alone (shots that did not hurt
+		 * it from where the walk was) is fought again from each step */
+		memset(a->ignored, 0, sizeof(a->ignored));
+		ap_do(a, &steps[i]);
+	}
+	for (int i = 0; i < 600 && !a->clear_t; i++)
+		ap_stand_tick(a);
+	if (!a->clear_t) {
+		/* for the route's writer: the ones it did not pass by */
+		for (int i = 0; i < a->s.g.num_enemies; i++)
+			if (a->s.g.en[i].state != G_E_DEAD)
+				fprintf(stderr, "autopilot: alive: enemy %d (%s at %.0f, %.0f)\n", i,
+					g_kinds[a->s.g.en[i].kind].name, ap_fx(a->s.g.en[i].x),
+					ap_fx(a->s.g.en[i].y));
+		ap_die(a, NULL, "the route ended with %u enemies alive", a->s.g.alive);
+	}
+	clear_t = a->clear_t;
+	fprintf(stderr, "autopilot: %s: cleared on tick %u, health %d, ammo %u, kills %u, score %u, "
+		"lives lost %d, shots %d (%d hit)\n", ct->what, clear_t, a->s.pl.health / FX_ONE,
+		a->s.pl.ammo, a->clear_kills, a->s.g.score, a->deaths, a->nshots, a->nhits);
+	fprintf(a->out, "%u expect phase == %d\n", clear_t, G_PH_CLEAR);
+	fprintf(a->out, "%u expect kills == %u\n", clear_t, a->clear_kills);
+	for (int i = 0; i < inter && a->s.g.phase == G_PH_CLEAR; i++)
+		ap_tick(a, 0);
+	fprintf(a->out, "%u expect mode == play\n", a->s.tick - 1);
+	fprintf(a->out, "%u expect score == %u\n", a->s.tick - 1, a->s.g.score);
+	fprintf(a->out, "%u end\n", a->s.tick - 1);
+	if (outp && fclose(a->out) != 0) {
+		fprintf(stderr, "autopilot: %s: %s\n", outp, strerror(errno));
+		return 2;
+	}
+	ct_free(ct);
+	return 0;
+}
+
 static int ap_usage(void)
 {
 	fprintf(stderr, "usage: autopilot --wad FILE [--wad FILE...] --map NAME [--set S.K=V...] "
@@ -475,6 +524,11 @@ int main(int argc, char **argv)
 	ap_tick(&a, 0);
 	if (a.s.mode != SIM_PLAY)
 		ap_die(&a, NULL, "the game did not start");
+	/* a map without an exit (built-in stages 1..3) ends when every enemy
+	 * of it is dead: then the route's goal is the clear */
+	a.to_clear = !a.s.w.has_exit;
+	if (a.to_clear)
+		return ap_to_clear(&a, &ct, steps, nsteps, inter, outp);
 	for (int i = 0; i < nsteps && a.s.g.phase != G_PH_INTER; i++)
 		ap_do(&a, &steps[i]);
 	for (int i = 0; i < 600 && a.s.g.phase != G_PH_INTER; i++)

@@ -234,7 +234,7 @@ while [ "$off" -lt "$HDR" ]; do
 done
 check "every header byte flipped fails --verify ($HDR flips)${passed_flips:+; passed at:$passed_flips}" \
 	$([ -z "$passed_flips" ]; echo $?)
-# The stage recordings (tests/replay/stages) replay to the balance table of
+# The stage recordings (tests/replay/stages) replay to the balance tables of
 # docs/game.md (tests/replay/balance.sh: docs cannot go stale), and each
 # still clears its stage.
 sh tests/replay/balance.sh --check >"$tmp/bal.out" 2>&1
