@@ -144,11 +144,9 @@ void tex_pic_seal(struct tex_pic *p)
 {
 	size_t n = (size_t)p->w * (size_t)p->h;
 
-	if (!p->opaque)
+	/* memchr: the library's word-at-a-time scan */
+	if (!p->opaque || memchr(p->opaque, 0, n))
 		return;
-	for (size_t i = 0; i < n; i++)
-		if (!p->opaque[i])
-			return;
 	free(p->opaque);
 	p->opaque = NULL;
 }
