@@ -70,6 +70,7 @@ struct app {
 	uint32_t hang_at;          /* fault injection: hang after this tick */
 	uint64_t wd_interval, wd_next;
 	int ready;
+	int devices_open;          /* the live inputs and sound card, after the first frame */
 };
 
 /* The display's completed page flips into the statistics. */
@@ -286,6 +287,18 @@ static void step_notify(void *ctx, struct loop_tick *k)
 		svc_ready();
 		a->ready = 1;
 	}
+	if (!a->devices_open) {
+		/* Once the first frame is presented (or, with no display, has
+		 * been drawn): the input devices (an enumeration of every
+		 * hidraw, evdev and GPIO node, libusb) and the sound card.
+		 * Nothing can press a button or hear a sound before the
+		 * picture is up; the first tick reads no input and is silent. */
+		a->devices_open = 1;
+		if (!a->headless) {
+			slot_open(&a->slots, a->kinds, a->nkinds, a->scene.dpb);
+			out_audio_start(&a->audio);
+		}
+	}
 	if (a->wd_interval) {
 		uint64_t now = in_now_ns();
 		if (now >= a->wd_next) {
@@ -481,8 +494,6 @@ static int setup(struct app *a)
 				   a->kinds, a->nkinds, &a->slots };
 	slot_init(&a->slots, &ctl_hooks, &a->ctl);
 	a->slots.log_nodes = c->input.log;
-	if (!a->headless)
-		slot_open(&a->slots, a->kinds, a->nkinds, a->scene.dpb);
 
 	if (o->record) {
 		/* Format 3: the run it was made with and every tick's state,

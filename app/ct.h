@@ -41,9 +41,10 @@ struct ct_spec {
 	const volatile sig_atomic_t *stop;
 	/* Starts fn(arg) on a thread of its own and waits for it (the
 	 * daemon's app/pool.h pool_task_start and pool_task_join), for the
-	 * stages' light maps while the textures and sounds load; NULL: the
-	 * loader makes them itself, after the rest (the engine-only replayer
-	 * of tests/xbuild links no threads). */
+	 * WADs' sounds (from when the WADs are mapped) and the stages' light
+	 * maps (from when the maps are loaded) while the textures load;
+	 * NULL: the loader makes them itself, after the rest (the
+	 * engine-only replayer of tests/xbuild links no threads). */
 	int (*task_start)(void (*fn)(void *arg), void *arg, struct pool_task **out);
 	void (*task_join)(struct pool_task *t);
 };

@@ -74,6 +74,12 @@ int out_audio_open(struct out_audio *o, const struct cfg *c, uint32_t rate, int 
 		return -EINVAL;
 	}
 	snprintf(o->arg, sizeof(o->arg), "%s", arg);
+	if (o->be->live && !headless) {
+		/* a sound card can take milliseconds to open (ALSA reads its
+		 * configuration, sets the card up): after the first frame */
+		o->retry_ns = UINT64_MAX;
+		return 0;
+	}
 	out_audio_try(o);
 	/* a file that cannot be written is the caller's mistake: no retries */
 	if (!o->dev && !o->be->live)
@@ -119,6 +125,14 @@ void out_audio_play(struct out_audio *o, const struct hear *h, struct stats *st)
 		say("sound: %s", o->be->describe(o->dev));
 	if (h->onset >= 0 && as.delay >= 0)
 		stats_sound(st, t0 + (uint64_t)(as.delay + h->onset) * 1000000000ull / h->rate);
+}
+
+void out_audio_start(struct out_audio *o)
+{
+	if (!o->be || o->dev || o->retry_ns != UINT64_MAX)
+		return;
+	o->retry_ns = 0;
+	out_audio_try(o);
 }
 
 void out_audio_close(struct out_audio *o)

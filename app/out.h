@@ -37,7 +37,7 @@ struct out_audio {
 	struct au_dev *dev;            /* NULL: closed (silent), retried at retry_ns */
 	char arg[CFG_PATH_MAX];        /* the backend's device or file */
 	uint32_t rate;
-	uint64_t retry_ns;
+	uint64_t retry_ns;             /* UINT64_MAX: not before out_audio_start */
 	int silent_said;               /* "playing silent" was logged for this loss */
 };
 
@@ -46,8 +46,15 @@ void out_update(struct slot_set *set, const struct sim *s);
 
 /* Opens the sound output c->audio names at rate (headless: "auto" is no
  * output). 0, or -EINVAL for a spec that names no output (logged); a live
- * output that does not open is not an error (logged once, retried). */
+ * output that does not open is not an error (logged once, retried). A
+ * live output of the daemon (not headless) is only chosen here: its
+ * device is opened by out_audio_start, after the first frame, and is
+ * silent until then. */
 int out_audio_open(struct out_audio *o, const struct cfg *c, uint32_t rate, int headless);
+
+/* Opens the live output out_audio_open left for later (logged as a
+ * retry is); nothing when there is none, or it is open. */
+void out_audio_start(struct out_audio *o);
 
 /* Plays h's frames of this tick; the input-to-sound latency of a sound
  * that began (h->onset) and the output's underruns and drops go to st. A

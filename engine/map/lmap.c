@@ -353,34 +353,40 @@ static int64_t lmap_falloff(const struct lmap_light *li, int64_t d)
 	return (int64_t)li->intensity * (r - d) * (r - d) / (r * r);
 }
 
-static int64_t lmap_dist(const int64_t L[3], const int64_t P[3])
+/* Square of the distance from L to P (sub units); the distance itself is
+ * its integer square root, floor(sqrt(s)). */
+static uint64_t lmap_dist2(const int64_t L[3], const int64_t P[3])
 {
 	int64_t dx = P[0] - L[0], dy = P[1] - L[1], dz = P[2] - L[2];
 
-	return (int64_t)fx_isqrt64((uint64_t)(dx * dx) + (uint64_t)(dy * dy) + (uint64_t)(dz * dz));
+	return (uint64_t)(dx * dx) + (uint64_t)(dy * dy) + (uint64_t)(dz * dz);
 }
 
 /* Light of li at the texel whose centre is P[0] (and quarter points
- * P[1..4]): the first clear point's falloff. */
+ * P[1..4]): the first clear point's falloff. Distances are compared as
+ * squares (floor(sqrt(s)) >= k exactly when s >= k * k, k >= 0): the
+ * square root, most of this function's time when each point took one, is
+ * taken only for the point whose falloff is returned. */
 static int64_t lmap_texel(struct lmap_b *b, const struct lmap_light *li, const int64_t L[3],
 			  int64_t P[5][3], int64_t t)
 {
-	int64_t d[5], r = (int64_t)li->radius * 16;
+	int64_t r = (int64_t)li->radius * 16;       /* > 0: lmap_new_lim checks radius */
+	uint64_t s[5], r2 = (uint64_t)(r * r), rt = (uint64_t)(r + t);
 	int any = 0;
 
 	/* the quarter points lie within t of the centre */
-	d[0] = lmap_dist(L, P[0]);
-	if (d[0] >= r + t)
+	s[0] = lmap_dist2(L, P[0]);
+	if (s[0] >= rt * rt)
 		return 0;
 	for (int k = 0; k < 5; k++) {
-		d[k] = lmap_dist(L, P[k]);
-		any |= d[k] < r;
+		s[k] = lmap_dist2(L, P[k]);
+		any |= s[k] < r2;
 	}
 	if (!any)
 		return 0;
 	for (int k = 0; k < 5; k++)
 		if (lmap_clear(b, L, P[k]))
-			return lmap_falloff(li, d[k]);
+			return s[k] < r2 ? lmap_falloff(li, (int64_t)fx_isqrt64(s[k])) : 0;
 	return 0;
 }
 

@@ -89,7 +89,7 @@ static struct out_audio oa;
 static struct hear h;
 static struct stats st;
 
-static void no_sound_card_plays_silent_and_says_so_once(void **state)
+static void no_sound_card_plays_silent_and_says_so_once_after_the_first_frame(void **state)
 {
 	struct cfg c;
 
@@ -98,10 +98,18 @@ static void no_sound_card_plays_silent_and_says_so_once(void **state)
 	snprintf(c.audio.output, sizeof(c.audio.output), "alsa");
 	snprintf(c.audio.device, sizeof(c.audio.device), "hw:77");
 	assert_int_equal(out_audio_open(&oa, &c, 48000, 0), 0);
+	/* the daemon's card is opened after the first frame: silent till then */
+	assert_null(oa.dev);
+	assert_int_equal(oa.silent_said, 0);
+	h.frames = 800;
+	out_audio_play(&oa, &h, &st);
+	assert_null(oa.dev);
+	assert_int_equal(oa.silent_said, 0);
+	out_audio_start(&oa);                       /* tries now, and says so */
 	assert_null(oa.dev);
 	assert_int_equal(oa.silent_said, 1);
 	assert_true(oa.retry_ns > 0);
-	h.frames = 800;
+	out_audio_start(&oa);                       /* once only: a retry is play's */
 	out_audio_play(&oa, &h, &st);               /* before the retry time: nothing */
 	assert_null(oa.dev);
 	oa.retry_ns = 0;                            /* due: looks again, says nothing new */
@@ -179,7 +187,7 @@ int main(void)
 		cmocka_unit_test_setup_teardown(outputs_follow_the_game, fake_setup, fake_teardown),
 		cmocka_unit_test_setup_teardown(a_device_whose_outputs_went_away_is_dropped, fake_setup,
 						fake_teardown),
-		cmocka_unit_test(no_sound_card_plays_silent_and_says_so_once),
+		cmocka_unit_test(no_sound_card_plays_silent_and_says_so_once_after_the_first_frame),
 		cmocka_unit_test(auto_is_nothing_for_scripts_and_a_bad_spec_is_refused),
 		cmocka_unit_test(a_wav_file_gets_every_frame_and_the_latency_is_measured),
 	};
