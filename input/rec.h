@@ -117,8 +117,8 @@
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. 7: meshes (the lamps and keys, r_mesh.c), the grunt
  * standing until its wind-up (its aiming frame the telegraph), the flyer's
- * sprite (SKUL). */
-#define REC_RENDER_VERSION 7
+ * sprite (SKUL); 8: the brute's sprite (SARG) redrawn as a figure. */
+#define REC_RENDER_VERSION 8
 /* Bumped whenever the audio of any tick changes (the mixer, the built-in
  * sounds, a sound's lump): recorded audio hashes of another version are
  * not compared. 2: doors, lifts, switches and teleports sound; 3: the
