@@ -84,6 +84,48 @@ static void tb_disc(struct tex_pic *p, int cx, int cy, int r2, uint8_t c)
 				tp_set(p, cx + x, cy + y, c);
 }
 
+static int tb_abs(int v)
+{
+	return v < 0 ? -v : v;
+}
+
+/* A filled ellipse centred (cx, cy) with radii rx, ry >= 2, in tone t lit
+ * from the upper left (d added to every shade), its rim darker. */
+static void tb_blob(struct tex_pic *p, int cx, int cy, int rx, int ry, struct tb_tone t, int d)
+{
+	for (int y = -ry; y <= ry; y++)
+		for (int x = -rx; x <= rx; x++)
+			if (x * x * ry * ry + y * y * rx * rx <= rx * rx * ry * ry) {
+				/* the rim (outside the ellipse one smaller) darker */
+				int rim = (rx - 1) * (rx - 1) * (ry - 1) * (ry - 1) <
+					  x * x * (ry - 1) * (ry - 1) + y * y * (rx - 1) * (rx - 1);
+
+				tp_set(p, cx + x, cy + y,
+				       tb_t(t, d + (2 * x + y) * 4 / (rx + ry + 1) + 3 * rim));
+			}
+}
+
+/* A rounded limb of radius r from (x0, y0) to (x1, y1), its left side lit,
+ * its edge darker. */
+static void tb_limb(struct tex_pic *p, int x0, int y0, int x1, int y1, int r, struct tb_tone t,
+		    int d)
+{
+	int n = tb_abs(x1 - x0) > tb_abs(y1 - y0) ? tb_abs(x1 - x0) : tb_abs(y1 - y0);
+
+	if (n == 0)
+		n = 1;
+	for (int k = 0; k <= n; k++) {
+		int cx = x0 + (x1 - x0) * k / n, cy = y0 + (y1 - y0) * k / n;
+
+		for (int y = -r; y <= r; y++)
+			for (int x = -r; x <= r; x++)
+				if (x * x + y * y <= r * r + r / 2)
+					tp_set(p, cx + x, cy + y,
+					       tb_t(t, d + (2 * x > r) - (2 * x < -r) +
+							  2 * (x * x + y * y > (r - 1) * (r - 1))));
+	}
+}
+
 /* The muzzle flash or fireball: a bright diamond with rays. */
 static void tb_flash(struct tex_pic *p, int cx, int cy, int r)
 {
@@ -168,18 +210,36 @@ static void tb_human(struct tex_pic *p, const struct tb_look *lk, int pose, int 
 	uint8_t gun = tp_c(PAL_BLACKRAMP, 6);
 
 	for (int leg = 0; leg < 2; leg++) {
-		int lw = hw - 2 < 3 ? 3 : hw - 2, sgn = leg ? -1 : 1;
+		int lw = side == 2 ? 4 : hw - 2 < 3 ? 3 : hw - 2, sgn = leg ? -1 : 1;
 		int x0 = leg ? cx + 1 : cx - 1 - lw, dx = sgn * swing * (side == 2 ? 4 : side);
 		int lift = side < 2 && swing * sgn > 0 ? 2 : 0;
 
+		int hipx, fx, kx;
+
 		if (side == 2)
 			x0 = cx - lw / 2 - 1 + leg * 2;
-		tp_rect(p, x0 + dx, 41, lw, p->h - 41 - lift, tb_t(lk->legs, leg));
-		tp_rect(p, x0 + dx, p->h - 2 - lift, lw, 2, tb_t(lk->legs, 3));
+		/* a rounded thigh and shin bending at the knee (the hip moves
+		 * half as far as the foot), on a boot with its toe forward */
+		hipx = x0 + lw / 2 + dx / 2;
+		fx = x0 + lw / 2 + dx;
+		kx = (hipx + fx) / 2 - (side == 2 ? 1 : 0);
+		tb_limb(p, hipx, 43, kx, 48 - lift, lw / 2, lk->legs, leg);
+		tb_limb(p, kx, 48 - lift, fx, p->h - 4 - lift, (lw - 1) / 2, lk->legs, leg + 1);
+		tp_rect(p, fx - lw / 2 - (side == 2 ? 2 : 0), p->h - 3 - lift, lw + 1 + (side == 2 ? 2 : 0),
+			3, tb_t(lk->legs, 4 + leg));
 	}
-	for (int y = ty; y < 41; y++)                                  /* torso, lit from the left */
-		for (int x = cx - hw; x < cx + hw; x++)
-			tp_set(p, x, y, tb_t(lk->cloth, x == cx - hw ? -1 : x >= cx + hw - 2 ? 1 : 0));
+	for (int y = ty; y < 42; y++) {                                /* torso, lit from the left */
+		/* rounded shoulders, a narrower waist, its edges darker */
+		int in = y == ty ? 2 : y == ty + 1 ? 1 : y >= 35 ? 1 : 0;
+
+		for (int x = cx - hw + in; x < cx + hw - in; x++)
+			tp_set(p, x, y, tb_t(lk->cloth, x == cx - hw + in ? 1
+							: x >= cx + hw - in - 1 ? 3
+							: x >= cx + hw - in - 3 ? 1
+							: x < cx - hw + in + 3 ? -1 : 0));
+	}
+	if (!claws && side < 2)                                        /* the collar */
+		tp_rect(p, cx - 1, ty, 2, 2, tb_t(lk->skin, 1));
 	tp_rect(p, cx - hw, 38, 2 * hw, 3, tb_t(lk->trim, 0));         /* belt */
 	if (pose == TB_P_HURT || pose == TB_P_DEAD)                    /* wounds */
 		for (int k = 0; k < 9; k++)
@@ -198,7 +258,7 @@ static void tb_human(struct tex_pic *p, const struct tb_look *lk, int pose, int 
 				for (int k = 0; k < 3; k++)
 					tp_set(p, ax + k, ty - up - 1 - (k & 1), tp_c(PAL_GREY, 1));
 			} else {
-				tp_rect(p, ax, ty + 1, 3, 10, tb_t(lk->cloth, 2));
+				tb_limb(p, ax + 1, ty + 3, ax + 1 + s * -1, ty + 9, 1, lk->cloth, 1);
 				tp_rect(p, ax + (s < 0 ? 2 : -2), ty + 9, 3, 4, tb_t(lk->skin, 0));
 			}
 		}
@@ -225,7 +285,8 @@ static void tb_human(struct tex_pic *p, const struct tb_look *lk, int pose, int 
 
 			if (!show[s])
 				continue;
-			tp_rect(p, ax, ty + 1, 3, 18, tb_t(lk->cloth, side == 2 ? 3 : 2));
+			tb_limb(p, ax + 1, ty + 3, ax + 1 + sw / 2, ty + 17, 1, lk->cloth,
+				side == 2 ? 2 : 1);
 			tp_rect(p, ax + sw, ty + 18, 3, 3, tb_t(lk->skin, 0));
 			if (claws)
 				for (int k = 0; k < 3; k += 2)
@@ -246,48 +307,6 @@ static void tb_human(struct tex_pic *p, const struct tb_look *lk, int pose, int 
 }
 
 /* ---- the brute ----------------------------------------------------------------- */
-
-static int tb_abs(int v)
-{
-	return v < 0 ? -v : v;
-}
-
-/* A filled ellipse centred (cx, cy) with radii rx, ry >= 2, in tone t lit
- * from the upper left (d added to every shade), its rim darker. */
-static void tb_blob(struct tex_pic *p, int cx, int cy, int rx, int ry, struct tb_tone t, int d)
-{
-	for (int y = -ry; y <= ry; y++)
-		for (int x = -rx; x <= rx; x++)
-			if (x * x * ry * ry + y * y * rx * rx <= rx * rx * ry * ry) {
-				/* the rim (outside the ellipse one smaller) darker */
-				int rim = (rx - 1) * (rx - 1) * (ry - 1) * (ry - 1) <
-					  x * x * (ry - 1) * (ry - 1) + y * y * (rx - 1) * (rx - 1);
-
-				tp_set(p, cx + x, cy + y,
-				       tb_t(t, d + (2 * x + y) * 4 / (rx + ry + 1) + 3 * rim));
-			}
-}
-
-/* A rounded limb of radius r from (x0, y0) to (x1, y1), its left side lit,
- * its edge darker. */
-static void tb_limb(struct tex_pic *p, int x0, int y0, int x1, int y1, int r, struct tb_tone t,
-		    int d)
-{
-	int n = tb_abs(x1 - x0) > tb_abs(y1 - y0) ? tb_abs(x1 - x0) : tb_abs(y1 - y0);
-
-	if (n == 0)
-		n = 1;
-	for (int k = 0; k <= n; k++) {
-		int cx = x0 + (x1 - x0) * k / n, cy = y0 + (y1 - y0) * k / n;
-
-		for (int y = -r; y <= r; y++)
-			for (int x = -r; x <= r; x++)
-				if (x * x + y * y <= r * r + r / 2)
-					tp_set(p, cx + x, cy + y,
-					       tb_t(t, d + (2 * x > r) - (2 * x < -r) +
-							  2 * (x * x + y * y > (r - 1) * (r - 1))));
-	}
-}
 
 /* An arm from the shoulder (sx, sy) to the hand (hx, hy), the elbow bent
  * away from the body (out: -1 to the viewer's left, 1 right), ending in
