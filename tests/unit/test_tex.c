@@ -790,6 +790,32 @@ static void builtin_brute_has_a_shape_and_a_frame_per_pose(void **state)
 	tex_free(t);
 }
 
+/* The soldiers' legs are limbs, not boxes: seen from the front the rows
+ * from the hips to the ankles of the grunt (POSS) and the shotgun guy
+ * (SPOS) are not all one width (the thighs are wider than the shins). */
+static void builtin_soldiers_have_shaped_legs(void **state)
+{
+	static const char *const names[] = { "POSS", "SPOS" };
+	struct tex_set *t;
+
+	(void)state;
+	assert_int_equal(tex_builtin(&t), 0);
+	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+		const struct tex_pic *p = frame_pic(t, tex_find_sprite(t, names[i]), 0);
+		int lo = 1000, hi = 0;
+
+		for (int y = 43; y <= 52; y++) {
+			int w = row_width(p, y);
+
+			lo = w < lo ? w : lo;
+			hi = w > hi ? w : hi;
+		}
+		if (hi - lo < 2)
+			fail_msg("%s: legs %d..%d wide", names[i], lo, hi);
+	}
+	tex_free(t);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -814,6 +840,7 @@ int main(void)
 		cmocka_unit_test(builtin_set_is_complete_and_deterministic),
 		cmocka_unit_test(builtin_set_has_pickups_effects_and_the_pistol),
 		cmocka_unit_test(builtin_brute_has_a_shape_and_a_frame_per_pose),
+		cmocka_unit_test(builtin_soldiers_have_shaped_legs),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
