@@ -257,13 +257,23 @@ static void tb_human(struct tex_pic *p, const struct tb_look *lk, int pose, int 
 				tp_rect(p, ax, ty - up, 3, 14, tb_t(lk->cloth, 2));
 				for (int k = 0; k < 3; k++)
 					tp_set(p, ax + k, ty - up - 1 - (k & 1), tp_c(PAL_GREY, 1));
-			} else {
+			} else if (claws) {
 				tb_limb(p, ax + 1, ty + 3, ax + 1 + s * -1, ty + 9, 1, lk->cloth, 1);
 				tp_rect(p, ax + (s < 0 ? 2 : -2), ty + 9, 3, 4, tb_t(lk->skin, 0));
+			} else {
+				/* both arms forward, the hands meeting round the gun */
+				tb_limb(p, cx + s * (hw - 1), ty + 2, cx + s * (hw + 1), ty + 8, 1,
+					lk->cloth, 1);
+				tb_limb(p, cx + s * (hw + 1), ty + 8, cx + s * 4, ty + 10, 1, lk->cloth, 2);
+				tp_rect(p, cx + (s < 0 ? -6 : 3), ty + 8, 3, 4, tb_t(lk->skin, s < 0 ? 0 : 1));
 			}
 		}
 		if (!claws) {
+			/* the gun end-on: a dark block lit along its top, the
+			 * muzzle a black hole in a grey ring */
 			tp_rect(p, cx - 3, ty + 7, 6, 6, gun);
+			tp_rect(p, cx - 3, ty + 7, 6, 1, tp_c(PAL_GREY, 8));
+			tp_rect(p, cx - 2, ty + 8, 4, 4, tp_c(PAL_GREY, 10));
 			tp_rect(p, cx - 1, ty + 9, 2, 2, PAL_BLACK);
 		}
 		if (pose == TB_P_FIRE)
