@@ -105,24 +105,25 @@
  * free_aim), two players alternating (g_turn.c: players, up, the waiting
  * player's seat, phase G_PH_TURN, SIM_BT_START2); 8: the grunt's wind-up
  * (its cry, one sound more), the flyer (Doom's lost soul: flies, circles
- * in), drops (g_drop.c) */
-#define REC_ENGINE_VERSION 8
+ * in), drops (g_drop.c); 9: the flyer's own four sounds (four lengths
+ * more) */
+#define REC_ENGINE_VERSION 9
 /* sim_snapshot_size() at REC_ENGINE_VERSION. A field added to the sim's
  * state (engine/game/sim_table.h) changes the size and every state hash:
  * raise REC_ENGINE_VERSION and set this to the new size, together
  * (test_rec fails on the size until then, as a reminder of the version). */
-#define REC_ENGINE_SNAPSHOT 97925
+#define REC_ENGINE_SNAPSHOT 97933
 /* Bumped whenever the renderer draws any frame differently (engine/render/r_*.c,
  * textures, palette): recorded frame hashes of another renderer version
  * are not compared. 7: meshes (the lamps and keys, r_mesh.c), the grunt
  * standing until its wind-up (its aiming frame the telegraph), the flyer's
- * sprite (SKUL). */
-#define REC_RENDER_VERSION 7
+ * sprite (SKUL); 8: the brute's sprite (SARG) redrawn as a figure. */
+#define REC_RENDER_VERSION 8
 /* Bumped whenever the audio of any tick changes (the mixer, the built-in
  * sounds, a sound's lump): recorded audio hashes of another version are
  * not compared. 2: doors, lifts, switches and teleports sound; 3: the
- * grunt's wind-up cry. */
-#define REC_AUDIO_VERSION 3
+ * grunt's wind-up cry; 4: the flyer's own sight, charge, pain and death. */
+#define REC_AUDIO_VERSION 4
 #define REC_HEADER_SIZE 40          /* version 1 */
 #define REC_HEADER_SIZE_V2 80
 #define REC_HEADER_SIZE_V3 104

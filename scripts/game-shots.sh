@@ -5,7 +5,8 @@
 # minimap, game over with the continue countdown, initials entry, and the
 # new score in attract; plus the attract title page, and the stage clock's
 # HURRY UP and the idle player's STILL THERE? from their scripts, and a
-# thrower's missile in flight, and a mesh (the floor lamp).
+# thrower's missile in flight, the grunt's wind-up, the brute and the flyer,
+# and a mesh (the floor lamp).
 # Usage: scripts/game-shots.sh [path/to/arcaded]
 set -eu
 cd "$(dirname "$0")/.."
@@ -56,6 +57,30 @@ done
 (cd "$tmp" && "$BIN" --script "$tmp/thrower.scr" --config-dir "$tmp/etc" \
 	--state-dir "$tmp/state-thrower" --set game.difficulty=0 --set game.render_width=640 \
 	--set game.render_height=480 >/dev/null)
+# Each new enemy on a grid corridor (docs/grid.md), lit 200, the player at
+# its west end facing east: the grunt (zombieman) 192 units ahead in its
+# wind-up (it wakes at tick 8 and aims over ticks 15..38: its aiming frame,
+# the telegraph before its shot); the brute (demon) 384 units ahead,
+# walking in to some 90 units by tick 92; the flyer (lost soul) 256 units
+# ahead, circling in at the player's height at tick 70.
+enemy_shot() { # NAME TYPE TILES TICK
+	{
+		printf 'name %s\n# = wall AR_BRICK\n' "$1"
+		printf '. = floor 0 ceil 128 light 200 ftex AR_FLOOR ctex AR_CEIL\n'
+		printf '@ = . player east\nX = . thing %s west\nmap\n' "$2"
+		printf '##########\n#........#\n#@%sX%s#\n#........#\n##########\n' \
+			"$(printf '%*s' "$(($3 - 1))" '' | tr ' ' .)" \
+			"$(printf '%*s' "$((7 - $3))" '' | tr ' ' .)"
+	} >"$tmp/$1.txt"
+	printf '%s\n' '0 tap coin' '1 tap start' "$4 screenshot $out/game-$5.png" "$4 end" \
+		>"$tmp/$1.scr"
+	(cd "$tmp" && "$BIN" --script "$tmp/$1.scr" --grid "$tmp/$1.txt" --config-dir "$tmp/etc" \
+		--state-dir "$tmp/state-$1" --set game.render_width=640 \
+		--set game.render_height=480 >/dev/null)
+}
+enemy_shot WINDUP 3004 3 30 windup
+enemy_shot BRUTE 3002 6 92 brute
+enemy_shot FLYSHOT 3006 4 70 flyer
 # A mesh: stage 1's floor lamp (meshes/lamp.obj) near, from the hall's
 # west side: turned towards it and walked up to some 130 units.
 printf '%s\n' '0 tap coin' '1 tap start' '10 press turn_left' '56 release turn_left' \

@@ -24,8 +24,8 @@ static const uint8_t g_cries[G_KINDS][G_CRIES] = {
 	/* the imp's: Doom's imp cries as the brute's, its throw the fireball's */
 	[G_THROWER] = { SFX_BRUTE_SIGHT, SFX_SENTRY_ATTACK, SFX_BRUTE_PAIN, SFX_BRUTE_DEATH,
 			SFX_NONE },
-	/* the lost soul's: the drone's warble and cries, the claw's bite */
-	[G_FLYER] = { SFX_SENTRY_SIGHT, SFX_BRUTE_ATTACK, SFX_SENTRY_PAIN, SFX_SENTRY_DEATH,
+	/* the lost soul's own: its charge is the bite's cry (Doom's DSSKLATK) */
+	[G_FLYER] = { SFX_FLYER_SIGHT, SFX_FLYER_ATTACK, SFX_FLYER_PAIN, SFX_FLYER_DEATH,
 		      SFX_NONE },
 };
 

@@ -4,7 +4,9 @@
  * game and the built-in levels use find pictures (th.h, g_thing.c):
  *
  *   POSS, SPOS   grunts (a soldier with a pistol; one with a helmet and a rifle)
- *   TROO, SARG   brutes (a horned clawed imp; a wide demon with a jaw)
+ *   TROO         the thrower (a horned clawed imp)
+ *   SARG         the brute (a hunched, round-bodied horned demon with a jaw
+ *                of teeth, long clawed arms and hooves: tb_brute)
  *   HEAD         the sentry (a hovering one-eyed drone)
  *   SKUL         the flyer (a flaming skull)
  *   MEDI, STIM   health (a medikit; a small blue-cross pack)
@@ -80,6 +82,48 @@ static void tb_disc(struct tex_pic *p, int cx, int cy, int r2, uint8_t c)
 		for (int x = -8; x <= 8; x++)
 			if (x * x + y * y <= r2)
 				tp_set(p, cx + x, cy + y, c);
+}
+
+static int tb_abs(int v)
+{
+	return v < 0 ? -v : v;
+}
+
+/* A filled ellipse centred (cx, cy) with radii rx, ry >= 2, in tone t lit
+ * from the upper left (d added to every shade), its rim darker. */
+static void tb_blob(struct tex_pic *p, int cx, int cy, int rx, int ry, struct tb_tone t, int d)
+{
+	for (int y = -ry; y <= ry; y++)
+		for (int x = -rx; x <= rx; x++)
+			if (x * x * ry * ry + y * y * rx * rx <= rx * rx * ry * ry) {
+				/* the rim (outside the ellipse one smaller) darker */
+				int rim = (rx - 1) * (rx - 1) * (ry - 1) * (ry - 1) <
+					  x * x * (ry - 1) * (ry - 1) + y * y * (rx - 1) * (rx - 1);
+
+				tp_set(p, cx + x, cy + y,
+				       tb_t(t, d + (2 * x + y) * 4 / (rx + ry + 1) + 3 * rim));
+			}
+}
+
+/* A rounded limb of radius r from (x0, y0) to (x1, y1), its left side lit,
+ * its edge darker. */
+static void tb_limb(struct tex_pic *p, int x0, int y0, int x1, int y1, int r, struct tb_tone t,
+		    int d)
+{
+	int n = tb_abs(x1 - x0) > tb_abs(y1 - y0) ? tb_abs(x1 - x0) : tb_abs(y1 - y0);
+
+	if (n == 0)
+		n = 1;
+	for (int k = 0; k <= n; k++) {
+		int cx = x0 + (x1 - x0) * k / n, cy = y0 + (y1 - y0) * k / n;
+
+		for (int y = -r; y <= r; y++)
+			for (int x = -r; x <= r; x++)
+				if (x * x + y * y <= r * r + r / 2)
+					tp_set(p, cx + x, cy + y,
+					       tb_t(t, d + (2 * x > r) - (2 * x < -r) +
+							  2 * (x * x + y * y > (r - 1) * (r - 1))));
+	}
 }
 
 /* The muzzle flash or fireball: a bright diamond with rays. */
@@ -166,18 +210,36 @@ static void tb_human(struct tex_pic *p, const struct tb_look *lk, int pose, int 
 	uint8_t gun = tp_c(PAL_BLACKRAMP, 6);
 
 	for (int leg = 0; leg < 2; leg++) {
-		int lw = hw - 2 < 3 ? 3 : hw - 2, sgn = leg ? -1 : 1;
+		int lw = side == 2 ? 4 : hw - 2 < 3 ? 3 : hw - 2, sgn = leg ? -1 : 1;
 		int x0 = leg ? cx + 1 : cx - 1 - lw, dx = sgn * swing * (side == 2 ? 4 : side);
 		int lift = side < 2 && swing * sgn > 0 ? 2 : 0;
 
+		int hipx, fx, kx;
+
 		if (side == 2)
 			x0 = cx - lw / 2 - 1 + leg * 2;
-		tp_rect(p, x0 + dx, 41, lw, p->h - 41 - lift, tb_t(lk->legs, leg));
-		tp_rect(p, x0 + dx, p->h - 2 - lift, lw, 2, tb_t(lk->legs, 3));
+		/* a rounded thigh and shin bending at the knee (the hip moves
+		 * half as far as the foot), on a boot with its toe forward */
+		hipx = x0 + lw / 2 + dx / 2;
+		fx = x0 + lw / 2 + dx;
+		kx = (hipx + fx) / 2 - (side == 2 ? 1 : 0);
+		tb_limb(p, hipx, 43, kx, 48 - lift, lw / 2, lk->legs, leg);
+		tb_limb(p, kx, 48 - lift, fx, p->h - 4 - lift, (lw - 1) / 2, lk->legs, leg + 1);
+		tp_rect(p, fx - lw / 2 - (side == 2 ? 2 : 0), p->h - 3 - lift, lw + 1 + (side == 2 ? 2 : 0),
+			3, tb_t(lk->legs, 4 + leg));
 	}
-	for (int y = ty; y < 41; y++)                                  /* torso, lit from the left */
-		for (int x = cx - hw; x < cx + hw; x++)
-			tp_set(p, x, y, tb_t(lk->cloth, x == cx - hw ? -1 : x >= cx + hw - 2 ? 1 : 0));
+	for (int y = ty; y < 42; y++) {                                /* torso, lit from the left */
+		/* rounded shoulders, a narrower waist, its edges darker */
+		int in = y == ty ? 2 : y == ty + 1 ? 1 : y >= 35 ? 1 : 0;
+
+		for (int x = cx - hw + in; x < cx + hw - in; x++)
+			tp_set(p, x, y, tb_t(lk->cloth, x == cx - hw + in ? 1
+							: x >= cx + hw - in - 1 ? 3
+							: x >= cx + hw - in - 3 ? 1
+							: x < cx - hw + in + 3 ? -1 : 0));
+	}
+	if (!claws && side < 2)                                        /* the collar */
+		tp_rect(p, cx - 1, ty, 2, 2, tb_t(lk->skin, 1));
 	tp_rect(p, cx - hw, 38, 2 * hw, 3, tb_t(lk->trim, 0));         /* belt */
 	if (pose == TB_P_HURT || pose == TB_P_DEAD)                    /* wounds */
 		for (int k = 0; k < 9; k++)
@@ -195,13 +257,23 @@ static void tb_human(struct tex_pic *p, const struct tb_look *lk, int pose, int 
 				tp_rect(p, ax, ty - up, 3, 14, tb_t(lk->cloth, 2));
 				for (int k = 0; k < 3; k++)
 					tp_set(p, ax + k, ty - up - 1 - (k & 1), tp_c(PAL_GREY, 1));
-			} else {
-				tp_rect(p, ax, ty + 1, 3, 10, tb_t(lk->cloth, 2));
+			} else if (claws) {
+				tb_limb(p, ax + 1, ty + 3, ax + 1 + s * -1, ty + 9, 1, lk->cloth, 1);
 				tp_rect(p, ax + (s < 0 ? 2 : -2), ty + 9, 3, 4, tb_t(lk->skin, 0));
+			} else {
+				/* both arms forward, the hands meeting round the gun */
+				tb_limb(p, cx + s * (hw - 1), ty + 2, cx + s * (hw + 1), ty + 8, 1,
+					lk->cloth, 1);
+				tb_limb(p, cx + s * (hw + 1), ty + 8, cx + s * 4, ty + 10, 1, lk->cloth, 2);
+				tp_rect(p, cx + (s < 0 ? -6 : 3), ty + 8, 3, 4, tb_t(lk->skin, s < 0 ? 0 : 1));
 			}
 		}
 		if (!claws) {
+			/* the gun end-on: a dark block lit along its top, the
+			 * muzzle a black hole in a grey ring */
 			tp_rect(p, cx - 3, ty + 7, 6, 6, gun);
+			tp_rect(p, cx - 3, ty + 7, 6, 1, tp_c(PAL_GREY, 8));
+			tp_rect(p, cx - 2, ty + 8, 4, 4, tp_c(PAL_GREY, 10));
 			tp_rect(p, cx - 1, ty + 9, 2, 2, PAL_BLACK);
 		}
 		if (pose == TB_P_FIRE)
@@ -223,7 +295,8 @@ static void tb_human(struct tex_pic *p, const struct tb_look *lk, int pose, int 
 
 			if (!show[s])
 				continue;
-			tp_rect(p, ax, ty + 1, 3, 18, tb_t(lk->cloth, side == 2 ? 3 : 2));
+			tb_limb(p, ax + 1, ty + 3, ax + 1 + sw / 2, ty + 17, 1, lk->cloth,
+				side == 2 ? 2 : 1);
 			tp_rect(p, ax + sw, ty + 18, 3, 3, tb_t(lk->skin, 0));
 			if (claws)
 				for (int k = 0; k < 3; k += 2)
@@ -241,6 +314,151 @@ static void tb_human(struct tex_pic *p, const struct tb_look *lk, int pose, int 
 		}
 	}
 	tb_head(p, lk, pose, r, cx, 8 + bob - (pose == TB_P_HURT));
+}
+
+/* ---- the brute ----------------------------------------------------------------- */
+
+/* An arm from the shoulder (sx, sy) to the hand (hx, hy), the elbow bent
+ * away from the body (out: -1 to the viewer's left, 1 right), ending in
+ * three claws that point on from the forearm. */
+static void tb_arm(struct tex_pic *p, const struct tb_look *lk, int sx, int sy, int hx, int hy,
+		   int out, int d)
+{
+	int ex = (sx + hx) / 2 + 3 * out, ey = (sy + hy) / 2;
+	int dx = hx - ex, dy = hy - ey, n = tb_abs(dx) > tb_abs(dy) ? tb_abs(dx) : tb_abs(dy);
+
+	tb_limb(p, sx, sy, ex, ey, 3, lk->cloth, d);
+	tb_limb(p, ex, ey, hx, hy, 2, lk->skin, d);
+	if (n == 0)
+		n = 1;
+	for (int c = -1; c <= 1; c++)
+		for (int k = 1; k <= 3; k++)
+			tp_set(p, hx + dx * (2 + k) / n + (dy ? c : 0), hy + dy * (2 + k) / n + (dy ? 0 : c),
+			       tp_c(PAL_GREY, k));
+}
+
+/* The brute: a hunched, heavy demon. A round barrel of a body with a pale
+ * belly (a ridge of spines down its back), its horned head sunk between
+ * the shoulders with a jaw of teeth, long clawed arms, thick bent legs on
+ * hooves. Walking (rot 1 faces the viewer, 3 is the profile facing left,
+ * 5 the back; phase 1 and 3 a step with each leg, the arms swinging
+ * against the legs); then, seen from the front: the wind-up (arms spread,
+ * jaw opening), the aim (claws high over the head, jaw wide), the strike
+ * (claws swept down across the body, jaw agape, slashes in the air), pain
+ * (thrown back, eyes shut, wounds) and the dead pose tb_death turns. */
+static void tb_brute(struct tex_pic *p, int pose, int rot, int phase)
+{
+	/* the head's lean towards where it faces, per rotation; the jaw's
+	 * gape per pose */
+	static const int8_t lean[6] = { 0, 0, -3, -7, 2, 0 };
+	static const int8_t gape[6] = { 2, 3, 5, 7, 1, 0 };
+	const struct tb_look *lk = &tb_looks[TB_L_DEMON];
+	int walk = pose == TB_P_WALK, r = walk ? rot : 1, bob = walk && (phase & 1);
+	int swing = !walk ? 0 : phase == 1 ? 1 : phase == 3 ? -1 : 0;
+	int side = r == 3, back = r >= 4, cx = p->w / 2;
+	int rx = side ? 10 : r == 2 || r == 4 ? 12 : 14, ty = 31 + bob;
+	int hx = cx + lean[r], hy = 17 + bob + (pose == TB_P_FIRE ? 3 : 0) - (pose == TB_P_HURT ? 2 : 0);
+	int shut = pose == TB_P_HURT || pose == TB_P_DEAD, g = gape[pose];
+
+	for (int leg = 0; leg < 2; leg++) {                            /* legs on hooves */
+		int sgn = leg ? 1 : -1, st = swing * sgn, d = side && leg ? 2 : 0;
+		int spread = side ? 1 : r == 1 || r == 5 ? 7 : 5;
+		int hipx = cx + sgn * spread, fx = hipx - (side ? st * 5 : 0);
+		int lift = st > 0 ? 2 : 0, kx = (hipx + fx) / 2 + (side ? -3 : sgn);
+		int ky = 47 - lift;
+
+		tb_limb(p, hipx, 40 + bob, kx, ky, 3, lk->legs, d);
+		tb_limb(p, kx, ky, fx, 51 - lift, 2, lk->legs, d + 1);
+		tp_rect(p, fx - 3, 53 - lift, 7, 3, tb_t(lk->trim, d));
+		if (!back)
+			for (int k = 0; k < 3; k++)
+				tp_set(p, fx - 3 + 3 * k - (side ? 1 : 0), 55 - lift, tp_c(PAL_GREY, 3));
+	}
+	if (back) {                                                    /* the head behind the hump */
+		tb_blob(p, hx, hy, 9, 7, lk->skin, 1);
+	}
+	tb_blob(p, cx + lean[r] / 3, ty, rx, 12, lk->cloth, 0);        /* the body */
+	if (back) {
+		for (int y = ty - 10; y <= ty + 8; y += 3) {           /* spines down the back */
+			int sx = cx + lean[r] / 3 + (r == 4 ? 3 : 0);
+
+			tp_rect(p, sx - 1, y, 3, 2, tb_t(lk->trim, 0));
+			tp_set(p, sx, y - 1, tp_c(PAL_GREY, 4));
+		}
+	} else {
+		int bx = cx + lean[r] / 2 - (side ? 3 : 0);
+
+		tb_blob(p, bx, ty + 4, side ? 4 : rx / 2, 7, lk->skin, -3);   /* the belly */
+		for (int k = -1; k <= 1; k += 2)                       /* the chest's muscles */
+			for (int x = 2; x < rx - 3; x++)
+				if (!side || k < 0)
+					tp_set(p, bx + k * x, ty - 6 + x * x / (2 * rx), tb_t(lk->cloth, 3));
+	}
+	if (shut)                                                      /* wounds */
+		for (int k = 0; k < 11; k++)
+			tp_set(p, cx - rx + 3 + (int)(tp_hash((uint32_t)k, 1, 8) % (uint32_t)(2 * rx - 6)),
+			       ty - 8 + (int)(tp_hash((uint32_t)k, 2, 8) % 18), tp_c(PAL_RED, 4 + k % 5));
+	/* the arms: at the sides swinging against the legs, spread for the
+	 * wind-up, high for the aim, swept down across the body striking,
+	 * flung out in pain, limp dead; in profile the near arm only */
+	for (int s = -1; s <= 1; s += 2) {
+		int sx = side ? cx - 2 : cx + s * (rx - 2), sy = ty - 7, ax, ay;
+
+		if (side && s > 0)
+			continue;
+		switch (pose) {
+		case TB_P_WINDUP: ax = cx + s * (rx + 5); ay = ty - 12; break;
+		case TB_P_AIM: ax = cx + s * (rx - 1); ay = ty - 24; break;
+		case TB_P_FIRE: ax = cx - s * 4; ay = ty + 6; break;
+		case TB_P_HURT: ax = cx + s * (rx + 6); ay = ty - 3; break;
+		case TB_P_DEAD: ax = cx + s * (rx + 1); ay = ty + 11; break;
+		default:
+			ax = side ? cx - 2 - swing * 5 : cx + s * (rx + 2);
+			ay = ty + 10 + (side ? 0 : s * swing * 2);
+			break;
+		}
+		tb_arm(p, lk, sx, sy, ax, ay, side ? 0 : s, s > 0 && !side);
+	}
+	if (back)
+		return;
+	tb_blob(p, hx, hy, side ? 8 : 9, 7, lk->skin, 0);              /* the head */
+	for (int k = 0; k < 4; k++) {                                  /* horns curving up and out */
+		if (!side)
+			tp_set(p, hx + 6 + k / 2 + (k == 3), hy - 5 - k, tp_c(PAL_GREY, 1 + k));
+		tp_set(p, hx - 6 - k / 2 - (k == 3) + (side ? 8 : 0), hy - 5 - k, tp_c(PAL_GREY, 1 + k));
+	}
+	for (int x = -7; x <= 7; x++)                                  /* the brow */
+		if (!side || x < 2)
+			tp_set(p, hx + x, hy - 3, tb_t(lk->trim, tb_abs(x) < 2 ? 1 : 0));
+	for (int e = -1; e <= 1; e += 2) {                             /* eyes */
+		int ex = hx + e * 4 - (side ? 1 : 0);
+
+		if (side && e > 0)
+			continue;
+		tp_rect(p, ex - 1, hy - 2, 2, shut ? 1 : 2, shut ? tb_t(lk->skin, 4) : lk->eye);
+	}
+	{
+		/* the jaw: a mouth g deep with teeth above and below, the lower
+		 * jaw under it (in profile, jutting to the left) */
+		int x0 = side ? hx - 8 : hx - 6, x1 = side ? hx + 1 : hx + 6, my = hy + 3;
+
+		for (int x = x0; x <= x1; x++) {
+			for (int y = 0; y < g; y++)
+				tp_set(p, x, my + y, y == 0 || y == g - 1 ? tp_c(PAL_RED, 11) : tp_c(PAL_RED, 9));
+			if ((x - x0) % 2 == 0) {
+				tp_set(p, x, my, tp_c(PAL_GREY, 0));
+				tp_set(p, x, my + g, tp_c(PAL_GREY, 1));
+			}
+		}
+		for (int x = x0 + 1; x < x1; x++)
+			for (int y = 1; y <= 2; y++)
+				tp_set(p, x, my + g + y, tb_t(lk->skin, y));
+	}
+	if (pose == TB_P_FIRE)                                         /* the claws' slashes */
+		for (int k = 0; k < 3; k++)
+			for (int t = 0; t < 9; t++)
+				tp_set(p, cx + 9 + 3 * k - t, ty - 16 + 2 * k + t,
+				       tp_c(PAL_GREY, t < 3 ? 0 : t < 6 ? 2 : 5));
 }
 
 /* ---- the drone ----------------------------------------------------------------- */
@@ -494,7 +712,10 @@ static void tb_death(struct tex_pic *p, int look, int k, int n, int w, int h)
 		const struct tb_look *lk = &tb_looks[look];
 		int pivot = w / 2 + lk->hw, px0 = 2 * lk->hw + 4;
 
-		tb_human(&s, lk, TB_P_DEAD, 1, 0);
+		if (look == TB_L_DEMON)
+			tb_brute(&s, TB_P_DEAD, 1, 0);
+		else
+			tb_human(&s, lk, TB_P_DEAD, 1, 0);
 		if (k > 0)
 			tb_pool(p, px0 + h * k / (2 * n), 4 + 5 * k, PAL_RED);
 		tb_warp(p, &s, pivot, h - 1, px0, h - 1, cs[step][0], cs[step][1], -cs[step][1],
@@ -854,6 +1075,8 @@ static void tb_make_mon(struct tex_pic *p, const struct tb_mon *m, int f, int ro
 	} else if (m->look == TB_L_SKULL) {
 		/* the flyer's height is the sim's: its picture stands on its spot */
 		tb_skull(p, pose, rot ? rot : 1, f & 1, 0);
+	} else if (m->look == TB_L_DEMON) {
+		tb_brute(p, pose, rot ? rot : 1, f & 3);
 	} else {
 		tb_human(p, &tb_looks[m->look], pose, rot ? rot : 1, f & 3);
 	}

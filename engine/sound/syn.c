@@ -79,6 +79,23 @@ static const struct syn_part syn_parts[] = {
 	P(SENTRY_PAIN, SQUARE, 0, 250, 600, 320, 9000, 5, 20)
 	P(SENTRY_DEATH, SQUARE, 0, 1100, 420, 45, 9000, 5, 20)
 	P(SENTRY_DEATH, NOISE, 0, 1100, 2500, 150, 9000, 10, 10)
+	/* the flyer (a burning skull): a flare of fire under a hollow rising
+	 * shriek; its charge, a roar of fire that rises as it rushes in over
+	 * a snapping jaw; a cracked squeal; a burst of fire and bone that
+	 * crackles down to embers */
+	P(FLYER_SIGHT, NOISE, 0, 450, 2500, 6000, 7000, 80, 30)
+	P(FLYER_SIGHT, TRI, 0, 450, 600, 1500, 7000, 60, 40)
+	P(FLYER_SIGHT, SQUARE, 100, 300, 1200, 1800, 2500, 40, 30)
+	P(FLYER_ATTACK, NOISE, 0, 500, 1200, 9000, 13000, 250, 20)
+	P(FLYER_ATTACK, SAW, 0, 500, 180, 520, 6000, 250, 20)
+	P(FLYER_ATTACK, NOISE, 420, 40, 9000, 9000, 10000, 0, 0)
+	N(FLYER_ATTACK, SQUARE, 420, 60, 900, 6000, 0, 10)
+	P(FLYER_PAIN, SQUARE, 0, 220, 1400, 700, 8000, 5, 20)
+	P(FLYER_PAIN, NOISE, 0, 150, 5000, 5000, 5000, 0, 10)
+	P(FLYER_DEATH, NOISE, 0, 900, 7000, 300, 13000, 0, 10)
+	P(FLYER_DEATH, SINE, 0, 600, 200, 45, 9000, 0, 10)
+	P(FLYER_DEATH, TRI, 0, 500, 1000, 180, 4000, 5, 20)
+	P(FLYER_DEATH, NOISE, 300, 600, 900, 900, 3000, 50, 10)
 	/* a pickup: two quick notes up a fifth */
 	N(PICKUP, TRI, 0, 60, C6, 12000, 2, 50)
 	N(PICKUP, TRI, 60, 90, G6, 12000, 2, 40)

@@ -143,7 +143,7 @@ resum "$tmp/old.rec"
 $BIN $common --replay "$tmp/old.rec" >/dev/null 2>"$tmp/old.err"
 rc=$?
 check "a recording of engine version 2 (before sound) refused, naming it (exit $rc): $(grep -o 'engine version differs.*' "$tmp/old.err")" \
-	$([ "$rc" -eq 2 ] && grep -q "engine version differs: recording 2, this build 8" "$tmp/old.err"; echo $?)
+	$([ "$rc" -eq 2 ] && grep -q "engine version differs: recording 2, this build 9" "$tmp/old.err"; echo $?)
 
 # --record writes format 3: a 104-byte header, then per tick the 6-byte
 # command, the state, frame and audio hashes (30 bytes).

@@ -2,7 +2,7 @@
  * player's shot): idle enemies in the sectors the sound reaches wake
  * unless deaf (the map's ambush flag); a closed sector stops the sound.
  * The grunt's wind-up (its telegraph before the shot); the flyer's height,
- * circling and fall. */
+ * circling and fall, and its own cries (sight, charge, pain, death). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -245,6 +245,51 @@ static void a_flyer_circles_in_and_bites(void **state)
 	map_free(mb);
 }
 
+/* The sound enemy i is making now (its source's channel), SFX_NONE for
+ * none. */
+static int g_cry_of(const struct sim *s, int i)
+{
+	for (int k = 0; k < G_SND_CHANNELS; k++)
+		if (s->snd.ch[k].sfx != SFX_NONE && s->snd.ch[k].src == G_SRC_ENEMY(i))
+			return s->snd.ch[k].sfx;
+	return SFX_NONE;
+}
+
+/* The flyer cries its own sounds where the other kinds cry theirs: its
+ * sight as it wakes, its charge as it bites, its pain when it flinches,
+ * its death when it dies; never another kind's. */
+static void a_flyer_cries_its_own_sounds(void **state)
+{
+	static const struct gf_thing t[] = { { 308, 256, ANG180, 3006, 0 } };
+	struct map *m = gf_arena(t, 1, NULL, 0);
+	struct sim s;
+	int n = 0;
+	(void)state;
+	assert_non_null(m);
+	sim_init(&s, m, &normal);
+	assert_int_equal(g_cry_of(&s, 0), SFX_NONE);
+	while (s.g.en[0].state == G_E_IDLE && n++ < 20)
+		sim_tick(&s, &idle_cmd);
+	assert_int_equal(s.g.en[0].state, G_E_CHASE);
+	assert_int_equal(g_cry_of(&s, 0), SFX_FLYER_SIGHT);
+	assert_int_equal(g_channels_playing(&s, SFX_SENTRY_SIGHT), 0);
+	while (s.pl.health == G_HEALTH_MAX * FX_ONE && n++ < 400)
+		sim_tick(&s, &idle_cmd);
+	assert_true(s.pl.health < G_HEALTH_MAX * FX_ONE);
+	assert_int_equal(g_cry_of(&s, 0), SFX_FLYER_ATTACK);
+	assert_int_equal(g_channels_playing(&s, SFX_BRUTE_ATTACK), 0);
+	g_hurt_enemy(&s, 0, 1);                   /* flinch chance 255/256 */
+	assert_int_equal(s.g.en[0].state, G_E_PAIN);
+	assert_int_equal(g_cry_of(&s, 0), SFX_FLYER_PAIN);
+	g_hurt_enemy(&s, 0, 1000);
+	assert_int_equal(s.g.en[0].state, G_E_DEAD);
+	assert_int_equal(g_cry_of(&s, 0), SFX_FLYER_DEATH);
+	sim_tick(&s, &idle_cmd);                  /* heard on the next tick too */
+	assert_int_equal(g_cry_of(&s, 0), SFX_FLYER_DEATH);
+	assert_int_equal(g_channels_playing(&s, SFX_SENTRY_DEATH), 0);
+	map_free(m);
+}
+
 /* Killed in the air, the flyer falls G_FLY_FALL a tick to the floor. */
 static void a_dead_flyer_falls(void **state)
 {
@@ -274,6 +319,7 @@ int main(void)
 		cmocka_unit_test(a_flyer_flies_to_the_players_height),
 		cmocka_unit_test(a_flyer_circles_in_and_bites),
 		cmocka_unit_test(a_dead_flyer_falls),
+		cmocka_unit_test(a_flyer_cries_its_own_sounds),
 		cmocka_unit_test(a_shot_wakes_the_hearing_not_the_deaf),
 		cmocka_unit_test(a_closed_sector_stops_the_sound),
 	};

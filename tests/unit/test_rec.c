@@ -433,12 +433,12 @@ static void test_check_names_every_difference(void **state)
 	/* a recording made before sound (engine 2): refused, naming it */
 	h.engine_version = 2;
 	assert_int_equal(rec_check(&h, 0x0102030405060708ull, err, sizeof(err)), -EINVAL);
-	assert_string_equal(err, "engine version differs: recording 2, this build 8");
+	assert_string_equal(err, "engine version differs: recording 2, this build 9");
 
 	assert_int_equal(rec_check(&h, 0xabcull, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "map content differs: recording 0x0102030405060708, "
 				 "loaded 0x0000000000000abc; engine version differs: "
-				 "recording 2, this build 8");
+				 "recording 2, this build 9");
 }
 
 /* ---- version 2 ------------------------------------------------------ */
@@ -834,11 +834,11 @@ static void test_check_run_names_each_difference(void **state)
 	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), 0);
 
 	run.map_hash = 0xabc;
-	h.engine_version = 9;
+	h.engine_version = 10;
 	assert_int_equal(rec_check_run(&h, &run, err, sizeof(err)), -EINVAL);
 	assert_string_equal(err, "map content differs: recording 0x0102030405060708, loaded "
-				 "0x0000000000000abc; engine version differs: recording 9, this "
-				 "build 8");
+				 "0x0000000000000abc; engine version differs: recording 10, this "
+				 "build 9");
 	/* A message longer than the buffer is cut, not overrun. */
 	assert_int_equal(rec_check_run(&h, &run, err, 20), -EINVAL);
 	assert_int_equal(strlen(err), 19);

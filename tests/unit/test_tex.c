@@ -735,6 +735,87 @@ static void builtin_set_has_pickups_effects_and_the_pistol(void **state)
 	tex_free(t);
 }
 
+/* The opaque width of row y of picture p (from its first to its last
+ * drawn pixel), 0 for an empty row. */
+static int row_width(const struct tex_pic *p, int y)
+{
+	int first = -1, last = -1;
+
+	for (int x = 0; x < p->w; x++)
+		if (!p->opaque || p->opaque[(size_t)x * (size_t)p->h + (size_t)y]) {
+			if (first < 0)
+				first = x;
+			last = x;
+		}
+	return first < 0 ? 0 : last - first + 1;
+}
+
+static const struct tex_pic *frame_pic(const struct tex_set *t, int sprite, int f)
+{
+	return &t->sprpics[t->sprites[sprite].frames[f].pic[0]];
+}
+
+/* The built-in brute (SARG) is a figure, not a block: seen from the front
+ * its body is round (the rows across its chest and belly are not all one
+ * width, as a box's are), and its walk, wind-up, aim, strike and pain
+ * frames (A..H; C repeats A's pose) are each a picture of their own. */
+static void builtin_brute_has_a_shape_and_a_frame_per_pose(void **state)
+{
+	static const int poses[] = { 0, 1, 3, 4, 5, 6, 7 };   /* A B D E F G H */
+	struct tex_set *t;
+	int k, lo = 1000, hi = 0;
+
+	(void)state;
+	assert_int_equal(tex_builtin(&t), 0);
+	k = tex_find_sprite(t, "SARG");
+	assert_true(k >= 0);
+	assert_true(t->sprites[k].num_frames >= 14);
+	for (int y = 22; y <= 34; y++) {
+		int w = row_width(frame_pic(t, k, 0), y);
+
+		lo = w < lo ? w : lo;
+		hi = w > hi ? w : hi;
+	}
+	assert_true(hi - lo >= 3);
+	for (size_t i = 0; i < sizeof poses / sizeof poses[0]; i++)
+		for (size_t j = i + 1; j < sizeof poses / sizeof poses[0]; j++) {
+			const struct tex_pic *a = frame_pic(t, k, poses[i]), *b = frame_pic(t, k, poses[j]);
+
+			if (a->w == b->w && a->h == b->h &&
+			    !memcmp(a->px, b->px, (size_t)a->w * (size_t)a->h) &&
+			    !memcmp(a->opaque, b->opaque, (size_t)a->w * (size_t)a->h))
+				fail_msg("SARG frames %c and %c are one picture", 'A' + poses[i],
+					 'A' + poses[j]);
+		}
+	tex_free(t);
+}
+
+/* The soldiers' legs are limbs, not boxes: seen from the front the rows
+ * from the hips to the ankles of the grunt (POSS) and the shotgun guy
+ * (SPOS) are not all one width (the thighs are wider than the shins). */
+static void builtin_soldiers_have_shaped_legs(void **state)
+{
+	static const char *const names[] = { "POSS", "SPOS" };
+	struct tex_set *t;
+
+	(void)state;
+	assert_int_equal(tex_builtin(&t), 0);
+	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+		const struct tex_pic *p = frame_pic(t, tex_find_sprite(t, names[i]), 0);
+		int lo = 1000, hi = 0;
+
+		for (int y = 43; y <= 52; y++) {
+			int w = row_width(p, y);
+
+			lo = w < lo ? w : lo;
+			hi = w > hi ? w : hi;
+		}
+		if (hi - lo < 2)
+			fail_msg("%s: legs %d..%d wide", names[i], lo, hi);
+	}
+	tex_free(t);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -758,6 +839,8 @@ int main(void)
 		cmocka_unit_test(lookup_by_index_agrees_with_a_scan),
 		cmocka_unit_test(builtin_set_is_complete_and_deterministic),
 		cmocka_unit_test(builtin_set_has_pickups_effects_and_the_pistol),
+		cmocka_unit_test(builtin_brute_has_a_shape_and_a_frame_per_pose),
+		cmocka_unit_test(builtin_soldiers_have_shaped_legs),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
