@@ -2,7 +2,7 @@
  * mdir: mesh directories made here file by file: a good mesh for a pickup
  * (drawn for its type, in its colour, by the game's sprites and the
  * software renderer), a bad one for the lamp (refused with file:line, the
- * lamp keeps its built-in mesh), a bad colour line, names that are no
+ * lamp keeps its built-in mesh), a bad colour line, a file too large, names that are no
  * thing type's, a monster's type, a second file for one type, a FIFO.
  */
 #include <setjmp.h>
@@ -168,9 +168,22 @@ static void bad_file_refused_with_file_and_line(void **state)
 	put("2028.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
 	put("0005.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n# arcaded colour 12345\n");
 	put("2012.obj", pyramid);
+	{
+		/* past MDIR_FILE_MAX: refused unread, even as comments */
+		char path[128];
+		FILE *f;
+
+		snprintf(path, sizeof(path), "%s/2014.obj", dir);
+		f = fopen(path, "w");
+		assert_non_null(f);
+		for (unsigned k = 0; k <= MDIR_FILE_MAX / 8; k++)
+			fputs("# 34567\n", f);
+		fclose(f);
+	}
 	assert_int_equal(mdir_load(&d, dir, note, NULL), 1);
-	assert_int_equal(nbad, 2);
-	assert_int_equal(d.nbad, 2);
+	assert_int_equal(nbad, 3);
+	assert_int_equal(d.nbad, 3);
+	assert_non_null(strstr(notes, "2014.obj: larger than 1048576 bytes; refused"));
 	assert_non_null(strstr(notes, "2028.obj:3: "));
 	assert_non_null(strstr(notes, "0005.obj:5: bad colour"));
 	/* the lamp and the blue card keep their built-in mesh */
