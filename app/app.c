@@ -17,6 +17,7 @@
 #include "app/hear.h"
 #include "app/keep.h"
 #include "app/loop.h"
+#include "app/mdir.h"
 #include "app/op.h"
 #include "app/out.h"
 #include "app/pace.h"
@@ -55,6 +56,7 @@ struct app {
 	struct hear hear;          /* each tick's sound, mixed and hashed */
 	struct out_audio audio;    /* where it goes */
 	struct scene scene;        /* frame, renderers, display */
+	struct mdir meshes;        /* [game] meshes: loaded at start-up, drawn by the view */
 	struct slot_kind kinds[SLOT_KINDS];
 	int nkinds;
 	struct slot_set slots;     /* input devices */
@@ -339,6 +341,33 @@ static const struct loop_ops app_steps = {
 
 /* ---- set-up and tear-down --------------------------------------------- */
 
+static void app_mesh_note(void *user, int bad, const char *msg)
+{
+	(void)user;
+	if (bad)
+		say_warn("game.meshes: %s", msg);
+	else
+		say("game.meshes: %s", msg);
+}
+
+/* [game] meshes: read, and handed to the view; a bad file or directory
+ * is logged and the built-in pictures stay (the cabinet runs on). The
+ * hash is logged as what a replay's frames depend on besides the map. */
+static void app_meshes(struct app *a)
+{
+	const char *dir = a->cfg->game.meshes;
+	int n = mdir_load(&a->meshes, dir, app_mesh_note, NULL);
+
+	if (!dir[0])
+		return;
+	if (n == -ENOMEM)
+		say_warn("game.meshes: out of memory; the built-in pictures only");
+	if (n > 0)
+		a->scene.view.meshes = &a->meshes.set;
+	say("game.meshes: %d mesh(es) from %s, %u refused, %u ignored, hash %016llx", n < 0 ? 0 : n,
+	    dir, a->meshes.nbad, a->meshes.nignored, (unsigned long long)a->meshes.hash);
+}
+
 /* The content, the game's settings and the replay's checks; *rate: the
  * sound's output rate (a recording's own). */
 static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
@@ -472,8 +501,10 @@ static int setup(struct app *a)
 		return rc;
 	}
 	rc = scene_init(&a->scene, c, &a->ct, o->gl, rw, rh);
-	if (rc == 0)
+	if (rc == 0) {
+		app_meshes(a);
 		rc = scene_open_display(&a->scene, a->headless);
+	}
 	if (rc == 0)
 		rc = out_audio_open(&a->audio, c, a->hear.rate, a->headless);
 	if (rc < 0)
@@ -518,6 +549,7 @@ static void teardown(struct app *a)
 	script_free(&a->script);
 	keep_close(&a->keep, &a->sim, a->stats.ticks);
 	scene_free(&a->scene);
+	mdir_free(&a->meshes);
 	diag_view_free(&a->dv);
 	demo_free(&a->demo);
 	ct_free(&a->ct);

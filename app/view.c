@@ -54,7 +54,7 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	/* Animated textures follow the game tick, so replays see the same. */
 	tex_animate(tex, s->tick);
 	if (hud_world(s)) {
-		int n = r_game_sprites(s, tex, v->spr, v->spr_max);
+		int n = r_game_sprites(s, tex, v->meshes, v->spr, v->spr_max);
 		const struct map *m = r_game_live(&v->live, s, tex);
 		r_game_view(s, f->w, &rv);
 		if (v->world)

@@ -11,6 +11,7 @@
 
 struct ct;
 struct map;
+struct mesh_set;
 struct r_ctx;
 struct r_frame;
 struct r_par;
@@ -44,6 +45,8 @@ struct view {
 	const struct hud_diag *diag;   /* optional, borrowed: the service menu's
 					* diagnostics text (hud_env.diag), NULL none */
 	const char *notice;        /* optional, borrowed: hud_env.notice (app/op.h) */
+	const struct mesh_set *meshes; /* optional, borrowed: meshes loaded at run time
+					* (game.meshes, app/mdir.h), NULL none */
 };
 
 /* Prepares v for the content's stages. 0 or -ENOMEM. */

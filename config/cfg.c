@@ -99,6 +99,7 @@ static const struct cfg_key cfg_keys[] = {
 	CFG_STRKEY(game, wad, game.wad, CFG_T_STR),
 	CFG_STRKEY(game, maps, game.maps, CFG_T_STR),
 	CFG_STRKEY(game, content_dirs, game.content_dirs, CFG_T_STR),
+	CFG_STRKEY(game, meshes, game.meshes, CFG_T_STR),
 	CFG_STRKEY(audio, output, audio.output, CFG_T_STR),
 	CFG_STRKEY(audio, device, audio.device, CFG_T_STR),
 	CFG_INTKEY(audio, rate, audio.rate, 8000, 192000),

@@ -51,6 +51,7 @@ struct cfg {
 		char content_dirs[512];      /* where the service menu's content picker looks
 					      * for WADs, blank-separated
 					      * ("/usr/share/games/doom /var/lib/arcaded/content") */
+		char meshes[CFG_PATH_MAX];   /* directory of NNNN.obj meshes ("" none; app/mdir.h) */
 	} game;
 	struct {
 		char output[CFG_PATH_MAX];   /* auto | alsa | alsa:DEVICE | wav:FILE | null */

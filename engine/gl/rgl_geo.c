@@ -1241,7 +1241,9 @@ static int rgl_mesh(struct rgl_ctx *g, const struct map *m, const struct r_sprit
 	uint32_t sec;
 	int base = 0;
 
-	if (mesh_builtin_get(sp->mesh, &me) < 0) {
+	if (sp->mp) {
+		me = *sp->mp;
+	} else if (mesh_builtin_get(sp->mesh, &me) < 0) {
 		g->st.missing++;
 		return 0;
 	}

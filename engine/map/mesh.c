@@ -323,3 +323,13 @@ void mesh_free(struct mesh *m)
 	free((void *)m->t);
 	memset(m, 0, sizeof(*m));
 }
+
+const struct mesh_thing *mesh_set_find(const struct mesh_set *s, uint16_t type)
+{
+	if (!s)
+		return NULL;
+	for (uint32_t i = 0; i < s->n; i++)
+		if (s->v[i].type == type)
+			return &s->v[i];
+	return NULL;
+}

@@ -64,6 +64,27 @@ struct mesh {
 int mesh_parse(const char *name, const char *buf, size_t len, struct mesh *out, char *err,
 	       size_t errlen);
 
+/* Meshes for thing types, loaded at run time (the app's game.meshes
+ * directory, app/mdir.h): type `type` is drawn as mesh m in colour
+ * (r, g, b) instead of its built-in mesh or sprite. */
+struct mesh_thing {
+	uint16_t type;                 /* Doom thing type (editor number) */
+	uint8_t r, g, b;               /* colour, 0..255 each */
+	struct mesh m;
+};
+
+/* A table of them, borrowed by the renderers for a frame (app/view.h
+ * passes it to r_game_sprites): at most one entry per type, at most
+ * MESH_SET_MAX entries. */
+#define MESH_SET_MAX 64u
+struct mesh_set {
+	const struct mesh_thing *v;
+	uint32_t n;
+};
+
+/* The entry of s for thing type `type`, or NULL (also for s NULL). */
+const struct mesh_thing *mesh_set_find(const struct mesh_set *s, uint16_t type);
+
 /* Frees the arrays of a mesh mesh_parse filled (not of a built-in one);
  * NULL-safe; leaves *m empty. */
 void mesh_free(struct mesh *m);

@@ -39,6 +39,7 @@
 
 struct r_out {
 	const struct tex_set *t;
+	const struct mesh_set *ms;     /* loaded meshes, may be NULL */
 	struct r_sprite *out;
 	int n, max;
 };
@@ -79,6 +80,7 @@ static void r_put(struct r_out *o, fx_t x, fx_t y, fx_t z, ang_t a, int spr, int
 	r->flags = bright ? R_SPR_FULLBRIGHT : 0;
 	r->mesh = 0;
 	r->colour = 0;
+	r->mp = NULL;
 }
 
 /* The built-in mesh thing type `type` is drawn with (0: its sprite) and
@@ -104,14 +106,28 @@ static int r_mesh_of(uint16_t type, int *r, int *g, int *b)
 	}
 }
 
-int r_game_mesh(const struct tex_set *t, uint16_t type, uint32_t tick, fx_t x, fx_t y, fx_t z,
-		struct r_sprite *out)
+int r_game_mesh_colour(uint16_t type, int *r, int *g, int *b)
 {
-	int cr, cg, cb, mesh = r_mesh_of(type, &cr, &cg, &cb);
+	return r_mesh_of(type, r, g, b) != 0;
+}
 
+int r_game_mesh(const struct tex_set *t, const struct mesh_set *ms, uint16_t type, uint32_t tick,
+		fx_t x, fx_t y, fx_t z, struct r_sprite *out)
+{
+	const struct mesh_thing *mt = mesh_set_find(ms, type);
+	int cr, cg, cb, mesh;
+
+	if (mt) {
+		/* a loaded mesh wins over the built-in one and the sprite */
+		cr = mt->r, cg = mt->g, cb = mt->b;
+		mesh = R_MESH_LOADED;
+	} else {
+		mesh = r_mesh_of(type, &cr, &cg, &cb);
+	}
 	if (!mesh)
 		return 0;
 	memset(out, 0, sizeof(*out));
+	out->mp = mt ? &mt->m : NULL;
 	out->x = x;
 	out->y = y;
 	out->z = z;
@@ -127,7 +143,7 @@ static int r_put_mesh(struct r_out *o, const struct sim *s, uint16_t type, fx_t 
 {
 	struct r_sprite sp;
 
-	if (!r_game_mesh(o->t, type, s->tick, x, y, z, &sp))
+	if (!r_game_mesh(o->t, o->ms, type, s->tick, x, y, z, &sp))
 		return 0;
 	if (o->n < o->max)
 		o->out[o->n++] = sp;
@@ -169,10 +185,11 @@ static void r_put_enemy(struct r_out *o, const struct g_enemy *e)
 	r_put(o, e->x, e->y, e->z, e->angle, spr, frame, bright, need);
 }
 
-int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite *out, int max)
+int r_game_sprites(const struct sim *s, const struct tex_set *t, const struct mesh_set *meshes,
+		   struct r_sprite *out, int max)
 {
 	const struct map *m = s->map;
-	struct r_out o = { t, out, 0, max };
+	struct r_out o = { t, meshes, out, 0, max };
 
 	if (!t || !m)
 		return 0;
@@ -241,7 +258,7 @@ static int r_map_list(const struct map *m, const struct tex_set *t, int with_mes
 			continue;
 		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
 		/* on its floor, as the game puts pickups and decorations */
-		if (with_meshes && r_game_mesh(t, th->type, tick, th->x, th->y, sec->floor_h, &out[n])) {
+		if (with_meshes && r_game_mesh(t, NULL, th->type, tick, th->x, th->y, sec->floor_h, &out[n])) {
 			n++;
 			continue;
 		}
@@ -257,6 +274,7 @@ static int r_map_list(const struct map *m, const struct tex_set *t, int with_mes
 		out[n].flags = (in->flags & TH_LIGHT) ? R_SPR_FULLBRIGHT : 0;
 		out[n].mesh = 0;
 		out[n].colour = 0;
+		out[n].mp = NULL;
 		n++;
 	}
 	return n;

@@ -9,6 +9,7 @@
 
 #include "engine/game/g_game.h"
 #include "engine/map/map.h"
+#include "engine/map/mesh.h"
 
 struct map;
 struct r_sprite;
@@ -52,9 +53,11 @@ void r_game_view(const struct sim *s, int w, struct r_view *v);
  * numbers come from t by Doom's names; a name t lacks is drawn as a
  * stand-in of t (POSS for enemies, MEDI, CLIP, COLU, BAR1), and failing
  * that as a number past t's sprites (the renderer's fallback checker); a
- * corpse frame t lacks is not drawn. Returns how many were written (0 when
- * t is NULL). */
-int r_game_sprites(const struct sim *s, const struct tex_set *t, struct r_sprite *out, int max);
+ * corpse frame t lacks is not drawn. Pickups and props with a mesh are
+ * that mesh (r_game_mesh; meshes: those loaded at run time, borrowed, may
+ * be NULL). Returns how many were written (0 when t is NULL). */
+int r_game_sprites(const struct sim *s, const struct tex_set *t, const struct mesh_set *meshes,
+		   struct r_sprite *out, int max);
 
 /* Marks in want_pics (tex_want_sprite) every sprite r_game_sprites may
  * draw on map m: each thing's own sprite (enemies and pickups come only
@@ -76,21 +79,29 @@ void r_game_want(const struct tex_set *t, const struct map *m, uint8_t *want_pic
 int r_map_sprites(const struct map *m, const struct tex_set *t, struct r_sprite *out);
 
 /* As r_map_sprites, but the things the game draws as built-in meshes (the
- * keys, the floor lamp: r_game_mesh) are those meshes, on their sector's
+ * keys, the floor lamp: r_game_mesh without loaded meshes) are those meshes, on their sector's
  * floor, turned as the game turns them at tick `tick`, whether or not t
  * has their sprite (the cross-check's scene). out needs room for
  * m->num_things entries. Returns how many were stored. */
 int r_map_things(const struct map *m, const struct tex_set *t, uint32_t tick, struct r_sprite *out);
 
-/* When thing type `type` is drawn as a built-in mesh (the key pickups,
- * cards and skulls, in their key's colour; the floor lamp 2028 in brass),
+/* When thing type `type` is drawn as a mesh: the one ms has for it
+ * (loaded at run time, in its own colour; r_sprite.mp points into ms,
+ * which must outlive the frame; ms may be NULL), else a built-in one (the
+ * key pickups, cards and skulls, in their key's colour; the floor lamp
+ * 2028 in brass),
  * fills *out with it standing at (x, y, z), turned a quarter turn a second
  * by the tick alone (frames stay a function of the sim's state), in t's
  * palette colour, lit by its sector (not full bright: the Lambert term
  * shows its shape), and returns 1; else 0 with *out untouched. The one
  * rule for the game's sprites (r_game_sprites) and the still views'
  * (r_map_things). */
-int r_game_mesh(const struct tex_set *t, uint16_t type, uint32_t tick, fx_t x, fx_t y, fx_t z,
-		struct r_sprite *out);
+int r_game_mesh(const struct tex_set *t, const struct mesh_set *ms, uint16_t type, uint32_t tick,
+		fx_t x, fx_t y, fx_t z, struct r_sprite *out);
+
+/* The built-in colour of thing type `type`'s mesh into (r, g, b) and 1,
+ * or 0 (untouched) when it has no built-in mesh: the colour a loaded mesh
+ * without its own colour takes (app/mdir.h). */
+int r_game_mesh_colour(uint16_t type, int *r, int *g, int *b);
 
 #endif

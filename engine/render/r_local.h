@@ -167,6 +167,7 @@ struct r_vis {
 	/* a mesh (r_mesh.c) instead of a picture: mesh number (0: a sprite),
 	 * its rows y1..y2 on screen, colour, rotation and the thing's z */
 	int mesh, y1, y2;
+	const struct mesh *mp;         /* a loaded mesh (r_sprite.mp) or NULL */
 	uint8_t colour;
 	ang_t angle;
 	fx_t mz;
@@ -384,7 +385,8 @@ void r_things_draw(struct r_ctx *r, struct r_strip *s);
 /* r_mesh.c: meshes drawn as things */
 /* Fills the mesh fields of vs (and x1, x2, scale, gz, gzt) for sprite sp
  * with a mesh: 0, 1 when the mesh is not drawn (too near, too far to the
- * side or off the screen), -1 when sp->mesh is no built-in mesh. */
+ * side or off the screen), -1 when sp->mesh is no built-in mesh and sp->mp
+ * is NULL. */
 int r_mesh_project(struct r_ctx *r, const struct r_sprite *sp, struct r_vis *vs);
 /* Draws mesh vs in columns vx1..vx2 (inside strip s) between the clip
  * arrays ct (last row hidden above) and cb (first row hidden below). */

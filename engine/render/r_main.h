@@ -31,6 +31,7 @@
 
 struct lmap;
 struct map;
+struct mesh;
 struct tex_set;
 
 struct r_view {
@@ -59,7 +60,13 @@ struct r_sprite {
 	 * light and a Lambert term, clipped by the walls as a sprite is. */
 	uint8_t mesh;
 	uint8_t colour;
+	/* A mesh loaded at run time (struct mesh_set, engine/map/mesh.h),
+	 * drawn as the built-in ones are; mesh is then R_MESH_LOADED.
+	 * Borrowed: it outlives the frame. NULL otherwise. */
+	const struct mesh *mp;
 };
+
+#define R_MESH_LOADED 255              /* r_sprite.mesh of a loaded mesh (mp) */
 
 #define R_SPR_FULLBRIGHT 0x01          /* colormap 0, no fade (Doom's FF_FULLBRIGHT) */
 

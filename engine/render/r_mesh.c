@@ -65,7 +65,9 @@ int r_mesh_project(struct r_ctx *r, const struct r_sprite *sp, struct r_vis *vs)
 	int64_t half = (int64_t)r->w << (FX_SHIFT - 1), rr, dmin, dmax, zlo, zhi;
 	int64_t sx[4], sy[4], xmin, xmax, ymin, ymax, cy16 = (int64_t)r->cy2 * FX_HALF;
 
-	if (mesh_builtin_get(sp->mesh, &m) < 0)
+	if (sp->mp)
+		m = *sp->mp;
+	else if (mesh_builtin_get(sp->mesh, &m) < 0)
 		return -1;
 	r_to_view(r, sp->x, sp->y, &p);
 	rr = (int64_t)m.radius * 3 / 2 + FX_ONE;
@@ -104,6 +106,7 @@ int r_mesh_project(struct r_ctx *r, const struct r_sprite *sp, struct r_vis *vs)
 	vs->gz = (int64_t)sp->z + m.zmin;
 	vs->gzt = (int64_t)sp->z + m.zmax;
 	vs->mesh = sp->mesh;
+	vs->mp = sp->mp;
 	vs->colour = sp->colour;
 	vs->angle = sp->angle;
 	vs->mz = sp->z;
@@ -184,7 +187,11 @@ void r_mesh_draw(struct r_ctx *r, struct r_strip *s, const struct r_vis *vs, int
 	uint32_t id = r_id(R_IDK_SPRITE, (uint32_t)vs->order);
 	uint8_t *mcol, *mop;
 
-	if (mesh_builtin_get(vs->mesh, &m) < 0 || bw <= 0 || bh <= 0)
+	if (vs->mp)
+		m = *vs->mp;
+	else if (mesh_builtin_get(vs->mesh, &m) < 0)
+		return;
+	if (bw <= 0 || bh <= 0)
 		return;
 	/* the box: colours, then covered flags (mbuf), inverse depths (mdep);
 	 * kept by the strip for the next meshes and frames */

@@ -205,6 +205,7 @@ void r_things_project(struct r_ctx *r, const struct r_sprite *spr, int nspr)
 		vs->flip = flip;
 		vs->order = i;
 		vs->mesh = 0;
+		vs->mp = NULL;
 		vs->lvl = (sp->flags & R_SPR_FULLBRIGHT) ? 0 :
 			  r_scale_level(r, r_light_base(r->map->sectors[sec].light), vs->scale);
 	}

@@ -64,7 +64,7 @@ static void draw_gl(struct rgl_ctx *g, struct view *v, const struct sim *s, stru
 
 	tex_animate(tex, s->tick);
 	if (hud_world(s)) {
-		int n = r_game_sprites(s, tex, v->spr, v->spr_max);
+		int n = r_game_sprites(s, tex, NULL, v->spr, v->spr_max);
 
 		r_game_view(s, f->w, &rv);
 		rgl_render(g, s->map, tex, &rv, v->spr, n, f);

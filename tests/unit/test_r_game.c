@@ -54,8 +54,8 @@ static void sprites_follow_the_state(void **state)
 	/* else the stand-ins are not tested */
 	assert_true(tex_find_sprite(ts, "BOSS") < 0 && tex_find_sprite(ts, "SHEL") < 0);
 	sim_init(&s, m, &play);
-	assert_int_equal(r_game_sprites(&s, NULL, out, 16), 0);
-	n = r_game_sprites(&s, ts, out, 16);
+	assert_int_equal(r_game_sprites(&s, NULL, NULL, out, 16), 0);
+	n = r_game_sprites(&s, ts, NULL, out, 16);
 	assert_int_equal(n, 7);                         /* 3 enemies, 3 pickups, the lamp */
 	assert_int_equal(out[0].sprite, poss);
 	assert_int_equal(out[0].x, fx_from_int(300));
@@ -77,13 +77,13 @@ static void sprites_follow_the_state(void **state)
 	for (int i = 0; i < 6; i++)
 		assert_int_equal(out[i].mesh, 0);
 	s.tick += 35;
-	n = r_game_sprites(&s, ts, out, 16);
+	n = r_game_sprites(&s, ts, NULL, out, 16);
 	assert_int_equal(out[6].angle - (ang_t)(s.tick * (ANG90 / 35)), 0);
 	assert_true(out[6].angle - (ang_t)((s.tick - 35) * (ANG90 / 35)) == ANG90 - ANG90 % 35);
 	s.tick -= 35;
 	(void)colu;
 	/* max is respected */
-	assert_int_equal(r_game_sprites(&s, ts, out, 2), 2);
+	assert_int_equal(r_game_sprites(&s, ts, NULL, out, 2), 2);
 	/* a taken pickup is not drawn; a corpse is drawn at its last death
 	 * frame (Doom's dead zombieman, thing 18, is POSS frame L), unless the
 	 * sprite has no such frame (the baron's corpse, frame O, on POSS) */
@@ -92,7 +92,7 @@ static void sprites_follow_the_state(void **state)
 	s.g.en[0].anim = 1000;
 	s.g.en[2].state = G_E_DEAD;
 	s.g.en[2].anim = 1000;
-	n = r_game_sprites(&s, ts, out, 16);
+	n = r_game_sprites(&s, ts, NULL, out, 16);
 	assert_int_equal(n, 5);
 	assert_int_equal(out[0].x, fx_from_int(300));
 	assert_int_equal(out[0].frame, th_find(18)->frame - 'A');
@@ -102,14 +102,14 @@ static void sprites_follow_the_state(void **state)
 	 * full bright (the imp's attack is Doom's F, its flash G) */
 	s.g.en[1].state = G_E_ATTACK;
 	s.g.en[1].flash = 3;
-	n = r_game_sprites(&s, ts, out, 16);
+	n = r_game_sprites(&s, ts, NULL, out, 16);
 	assert_int_equal(out[1].frame, 'G' - 'A');
 	assert_int_equal(out[1].flags, R_SPR_FULLBRIGHT);
 	/* a frame the stand-in lacks is drawn as frame A (an arch-vile's pain,
 	 * frame Q, on POSS, which ends at L) */
 	s.g.en[2].state = G_E_PAIN;
 	s.g.en[2].type = 64;
-	n = r_game_sprites(&s, ts, out, 16);
+	n = r_game_sprites(&s, ts, NULL, out, 16);
 	assert_int_equal(n, 6);
 	assert_int_equal(out[2].sprite, poss);
 	assert_int_equal(out[2].frame, 0);
@@ -117,7 +117,7 @@ static void sprites_follow_the_state(void **state)
 	 * the renderer draws as its fallback checker */
 	keep = ts->num_sprites;
 	ts->num_sprites = 0;
-	n = r_game_sprites(&s, ts, out, 16);
+	n = r_game_sprites(&s, ts, NULL, out, 16);
 	assert_int_equal(n, 6);
 	for (int i = 0; i < n; i++)
 		assert_int_equal(out[i].sprite, 0);

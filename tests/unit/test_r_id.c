@@ -168,7 +168,7 @@ static void sprite_and_masked_ids_cover_their_texels(void **state)
 	struct tmap t;
 	static struct frame fr;
 	struct r_view v = { 0, 0, U(41), 0, 0 };
-	struct r_sprite s[2] = { { U(64), 0, 0, ANG180, 0, 0, 0, 0, 0 }, { U(64), 0, 0, ANG180, 2, 0, 0, 0, 0 } };
+	struct r_sprite s[2] = { { U(64), 0, 0, ANG180, 0, 0, 0, 0, 0, NULL }, { U(64), 0, 0, ANG180, 2, 0, 0, 0, 0, NULL } };
 	(void)state;
 
 	t_room(&t, 255, 0);
@@ -210,8 +210,8 @@ static void ids_leave_the_frame_unchanged(void **state)
 {
 	struct tmap t;
 	static struct frame a, b;
-	struct r_sprite s[3] = { { U(200), 0, 0, 0, 0, 0, 0, 0, 0 }, { U(64), U(32), 0, ANG90, 1, 0, 0, 0, 0 },
-				 { U(300), U(-40), 0, ANG180, 2, 0, R_SPR_FULLBRIGHT, 0, 0 } };
+	struct r_sprite s[3] = { { U(200), 0, 0, 0, 0, 0, 0, 0, 0, NULL }, { U(64), U(32), 0, ANG90, 1, 0, 0, 0, 0, NULL },
+				 { U(300), U(-40), 0, ANG180, 2, 0, R_SPR_FULLBRIGHT, 0, 0, NULL } };
 	(void)state;
 
 	t_window(&t, 24, 96);

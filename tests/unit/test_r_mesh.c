@@ -67,7 +67,7 @@ static int is_mesh(uint8_t c)
 
 static struct r_sprite lamp_at(int x, int y, ang_t a)
 {
-	struct r_sprite s = { U(x), U(y), 0, a, 0, 0, 0, MESH_B_LAMP, C_MESH };
+	struct r_sprite s = { U(x), U(y), 0, a, 0, 0, 0, MESH_B_LAMP, C_MESH, NULL };
 
 	return s;
 }

@@ -84,7 +84,7 @@ static uint8_t at(const struct frame *fr, int x, int y)
 
 static struct r_sprite spr_at(int x, int y, int z, ang_t facing, int sprite)
 {
-	struct r_sprite s = { U(x), U(y), U(z), facing, (uint16_t)sprite, 0, 0, 0, 0 };
+	struct r_sprite s = { U(x), U(y), U(z), facing, (uint16_t)sprite, 0, 0, 0, 0, NULL };
 
 	return s;
 }
