@@ -77,9 +77,9 @@ cp "$doc" "$tmp/doc"
 nrec=0
 for d in $sets; do
 	if [ "$d" = "$dir" ]; then
-		ends=exit
+		ends="exit"
 	else
-		ends=clear
+		ends="clear"
 	fi
 	for rec in "$d"/arena*.rec; do
 		"$tmp/replay" --no-render --quiet --balance "$rec" >"$tmp/row" || {
