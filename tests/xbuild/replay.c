@@ -24,6 +24,10 @@
  *     --rehash OUT      write the recording again as format 3 with the
  *                       state, frame and audio hashes of this replay
  *     --bench           print ticks per second to stderr
+ *     --set game.meshes=DIR
+ *                       draw with the meshes of DIR, as the daemon does
+ *                       with that setting (app/mdir.h: frames depend on
+ *                       them, the state does not); the only --set taken
  *     --balance         print, at the end, a line per stage played:
  *                       "balance STAGE MAP TICKS DAMAGE SHOTS HITS KILLS
  *                       DEATHS" (tests/replay/balance.sh, docs/game.md):
@@ -80,6 +84,7 @@
 #include "app/ct.h"
 #include "app/demo.h"
 #include "app/hear.h"
+#include "app/mdir.h"
 #include "app/view.h"
 #include "engine/core/hash.h"
 #include "engine/game/sim.h"
@@ -95,6 +100,7 @@
 struct rp_opts {
 	const char *file, *rehash;
 	const char *wads[CT_MAX_WADS], *map, *grid;
+	const char *meshes;        /* --set game.meshes=DIR, else NULL */
 	int nwads;
 	int render, quiet, verify, bench, modes, balance;
 	int w, h, level;
@@ -104,7 +110,8 @@ struct rp_opts {
 static int rp_usage(void)
 {
 	fprintf(stderr, "usage: replay [--no-render] [--size WxH] [--level N] [--wad F --map M | --grid G] [--until T] "
-			"[--quiet] [--verify] [--rehash OUT] [--bench] [--modes] [--balance] FILE\n");
+			"[--quiet] [--verify] [--rehash OUT] [--bench] [--modes] [--balance] "
+			"[--set game.meshes=DIR] FILE\n");
 	return 2;
 }
 
@@ -150,6 +157,14 @@ static int rp_args(int argc, char **argv, struct rp_opts *o)
 			i++;
 		} else if (strcmp(a, "--until") == 0 && v) {
 			o->until = strtoll(v, NULL, 10);
+			i++;
+		} else if (strcmp(a, "--set") == 0 && v) {
+			/* the one setting that changes what a replay draws */
+			if (strncmp(v, "game.meshes=", 12) != 0) {
+				fprintf(stderr, "replay: --set %s: only game.meshes=DIR is taken\n", v);
+				return -1;
+			}
+			o->meshes = v + 12;
 			i++;
 		} else if (strcmp(a, "--rehash") == 0 && v) {
 			o->rehash = v;
@@ -366,6 +381,7 @@ int main(int argc, char **argv)
 	struct ct ct = { 0 };
 	struct ct_spec spec = { .lights = 1 };
 	struct view view = { 0 };
+	struct mdir meshes = { 0 };
 	struct demo demo = { 0 };
 	static struct hear hear;
 	struct sim sim;
@@ -454,6 +470,15 @@ int main(int argc, char **argv)
 		if (!f.px || r_new(f.w, f.h, &r) < 0 || view_init(&view, &ct, r, 0) < 0) {
 			fprintf(stderr, "replay: renderer %dx%d: out of memory\n", f.w, f.h);
 			goto out;
+		}
+		if (o.meshes) {
+			/* refused and ignored files are the daemon's business (it
+			 * logs them); what loads is drawn, as the daemon draws it */
+			if (mdir_load(&meshes, o.meshes, NULL, NULL) < 0) {
+				fprintf(stderr, "replay: game.meshes: %s: cannot be read\n", o.meshes);
+				goto out;
+			}
+			view.meshes = &meshes.set;
 		}
 	}
 	if (o.rehash) {
@@ -549,6 +574,7 @@ out:
 	if (wr && rec_writer_close(wr) < 0 && code == 0)
 		code = 2;
 	view_free(&view);
+	mdir_free(&meshes);
 	demo_free(&demo);
 	r_free(r);
 	free(f.px);

@@ -5,4 +5,4 @@
 # that carry content loading and recordings. Run from the tree's top.
 echo tests/xbuild/replay.c $(ls engine/*/*.c | grep -v '^engine/gl/') \
 	input/rec.c input/rec_check.c input/scr.c input/act.c input/io.c input/txt.c \
-	app/ct.c app/view.c app/demo.c app/cmd.c app/hear.c
+	app/ct.c app/view.c app/demo.c app/cmd.c app/hear.c app/mdir.c
