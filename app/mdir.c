@@ -5,18 +5,16 @@
 
 #include <dirent.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "engine/core/hash.h"
 #include "engine/map/th.h"
 #include "engine/render/r_game.h"
+#include "input/io.h"
 
 #define MDIR_NAMES 256             /* entries looked at (more: noted, skipped) */
 #define MDIR_GREY 160              /* a mesh without a colour of its own */
@@ -53,46 +51,20 @@ static uint16_t mdir_type(const char *name)
 	return v >= 1 && v <= 65535 ? (uint16_t)v : 0;
 }
 
-/* Reads regular file path whole into *buf (malloc'd, *len bytes): 0, or a
- * negative errno with why filled. O_NONBLOCK: a FIFO must not block. */
+/* Reads regular file path whole (input/io.h, at most MDIR_FILE_MAX bytes)
+ * into *buf: 0, or a negative errno with why filled. */
 static int mdir_read(const char *path, char **buf, size_t *len, char *why, size_t wlen)
 {
-	struct stat st;
-	ssize_t got;
-	int fd, rc = 0;
+	uint8_t *b = NULL;
+	int rc = io_read_file(path, MDIR_FILE_MAX, IO_REGULAR, &b, len);
 
-	*buf = NULL;
-	fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-	if (fd < 0) {
-		rc = -errno;
-		snprintf(why, wlen, "%s", strerror(-rc));
-		return rc;
-	}
-	if (fstat(fd, &st) < 0) {
-		rc = -errno;
-		snprintf(why, wlen, "%s", strerror(-rc));
-	} else if (!S_ISREG(st.st_mode)) {
-		rc = -EINVAL;
+	*buf = (char *)b;
+	if (rc == -EINVAL || rc == -EISDIR)
 		snprintf(why, wlen, "not a regular file");
-	} else if (st.st_size > (off_t)MDIR_FILE_MAX) {
-		rc = -E2BIG;
+	else if (rc == -EFBIG)
 		snprintf(why, wlen, "larger than %u bytes", MDIR_FILE_MAX);
-	} else if (!(*buf = malloc((size_t)st.st_size + 1))) {
-		rc = -ENOMEM;
-		snprintf(why, wlen, "out of memory");
-	} else {
-		/* one read past the size: a file that grew is refused, not cut */
-		got = read(fd, *buf, (size_t)st.st_size + 1);
-		if (got != (ssize_t)st.st_size) {
-			rc = got < 0 ? -errno : -EIO;
-			snprintf(why, wlen, "%s", got < 0 ? strerror(errno) : "not read whole");
-			free(*buf);
-			*buf = NULL;
-		} else {
-			*len = (size_t)got;
-		}
-	}
-	close(fd);
+	else if (rc < 0)
+		snprintf(why, wlen, "%s", strerror(-rc));
 	return rc;
 }
 

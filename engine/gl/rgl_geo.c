@@ -1115,6 +1115,24 @@ static fx_t rgl_clamp(fx_t v)
 	return v > MAP_COORD_MAX ? MAP_COORD_MAX : v < -MAP_COORD_MAX ? -MAP_COORD_MAX : v;
 }
 
+/* A sprite's or mesh's light level, as r_things.c gives it: its sector's
+ * light faded by its scale (w/2) / d (scale: 16.16 of that, shifted as
+ * r_scale_level takes it), in r_scale_level's integer steps; 0 when full
+ * bright. */
+static int rgl_spr_level(const struct rgl_ctx *g, const struct map *m, uint32_t sec,
+			 int64_t scale, int fullbright)
+{
+	int64_t fade;
+	int level;
+
+	if (fullbright)
+		return 0;
+	fade = ((scale >> 16) * (((int64_t)RGL_FADE_DIST << 17) / g->w)) >> 32;
+	level = rgl_light_base(m->sectors[sec].light) -
+		(fade > RGL_FADE_MAX ? RGL_FADE_MAX : (int)fade);
+	return level < 0 ? 0 : level;
+}
+
 /* Sprite i as a billboard (r_things.c's projection and rotation). */
 static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_set *t,
 		      const struct r_sprite *sp, int i)
@@ -1123,6 +1141,7 @@ static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_s
 	int64_t dx = (int64_t)gx - g->ex, dy = (int64_t)gy - g->ey;
 	int64_t d = (dx * g->vcos + dy * g->vsin) >> FX_SHIFT;
 	int64_t l = (dx * g->vsin - dy * g->vcos) >> FX_SHIFT;
+	int64_t scale;
 	const struct tex_pic *pic;
 	int level, pi, flip;
 	double x0, x1, zt, zb, t0, t1;
@@ -1141,17 +1160,8 @@ static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_s
 	pic = &t->sprpics[pi];
 	sec = map_point_sector(m, gx, gy);
 	g->spr_sec[i] = sec;
-	/* the level r_things.c gives it: faded by its scale (w/2) / d, in
-	 * r_scale_level's integer steps, or 0 when full bright */
-	level = 0;
-	if (!(sp->flags & R_SPR_FULLBRIGHT)) {
-		int64_t scale = ((int64_t)g->w << 47) / d;
-		int64_t fade = ((scale >> 16) * (((int64_t)RGL_FADE_DIST << 17) / g->w)) >> 32;
-
-		level = rgl_light_base(m->sectors[sec].light) -
-			(fade > RGL_FADE_MAX ? RGL_FADE_MAX : (int)fade);
-		level = level < 0 ? 0 : level;
-	}
+	scale = ((int64_t)g->w << 47) / d;
+	level = rgl_spr_level(g, m, sec, scale, sp->flags & R_SPR_FULLBRIGHT);
 	rgl_surf(&s, RGL_SPRITE, RGL_TEXREF(RGL_TEX_SPRITE, pi), 255, level, RGL_MODE_FIXED,
 		 r_id(R_IDK_SPRITE, (uint32_t)i));
 	/* drawn in the list's order: at equal depth the later one shows, as
@@ -1180,7 +1190,7 @@ static int rgl_sprite(struct rgl_ctx *g, const struct map *m, const struct tex_s
 		g->sprs[i].gzt = zt;
 		g->sprs[i].gx = gx;
 		g->sprs[i].gy = gy;
-		g->sprs[i].scale = ((int64_t)g->w << 47) / d;
+		g->sprs[i].scale = scale;
 		g->sbox[0] = bx0 < g->sbox[0] ? bx0 : g->sbox[0];
 		g->sbox[1] = by0 < g->sbox[1] ? by0 : g->sbox[1];
 		g->sbox[2] = bx1 > g->sbox[2] ? bx1 : g->sbox[2];
@@ -1231,7 +1241,7 @@ static int rgl_mesh(struct rgl_ctx *g, const struct map *m, const struct r_sprit
 	int64_t dx = (int64_t)sp->x - g->ex, dy = (int64_t)sp->y - g->ey;
 	int64_t d = (dx * g->vcos + dy * g->vsin) >> FX_SHIFT;
 	int64_t l = (dx * g->vsin - dy * g->vcos) >> FX_SHIFT;
-	int64_t rr, dmin, zlo, zhi;
+	int64_t rr, dmin, zlo, zhi, scale;
 	fx_t c = tab_cos(sp->angle), sn = tab_sin(sp->angle);
 	double f = g->w / 2.0, cy = g->h / 2.0 - g->shear, xmin = 1e30, xmax = -1e30;
 	double ymin = 1e30, ymax = -1e30;
@@ -1239,7 +1249,7 @@ static int rgl_mesh(struct rgl_ctx *g, const struct map *m, const struct r_sprit
 	struct rgl_surf s;
 	struct rgl_vtx *v;
 	uint32_t sec;
-	int base = 0;
+	int base;
 
 	if (sp->mp) {
 		me = *sp->mp;
@@ -1269,14 +1279,8 @@ static int rgl_mesh(struct rgl_ctx *g, const struct map *m, const struct r_sprit
 		return 0;
 	sec = map_point_sector(m, gx, gy);
 	g->spr_sec[i] = sec;
-	if (!(sp->flags & R_SPR_FULLBRIGHT)) {
-		int64_t scale = ((int64_t)g->w << 47) / d;
-		int64_t fade = ((scale >> 16) * (((int64_t)RGL_FADE_DIST << 17) / g->w)) >> 32;
-
-		base = rgl_light_base(m->sectors[sec].light) -
-		       (fade > RGL_FADE_MAX ? RGL_FADE_MAX : (int)fade);
-		base = base < 0 ? 0 : base;
-	}
+	scale = ((int64_t)g->w << 47) / d;      /* d > 0: dmin >= RGL_SPR_NEAR above */
+	base = rgl_spr_level(g, m, sec, scale, sp->flags & R_SPR_FULLBRIGHT);
 	g->sprs[i].x0 = (int)floor(xmin);
 	g->sprs[i].x1 = (int)floor(xmax);
 	g->sprs[i].d = (double)d / 65536.0;
@@ -1285,7 +1289,7 @@ static int rgl_mesh(struct rgl_ctx *g, const struct map *m, const struct r_sprit
 	g->sprs[i].gx = gx;
 	g->sprs[i].gy = gy;
 	g->sprs[i].mesh = 1;
-	g->sprs[i].scale = ((int64_t)g->w << 47) / d;
+	g->sprs[i].scale = scale;
 	g->sprs[i].y0 = (int)floor(ymin);
 	g->sprs[i].y1 = (int)ceil(ymax) + 1;
 	g->sbox[0] = (int)floor(xmin) < g->sbox[0] ? (int)floor(xmin) : g->sbox[0];

@@ -13,8 +13,8 @@ trap 'rm -rf "$scratch"' EXIT
 # JOBS targets fuzz at once (default: the number of cores; each libFuzzer
 # run is one thread): each has its own scratch corpus and log, and the
 # reports are printed in the targets' order afterwards.
-JOBS=${JOBS:-$(nproc 2>/dev/null || echo 1)}
-one() { # $1: target binary; writes $scratch/<name>.report, exits 1 on failure
+. tests/pool.sh
+one() { # $1: target binary; prints its report, returns 1 on failure
 	bin=$1
 	name=$(basename "$bin")
 	seeds=tests/fuzz/corpus/$name
@@ -47,25 +47,12 @@ for bin in "$dir"/fuzz_*; do
 	targets="$targets $bin"
 done
 [ -n "$targets" ] || { echo "no fuzz targets in $dir"; exit 1; }
-# each worker takes the next target no other has claimed (mkdir is atomic)
-worker() {
-	for bin in $targets; do
-		name=$(basename "$bin")
-		mkdir "$scratch/$name.claim" 2>/dev/null || continue
-		one "$bin" >"$scratch/$name.report" 2>&1
-		echo $? >"$scratch/$name.rc"
-	done
-}
-w=0
-while [ "$w" -lt "$JOBS" ]; do
-	worker &
-	w=$((w + 1))
-done
-wait
+pool_run "$scratch" one $targets
 fail=0
+k=0
 for bin in $targets; do
-	name=$(basename "$bin")
-	cat "$scratch/$name.report"
-	[ "$(cat "$scratch/$name.rc" 2>/dev/null || echo 1)" -eq 0 ] || fail=1
+	k=$((k + 1))
+	cat "$scratch/$k.log"
+	[ "$(cat "$scratch/$k.rc" 2>/dev/null || echo 1)" -eq 0 ] || fail=1
 done
 exit "$fail"
