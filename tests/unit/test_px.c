@@ -413,6 +413,48 @@ static void blit_scale_1_and_3(void **state)
 	}
 }
 
+/* The scale-1 32-bit rows (streaming stores where SSE2 is there): rows of
+ * every width 1..40 written at every byte offset 0..15 from a 16-byte
+ * boundary (the store loop starts only on one, and a pitch that is not a
+ * multiple of 4 never reaches one) show each frame pixel's table value,
+ * and the bytes before and after the row are untouched. */
+static void blit_scale_1_rows_any_alignment(void **state)
+{
+	enum { MAXW = 40, GUARD = 32 };
+	uint8_t src[MAXW];
+	_Alignas(16) uint8_t buf[GUARD + MAXW * 4 + GUARD];
+	struct px_table t;
+	(void)state;
+
+	make_table(&t, 4);
+	for (int i = 0; i < MAXW; i++)
+		src[i] = (uint8_t)(17 + 5 * i);
+	for (int w = 1; w <= MAXW; w++) {
+		for (int off = 0; off < 16; off++) {
+			struct px_layout *l = layout(w, 1, 0, 0, w, 1);
+			uint8_t *d = buf + GUARD + off;
+
+			assert_int_equal(px_layout_init(l), 0);
+			assert_int_equal(l->scale, 1);
+			memset(buf, SENTINEL, sizeof(buf));
+			px_blit(l, &t, src, d, (size_t)w * 4);
+			for (int x = 0; x < w; x++) {
+				uint32_t got = read_px(d + 4 * x, 4);
+
+				if (got != t.v[src[x]])
+					fail_msg("width %d offset %d: pixel %d is %#x, want %#x", w,
+						 off, x, got, t.v[src[x]]);
+			}
+			for (size_t b = 0; b < sizeof(buf); b++)
+				if ((b < GUARD + (size_t)off || b >= GUARD + (size_t)off + 4 * (size_t)w) &&
+				    buf[b] != SENTINEL)
+					fail_msg("width %d offset %d: byte %zu outside the row written",
+						 w, off, b);
+			free(l);
+		}
+	}
+}
+
 /* Fill: each corner of the panel shows the frame corner the rotation puts
  * there, and nothing is black. */
 static void blit_fill_maps_corners_to_corners(void **state)
@@ -617,6 +659,7 @@ int main(void)
 		cmocka_unit_test(blit_24bpp_padded_all_rotations),
 		cmocka_unit_test(blit_32bpp_padded_all_rotations),
 		cmocka_unit_test(blit_scale_1_and_3),
+		cmocka_unit_test(blit_scale_1_rows_any_alignment),
 		cmocka_unit_test(blit_fill_maps_corners_to_corners),
 		cmocka_unit_test(blit_downscale_shows_whole_frame),
 		cmocka_unit_test(panel_draw_follows_frame_size_and_refuses_bad),
