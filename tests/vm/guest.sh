@@ -269,6 +269,12 @@ phase_sandbox() {
 	capeff=$(awk '/^CapEff:/ { print $2 }' "/proc/$pid/status")
 	# CAP_SYS_TTY_CONFIG is capability 26: 0x4000000, nothing else.
 	check capabilities "CapEff $capeff (only CAP_SYS_TTY_CONFIG)" [ "$capeff" = 0000000004000000 ]
+	# stat's field 19 (the 17th after the name in parentheses): the nice
+	# level the unit's Nice= gave the process
+	ni=$(sed 's/.*) //' "/proc/$pid/stat" | cut -d' ' -f17)
+	want_ni=$(systemctl show -p Nice --value "$U")
+	check nice "main process nice $ni (the unit's Nice=$want_ni)" \
+		[ "$want_ni" = -10 -a "$ni" = "$want_ni" ]
 	ls -l "/proc/$pid/fd" > "$R/daemon-fds.txt" 2>&1
 	# The unit's device policy is a BPF program on its cgroup: probe from a
 	# process placed in that cgroup, once as root (only the policy can refuse)
