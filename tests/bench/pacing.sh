@@ -38,12 +38,19 @@ echo "pacing: $SECS s of play (E1M1, random input) replayed in real time at 1920
 echo "  threads, file framebuffer 1920x1080 xrgb8888 on $(df --output=fstype "$shm" | tail -1)," \
 	"${PRIO:-priority unchanged (not root, or no Nice= in the unit)}"
 echo "  load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
+# steal: time the hypervisor ran something else while this machine's
+# vCPUs wanted to run (the 8th number of /proc/stat's cpu line, in ticks
+# of 1/USER_HZ s), summed over all vCPUs; 0 on bare metal
+steal() { awk '/^cpu / { print $9 }' /proc/stat; }
+st0=$(steal)
 $PRIO "$BIN" $common $content replay "$tmp/play.rec" --realtime --quiet --size 1920x1080 \
 	--set game.render_threads=2 --set display.backend=file --set display.file="$shm/fb" \
 	--set display.file_width=1920 --set display.file_height=1080 >/dev/null 2>"$tmp/err"
 rc=$?
 grep 'summary:' "$tmp/err" | sed 's/^arcaded: //'
 echo "  load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "  steal time during the run (the host running others on this machine's vCPUs):" \
+	"$(( ($(steal) - st0) * 1000 / $(getconf CLK_TCK) )) ms"
 ticks=$(sed -n 's/.*summary: \([0-9]*\) ticks, .*/\1/p' "$tmp/err")
 dropped=$(sed -n 's/.* \([0-9]*\) ticks dropped.*/\1/p' "$tmp/err")
 late=$(sed -n 's/.* \([0-9]*\) frames late.*/\1/p' "$tmp/err")

@@ -29,7 +29,8 @@
  *
  * rbench --capacity N prints capacity=X: how many times faster N threads
  * run pure integer work than one, on this machine as it is now (a check of
- * what the thread figures can show).
+ * what the thread figures can show), and mem_capacity=Y: the same for
+ * filling memory.
  */
 #include <errno.h>
 #include <inttypes.h>
@@ -113,20 +114,50 @@ static void spin_job(void *arg, int i)
 	((volatile uint64_t *)arg)[i] = x;
 }
 
+/* The same for memory: each of 8 jobs fills its own 8 MiB buffer 16
+ * times (1 GiB in all, far past the caches). Two threads on an idle
+ * machine write about twice as fast as one; a neighbour saturating the
+ * memory system (in a VM, another tenant) makes it less, and the renderer
+ * at large sizes, which mostly writes memory, can then scale no better. */
+#define CAP_MEM (8u << 20)
+
+static void mem_job(void *arg, int i)
+{
+	uint8_t *b = ((uint8_t **)arg)[i];
+
+	for (int k = 0; k < 16; k++) {
+		memset(b, k + i, CAP_MEM);
+		__asm__ __volatile__("" : : "r"(b) : "memory");
+	}
+}
+
 static int capacity(int n)
 {
-	uint64_t out[8], t[2];
+	uint64_t out[8], t[2], m[2];
+	uint8_t *bufs[8];
 	struct pool *p;
 
+	for (int i = 0; i < 8; i++) {
+		bufs[i] = malloc(CAP_MEM);
+		if (!bufs[i])
+			return 1;
+		memset(bufs[i], 1, CAP_MEM);
+	}
 	for (int k = 0; k < 2; k++) {
 		if (pool_new(k ? n : 1, &p) < 0)
 			return 1;
 		t[k] = now_ns();
 		pool_run(p, 8, spin_job, out);
 		t[k] = now_ns() - t[k];
+		m[k] = now_ns();
+		pool_run(p, 8, mem_job, bufs);
+		m[k] = now_ns() - m[k];
 		pool_free(p);
 	}
-	printf("capacity=%.2f threads=%d\n", (double)t[0] / (double)t[1], n);
+	printf("capacity=%.2f mem_capacity=%.2f threads=%d\n", (double)t[0] / (double)t[1],
+	       (double)m[0] / (double)m[1], n);
+	for (int i = 0; i < 8; i++)
+		free(bufs[i]);
 	return 0;
 }
 
