@@ -12,6 +12,7 @@
 #include <strings.h>
 
 #include "engine/core/hash.h"
+#include "engine/core/num.h"
 #include "engine/map/th.h"
 #include "engine/render/r_game.h"
 #include "input/io.h"
@@ -68,17 +69,6 @@ static int mdir_read(const char *path, char **buf, size_t *len, char *why, size_
 	return rc;
 }
 
-static int mdir_hex(char c)
-{
-	if (c >= '0' && c <= '9')
-		return c - '0';
-	if (c >= 'a' && c <= 'f')
-		return c - 'a' + 10;
-	if (c >= 'A' && c <= 'F')
-		return c - 'A' + 10;
-	return -1;
-}
-
 /* The colour line "# arcaded colour RRGGBB" of buf, if any: 1 with *rgb
  * set, 0 without one, -1 with *line set for one that is malformed. */
 static int mdir_colour(const char *buf, size_t len, uint8_t rgb[3], unsigned *line)
@@ -102,7 +92,7 @@ static int mdir_colour(const char *buf, size_t len, uint8_t rgb[3], unsigned *li
 			if (hl != 6)
 				return -1;
 			for (int k = 0; k < 3; k++) {
-				int a = mdir_hex(h[2 * k]), b = mdir_hex(h[2 * k + 1]);
+				int a = num_hex(h[2 * k]), b = num_hex(h[2 * k + 1]);
 				if (a < 0 || b < 0)
 					return -1;
 				rgb[k] = (uint8_t)(16 * a + b);

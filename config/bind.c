@@ -15,6 +15,7 @@
 #include <strings.h>
 
 #include "config/cini.h"
+#include "engine/core/num.h"
 #include "input/in.h"
 #include "input/txt.h"
 
@@ -87,16 +88,9 @@ static int bind_numeric_key(const char *name)
 	if (n < 3 || n > 6 || name[0] != '0' || (name[1] != 'x' && name[1] != 'X'))
 		return -1;
 	for (size_t i = 2; i < n; i++) {
-		char c = name[i];
-		int d;
+		int d = num_hex(name[i]);
 
-		if (c >= '0' && c <= '9')
-			d = c - '0';
-		else if (c >= 'a' && c <= 'f')
-			d = c - 'a' + 10;
-		else if (c >= 'A' && c <= 'F')
-			d = c - 'A' + 10;
-		else
+		if (d < 0)
 			return -1;
 		code = code * 16 + d;
 	}

@@ -14,6 +14,7 @@
 #include <strings.h>
 
 #include "config/cini.h"
+#include "engine/core/num.h"
 
 void prof_init(struct prof_set *s)
 {
@@ -33,17 +34,11 @@ static int hex4(const char *s, size_t n)
 	if (n != 4)
 		return -1;
 	for (size_t i = 0; i < n; i++) {
-		char c = s[i];
+		int d = num_hex(s[i]);
 
-		v *= 16;
-		if (c >= '0' && c <= '9')
-			v += c - '0';
-		else if (c >= 'a' && c <= 'f')
-			v += c - 'a' + 10;
-		else if (c >= 'A' && c <= 'F')
-			v += c - 'A' + 10;
-		else
+		if (d < 0)
 			return -1;
+		v = v * 16 + d;
 	}
 	return v;
 }

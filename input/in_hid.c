@@ -4,7 +4,6 @@
  */
 #include "input/in_hid.h"
 
-#include <ctype.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -96,9 +95,11 @@ static int hex16(const char *v, size_t len)
 	if (len == 0 || len > 4)
 		return -1;
 	for (size_t i = 0; i < len; i++) {
-		if (!isxdigit((unsigned char)v[i]))
+		int d = num_hex(v[i]);
+
+		if (d < 0)
 			return -1;
-		n = n * 16 + (isdigit((unsigned char)v[i]) ? v[i] - '0' : tolower(v[i]) - 'a' + 10);
+		n = n * 16 + d;
 	}
 	return n;
 }

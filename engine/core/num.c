@@ -1,10 +1,21 @@
 /*
- * num: checked decimal numbers (num.h).
+ * num: checked decimal numbers and hex digits (num.h).
  */
 #include "engine/core/num.h"
 
 #include <errno.h>
 #include <stdlib.h>
+
+int num_hex(int c)
+{
+	if (c >= '0' && c <= '9')
+		return c - '0';
+	if (c >= 'a' && c <= 'f')
+		return c - 'a' + 10;
+	if (c >= 'A' && c <= 'F')
+		return c - 'A' + 10;
+	return -1;
+}
 
 int num_parse(const char *s, int64_t lo, int64_t hi, int64_t *out)
 {

@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "engine/core/num.h"
+
 #define FIX_DIR "tests/data/hid/"
 #define FIX_MAX_REPORTS 512
 #define FIX_REPORT_MAX 64
@@ -21,17 +23,6 @@ struct fix_reports {
 	size_t len[FIX_MAX_REPORTS];
 	uint8_t b[FIX_MAX_REPORTS][FIX_REPORT_MAX];
 };
-
-static inline int fix_hex(int c)
-{
-	if (c >= '0' && c <= '9')
-		return c - '0';
-	if (c >= 'a' && c <= 'f')
-		return c - 'a' + 10;
-	if (c >= 'A' && c <= 'F')
-		return c - 'A' + 10;
-	return -1;
-}
 
 /* Reads the hex bytes of FIX_DIR name into buf; a newline ends a report
  * when lines is set. Returns bytes read (all lines), or -1 if the file is
@@ -52,7 +43,7 @@ static inline long fix_read(const char *name, uint8_t *buf, size_t cap, struct f
 	if (lines)
 		memset(lines, 0, sizeof(*lines));
 	while ((c = fgetc(f)) != EOF) {
-		int v = fix_hex(c);
+		int v = num_hex(c);
 
 		if (v >= 0) {
 			if (hi < 0) {

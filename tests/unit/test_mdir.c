@@ -25,6 +25,7 @@
 #include "engine/map/tex.h"
 #include "engine/render/r_game.h"
 #include "engine/render/r_main.h"
+#include "file_fixture.h"
 #include "g_fixture.h"
 
 static char dir[64];
@@ -49,18 +50,6 @@ static void note(void *user, int bad, const char *msg)
 		nign++;
 	strncat(notes, msg, sizeof(notes) - strlen(notes) - 2);
 	strcat(notes, "\n");
-}
-
-static void put(const char *name, const char *text)
-{
-	char path[128];
-	FILE *f;
-
-	snprintf(path, sizeof(path), "%s/%s", dir, name);
-	f = fopen(path, "w");
-	assert_non_null(f);
-	fputs(text, f);
-	fclose(f);
 }
 
 static int setup(void **state)
@@ -103,7 +92,7 @@ static void good_mesh_is_drawn_for_its_type(void **state)
 	int n, k, diff = 0;
 
 	(void)state;
-	put("2012.obj", pyramid);
+	ff_put(dir, "2012.obj", pyramid);
 	assert_int_equal(mdir_load(&d, dir, note, NULL), 1);
 	assert_int_equal(d.set.n, 1);
 	assert_ptr_equal(d.set.v, d.v);
@@ -165,9 +154,9 @@ static void bad_file_refused_with_file_and_line(void **state)
 
 	(void)state;
 	/* line 3 names a vertex the file lacks */
-	put("2028.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
-	put("0005.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n# arcaded colour 12345\n");
-	put("2012.obj", pyramid);
+	ff_put(dir, "2028.obj", "v 0 0 0\nv 1 0 0\nf 1 2 9\n");
+	ff_put(dir, "0005.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n# arcaded colour 12345\n");
+	ff_put(dir, "2012.obj", pyramid);
 	{
 		/* past MDIR_FILE_MAX: refused unread, even as comments */
 		char path[128];
@@ -202,13 +191,13 @@ static void other_names_ignored_with_a_note(void **state)
 	struct mdir d;
 
 	(void)state;
-	put("lamp.obj", pyramid);
-	put("readme.txt", "hello\n");
-	put("3004.obj", pyramid);          /* zombieman: not drawn as a mesh */
-	put("20000.obj", pyramid);         /* no such thing */
-	put("2012.OBJ", pyramid);
-	put("02012.obj", pyramid);         /* 2012, before "2012.OBJ" in name order */
-	put(".hidden.obj", pyramid);       /* skipped without a note */
+	ff_put(dir, "lamp.obj", pyramid);
+	ff_put(dir, "readme.txt", "hello\n");
+	ff_put(dir, "3004.obj", pyramid);          /* zombieman: not drawn as a mesh */
+	ff_put(dir, "20000.obj", pyramid);         /* no such thing */
+	ff_put(dir, "2012.OBJ", pyramid);
+	ff_put(dir, "02012.obj", pyramid);         /* 2012, before "2012.OBJ" in name order */
+	ff_put(dir, ".hidden.obj", pyramid);       /* skipped without a note */
 	{
 		char fifo[128];
 		snprintf(fifo, sizeof(fifo), "%s/2014.obj", dir);
@@ -234,8 +223,8 @@ static void colour_defaults_and_no_directory(void **state)
 
 	(void)state;
 	/* no colour line: the lamp's brass, a medikit's grey */
-	put("2028.obj", pyramid + strlen("# a marker\n# arcaded colour 20e040\n"));
-	put("2012.obj", pyramid + strlen("# a marker\n# arcaded colour 20e040\n"));
+	ff_put(dir, "2028.obj", pyramid + strlen("# a marker\n# arcaded colour 20e040\n"));
+	ff_put(dir, "2012.obj", pyramid + strlen("# a marker\n# arcaded colour 20e040\n"));
 	assert_int_equal(mdir_load(&d, dir, note, NULL), 2);
 	assert_int_equal(d.v[0].type, 2012);
 	assert_int_equal(d.v[0].r, 160);

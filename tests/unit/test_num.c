@@ -4,6 +4,7 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
+#include <string.h>
 #include <cmocka.h>
 
 #include "engine/core/num.h"
@@ -64,12 +65,28 @@ static void the_range_is_inclusive_and_checked(void **state)
 	assert_int_equal(num_parse("99999999999999999999999x", 0, 10, &v), -EINVAL);
 }
 
+/* Every byte value: the sixteen digits of each case give 0..15 (a-f and
+ * A-F alike), every other byte -1. */
+static void hex_digits_and_nothing_else(void **state)
+{
+	(void)state;
+	for (int c = 0; c < 256; c++) {
+		const char *lo = "0123456789abcdef", *up = "0123456789ABCDEF";
+		const char *a = c ? strchr(lo, c) : NULL, *b = c ? strchr(up, c) : NULL;
+		int want = a ? (int)(a - lo) : b ? (int)(b - up) : -1;
+
+		if (num_hex(c) != want)
+			fail_msg("byte %d: %d, want %d", c, num_hex(c), want);
+	}
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(decimal_numbers_with_a_sign_parse),
 		cmocka_unit_test(other_text_is_einval),
 		cmocka_unit_test(the_range_is_inclusive_and_checked),
+		cmocka_unit_test(hex_digits_and_nothing_else),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "app/wads.h"
+#include "file_fixture.h"
 
 static char dir[64];
 
@@ -53,18 +54,6 @@ static void write_wad(const char *name, const char *magic, const char *const *lu
 	f = fopen(path, "wb");
 	assert_non_null(f);
 	assert_int_equal(fwrite(buf, 1, cut ? cut : len, f), cut ? cut : len);
-	fclose(f);
-}
-
-static void write_text(const char *name, const char *text)
-{
-	char path[128];
-	FILE *f;
-
-	snprintf(path, sizeof(path), "%s/%s", dir, name);
-	f = fopen(path, "w");
-	assert_non_null(f);
-	fputs(text, f);
 	fclose(f);
 }
 
@@ -111,7 +100,7 @@ static int setup(void **state)
 	write_wad("a_extra.WAD", "PWAD", pwad, 4, 0);
 	/* the directory promised 6 entries; 2 of them are missing */
 	write_wad("c_trunc.wad", "IWAD", doom, 6, 12 + 16 * 4);
-	write_text("d_text.wad", "these are not the maps you are looking for\n");
+	ff_put(dir, "d_text.wad", "these are not the maps you are looking for\n");
 	write_wad("e_nomaps.wad", "PWAD", nomaps, 4, 0);
 	write_wad(".hidden.wad", "IWAD", doom, 6, 0);
 	write_wad("f_doom.wad.bak", "IWAD", doom, 6, 0);
