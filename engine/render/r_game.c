@@ -198,14 +198,16 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, const struct me
 	for (int i = 0; i < s->g.num_pickups; i++) {
 		const struct g_pickup *p = &s->g.pk[i];
 		struct g_thing_info ti;
+		fx_t floor_h;
+
 		if (p->taken)
 			continue;
 		g_thing_info(p->type, &ti);
 		/* on its floor as it is now (a lift carries it) */
-		if (r_put_mesh(&o, s, p->type, p->x, p->y,
-			       s->w.sec[map_point_sector(m, p->x, p->y)].floor_h))
+		floor_h = s->w.sec[map_point_sector(m, p->x, p->y)].floor_h;
+		if (r_put_mesh(&o, s, p->type, p->x, p->y, floor_h))
 			continue;
-		r_put(&o, p->x, p->y, s->w.sec[map_point_sector(m, p->x, p->y)].floor_h, 0,
+		r_put(&o, p->x, p->y, floor_h, 0,
 		      r_sprite_index(t, ti.sprite, p->kind == G_P_HEALTH ? R_STANDIN_HEALTH : R_STANDIN_PICKUP),
 		      ti.stand + (ti.frames > 1 ? (int)(s->tick / R_ANIM % ti.frames) : 0),
 		      ti.bright, 0);
@@ -213,13 +215,17 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, const struct me
 	for (uint32_t i = 0; i < m->num_things; i++) {
 		const struct map_thing *th = &m->things[i];
 		struct g_thing_info ti;
+		fx_t floor_h;
+
 		g_thing_info(th->type, &ti);
 		if ((ti.cls != G_C_LIGHT && ti.cls != G_C_DECOR) || !ti.sprite[0])
 			continue;
-		if (r_put_mesh(&o, s, th->type, th->x, th->y,
-			       s->w.sec[map_point_sector(m, th->x, th->y)].floor_h))
+		/* one BSP descent per thing a frame: this runs before the
+		 * renderer's threads start */
+		floor_h = s->w.sec[map_point_sector(m, th->x, th->y)].floor_h;
+		if (r_put_mesh(&o, s, th->type, th->x, th->y, floor_h))
 			continue;
-		r_put(&o, th->x, th->y, s->w.sec[map_point_sector(m, th->x, th->y)].floor_h,
+		r_put(&o, th->x, th->y, floor_h,
 		      th->angle, r_sprite_index(t, ti.sprite, ti.cls == G_C_LIGHT ? R_STANDIN_LIGHT : R_STANDIN_DECOR),
 		      ti.stand + (ti.frames > 1 ? (int)(s->tick / R_ANIM % ti.frames) : 0),
 		      ti.bright, 0);

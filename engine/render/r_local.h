@@ -208,14 +208,18 @@ struct r_strip {
 	int ncols, maxcols;
 	int32_t *order, *act, *next;    /* band scratch, maxcols entries each */
 	int32_t *band;                  /* nbands + 1 counts */
-	int32_t *spans;                 /* indices into ctx.spans crossing it */
-	int nspans, maxspans;
 	uint32_t written, spanned, empty, masked, degraded;
 	/* a mesh's box (r_mesh.c): colours and covered flags, inverse depths */
 	uint8_t *mbuf;
 	uint32_t *mdep;
 	int mbufcap, mdepcap;
 	uint64_t cost;                  /* of the last frame: ns (r_par.now) or pixels */
+	/* Indices into ctx.spans crossing it. On a cache line of their own:
+	 * the walk's rest appends to them while another thread draws this
+	 * strip's column runs (r_strip.c), and sharing a line with what that
+	 * thread reads and counts made both several times slower. */
+	_Alignas(64) int32_t *spans;
+	int nspans, maxspans;
 };
 
 struct r_ctx {
@@ -225,8 +229,6 @@ struct r_ctx {
 	 * into its strip */
 	struct r_strip *strips;
 	int nstrips, strip_shift, band_shift, nbands;
-	struct r_span *spans;           /* this frame's spans */
-	int nspans, maxspans;
 	struct r_par par;               /* run == NULL: strips drawn in turn */
 	int32_t *strip_order;           /* nstrips: costliest first (r_strip.c) */
 	const struct r_sprite *wspr;    /* the walk's rest (r_strip_draw_all) */
@@ -270,8 +272,6 @@ struct r_ctx {
 	int ndsegs, maxdsegs;
 	int16_t *open;                  /* openings: saved clips, masked columns */
 	int32_t nopen, maxopen;
-	struct r_vis *vis;
-	int nvis, maxvis;
 	int16_t *cliptop, *clipbot;     /* a sprite's clip, per column */
 	/* per sector: the frame number when the BSP walk last reached it;
 	 * only sprites standing in a reached sector are drawn (Doom adds a
@@ -304,6 +304,16 @@ struct r_ctx {
 	const struct lmap *lm;          /* point-light maps, NULL: none */
 	uint32_t *ids;                  /* surface ids (r_set_idbuf), or NULL */
 	uint32_t id;                    /* the walk's: what r_rec_* record */
+
+	/* What the walk's rest (the flats' spans, the sprites) writes while
+	 * other threads draw column runs (r_strip.c): on cache lines of their
+	 * own, the last of the context, so those threads' reads of the fields
+	 * above (frame, pitch, strips, bands) never miss for its writes. The
+	 * context is allocated 64-byte aligned (r_new). */
+	_Alignas(64) struct r_span *spans; /* this frame's spans */
+	int nspans, maxspans;
+	struct r_vis *vis;
+	int nvis, maxvis;
 	struct r_stats st;
 };
 

@@ -274,9 +274,11 @@ int r_new(int w, int h, struct r_ctx **out)
 	*out = NULL;
 	if (w < 1 || h < 1 || w > R_MAX_DIM || h > R_MAX_DIM)
 		return -EINVAL;
-	r = calloc(1, sizeof(*r));
+	/* sizeof is a multiple of the 64-byte alignment (r_local.h) */
+	r = aligned_alloc(_Alignof(struct r_ctx), sizeof(*r));
 	if (!r)
 		return -ENOMEM;
+	memset(r, 0, sizeof(*r));
 	r->w = w;
 	r->h = h;
 	for (int i = 0; i < 256; i++)
