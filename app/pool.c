@@ -25,6 +25,7 @@
 
 #include <errno.h>
 #include <pthread.h>
+#include <sched.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -102,6 +103,8 @@ static void *pool_main(void *arg)
 	struct pool *p = arg;
 	uint32_t seen = 0;
 
+	/* named for top -H, ps -L and the VM's check of its CPU */
+	pthread_setname_np(pthread_self(), "arcaded-pool");
 	for (;;) {
 		uint32_t g = POOL_GEN(atomic_load(&p->ticket));
 
@@ -251,6 +254,34 @@ static void *pool_task_main(void *p)
 
 	t->fn(t->arg);
 	return NULL;
+}
+
+int pool_pin(struct pool *p)
+{
+	cpu_set_t all, one;
+	int cpus[POOL_MAX_THREADS], n = 0, rc;
+
+	if (sched_getaffinity(0, sizeof(all), &all) < 0)
+		return -errno;
+	for (int c = 0; c < CPU_SETSIZE && n < POOL_MAX_THREADS; c++)
+		if (CPU_ISSET(c, &all))
+			cpus[n++] = c;
+	if (n < p->nth + 1)
+		return -ERANGE;
+	for (int i = 0; i <= p->nth; i++) {
+		/* the caller last: a failure leaves it as it was */
+		pthread_t th = i < p->nth ? p->th[i] : pthread_self();
+
+		CPU_ZERO(&one);
+		CPU_SET(cpus[i < p->nth ? i + 1 : 0], &one);
+		rc = pthread_setaffinity_np(th, sizeof(one), &one);
+		if (rc != 0) {
+			for (int k = 0; k < i; k++)
+				pthread_setaffinity_np(p->th[k], sizeof(all), &all);
+			return -rc;
+		}
+	}
+	return 0;
 }
 
 int pool_task_start(void (*fn)(void *arg), void *arg, struct pool_task **out)

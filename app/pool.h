@@ -36,6 +36,17 @@ void pool_free(struct pool *p);
 /* Threads of the pool, the caller counted. */
 int pool_threads(const struct pool *p);
 
+/* Gives each of the pool's threads a CPU of its own: the caller the first
+ * of the CPUs it may run on, worker i the (i + 2)-th. Why: a worker that
+ * slept between frames must be running again when the next frame's first
+ * batch comes, and a scheduler that packs idle threads onto one CPU (seen
+ * on a VM: the worker then waited behind the caller's whole job, 1.5 ms
+ * at the median after 10 ms asleep) or moves them about delays it; pinned,
+ * it wakes where it is (about 0.1 ms there). Threads the caller starts
+ * afterwards inherit its one CPU. 0; -ERANGE when the caller may run on
+ * fewer CPUs than the pool has threads, or -errno: nothing pinned then. */
+int pool_pin(struct pool *p);
+
 /* Calls job(arg, i) exactly once for each i in 0..n-1 (n >= 0) on the
  * pool's threads and the calling one, and returns when every call has
  * returned; their writes are then visible to the caller. Blocks. p is a

@@ -47,6 +47,9 @@ int scene_init(struct scene *s, const struct cfg *c, const struct ct *ct, int gl
 			say_warn("render threads: %s; drawing on one", strerror(-prc));
 			s->pool = NULL;
 		} else {
+			/* a thread per CPU: each keeps its own (pool.h says why) */
+			if (n == pool_cpus() && (prc = pool_pin(s->pool)) < 0)
+				say_warn("render threads: not pinned to CPUs: %s", strerror(-prc));
 			pool_r_par(s->pool, &s->par);
 			pool_px_par(s->pool, &s->ppar);
 			s->view.par = &s->par;

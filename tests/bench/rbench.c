@@ -333,6 +333,9 @@ int main(int argc, char **argv)
 			fprintf(stderr, "rbench: pool of %d: %s\n", threads, strerror(-rc));
 			return 1;
 		}
+		/* as the daemon does with a thread per CPU (app/scene.c) */
+		if (threads == pool_cpus())
+			pool_pin(pool);
 		pool_r_par(pool, &par);
 		r_set_par(r, &par);
 		view.par = &par;

@@ -1,9 +1,12 @@
 /*
  * Tests for app/pool.c: every job of a batch runs exactly once, batches
  * follow each other without mixing, jobs do run at the same time on
- * several threads, and the edge cases (no jobs, one thread, bad sizes).
+ * several threads, pool_pin gives each thread a CPU of its own, and the
+ * edge cases (no jobs, one thread, bad sizes, more threads than CPUs).
  */
 #include <errno.h>
+#include <pthread.h>
+#include <sched.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stdatomic.h>
@@ -149,6 +152,65 @@ static void two_threads_run_two_jobs_at_once(void **state)
 	pool_free(p);
 }
 
+/* meet_job that also notes the CPUs its thread may run on. */
+struct pinned {
+	struct meet m;
+	cpu_set_t on[2];
+};
+
+static void pinned_job(void *arg, int i)
+{
+	struct pinned *pn = arg;
+
+	pthread_getaffinity_np(pthread_self(), sizeof(pn->on[i]), &pn->on[i]);
+	meet_job(&pn->m, i);
+}
+
+static void pin_gives_each_thread_a_cpu_of_its_own(void **state)
+{
+	cpu_set_t before, now;
+	struct pinned pn;
+	struct pool *p;
+	int first = -1;
+	(void)state;
+
+	assert_int_equal(pthread_getaffinity_np(pthread_self(), sizeof(before), &before), 0);
+	if (CPU_COUNT(&before) < 2)
+		skip();         /* one CPU: nothing to spread over */
+	for (int c = CPU_SETSIZE - 1; c >= 0; c--)
+		if (CPU_ISSET(c, &before))
+			first = c;
+	assert_int_equal(pool_new(2, &p), 0);
+	assert_int_equal(pool_pin(p), 0);
+	memset(&pn, 0, sizeof(pn));
+	/* the two jobs meet: one ran on the worker, one on the caller */
+	pool_run(p, 2, pinned_job, &pn);
+	assert_true(pn.m.met[0] && pn.m.met[1]);
+	assert_int_equal(CPU_COUNT(&pn.on[0]), 1);
+	assert_int_equal(CPU_COUNT(&pn.on[1]), 1);
+	assert_false(CPU_EQUAL(&pn.on[0], &pn.on[1]));
+	/* the caller keeps the first of its CPUs */
+	assert_int_equal(pthread_getaffinity_np(pthread_self(), sizeof(now), &now), 0);
+	assert_int_equal(CPU_COUNT(&now), 1);
+	assert_true(CPU_ISSET(first, &now));
+	pool_free(p);
+	assert_int_equal(pthread_setaffinity_np(pthread_self(), sizeof(before), &before), 0);
+}
+
+static void pin_refuses_more_threads_than_cpus(void **state)
+{
+	cpu_set_t before, now;
+	struct pool *p;
+	(void)state;
+
+	assert_int_equal(pthread_getaffinity_np(pthread_self(), sizeof(before), &before), 0);
+	assert_int_equal(pool_new(CPU_COUNT(&before) + 1, &p), 0);
+	assert_int_equal(pool_pin(p), -ERANGE);
+	assert_int_equal(pthread_getaffinity_np(pthread_self(), sizeof(now), &now), 0);
+	assert_true(CPU_EQUAL(&before, &now));
+	pool_free(p);
+}
+
 /* pool_task: the job runs on its own thread, at the same time as the
  * caller: each side waits (at most 2 s) for the other's flag, which a job
  * run in line, before or at the join, could not see. */
@@ -229,6 +291,8 @@ int main(void)
 		cmocka_unit_test(every_job_runs_exactly_once_per_batch),
 		cmocka_unit_test(a_batch_of_70000_jobs_runs_each_once),
 		cmocka_unit_test(two_threads_run_two_jobs_at_once),
+		cmocka_unit_test(pin_gives_each_thread_a_cpu_of_its_own),
+		cmocka_unit_test(pin_refuses_more_threads_than_cpus),
 		cmocka_unit_test(a_task_runs_beside_the_caller),
 		cmocka_unit_test(nothing_to_do_returns_at_once),
 		cmocka_unit_test(r_par_points_at_the_pool),

@@ -275,6 +275,22 @@ phase_sandbox() {
 	want_ni=$(systemctl show -p Nice --value "$U")
 	check nice "main process nice $ni (the unit's Nice=$want_ni)" \
 		[ "$want_ni" = -10 -a "$ni" = "$want_ni" ]
+	# the render worker and the main thread a CPU each (app/pool.h
+	# pool_pin; the unit lets sched_setaffinity through its filter), and
+	# no "not pinned" warning
+	m_cpus=$(awk '/^Cpus_allowed_list:/ { print $2 }' "/proc/$pid/status")
+	w_cpus=
+	for t in /proc/$pid/task/*; do
+		[ "$(cat "$t/comm" 2>/dev/null)" = arcaded-pool ] &&
+			w_cpus=$(awk '/^Cpus_allowed_list:/ { print $2 }' "$t/status")
+	done
+	unpinned=$(log_since 0 | grep -c 'not pinned to CPUs')
+	case "$m_cpus,$w_cpus" in
+	[0-9],[0-9] | [0-9][0-9],[0-9] | [0-9],[0-9][0-9]) one_each=yes ;;
+	*) one_each=no ;;
+	esac
+	check pinned "main thread on CPU(s) $m_cpus, render worker on CPU(s) ${w_cpus:-none found}; $unpinned 'not pinned' line(s)" \
+		[ "$one_each" = yes -a "$m_cpus" != "$w_cpus" -a "$unpinned" = 0 ]
 	ls -l "/proc/$pid/fd" > "$R/daemon-fds.txt" 2>&1
 	# The unit's device policy is a BPF program on its cgroup: probe from a
 	# process placed in that cgroup, once as root (only the policy can refuse)
