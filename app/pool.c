@@ -38,6 +38,9 @@
 /* Polls before sleeping, between batches and while waiting for the last
  * job: a few tens of microseconds. */
 #define POOL_SPIN 4000
+/* How long a worker woken by pool_warm polls for the batch before it
+ * sleeps again: longer than a frame's serial walk. */
+#define POOL_WARM_NS 2000000u
 /* Most jobs in one ticket (16 bits of count). */
 #define POOL_CHUNK 65535
 
@@ -54,6 +57,8 @@ struct pool {
 	atomic_int left;                /* jobs of the batch not yet returned */
 	atomic_int sleepers;
 	atomic_int stop;
+	atomic_uint warm;               /* bumped by pool_warm */
+	atomic_uint warmed;             /* sleeps a pool_warm ended (pool_warmed) */
 	/* the current batch, written by pool_run before the ticket */
 	void (*job)(void *arg, int i);
 	void *arg;
@@ -98,10 +103,28 @@ static void pool_work(struct pool *p, uint32_t g)
 	}
 }
 
+/* After pool_warm woke it: polls for a new generation for POOL_WARM_NS.
+ * The generation then current. */
+static uint32_t pool_warm_poll(struct pool *p, uint32_t seen)
+{
+	uint64_t t0 = pool_now();
+	uint32_t g;
+
+	while ((g = POOL_GEN(atomic_load(&p->ticket))) == seen && !atomic_load(&p->stop)) {
+		for (int k = 0; k < 64; k++)
+			pool_relax();
+		if (pool_now() - t0 > POOL_WARM_NS)
+			break;
+	}
+	return g;
+}
+
 static void *pool_main(void *arg)
 {
 	struct pool *p = arg;
-	uint32_t seen = 0;
+	/* pool_new set warm to 0 before starting the workers: a pool_warm
+	 * before this thread ran still ends its first sleep */
+	uint32_t seen = 0, seen_warm = 0;
 
 	/* named for top -H, ps -L and the VM's check of its CPU */
 	pthread_setname_np(pthread_self(), "arcaded-pool");
@@ -113,14 +136,26 @@ static void *pool_main(void *arg)
 			g = POOL_GEN(atomic_load(&p->ticket));
 		}
 		if (g == seen) {
+			uint32_t w = seen_warm;
+
 			pthread_mutex_lock(&p->mu);
 			atomic_fetch_add(&p->sleepers, 1);
 			while ((g = POOL_GEN(atomic_load(&p->ticket))) == seen &&
-			       !atomic_load(&p->stop))
+			       (w = atomic_load(&p->warm)) == seen_warm && !atomic_load(&p->stop))
 				pthread_cond_wait(&p->wake, &p->mu);
 			atomic_fetch_sub(&p->sleepers, 1);
 			pthread_mutex_unlock(&p->mu);
+			if (g == seen && !atomic_load(&p->stop)) {
+				/* woken early: poll for the batch a while */
+				seen_warm = w;
+				atomic_fetch_add(&p->warmed, 1);
+				g = pool_warm_poll(p, seen);
+				if (g == seen)
+					continue;
+			}
 		}
+		/* a warm seen while awake needs no wake-up later */
+		seen_warm = atomic_load(&p->warm);
 		if (atomic_load(&p->stop))
 			return NULL;
 		seen = g;
@@ -146,6 +181,8 @@ int pool_new(int threads, struct pool **out)
 	atomic_init(&p->left, 0);
 	atomic_init(&p->sleepers, 0);
 	atomic_init(&p->stop, 0);
+	atomic_init(&p->warm, 0);
+	atomic_init(&p->warmed, 0);
 	for (int i = 0; i < threads - 1; i++) {
 		rc = pthread_create(&p->th[i], NULL, pool_main, p);
 		if (rc != 0) {
@@ -177,6 +214,24 @@ void pool_free(struct pool *p)
 int pool_threads(const struct pool *p)
 {
 	return p->nth + 1;
+}
+
+void pool_warm(void *pool)
+{
+	struct pool *p = pool;
+
+	/* as pool_chunk's ticket: the store, then the look at sleepers */
+	atomic_fetch_add(&p->warm, 1);
+	if (atomic_load(&p->sleepers) > 0) {
+		pthread_mutex_lock(&p->mu);
+		pthread_cond_broadcast(&p->wake);
+		pthread_mutex_unlock(&p->mu);
+	}
+}
+
+unsigned pool_warmed(const struct pool *p)
+{
+	return atomic_load(&((struct pool *)p)->warmed);
 }
 
 /* One chunk: jobs base..base + n - 1, n <= POOL_CHUNK. */
@@ -233,6 +288,7 @@ void pool_r_par(struct pool *p, struct r_par *out)
 	out->pool = p;
 	out->threads = pool_threads(p);
 	out->now = pool_now;
+	out->warm = pool_warm;
 }
 
 void pool_px_par(struct pool *p, struct px_par *out)

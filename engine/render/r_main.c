@@ -461,6 +461,9 @@ void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 {
 	assert(r && m && t && v && f && f->px && (spr || nspr == 0));
 	assert(f->w == r->w && f->h == r->h && f->pitch >= f->w);
+	/* the walk below is serial: the pool's workers wake during it */
+	if (r->par.run && r->par.warm && r->nstrips > 1)
+		r->par.warm(r->par.pool);
 	memset(&r->st, 0, sizeof(r->st));
 	r->map = m;
 	r->tex = t;

@@ -135,6 +135,10 @@ struct r_par {
 	/* Optional: a monotonic clock in ns, any thread; the strips' measured
 	 * cost orders the next frame's jobs. NULL: their pixel counts do. */
 	uint64_t (*now)(void);
+	/* Optional: a batch comes soon (r_render calls it before its serial
+	 * walk), so workers asleep can be running again by then. Any time
+	 * between batches; NULL: nothing to do. */
+	void (*warm)(void *pool);
 };
 
 /* Draws the next frames' strips through par (copied; the pool must outlive

@@ -1,7 +1,8 @@
 /*
  * Tests for app/pool.c: every job of a batch runs exactly once, batches
  * follow each other without mixing, jobs do run at the same time on
- * several threads, pool_pin gives each thread a CPU of its own, and the
+ * several threads, pool_warm wakes a sleeping worker without losing or
+ * repeating a job, pool_pin gives each thread a CPU of its own, and the
  * edge cases (no jobs, one thread, bad sizes, more threads than CPUs).
  */
 #include <errno.h>
@@ -152,6 +153,62 @@ static void two_threads_run_two_jobs_at_once(void **state)
 	pool_free(p);
 }
 
+/* pool_warm ends a sleeping worker's sleep: after 20 ms without a batch
+ * the worker sleeps, and only the warm's wake-up can count it. */
+static void warm_wakes_a_sleeping_worker(void **state)
+{
+	struct timespec nap = { 0, 20 * 1000 * 1000 };
+	struct pool *p;
+	(void)state;
+
+	assert_int_equal(pool_new(2, &p), 0);
+	nanosleep(&nap, NULL);
+	assert_int_equal(pool_warmed(p), 0);
+	pool_warm(p);
+	for (int i = 0; i < 5000 && pool_warmed(p) == 0; i++) {
+		struct timespec ms = { 0, 1000 * 1000 };
+
+		nanosleep(&ms, NULL);
+	}
+	assert_int_equal(pool_warmed(p), 1);
+	pool_free(p);
+}
+
+/* Warms before batches, between them, twice in a row and right before the
+ * end, with sleeps that leave the worker polling, asleep or in its warm
+ * poll: every job still runs exactly once and nothing hangs. */
+static void warm_and_batches_interleave(void **state)
+{
+	static struct batch b;
+	const long naps[] = { 0, 50 * 1000, 3 * 1000 * 1000 };
+	struct pool *p;
+	(void)state;
+
+	for (int th = 2; th <= 4; th += 2) {
+		assert_int_equal(pool_new(th, &p), 0);
+		for (int k = 0; k < 300; k++) {
+			struct timespec nap = { 0, naps[k % 3] };
+			int n = 1 + (k * 7) % 50;
+
+			if (k % 4 != 3)
+				pool_warm(p);
+			if (k % 5 == 0)
+				pool_warm(p);
+			nanosleep(&nap, NULL);
+			memset(&b, 0, sizeof(b));
+			b.tag = k;
+			pool_run(p, n, count_job, &b);
+			for (int i = 0; i < MAXJ; i++) {
+				assert_int_equal(atomic_load(&b.runs[i]), i < n ? 1 : 0);
+				if (i < n)
+					assert_int_equal(b.seen_tag[i], k);
+			}
+		}
+		pool_warm(p);
+		pool_free(p);
+	}
+}
+
 /* meet_job that also notes the CPUs its thread may run on. */
 struct pinned {
 	struct meet m;
@@ -278,6 +335,7 @@ static void r_par_points_at_the_pool(void **state)
 	assert_int_equal(pool_new(2, &p), 0);
 	pool_r_par(p, &par);
 	assert_ptr_equal(par.pool, p);
+	assert_ptr_equal(par.warm, pool_warm);
 	par.run(par.pool, 3, count_job, &b);
 	assert_int_equal(atomic_load(&b.runs[0]) + atomic_load(&b.runs[1]) +
 			 atomic_load(&b.runs[2]), 3);
@@ -291,6 +349,8 @@ int main(void)
 		cmocka_unit_test(every_job_runs_exactly_once_per_batch),
 		cmocka_unit_test(a_batch_of_70000_jobs_runs_each_once),
 		cmocka_unit_test(two_threads_run_two_jobs_at_once),
+		cmocka_unit_test(warm_wakes_a_sleeping_worker),
+		cmocka_unit_test(warm_and_batches_interleave),
 		cmocka_unit_test(pin_gives_each_thread_a_cpu_of_its_own),
 		cmocka_unit_test(pin_refuses_more_threads_than_cpus),
 		cmocka_unit_test(a_task_runs_beside_the_caller),

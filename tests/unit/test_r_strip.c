@@ -147,7 +147,7 @@ static void layout_cuts_whole_cache_lines_per_thread(void **state)
 
 	for (size_t i = 0; i < sizeof(widths) / sizeof(widths[0]); i++) {
 		for (int t = 1; t <= 4; t++) {
-			struct r_par par = { fake_run, NULL, t, NULL };
+			struct r_par par = { fake_run, NULL, t, NULL, NULL };
 			struct r_ctx *r;
 			int w = widths[i], covered = 0;
 
