@@ -84,6 +84,19 @@ int pool_cpus(void)
 	return n > POOL_MAX_THREADS ? POOL_MAX_THREADS : (int)n;
 }
 
+/* Wakes the sleeping workers, after a store to the ticket or warm: that
+ * store comes before this look at sleepers (both sequentially
+ * consistent), so a worker either is counted here or sees the store
+ * before it waits. */
+static void pool_wake(struct pool *p)
+{
+	if (atomic_load(&p->sleepers) > 0) {
+		pthread_mutex_lock(&p->mu);
+		pthread_cond_broadcast(&p->wake);
+		pthread_mutex_unlock(&p->mu);
+	}
+}
+
 /* Claims and runs jobs of generation g until none is left. */
 static void pool_work(struct pool *p, uint32_t g)
 {
@@ -220,13 +233,8 @@ void pool_warm(void *pool)
 {
 	struct pool *p = pool;
 
-	/* as pool_chunk's ticket: the store, then the look at sleepers */
 	atomic_fetch_add(&p->warm, 1);
-	if (atomic_load(&p->sleepers) > 0) {
-		pthread_mutex_lock(&p->mu);
-		pthread_cond_broadcast(&p->wake);
-		pthread_mutex_unlock(&p->mu);
-	}
+	pool_wake(p);
 }
 
 unsigned pool_warmed(const struct pool *p)
@@ -243,11 +251,7 @@ static void pool_chunk(struct pool *p, int base, int n, void (*job)(void *arg, i
 	atomic_store(&p->left, n);
 	p->gen++;
 	atomic_store(&p->ticket, (uint64_t)p->gen << 32 | (uint64_t)n << 16);
-	if (atomic_load(&p->sleepers) > 0) {
-		pthread_mutex_lock(&p->mu);
-		pthread_cond_broadcast(&p->wake);
-		pthread_mutex_unlock(&p->mu);
-	}
+	pool_wake(p);
 	pool_work(p, p->gen);
 	for (int k = 0; k < POOL_SPIN && atomic_load(&p->left) > 0; k++)
 		pool_relax();
