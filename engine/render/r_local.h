@@ -216,8 +216,10 @@ struct r_strip {
 	uint64_t cost;                  /* of the last frame: ns (r_par.now) or pixels */
 	/* Indices into ctx.spans crossing it. On a cache line of their own:
 	 * the walk's rest appends to them while another thread draws this
-	 * strip's column runs (r_strip.c), and sharing a line with what that
-	 * thread reads and counts made both several times slower. */
+	 * strip's column runs (r_strip.c), and on the line of the written
+	 * counter that thread bumps per run, every append took the line from
+	 * it (perf: r_rec_span 5.2% of a two-thread frame's samples, 3.0%
+	 * apart). */
 	_Alignas(64) int32_t *spans;
 	int nspans, maxspans;
 };
