@@ -213,7 +213,9 @@ struct r_strip {
 	uint8_t *mbuf;
 	uint32_t *mdep;
 	int mbufcap, mdepcap;
-	uint64_t cost;                  /* of the last frame: ns (r_par.now) or pixels */
+	/* of the last frame, ns (r_par.now) or pixels: the column runs (first
+	 * batch) and the rest (second batch), each batch ordered by its own */
+	uint64_t cost_cols, cost_rest;
 	/* Indices into ctx.spans crossing it. On a cache line of their own:
 	 * the walk's rest appends to them while another thread draws this
 	 * strip's column runs (r_strip.c), and on the line of the written
@@ -232,7 +234,9 @@ struct r_ctx {
 	struct r_strip *strips;
 	int nstrips, strip_shift, band_shift, nbands;
 	struct r_par par;               /* run == NULL: strips drawn in turn */
-	int32_t *strip_order;           /* nstrips: costliest first (r_strip.c) */
+	/* 2 * nstrips: the strips costliest first for the first batch, then
+	 * for the second (r_strip.c) */
+	int32_t *strip_order;
 	const struct r_sprite *wspr;    /* the walk's rest (r_strip_draw_all) */
 	int wnspr, world;
 

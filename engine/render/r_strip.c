@@ -29,10 +29,13 @@
  * change (ctx.spans, each strip's span list, ctx.st), and a span it must
  * draw at once (out of memory) writes pixels no run has and counts them in
  * the strip's spanned, not in written, which a column job counts in.
- * Both batches hand their strips out costliest first by the previous
- * frame's cost (the time the caller's clock measured, r_par.now, else the
- * pixels drawn), so the last job to start is a cheap one and the threads
- * end together.
+ * Each batch hands its strips out costliest first by what each cost in
+ * that batch the previous frame (the time the caller's clock measured,
+ * r_par.now, else the pixels drawn there), so the last job to start is a
+ * cheap one and the threads end together. The two orders differ: a strip
+ * of sky costs little in the first batch and its floor much in the second.
+ * (With one order by the sum, the first batch at 3840x2160 ended with one
+ * thread idle 0.30 ms a frame on average, 0.25 ms with its own.)
  */
 #include <assert.h>
 #include <errno.h>
@@ -65,7 +68,7 @@ int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
 	int nbands = (r->h + (1 << band_shift) - 1) >> band_shift;
 	/* sizeof is a multiple of the 64-byte alignment */
 	struct r_strip *st = aligned_alloc(64, (size_t)n * sizeof(*st));
-	int32_t *order = malloc((size_t)n * sizeof(*order));
+	int32_t *order = malloc(2 * (size_t)n * sizeof(*order));
 
 	if (!st || !order) {
 		free(st);
@@ -73,8 +76,8 @@ int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
 		return -ENOMEM;
 	}
 	memset(st, 0, (size_t)n * sizeof(*st));
-	for (int i = 0; i < n; i++)
-		order[i] = i;
+	for (int i = 0; i < 2 * n; i++)
+		order[i] = i % n;
 	for (int i = 0; i < n; i++) {
 		struct r_strip *s = &st[i];
 		int x1;
@@ -328,33 +331,39 @@ static void r_strip_job_cols(void *arg, int i)
 	s = &r->strips[r->strip_order[i - 1]];
 	t0 = r_strip_now(r);
 	r_strip_cols(r, s);
-	s->cost = r_strip_now(r) - t0;
+	s->cost_cols = r_strip_now(r) - t0;
 }
 
-/* Second batch: strip order[i]'s spans, fill and sprites. */
+/* Second batch: the spans, fill and sprites of the strip i places down
+ * the second order. */
 static void r_strip_job_rest(void *arg, int i)
 {
 	struct r_ctx *r = arg;
-	struct r_strip *s = &r->strips[r->strip_order[i]];
+	struct r_strip *s = &r->strips[r->strip_order[r->nstrips + i]];
 	uint64_t t0 = r_strip_now(r);
 
 	r_strip_rest(r, s);
-	s->cost += r_strip_now(r) - t0;
+	s->cost_rest = r_strip_now(r) - t0;
 }
 
-/* strip_order: the strips by the cost they had, costliest first (ties by
- * position); the pool hands jobs out in index order. */
-static void r_strip_sort(struct r_ctx *r)
+/* What strip s cost in the first batch (rest 0) or the second (rest 1). */
+static uint64_t r_strip_cost(const struct r_strip *s, int rest)
 {
-	int32_t *o = r->strip_order;
+	return rest ? s->cost_rest : s->cost_cols;
+}
+
+/* The order of batch rest (0 or 1): the strips by what they cost in it
+ * this frame, costliest first, ties by position; the pool hands jobs out
+ * in index order. */
+static void r_strip_sort(struct r_ctx *r, int rest)
+{
+	int32_t *o = r->strip_order + (rest ? r->nstrips : 0);
 
 	for (int i = 0; i < r->nstrips; i++) {
-		const struct r_strip *s = &r->strips[i];
+		uint64_t c = r_strip_cost(&r->strips[i], rest);
 		int k = i;
 
-		if (!r->par.now)
-			r->strips[i].cost = (uint64_t)s->written + s->spanned + s->masked;
-		while (k > 0 && r->strips[o[k - 1]].cost < r->strips[i].cost) {
+		while (k > 0 && r_strip_cost(&r->strips[o[k - 1]], rest) < c) {
 			o[k] = o[k - 1];
 			k--;
 		}
@@ -383,7 +392,18 @@ void r_strip_draw_all(struct r_ctx *r, const struct r_sprite *spr, int nspr, int
 		r->st.pixels_masked += s->masked;
 		r->st.degraded += s->degraded;
 	}
-	/* the next frame's order, from this frame's costs */
-	if (r->par.run && r->nstrips > 1)
-		r_strip_sort(r);
+	/* the next frame's orders, from this frame's costs */
+	if (r->par.run && r->nstrips > 1) {
+		if (!r->par.now) {
+			for (int i = 0; i < r->nstrips; i++) {
+				struct r_strip *s = &r->strips[i];
+
+				/* the black fill is drawn in the second batch */
+				s->cost_cols = (uint64_t)s->written - s->empty;
+				s->cost_rest = (uint64_t)s->spanned + s->masked + s->empty;
+			}
+		}
+		r_strip_sort(r, 0);
+		r_strip_sort(r, 1);
+	}
 }

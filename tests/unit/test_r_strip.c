@@ -180,6 +180,87 @@ static void layout_cuts_whole_cache_lines_per_thread(void **state)
 	}
 }
 
+/* A stand-in pool that runs every job in index order on this thread. */
+static void run_in_order(void *pool, int n, void (*job)(void *arg, int i), void *arg)
+{
+	(void)pool;
+	for (int i = 0; i < n; i++)
+		job(arg, i);
+}
+
+/* Half h (0: the column runs' batch, 1: the rest's) of r's next orders is
+ * a permutation of the strips with cost falling, ties by position. */
+static void check_order(const struct r_ctx *r, int h)
+{
+	const int32_t *o = r->strip_order + h * r->nstrips;
+	uint32_t seen = 0;
+
+	for (int k = 0; k < r->nstrips; k++) {
+		assert_true(o[k] >= 0 && o[k] < r->nstrips && !(seen & (1u << o[k])));
+		seen |= 1u << o[k];
+		if (k > 0) {
+			const struct r_strip *a = &r->strips[o[k - 1]], *b = &r->strips[o[k]];
+			uint64_t ca = h ? a->cost_rest : a->cost_cols;
+			uint64_t cb = h ? b->cost_rest : b->cost_cols;
+
+			assert_true(ca > cb || (ca == cb && o[k - 1] < o[k]));
+		}
+	}
+}
+
+/* Each batch hands its strips out costliest first by its own cost: without
+ * a clock, the first batch by the pixels the column runs wrote, the second
+ * by the spans', sprites' and black fill's. Over the views, the two orders
+ * differ (a strip of sky is cheap first and dear after, one of near wall
+ * the reverse), so one order for both would fail here. */
+static void each_batch_orders_strips_by_its_own_cost(void **state)
+{
+	struct r_par par = { run_in_order, NULL, 2, NULL, NULL };
+	struct tex_set *t;
+	struct r_ctx *r;
+	uint8_t *px = malloc(2048 * 200);
+	struct r_frame f = { px, 2048, 200, 2048 };
+	uint32_t seed = 4242;
+	int differ = 0;
+	(void)state;
+
+	assert_non_null(px);
+	assert_int_equal(r_pal_set_new(&t), 0);
+	assert_int_equal(r_new(2048, 200, &r), 0);
+	assert_int_equal(r_set_par(r, &par), 0);
+	assert_true(r->nstrips >= 4 && r->nstrips <= 32);
+	for (int lv = 0; lv < lvl_builtin_count(); lv++) {
+		struct map *m;
+
+		assert_int_equal(lvl_builtin(lv, &m), 0);
+		for (int n = 0; n < 20; n++) {
+			struct r_view v = { 0 };
+			const struct map_vertex *a = &m->vertices[lcg(&seed) % m->num_vertices];
+
+			v.x = a->x + (fx_t)(lcg(&seed) % 64) * FX_ONE;
+			v.y = a->y + (fx_t)(lcg(&seed) % 64) * FX_ONE;
+			v.z = m->sectors[map_point_sector(m, v.x, v.y)].floor_h + 41 * FX_ONE;
+			v.angle = lcg(&seed) * 2654435761u;
+			r_render(r, m, t, &v, NULL, 0, &f);
+			for (int i = 0; i < r->nstrips; i++) {
+				const struct r_strip *s = &r->strips[i];
+
+				assert_true(s->cost_cols == (uint64_t)s->written - s->empty);
+				assert_true(s->cost_rest == (uint64_t)s->spanned + s->masked + s->empty);
+			}
+			check_order(r, 0);
+			check_order(r, 1);
+			differ += memcmp(r->strip_order, r->strip_order + r->nstrips,
+					 (size_t)r->nstrips * sizeof(*r->strip_order)) != 0;
+		}
+		map_free(m);
+	}
+	assert_true(differ > 0);
+	r_free(r);
+	r_pal_set_free(t);
+	free(px);
+}
+
 /* Views of every built-in level: seeded points of the map's box (some
  * outside every sector), angles and shears, at two sizes. */
 static void builtin_levels_same_frame_every_way(void **state)
@@ -297,6 +378,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(layout_cuts_whole_cache_lines_per_thread),
+		cmocka_unit_test(each_batch_orders_strips_by_its_own_cost),
 		cmocka_unit_test(builtin_levels_same_frame_every_way),
 		cmocka_unit_test(freedoom_maps_same_frame_every_way),
 	};
