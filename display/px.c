@@ -452,6 +452,8 @@ int px_panel_draw(struct px_panel *p, uint8_t *mem, const uint8_t *src, int w, i
 	if (p->par.run && l->panel_h >= PX_PAR_MIN_ROWS * p->par.threads) {
 		struct px_job j = { p, src, mem, PX_JOBS_PER_THREAD * p->par.threads };
 
+		if (l->panel_h / PX_ROWS_PER_JOB > j.n)
+			j.n = l->panel_h / PX_ROWS_PER_JOB;
 		p->par.run(p->par.pool, j.n, px_job_rows, &j);
 	} else {
 		px_blit(l, &p->table, src, mem, p->line_length);

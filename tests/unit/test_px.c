@@ -635,6 +635,24 @@ static void row_ranges_write_what_one_pass_writes(void **state)
 	fake_jobs = 0;
 	assert_int_equal(px_panel_draw(p, b, src, SW, SH, SPITCH), 0);
 	assert_int_equal(fake_jobs, 0);
+	/* a tall panel: ranges of PX_ROWS_PER_JOB rows, more than
+	 * PX_JOBS_PER_THREAD a thread, still the one pass's bytes */
+	{
+		enum { TW = 8, TH = 10 * PX_ROWS_PER_JOB + 5, TLL = TW * 4 };
+		static uint8_t ta[TH * TLL], tb[TH * TLL];
+
+		assert_int_equal(px_panel_init(p, &f, TW, TH, TLL, 0, 1, SW, SH), 0);
+		p->table = t;
+		memset(ta, SENTINEL, sizeof(ta));
+		memset(tb, SENTINEL, sizeof(tb));
+		assert_int_equal(px_panel_draw(p, ta, src, SW, SH, SPITCH), 0);
+		par.threads = 2;
+		px_panel_set_par(p, &par);
+		fake_jobs = 0;
+		assert_int_equal(px_panel_draw(p, tb, src, SW, SH, SPITCH), 0);
+		assert_int_equal(fake_jobs, 10);
+		assert_memory_equal(ta, tb, sizeof(ta));
+	}
 	free(l);
 	free(p);
 }
