@@ -9,7 +9,9 @@
 # 640x480, 1280x720, 1920x1080 and 3840x2160 and draws every frame as the
 # daemon does (world, sprites, light maps, HUD) then presents it into an
 # xrgb8888 panel in memory (in row ranges on the same threads): frames/s on
-# one thread and on all cores, ms per frame p50/p99 and their ratio, peak
+# one thread and on all cores, ms per frame p50/p99 and their ratio (and
+# the same over each frame's fastest of the two passes every run makes:
+# the path's own spread, without frames another process slowed), peak
 # RSS and private memory (anonymous and private dirty pages,
 # smaps_rollup); then the same path drawn by the OSMesa renderer with
 # LP_NUM_THREADS=1 and with llvmpipe's default threads (every 8th frame),
@@ -107,7 +109,7 @@ content() { # path -> rbench content options
 }
 
 CSV=$OUT/bench.csv
-echo "path,size,engine,threads,frames,fps,render_fps,p50_ms,p99_ms,rss_kib,priv_kib,note" >"$CSV"
+echo "path,size,engine,threads,frames,fps,render_fps,p50_ms,p99_ms,rss_kib,priv_kib,note,p50_best_ms,p99_best_ms" >"$CSV"
 kv() { # key line -> value
 	echo "$2" | tr ' ' '\n' | sed -n "s/^$1=//p"
 }
@@ -148,7 +150,7 @@ for p in $paths; do
 			: >"$tmp/round"
 			for t in $threads; do
 				l=$($PRIO "$tmp/rbench" --rec "$tmp/$p.rec" $(content $p) --size "$size" \
-					--threads "$t" --seconds "$SECS")
+					--threads "$t" --seconds "$SECS" --passes 2)
 				echo "$t $(kv fps "$l") $l" >>"$tmp/round"
 				if [ "$t" = 1 ] && [ -z "$h1" ]; then
 					h1=$(kv hash "$l")
@@ -177,7 +179,7 @@ for p in $paths; do
 				n=$calm
 			fi
 			l=$(sort -n "$f" | sed -n "$(((n + 1) / 2))p" | cut -d' ' -f2-)
-			echo "$p,$size,arcaded,$t,$(kv frames "$l"),$(kv fps "$l"),$(kv render_fps "$l"),$(kv p50_ms "$l"),$(kv p99_ms "$l"),$(kv rss_kib "$l"),$(kv priv_kib "$l"),median of $n runs ($calm of $ROUNDS rounds calm)" >>"$CSV"
+			echo "$p,$size,arcaded,$t,$(kv frames "$l"),$(kv fps "$l"),$(kv render_fps "$l"),$(kv p50_ms "$l"),$(kv p99_ms "$l"),$(kv rss_kib "$l"),$(kv priv_kib "$l"),median of $n runs ($calm of $ROUNDS rounds calm),$(kv p50_best_ms "$l"),$(kv p99_best_ms "$l")" >>"$CSV"
 		done
 		if [ "$gl" = 1 ]; then
 			for t in 1 default; do
@@ -297,6 +299,7 @@ NR == FNR && FNR == 1 { next }
 NR == FNR {
 	key = $1 SUBSEP $2 SUBSEP $3 SUBSEP ($4 == 1 ? 1 : "n")
 	fps[key] = $6; p50[key] = $8; p99[key] = $9; rss[key] = $10; priv[key] = $11
+	if ($13 != "" && $13 != "-") { b50[key] = $13; b99[key] = $14 }
 	if ($3 == "arcaded" && $12 ~ /rounds calm/) {
 		c = $12; sub(/.*\(/, "", c); sub(/ of .*/, "", c); calmr[$1 SUBSEP $2] = c
 	}
@@ -311,8 +314,8 @@ function f(k) { return (k in fps) ? fps[k] : "-" }
 function ratio(a, b) { return (a == "-" || b == "-" || b == 0) ? "-" : sprintf("%.2fx", a / b) }
 function mib(v) { return v == "" ? "-" : sprintf("%.1f", v / 1024) }
 END {
-	printf "%-7s %-10s %9s %9s %7s %17s %6s %5s %5s %8s %8s %8s %8s %5s\n", "path", "size", \
-		"sw 1T", "sw " ncpu "T", "speedup", "p50/p99 ms", "p99/50", "RSS", "priv", \
+	printf "%-7s %-10s %9s %9s %7s %17s %6s %6s %5s %5s %8s %8s %8s %8s %5s\n", "path", "size", \
+		"sw 1T", "sw " ncpu "T", "speedup", "p50/p99 ms", "p99/50", "best", "RSS", "priv", \
 		"gl 1T", "gl " ncpu "T", "dsda", "choc", "calm"
 	for (i = 0; i < np; i++) for (j = 0; j < ns; j++) {
 		p = order[i]; s = sizes[j]
@@ -320,8 +323,9 @@ END {
 		all = f(p SUBSEP s SUBSEP "arcaded" SUBSEP "n")
 		if (all == "-") all = one
 		k = p SUBSEP s SUBSEP "arcaded" SUBSEP (ncpu > 1 ? "n" : 1)
-		printf "%-7s %-10s %9s %9s %7s %17s %6s %5s %5s %8s %8s %8s %8s %5s\n", p, s, one, all, \
-			ratio(all, one), p50[k] "/" p99[k], ratio(p99[k], p50[k]), mib(rss[k]), \
+		printf "%-7s %-10s %9s %9s %7s %17s %6s %6s %5s %5s %8s %8s %8s %8s %5s\n", p, s, one, all, \
+			ratio(all, one), p50[k] "/" p99[k], ratio(p99[k], p50[k]), \
+			(k in b50) ? ratio(b99[k], b50[k]) : "-", mib(rss[k]), \
 			mib(priv[k]), f(p SUBSEP s SUBSEP "osmesa" SUBSEP 1), \
 			f(p SUBSEP s SUBSEP "osmesa" SUBSEP "n"), \
 			f("demo1" SUBSEP s SUBSEP "dsda-doom" SUBSEP 1), \
@@ -329,7 +333,8 @@ END {
 			((p SUBSEP s) in calmr) ? calmr[p SUBSEP s] "/" rounds : "-"
 	}
 	print "(calm: rounds of " rounds " whose capacity probes before and after saw at least 0.95 of" \
-		" " ncpu "x; the figures are the median run of the calm rounds, of all when none was)"
+		" " ncpu "x; the figures are the median run of the calm rounds, of all when none was;"
+	print " best: p99/p50 over the fastest time of each frame in any of the passes of the run)"
 	for (s in seens) {
 		k = "demo1" SUBSEP s SUBSEP "dsda-doom" SUBSEP 1
 		if (k in fps) printf "dsda-doom %s: peak RSS %s MiB, private %s MiB\n", s, mib(rss[k]), mib(priv[k])
@@ -359,6 +364,8 @@ END {
 			target(p " " s ": one core vs OSMesa one thread", one, g1, 5.0)
 			if (k in p50)
 				upto(p " " s ": p99 / p50", p99[k] / p50[k], 1.5, "x")
+			if (k in b50)
+				upto(p " " s ": p99 / p50, fastest pass per frame", b99[k] / b50[k], 1.5, "x")
 			if (s == "1920x1080")
 				atleast(p " " s ": all cores, frames/s", all, 60)
 			if (p == "e1m1" && s == "3840x2160")

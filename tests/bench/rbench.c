@@ -21,8 +21,14 @@
  * is there).
  * Its threads are llvmpipe's (LP_NUM_THREADS); --threads is ignored.
  *
+ * --passes N replays the path at least N times (default 1), whatever
+ * --seconds says.
+ *
  * Prints one line of key=value: frames, fps (draw + present), render_fps
- * (draw only), p50_ms and p99_ms (draw + present per frame), rss_kib (peak
+ * (draw only), p50_ms and p99_ms (draw + present per frame), passes,
+ * p50_best_ms and p99_best_ms (the same over each frame of the path's
+ * fastest time in any pass, "-" after one pass: what is left of the spread
+ * when a frame another process slowed once is not counted), rss_kib (peak
  * resident set), priv_kib (private memory at the end: anonymous and private
  * dirty pages, smaps_rollup), hash (of every frame of the first pass and of every 16th
  * presented panel: equal for any --threads).
@@ -193,7 +199,8 @@ static int cmp_u64(const void *a, const void *b)
 static int usage(void)
 {
 	fprintf(stderr, "usage: rbench --rec FILE (--level N | --wad FILE --map NAME) "
-		"--size WxH [--threads N] [--seconds S] [--stride K] [--shot PNG] "
+		"--size WxH [--threads N] [--seconds S] [--passes N] [--stride K] "
+		"[--shot PNG] "
 		"[--renderer sw|gl]\n       rbench --capacity N\n");
 	return 2;
 }
@@ -203,7 +210,7 @@ int main(int argc, char **argv)
 	struct ct_spec spec = { 0 };
 	struct ct ct;
 	const char *recpath = NULL, *shot = NULL, *renderer = "sw";
-	int w = 320, h = 240, threads = 1, stride = 1, rc;
+	int w = 320, h = 240, threads = 1, stride = 1, minpasses = 1, npass = 0, rc;
 	double seconds = 1.0;
 	char err[512] = "";
 	struct rec_reader *rr;
@@ -220,14 +227,16 @@ int main(int argc, char **argv)
 	struct px_panel *panel;
 	struct px_format fmt;
 	uint8_t *mem;
-	uint64_t *times = NULL, hash = 0x243f6a8885a308d3ull, total = 0, rtotal = 0;
-	size_t nt = 0, capt = 0;
+	uint64_t *times = NULL, *best = NULL, hash = 0x243f6a8885a308d3ull, total = 0, rtotal = 0;
+	size_t nt = 0, capt = 0, nbest;
+	char bests[64] = "p50_best_ms=- p99_best_ms=-";
 	struct rusage ru;
 #ifdef RBENCH_GL
 	struct rgl_ctx *gl = NULL;
 #endif
 
-	for (int i = 1; i < argc; i++) {
+	/* options come in pairs */
+	for (int i = 1; i < argc; i += 2) {
 		const char *a = argv[i], *b = i + 1 < argc ? argv[i + 1] : NULL;
 
 		if (!b)
@@ -248,6 +257,8 @@ int main(int argc, char **argv)
 			threads = atoi(b);
 		else if (!strcmp(a, "--seconds"))
 			seconds = atof(b);
+		else if (!strcmp(a, "--passes") && atoi(b) >= 1)
+			minpasses = atoi(b);
 		else if (!strcmp(a, "--shot"))
 			shot = b;
 		else if (!strcmp(a, "--stride") && atoi(b) >= 1)
@@ -256,7 +267,6 @@ int main(int argc, char **argv)
 			renderer = b;
 		else
 			return usage();
-		i++;
 	}
 	if (!recpath)
 		return usage();
@@ -350,7 +360,15 @@ int main(int argc, char **argv)
 		px_panel_set_par(panel, &ppar);
 	}
 
-	for (int pass = 0; pass == 0 || (double)total < seconds * 1e9; pass++) {
+	/* each drawn frame's fastest time over the passes */
+	nbest = (ncmds + (size_t)stride - 1) / (size_t)stride;
+	best = malloc(nbest * sizeof(*best));
+	if (!best)
+		return 1;
+	for (size_t k = 0; k < nbest; k++)
+		best[k] = UINT64_MAX;
+	for (int pass = 0; pass < minpasses || (double)total < seconds * 1e9; pass++) {
+		npass++;
 		sim_init_stages(sim, (const struct map *const *)ct.maps, ct.nmaps, &hdr.set, NULL,
 				NULL);
 		for (size_t k = 0; k < ncmds; k++) {
@@ -376,6 +394,8 @@ int main(int argc, char **argv)
 					return 1;
 			}
 			times[nt++] = t2 - t0;
+			if (t2 - t0 < best[k / (size_t)stride])
+				best[k / (size_t)stride] = t2 - t0;
 			total += t2 - t0;
 			rtotal += t1 - t0;
 			if (pass == 0)
@@ -389,12 +409,17 @@ int main(int argc, char **argv)
 	if (shot && shot_png(shot, f.px, w, h, w, ct.tex->pal.rgb) < 0)
 		fprintf(stderr, "rbench: %s: cannot write\n", shot);
 	qsort(times, nt, sizeof(*times), cmp_u64);
+	if (npass > 1) {
+		qsort(best, nbest, sizeof(*best), cmp_u64);
+		snprintf(bests, sizeof(bests), "p50_best_ms=%.3f p99_best_ms=%.3f",
+			 (double)best[nbest / 2] / 1e6, (double)best[nbest * 99 / 100] / 1e6);
+	}
 	getrusage(RUSAGE_SELF, &ru);
-	printf("frames=%zu fps=%.1f render_fps=%.1f p50_ms=%.3f p99_ms=%.3f rss_kib=%ld "
-	       "priv_kib=%ld hash=%016" PRIx64 " threads=%d\n",
+	printf("frames=%zu fps=%.1f render_fps=%.1f p50_ms=%.3f p99_ms=%.3f passes=%d %s "
+	       "rss_kib=%ld priv_kib=%ld hash=%016" PRIx64 " threads=%d\n",
 	       nt, (double)nt * 1e9 / (double)total, (double)nt * 1e9 / (double)rtotal,
-	       (double)times[nt / 2] / 1e6, (double)times[nt * 99 / 100] / 1e6, ru.ru_maxrss,
-	       private_kib(), hash, threads);
+	       (double)times[nt / 2] / 1e6, (double)times[nt * 99 / 100] / 1e6, npass, bests,
+	       ru.ru_maxrss, private_kib(), hash, threads);
 #ifdef RBENCH_GL
 	rgl_free(gl);
 #endif
@@ -403,6 +428,7 @@ int main(int argc, char **argv)
 	r_free(r);
 	ct_free(&ct);
 	free(times);
+	free(best);
 	free(cmds);
 	free(sim);
 	free(panel);
