@@ -270,6 +270,12 @@ static void remap_in_row_ranges_is_the_same(void **state)
 	v_remap_par(&fb, -20, 7, 400, 251, map, &par);
 	assert_int_equal(fake_jobs, 6);
 	assert_memory_equal(a, b, sizeof(a));
+	/* a rectangle of the 1280x720 HUD's order (20,000 pixels) is split */
+	fake_jobs = 0;
+	v_remap(&fa, 50, 120, 200, 100, map);
+	v_remap_par(&fb, 50, 120, 200, 100, map, &par);
+	assert_int_equal(fake_jobs, 6);
+	assert_memory_equal(a, b, sizeof(a));
 	/* below V_PAR_MIN pixels: one v_remap */
 	fake_jobs = 0;
 	v_remap(&fa, 10, 10, 100, 100, map);
