@@ -139,6 +139,37 @@ static void text_past_the_edges_is_clipped(void **state)
 	assert_true(drawn < 0);
 }
 
+/* Text whose cells are inside the frame: every character the font knows,
+ * at scales 1 to 4 and at odd positions, sets exactly the scale x scale
+ * blocks of its font pixels (v_glyph_bit) and nothing else, in a frame
+ * whose pitch is wider than its width. */
+static void text_inside_sets_exactly_its_font_pixels(void **state)
+{
+	enum { TW = 70, TH = 40, TP = 77 };
+	static uint8_t buf[TP * TH];
+	struct r_frame f = { buf, TW, TH, TP };
+	(void)state;
+
+	for (int ch = 32; ch < 127; ch++)
+		for (int sc = 1; sc <= 4; sc++) {
+			int x0 = 1 + ch % 5, y0 = 2 + sc;
+			char str[2] = { (char)ch, 0 };
+
+			memset(buf, 7, sizeof buf);
+			v_text(&f, x0, y0, sc, 9, str);
+			for (int y = 0; y < TH; y++)
+				for (int x = 0; x < TP; x++) {
+					int in = x >= x0 && x < x0 + 8 * sc && y >= y0 && y < y0 + 8 * sc;
+					int want = in && x < TW &&
+						   v_glyph_bit((char)ch, (x - x0) / sc, (y - y0) / sc) ? 9 : 7;
+
+					if (buf[y * TP + x] != want)
+						fail_msg("'%c' scale %d: pixel (%d, %d) is %d, want %d", ch,
+							 sc, x, y, buf[y * TP + x], want);
+				}
+		}
+}
+
 static void lines_are_inclusive_and_clipped(void **state)
 {
 	struct fb b;
@@ -294,6 +325,7 @@ int main(void)
 		cmocka_unit_test(fill_clips_to_the_frame),
 		cmocka_unit_test(a_glyph_is_its_art),
 		cmocka_unit_test(text_past_the_edges_is_clipped),
+		cmocka_unit_test(text_inside_sets_exactly_its_font_pixels),
 		cmocka_unit_test(lines_are_inclusive_and_clipped),
 		cmocka_unit_test(a_triangle_covers_the_pixel_centres_inside),
 		cmocka_unit_test(numbers_are_padded_decimal),
