@@ -15,6 +15,11 @@
  * every claimed job has returned (left reaches 0), so they are the claim's.
  * Batches of more than POOL_CHUNK jobs are run as several.
  *
+ * Waiting for a job (pool_wait_job): when job i of generation g returns,
+ * fin[i] becomes g (a release store, before left counts it), and a waiter
+ * spins until it reads g (acquire): the job's writes are then visible.
+ * Stale stamps are older generations, never equal to the current one.
+ *
  * Sleeping: a worker that saw no new generation for POOL_SPIN polls takes
  * the lock, counts itself in sleepers and waits; pool_run stores the new
  * ticket and then wakes the sleepers if there are any. Both are sequentially
@@ -23,6 +28,7 @@
  */
 #include "app/pool.h"
 
+#include <assert.h>
 #include <errno.h>
 #include <pthread.h>
 #include <sched.h>
@@ -64,6 +70,7 @@ struct pool {
 	void *arg;
 	int base;                       /* index of the chunk's first job */
 	uint32_t gen;                   /* pool_run's side: the last generation */
+	_Atomic uint32_t fin[POOL_WAIT_JOBS]; /* generation each job index last returned in */
 };
 
 static inline void pool_relax(void)
@@ -105,9 +112,14 @@ static void pool_work(struct pool *p, uint32_t g)
 
 		if (POOL_GEN(v) != g || POOL_NEXT(v) >= POOL_N(v))
 			return;
+		int i;
+
 		if (!atomic_compare_exchange_weak(&p->ticket, &v, v + 1))
 			continue;
-		p->job(p->arg, p->base + (int)POOL_NEXT(v));
+		i = p->base + (int)POOL_NEXT(v);
+		p->job(p->arg, i);
+		if (i < POOL_WAIT_JOBS)
+			atomic_store_explicit(&p->fin[i], g, memory_order_release);
 		if (atomic_fetch_sub(&p->left, 1) == 1) {
 			pthread_mutex_lock(&p->mu);
 			pthread_cond_signal(&p->done);
@@ -196,6 +208,8 @@ int pool_new(int threads, struct pool **out)
 	atomic_init(&p->stop, 0);
 	atomic_init(&p->warm, 0);
 	atomic_init(&p->warmed, 0);
+	for (int i = 0; i < POOL_WAIT_JOBS; i++)
+		atomic_init(&p->fin[i], 0);
 	for (int i = 0; i < threads - 1; i++) {
 		rc = pthread_create(&p->th[i], NULL, pool_main, p);
 		if (rc != 0) {
@@ -270,8 +284,14 @@ void pool_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
 	if (n <= 0)
 		return;
 	if (p->nth == 0 || n == 1) {
-		for (int i = 0; i < n; i++)
+		/* a generation of its own, so that waits in these jobs see
+		 * the jobs before them returned */
+		p->gen++;
+		for (int i = 0; i < n; i++) {
 			job(arg, i);
+			if (i < POOL_WAIT_JOBS)
+				atomic_store_explicit(&p->fin[i], p->gen, memory_order_release);
+		}
 		return;
 	}
 	for (int base = 0; base < n; base += POOL_CHUNK)
@@ -286,6 +306,22 @@ uint64_t pool_now(void)
 	return (uint64_t)ts.tv_sec * 1000000000u + (uint64_t)ts.tv_nsec;
 }
 
+void pool_wait_job(void *pool, int i)
+{
+	struct pool *p = pool;
+	/* set before the batch's ticket was published, which this job's
+	 * claim read */
+	uint32_t g = p->gen;
+
+	assert(i >= 0 && i < POOL_WAIT_JOBS);
+	for (unsigned k = 1; atomic_load_explicit(&p->fin[i], memory_order_acquire) != g; k++) {
+		pool_relax();
+		/* the job's thread may be off its CPU: give it the CPU */
+		if ((k & 1023) == 0)
+			sched_yield();
+	}
+}
+
 void pool_r_par(struct pool *p, struct r_par *out)
 {
 	out->run = pool_run;
@@ -293,6 +329,8 @@ void pool_r_par(struct pool *p, struct r_par *out)
 	out->threads = pool_threads(p);
 	out->now = pool_now;
 	out->warm = pool_warm;
+	out->wait = pool_wait_job;
+	out->wait_jobs = POOL_WAIT_JOBS;
 }
 
 void pool_px_par(struct pool *p, struct px_par *out)

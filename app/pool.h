@@ -64,6 +64,17 @@ unsigned pool_warmed(const struct pool *p);
  * struct pool * (void * to fit struct r_par). */
 void pool_run(void *p, int n, void (*job)(void *arg, int i), void *arg);
 
+/* Largest job index pool_wait_job can wait for, plus one. */
+#define POOL_WAIT_JOBS 1024
+
+/* From inside a job of the running batch: returns once job i of that
+ * batch has returned, its writes then visible. i must be lower than the
+ * calling job's own index and below POOL_WAIT_JOBS. Jobs are handed out
+ * in index order, so job i was claimed before the caller's and is running
+ * or done; since every wait points to a lower index, waits never close a
+ * loop. Spins (yielding the CPU now and then). p is a struct pool *. */
+void pool_wait_job(void *p, int i);
+
 /* One job on a thread of its own, for work that overlaps the caller's
  * (the content loader's light maps, app/ct.c). pool_task_start runs
  * fn(arg) on a new thread: 0 with *out, or -errno when no thread could be
@@ -79,7 +90,7 @@ uint64_t pool_now(void);
 
 /* The renderer's view of the pool: out->run = pool_run, out->pool = p,
  * out->threads = pool_threads(p), out->now = pool_now, out->warm =
- * pool_warm. */
+ * pool_warm, out->wait = pool_wait_job, out->wait_jobs = POOL_WAIT_JOBS. */
 void pool_r_par(struct pool *p, struct r_par *out);
 
 /* The same for the display's present (display/px.h). */

@@ -234,8 +234,8 @@ struct r_ctx {
 	struct r_strip *strips;
 	int nstrips, strip_shift, band_shift, nbands;
 	struct r_par par;               /* run == NULL: strips drawn in turn */
-	/* 2 * nstrips: the strips costliest first for the first batch, then
-	 * for the second (r_strip.c) */
+	/* 3 * nstrips: the strips costliest first for the first phase, then
+	 * for the second, then each strip's place in the first (r_strip.c) */
 	int32_t *strip_order;
 	const struct r_sprite *wspr;    /* the walk's rest (r_strip_draw_all) */
 	int wnspr, world;

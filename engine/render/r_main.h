@@ -139,6 +139,13 @@ struct r_par {
 	 * walk), so workers asleep can be running again by then. Any time
 	 * between batches; NULL: nothing to do. */
 	void (*warm)(void *pool);
+	/* Optional: from inside a job of the running batch, returns once job
+	 * i of that batch has returned (its writes visible); i is below the
+	 * calling job's own index (handed out before it: running or done)
+	 * and below wait_jobs. With it the strips are one batch instead of
+	 * two (r_strip.c). NULL: two batches. */
+	void (*wait)(void *pool, int i);
+	int wait_jobs;
 };
 
 /* Draws the next frames' strips through par (copied; the pool must outlive

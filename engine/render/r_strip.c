@@ -19,23 +19,29 @@
  * other. A list that cannot grow makes the walk draw that run at once: the
  * frame stays whole and the same (counted in stats.degraded).
  *
- * With a pool the strips are drawn in two batches, so that the rest of the
- * walk runs beside them rather than before: job 0 of the first batch
- * records the flats' spans (r_plane_draw_flats) and projects the sprites,
- * while the other jobs draw the strips' column runs (walls and sky, all
- * recorded by then); the second batch draws each strip's spans, black fill
- * and sprites. Runs, spans and the fill write disjoint pixels, so the
- * order changes no byte. While job 0 records spans only its own fields
+ * With a pool the strips are drawn in two phases, so that the rest of the
+ * walk runs beside them rather than before: job 0 of the first records
+ * the flats' spans (r_plane_draw_flats) and projects the sprites, while
+ * the other jobs draw the strips' column runs (walls and sky, all recorded
+ * by then); the second draws each strip's spans, black fill and sprites.
+ * When the pool can wait for a job (r_par.wait) both phases are one batch
+ * of 2n + 1 jobs, a strip's second-phase job waiting for job 0 and for its
+ * own column job (both handed out before it), so a thread done with the
+ * column runs goes on with the strips that are ready instead of waiting at
+ * the end of a batch for the other thread's last strip; else they are two
+ * batches. Runs, spans and the fill write disjoint pixels, so the order
+ * changes no byte. While job 0 records spans only its own fields
  * change (ctx.spans, each strip's span list, ctx.st), and a span it must
  * draw at once (out of memory) writes pixels no run has and counts them in
  * the strip's spanned, not in written, which a column job counts in.
- * Each batch hands its strips out costliest first by what each cost in
- * that batch the previous frame (the time the caller's clock measured,
+ * Each phase hands its strips out costliest first by what each cost in
+ * that phase the previous frame (the time the caller's clock measured,
  * r_par.now, else the pixels drawn there), so the last job to start is a
  * cheap one and the threads end together. The two orders differ: a strip
  * of sky costs little in the first batch and its floor much in the second.
- * (With one order by the sum, the first batch at 3840x2160 ended with one
- * thread idle 0.30 ms a frame on average, 0.25 ms with its own.)
+ * (With one order by the sum, the first phase at 3840x2160 ended with one
+ * thread idle 0.30 ms a frame on average, 0.25 ms with its own, as a
+ * batch of its own.)
  */
 #include <assert.h>
 #include <errno.h>
@@ -68,7 +74,7 @@ int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
 	int nbands = (r->h + (1 << band_shift) - 1) >> band_shift;
 	/* sizeof is a multiple of the 64-byte alignment */
 	struct r_strip *st = aligned_alloc(64, (size_t)n * sizeof(*st));
-	int32_t *order = malloc(2 * (size_t)n * sizeof(*order));
+	int32_t *order = malloc(3 * (size_t)n * sizeof(*order));
 
 	if (!st || !order) {
 		free(st);
@@ -76,7 +82,7 @@ int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
 		return -ENOMEM;
 	}
 	memset(st, 0, (size_t)n * sizeof(*st));
-	for (int i = 0; i < 2 * n; i++)
+	for (int i = 0; i < 3 * n; i++)
 		order[i] = i % n;
 	for (int i = 0; i < n; i++) {
 		struct r_strip *s = &st[i];
@@ -334,16 +340,41 @@ static void r_strip_job_cols(void *arg, int i)
 	s->cost_cols = r_strip_now(r) - t0;
 }
 
-/* Second batch: the spans, fill and sprites of the strip i places down
- * the second order. */
-static void r_strip_job_rest(void *arg, int i)
+/* Second phase, strip s: its spans, fill and sprites, timed. */
+static void r_strip_rest_timed(struct r_ctx *r, struct r_strip *s)
 {
-	struct r_ctx *r = arg;
-	struct r_strip *s = &r->strips[r->strip_order[r->nstrips + i]];
 	uint64_t t0 = r_strip_now(r);
 
 	r_strip_rest(r, s);
 	s->cost_rest = r_strip_now(r) - t0;
+}
+
+/* Second batch: the strip i places down the second order. */
+static void r_strip_job_rest(void *arg, int i)
+{
+	struct r_ctx *r = arg;
+
+	r_strip_rest_timed(r, &r->strips[r->strip_order[r->nstrips + i]]);
+}
+
+/* Both phases as one batch: jobs 0..n as the first batch's, then job
+ * n + 1 + k the second phase of the strip k places down the second order,
+ * once job 0 (the spans and sprites it draws) and the strip's own column
+ * job (the walls its sprites go over) have returned. */
+static void r_strip_job_one(void *arg, int i)
+{
+	struct r_ctx *r = arg;
+	int s;
+
+	if (i <= r->nstrips) {
+		r_strip_job_cols(arg, i);
+		return;
+	}
+	/* order[n + k] with k = i - n - 1 */
+	s = r->strip_order[i - 1];
+	r->par.wait(r->par.pool, 0);
+	r->par.wait(r->par.pool, 1 + r->strip_order[2 * r->nstrips + s]);
+	r_strip_rest_timed(r, &r->strips[s]);
 }
 
 /* What strip s cost in the first batch (rest 0) or the second (rest 1). */
@@ -352,9 +383,10 @@ static uint64_t r_strip_cost(const struct r_strip *s, int rest)
 	return rest ? s->cost_rest : s->cost_cols;
 }
 
-/* The order of batch rest (0 or 1): the strips by what they cost in it
+/* The order of phase rest (0 or 1): the strips by what they cost in it
  * this frame, costliest first, ties by position; the pool hands jobs out
- * in index order. */
+ * in index order. After the first phase's, strip_order[2n + s] is strip
+ * s's place in it. */
 static void r_strip_sort(struct r_ctx *r, int rest)
 {
 	int32_t *o = r->strip_order + (rest ? r->nstrips : 0);
@@ -369,6 +401,9 @@ static void r_strip_sort(struct r_ctx *r, int rest)
 		}
 		o[k] = i;
 	}
+	if (!rest)
+		for (int k = 0; k < r->nstrips; k++)
+			r->strip_order[2 * r->nstrips + o[k]] = k;
 }
 
 void r_strip_draw_all(struct r_ctx *r, const struct r_sprite *spr, int nspr, int world)
@@ -376,7 +411,9 @@ void r_strip_draw_all(struct r_ctx *r, const struct r_sprite *spr, int nspr, int
 	r->wspr = spr;
 	r->wnspr = nspr;
 	r->world = world;
-	if (r->par.run && r->nstrips > 1) {
+	if (r->par.run && r->nstrips > 1 && r->par.wait && 2 * r->nstrips + 1 <= r->par.wait_jobs) {
+		r->par.run(r->par.pool, 2 * r->nstrips + 1, r_strip_job_one, r);
+	} else if (r->par.run && r->nstrips > 1) {
 		r->par.run(r->par.pool, r->nstrips + 1, r_strip_job_cols, r);
 		r->par.run(r->par.pool, r->nstrips, r_strip_job_rest, r);
 	} else {

@@ -2,7 +2,8 @@
  * Tests for app/pool.c: every job of a batch runs exactly once, batches
  * follow each other without mixing, jobs do run at the same time on
  * several threads, pool_warm wakes a sleeping worker without losing or
- * repeating a job, pool_pin gives each thread a CPU of its own, and the
+ * repeating a job, pool_pin gives each thread a CPU of its own,
+ * pool_wait_job returns only once the job waited for has returned, and the
  * edge cases (no jobs, one thread, bad sizes, more threads than CPUs).
  */
 #include <errno.h>
@@ -313,6 +314,63 @@ static void a_task_runs_beside_the_caller(void **state)
 	pool_task_join(NULL);
 }
 
+/* Jobs that wait: even job i writes tag into val[i] after a few
+ * microseconds of work; odd job i waits for job i - 1 and for job 0, then
+ * reads both values, which must be this batch's tag (plain ints: only the
+ * wait makes the writes visible). */
+struct waits {
+	struct pool *pool;
+	int tag;
+	int val[MAXJ];
+	atomic_int bad, runs;
+};
+
+static void wait_job(void *arg, int i)
+{
+	struct waits *w = arg;
+
+	atomic_fetch_add(&w->runs, 1);
+	if (i % 2 == 0) {
+		uint64_t t0 = pool_now();
+
+		while (pool_now() - t0 < 20000)
+			;
+		w->val[i] = w->tag;
+		return;
+	}
+	pool_wait_job(w->pool, i - 1);
+	pool_wait_job(w->pool, 0);
+	if (w->val[i - 1] != w->tag || w->val[0] != w->tag)
+		atomic_fetch_add(&w->bad, 1);
+}
+
+/* 200 batches of 2..100 such jobs on pools of 1, 2 and 4 threads: no odd
+ * job ever read a value before its even job wrote it, and every job ran
+ * once. */
+static void a_job_waits_for_the_lower_job_it_names(void **state)
+{
+	static const int sizes[] = { 1, 2, 4 };
+	static struct waits w;
+	(void)state;
+
+	for (size_t z = 0; z < sizeof(sizes) / sizeof(sizes[0]); z++) {
+		struct pool *p;
+
+		assert_int_equal(pool_new(sizes[z], &p), 0);
+		w.pool = p;
+		for (int k = 0; k < 200; k++) {
+			int n = 2 + (k * 37) % 99;
+
+			w.tag = k * 7 + 1 + (int)z * 10000;
+			atomic_store(&w.runs, 0);
+			pool_run(p, n, wait_job, &w);
+			assert_int_equal(atomic_load(&w.runs), n);
+		}
+		assert_int_equal(atomic_load(&w.bad), 0);
+		pool_free(p);
+	}
+}
+
 static void nothing_to_do_returns_at_once(void **state)
 {
 	struct pool *p;
@@ -336,6 +394,8 @@ static void r_par_points_at_the_pool(void **state)
 	pool_r_par(p, &par);
 	assert_ptr_equal(par.pool, p);
 	assert_ptr_equal(par.warm, pool_warm);
+	assert_ptr_equal(par.wait, pool_wait_job);
+	assert_int_equal(par.wait_jobs, POOL_WAIT_JOBS);
 	par.run(par.pool, 3, count_job, &b);
 	assert_int_equal(atomic_load(&b.runs[0]) + atomic_load(&b.runs[1]) +
 			 atomic_load(&b.runs[2]), 3);
@@ -353,6 +413,7 @@ int main(void)
 		cmocka_unit_test(warm_and_batches_interleave),
 		cmocka_unit_test(pin_gives_each_thread_a_cpu_of_its_own),
 		cmocka_unit_test(pin_refuses_more_threads_than_cpus),
+		cmocka_unit_test(a_job_waits_for_the_lower_job_it_names),
 		cmocka_unit_test(a_task_runs_beside_the_caller),
 		cmocka_unit_test(nothing_to_do_returns_at_once),
 		cmocka_unit_test(r_par_points_at_the_pool),

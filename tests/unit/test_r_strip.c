@@ -51,15 +51,18 @@ struct way {
 	const char *name;
 };
 
-enum { WAYS = 5 };
+enum { WAYS = 6 };
 
 /* 0: the reference (one strip, one band, no pool); 1: defaults (one strip,
  * bands); 2: 64-column strips, 8-row bands, 2 threads; 3: defaults for 3
- * threads; 4: 64-column strips, 1-row bands, 2 threads. */
+ * threads; 4: 64-column strips, 1-row bands, 2 threads; 5: 64-column
+ * strips on 2 threads in two batches (a pool that cannot wait for a job).
+ * Ways 2 to 4 draw in one batch whose jobs wait (r_par.wait). */
 static void ways_open(struct way *w, int width, int height)
 {
 	static const char *names[WAYS] = { "reference", "default", "64x8, 2 threads",
-					   "default, 3 threads", "64x1, 2 threads" };
+					   "default, 3 threads", "64x1, 2 threads",
+					   "64 wide, 2 threads, two batches" };
 
 	for (int i = 0; i < WAYS; i++) {
 		struct r_par par;
@@ -73,6 +76,8 @@ static void ways_open(struct way *w, int width, int height)
 		if (i >= 2) {
 			assert_int_equal(pool_new(i == 3 ? 3 : 2, &w[i].pool), 0);
 			pool_r_par(w[i].pool, &par);
+			if (i == 5)
+				par.wait = NULL;
 			assert_int_equal(r_set_par(w[i].r, &par), 0);
 		}
 		if (i == 0)
@@ -81,6 +86,8 @@ static void ways_open(struct way *w, int width, int height)
 			assert_int_equal(r_strip_layout(w[i].r, 6, 3), 0);
 		if (i == 4)
 			assert_int_equal(r_strip_layout(w[i].r, 6, 0), 0);
+		if (i == 5)
+			assert_int_equal(r_strip_layout(w[i].r, 6, R_BAND_SHIFT), 0);
 	}
 	assert_int_equal(w[0].r->nstrips, 1);
 	assert_int_equal(w[0].r->nbands, 1);
@@ -147,7 +154,7 @@ static void layout_cuts_whole_cache_lines_per_thread(void **state)
 
 	for (size_t i = 0; i < sizeof(widths) / sizeof(widths[0]); i++) {
 		for (int t = 1; t <= 4; t++) {
-			struct r_par par = { fake_run, NULL, t, NULL, NULL };
+			struct r_par par = { fake_run, NULL, t, NULL, NULL, NULL, 0 };
 			struct r_ctx *r;
 			int w = widths[i], covered = 0;
 
@@ -215,7 +222,7 @@ static void check_order(const struct r_ctx *r, int h)
  * the reverse), so one order for both would fail here. */
 static void each_batch_orders_strips_by_its_own_cost(void **state)
 {
-	struct r_par par = { run_in_order, NULL, 2, NULL, NULL };
+	struct r_par par = { run_in_order, NULL, 2, NULL, NULL, NULL, 0 };
 	struct tex_set *t;
 	struct r_ctx *r;
 	uint8_t *px = malloc(2048 * 200);
@@ -250,6 +257,8 @@ static void each_batch_orders_strips_by_its_own_cost(void **state)
 			}
 			check_order(r, 0);
 			check_order(r, 1);
+			for (int k = 0; k < r->nstrips; k++)
+				assert_int_equal(r->strip_order[2 * r->nstrips + r->strip_order[k]], k);
 			differ += memcmp(r->strip_order, r->strip_order + r->nstrips,
 					 (size_t)r->nstrips * sizeof(*r->strip_order)) != 0;
 		}
@@ -257,6 +266,56 @@ static void each_batch_orders_strips_by_its_own_cost(void **state)
 	}
 	assert_true(differ > 0);
 	r_free(r);
+	r_pal_set_free(t);
+	free(px);
+}
+
+/* A pool_run that counts its batches. */
+static int batches;
+
+static void counting_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
+{
+	batches++;
+	pool_run(pool, n, job, arg);
+}
+
+/* A frame's strips are one batch on a pool that can wait for a job, two
+ * on one that cannot; the frames are the same (the ways below compare
+ * them on many views). */
+static void strips_are_one_batch_when_the_pool_can_wait(void **state)
+{
+	struct tex_set *t;
+	struct map *m;
+	struct pool *p;
+	struct r_par par;
+	struct r_ctx *r;
+	uint8_t *px = malloc(1024 * 200);
+	struct r_frame f = { px, 1024, 200, 1024 };
+	struct r_view v = { 0 };
+	(void)state;
+
+	assert_non_null(px);
+	assert_int_equal(r_pal_set_new(&t), 0);
+	assert_int_equal(lvl_builtin(0, &m), 0);
+	assert_int_equal(pool_new(2, &p), 0);
+	assert_int_equal(r_new(1024, 200, &r), 0);
+	v.x = m->vertices[0].x / 2 + m->vertices[m->num_vertices - 1].x / 2;
+	v.y = m->vertices[0].y / 2 + m->vertices[m->num_vertices - 1].y / 2;
+	v.z = m->sectors[map_point_sector(m, v.x, v.y)].floor_h + 41 * FX_ONE;
+	for (int can = 1; can >= 0; can--) {
+		pool_r_par(p, &par);
+		par.run = counting_run;
+		if (!can)
+			par.wait = NULL;
+		assert_int_equal(r_set_par(r, &par), 0);
+		assert_true(r->nstrips > 1);
+		batches = 0;
+		r_render(r, m, t, &v, NULL, 0, &f);
+		assert_int_equal(batches, can ? 1 : 2);
+	}
+	r_free(r);
+	pool_free(p);
+	map_free(m);
 	r_pal_set_free(t);
 	free(px);
 }
@@ -379,6 +438,7 @@ int main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(layout_cuts_whole_cache_lines_per_thread),
 		cmocka_unit_test(each_batch_orders_strips_by_its_own_cost),
+		cmocka_unit_test(strips_are_one_batch_when_the_pool_can_wait),
 		cmocka_unit_test(builtin_levels_same_frame_every_way),
 		cmocka_unit_test(freedoom_maps_same_frame_every_way),
 	};

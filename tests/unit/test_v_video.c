@@ -288,7 +288,7 @@ static void remap_in_row_ranges_is_the_same(void **state)
 	enum { BW = 301, BH = 260, BP = 320 };
 	static uint8_t a[BP * BH], b[BP * BH];
 	struct r_frame fa = { a, BW, BH, BP }, fb = { b, BW, BH, BP };
-	struct r_par par = { fake_run, NULL, 3, NULL, NULL };
+	struct r_par par = { fake_run, NULL, 3, NULL, NULL, NULL, 0 };
 	uint8_t map[256];
 	(void)state;
 
