@@ -109,11 +109,10 @@ static void pool_work(struct pool *p, uint32_t g)
 {
 	for (;;) {
 		uint64_t v = atomic_load(&p->ticket);
+		int i;
 
 		if (POOL_GEN(v) != g || POOL_NEXT(v) >= POOL_N(v))
 			return;
-		int i;
-
 		if (!atomic_compare_exchange_weak(&p->ticket, &v, v + 1))
 			continue;
 		i = p->base + (int)POOL_NEXT(v);

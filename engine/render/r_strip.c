@@ -38,7 +38,7 @@
  * that phase the previous frame (the time the caller's clock measured,
  * r_par.now, else the pixels drawn there), so the last job to start is a
  * cheap one and the threads end together. The two orders differ: a strip
- * of sky costs little in the first batch and its floor much in the second.
+ * of sky costs little in the first phase and its floor much in the second.
  * (With one order by the sum, the first phase at 3840x2160 ended with one
  * thread idle 0.30 ms a frame on average, 0.25 ms with its own, as a
  * batch of its own.)
@@ -377,7 +377,7 @@ static void r_strip_job_one(void *arg, int i)
 	r_strip_rest_timed(r, &r->strips[s]);
 }
 
-/* What strip s cost in the first batch (rest 0) or the second (rest 1). */
+/* What strip s cost in the first phase (rest 0) or the second (rest 1). */
 static uint64_t r_strip_cost(const struct r_strip *s, int rest)
 {
 	return rest ? s->cost_rest : s->cost_cols;
