@@ -15,10 +15,12 @@
  * every claimed job has returned (left reaches 0), so they are the claim's.
  * Batches of more than POOL_CHUNK jobs are run as several.
  *
- * Waiting for a job (pool_wait_job): when job i of generation g returns,
- * fin[i] becomes g (a release store, before left counts it), and a waiter
- * spins until it reads g (acquire): the job's writes are then visible.
- * Stale stamps are older generations, never equal to the current one.
+ * Waiting for a job (pool_wait_job): when job i of pool_run's batch b
+ * returns, fin[i] becomes b (a release store, before left counts it), and
+ * a waiter spins until it reads b (acquire): the job's writes are then
+ * visible. The stamp is the batch's, not a chunk's generation, so a job of
+ * a later chunk can wait for one of the first. Stale stamps are older
+ * batches, never equal to the current one.
  *
  * Sleeping: a worker that saw no new generation for POOL_SPIN polls takes
  * the lock, counts itself in sleepers and waits; pool_run stores the new
@@ -70,7 +72,8 @@ struct pool {
 	void *arg;
 	int base;                       /* index of the chunk's first job */
 	uint32_t gen;                   /* pool_run's side: the last generation */
-	_Atomic uint32_t fin[POOL_WAIT_JOBS]; /* generation each job index last returned in */
+	uint32_t batch;                 /* pool_run's count of batches, 0 before the first */
+	_Atomic uint32_t fin[POOL_WAIT_JOBS]; /* batch each job index last returned in */
 };
 
 static inline void pool_relax(void)
@@ -104,6 +107,13 @@ static void pool_wake(struct pool *p)
 	}
 }
 
+/* Job i of the current batch has returned (pool_wait_job). */
+static void pool_stamp(struct pool *p, int i)
+{
+	if (i < POOL_WAIT_JOBS)
+		atomic_store_explicit(&p->fin[i], p->batch, memory_order_release);
+}
+
 /* Claims and runs jobs of generation g until none is left. */
 static void pool_work(struct pool *p, uint32_t g)
 {
@@ -117,8 +127,7 @@ static void pool_work(struct pool *p, uint32_t g)
 			continue;
 		i = p->base + (int)POOL_NEXT(v);
 		p->job(p->arg, i);
-		if (i < POOL_WAIT_JOBS)
-			atomic_store_explicit(&p->fin[i], g, memory_order_release);
+		pool_stamp(p, i);
 		if (atomic_fetch_sub(&p->left, 1) == 1) {
 			pthread_mutex_lock(&p->mu);
 			pthread_cond_signal(&p->done);
@@ -282,14 +291,11 @@ void pool_run(void *pool, int n, void (*job)(void *arg, int i), void *arg)
 
 	if (n <= 0)
 		return;
+	p->batch++;
 	if (p->nth == 0 || n == 1) {
-		/* a generation of its own, so that waits in these jobs see
-		 * the jobs before them returned */
-		p->gen++;
 		for (int i = 0; i < n; i++) {
 			job(arg, i);
-			if (i < POOL_WAIT_JOBS)
-				atomic_store_explicit(&p->fin[i], p->gen, memory_order_release);
+			pool_stamp(p, i);
 		}
 		return;
 	}
@@ -308,12 +314,12 @@ uint64_t pool_now(void)
 void pool_wait_job(void *pool, int i)
 {
 	struct pool *p = pool;
-	/* set before the batch's ticket was published, which this job's
+	/* set before the chunk's ticket was published, which this job's
 	 * claim read */
-	uint32_t g = p->gen;
+	uint32_t b = p->batch;
 
 	assert(i >= 0 && i < POOL_WAIT_JOBS);
-	for (unsigned k = 1; atomic_load_explicit(&p->fin[i], memory_order_acquire) != g; k++) {
+	for (unsigned k = 1; atomic_load_explicit(&p->fin[i], memory_order_acquire) != b; k++) {
 		pool_relax();
 		/* the job's thread may be off its CPU: give it the CPU */
 		if ((k & 1023) == 0)

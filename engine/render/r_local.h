@@ -214,7 +214,7 @@ struct r_strip {
 	uint32_t *mdep;
 	int mbufcap, mdepcap;
 	/* of the last frame, ns (r_par.now) or pixels: the column runs (first
-	 * batch) and the rest (second batch), each batch ordered by its own */
+	 * phase) and the rest (second phase), each phase ordered by its own */
 	uint64_t cost_cols, cost_rest;
 	/* Indices into ctx.spans crossing it. On a cache line of their own:
 	 * the walk's rest appends to them while another thread draws this

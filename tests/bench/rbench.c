@@ -196,6 +196,12 @@ static int cmp_u64(const void *a, const void *b)
 	return x < y ? -1 : x > y;
 }
 
+/* The pct-th percentile of n sorted times, in ms. */
+static double ms_at(const uint64_t *sorted, size_t n, int pct)
+{
+	return (double)sorted[n * (size_t)pct / 100] / 1e6;
+}
+
 static int usage(void)
 {
 	fprintf(stderr, "usage: rbench --rec FILE (--level N | --wad FILE --map NAME) "
@@ -210,7 +216,7 @@ int main(int argc, char **argv)
 	struct ct_spec spec = { 0 };
 	struct ct ct;
 	const char *recpath = NULL, *shot = NULL, *renderer = "sw";
-	int w = 320, h = 240, threads = 1, stride = 1, minpasses = 1, npass = 0, rc;
+	int w = 320, h = 240, threads = 1, stride = 1, minpasses = 1, pass, rc;
 	double seconds = 1.0;
 	char err[512] = "";
 	struct rec_reader *rr;
@@ -367,8 +373,7 @@ int main(int argc, char **argv)
 		return 1;
 	for (size_t k = 0; k < nbest; k++)
 		best[k] = UINT64_MAX;
-	for (int pass = 0; pass < minpasses || (double)total < seconds * 1e9; pass++) {
-		npass++;
+	for (pass = 0; pass < minpasses || (double)total < seconds * 1e9; pass++) {
 		sim_init_stages(sim, (const struct map *const *)ct.maps, ct.nmaps, &hdr.set, NULL,
 				NULL);
 		for (size_t k = 0; k < ncmds; k++) {
@@ -409,16 +414,16 @@ int main(int argc, char **argv)
 	if (shot && shot_png(shot, f.px, w, h, w, ct.tex->pal.rgb) < 0)
 		fprintf(stderr, "rbench: %s: cannot write\n", shot);
 	qsort(times, nt, sizeof(*times), cmp_u64);
-	if (npass > 1) {
+	if (pass > 1) {
 		qsort(best, nbest, sizeof(*best), cmp_u64);
 		snprintf(bests, sizeof(bests), "p50_best_ms=%.3f p99_best_ms=%.3f",
-			 (double)best[nbest / 2] / 1e6, (double)best[nbest * 99 / 100] / 1e6);
+			 ms_at(best, nbest, 50), ms_at(best, nbest, 99));
 	}
 	getrusage(RUSAGE_SELF, &ru);
 	printf("frames=%zu fps=%.1f render_fps=%.1f p50_ms=%.3f p99_ms=%.3f passes=%d %s "
 	       "rss_kib=%ld priv_kib=%ld hash=%016" PRIx64 " threads=%d\n",
 	       nt, (double)nt * 1e9 / (double)total, (double)nt * 1e9 / (double)rtotal,
-	       (double)times[nt / 2] / 1e6, (double)times[nt * 99 / 100] / 1e6, npass, bests,
+	       ms_at(times, nt, 50), ms_at(times, nt, 99), pass, bests,
 	       ru.ru_maxrss, private_kib(), hash, threads);
 #ifdef RBENCH_GL
 	rgl_free(gl);

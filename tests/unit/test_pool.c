@@ -16,6 +16,7 @@
 #include <stdint.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <cmocka.h>
 
@@ -344,9 +345,30 @@ static void wait_job(void *arg, int i)
 		atomic_fetch_add(&w->bad, 1);
 }
 
+/* A batch longer than a ticket holds (run in chunks): job 7 writes after a
+ * few microseconds, and the last job, in the last chunk, waits for it. */
+static void far_wait_job(void *arg, int i)
+{
+	struct waits *w = arg;
+
+	atomic_fetch_add(&w->runs, 1);
+	if (i == 7) {
+		uint64_t t0 = pool_now();
+
+		while (pool_now() - t0 < 20000)
+			;
+		w->val[7] = w->tag;
+	} else if (i == 69999) {
+		pool_wait_job(w->pool, 7);
+		if (w->val[7] != w->tag)
+			atomic_fetch_add(&w->bad, 1);
+	}
+}
+
 /* 200 batches of 2..100 such jobs on pools of 1, 2 and 4 threads: no odd
  * job ever read a value before its even job wrote it, and every job ran
- * once. */
+ * once. Then a batch of 70,000 where a job of its last chunk waits for one
+ * of its first (a stamp per chunk would never match: it would hang). */
 static void a_job_waits_for_the_lower_job_it_names(void **state)
 {
 	static const int sizes[] = { 1, 2, 4 };
@@ -366,6 +388,14 @@ static void a_job_waits_for_the_lower_job_it_names(void **state)
 			pool_run(p, n, wait_job, &w);
 			assert_int_equal(atomic_load(&w.runs), n);
 		}
+		w.tag = 424242 + (int)z;
+		atomic_store(&w.runs, 0);
+		/* a wait that never ends kills the binary (counted failed)
+		 * instead of hanging the suite */
+		alarm(60);
+		pool_run(p, 70000, far_wait_job, &w);
+		alarm(0);
+		assert_int_equal(atomic_load(&w.runs), 70000);
 		assert_int_equal(atomic_load(&w.bad), 0);
 		pool_free(p);
 	}

@@ -41,6 +41,23 @@ static uint32_t lcg(uint32_t *s)
 	return *s >> 8;
 }
 
+/* A seeded view of map m: a point between two vertices plus up to 64
+ * units (inside a sector or outside every one), 8 to 87 units above the
+ * floor there, any angle, shear -100..100. */
+static struct r_view seeded_view(const struct map *m, uint32_t *seed)
+{
+	struct r_view v = { 0 };
+	const struct map_vertex *a = &m->vertices[lcg(seed) % m->num_vertices];
+	const struct map_vertex *b = &m->vertices[lcg(seed) % m->num_vertices];
+
+	v.x = a->x / 2 + b->x / 2 + (fx_t)(lcg(seed) % 64) * FX_ONE;
+	v.y = a->y / 2 + b->y / 2 + (fx_t)(lcg(seed) % 64) * FX_ONE;
+	v.z = m->sectors[map_point_sector(m, v.x, v.y)].floor_h + (fx_t)(8 + lcg(seed) % 80) * FX_ONE;
+	v.angle = lcg(seed) * 2654435761u;
+	v.shear = (int32_t)(lcg(seed) % 201) - 100;
+	return v;
+}
+
 /* One way of drawing: a context with a strip layout, and a pool or none. */
 struct way {
 	struct r_ctx *r;
@@ -241,13 +258,8 @@ static void each_batch_orders_strips_by_its_own_cost(void **state)
 
 		assert_int_equal(lvl_builtin(lv, &m), 0);
 		for (int n = 0; n < 20; n++) {
-			struct r_view v = { 0 };
-			const struct map_vertex *a = &m->vertices[lcg(&seed) % m->num_vertices];
+			struct r_view v = seeded_view(m, &seed);
 
-			v.x = a->x + (fx_t)(lcg(&seed) % 64) * FX_ONE;
-			v.y = a->y + (fx_t)(lcg(&seed) % 64) * FX_ONE;
-			v.z = m->sectors[map_point_sector(m, v.x, v.y)].floor_h + 41 * FX_ONE;
-			v.angle = lcg(&seed) * 2654435761u;
 			r_render(r, m, t, &v, NULL, 0, &f);
 			for (int i = 0; i < r->nstrips; i++) {
 				const struct r_strip *s = &r->strips[i];
@@ -291,17 +303,16 @@ static void strips_are_one_batch_when_the_pool_can_wait(void **state)
 	struct r_ctx *r;
 	uint8_t *px = malloc(1024 * 200);
 	struct r_frame f = { px, 1024, 200, 1024 };
-	struct r_view v = { 0 };
+	struct r_view v;
+	uint32_t seed = 99;
 	(void)state;
 
 	assert_non_null(px);
 	assert_int_equal(r_pal_set_new(&t), 0);
 	assert_int_equal(lvl_builtin(0, &m), 0);
+	v = seeded_view(m, &seed);
 	assert_int_equal(pool_new(2, &p), 0);
 	assert_int_equal(r_new(1024, 200, &r), 0);
-	v.x = m->vertices[0].x / 2 + m->vertices[m->num_vertices - 1].x / 2;
-	v.y = m->vertices[0].y / 2 + m->vertices[m->num_vertices - 1].y / 2;
-	v.z = m->sectors[map_point_sector(m, v.x, v.y)].floor_h + 41 * FX_ONE;
 	for (int can = 1; can >= 0; can--) {
 		pool_r_par(p, &par);
 		par.run = counting_run;
@@ -339,17 +350,8 @@ static void builtin_levels_same_frame_every_way(void **state)
 
 			assert_int_equal(lvl_builtin(lv, &m), 0);
 			for (int n = 0; n < 60; n++) {
-				struct r_view v = { 0 };
-				const struct map_vertex *a = &m->vertices[lcg(&seed) % m->num_vertices];
-				const struct map_vertex *b = &m->vertices[lcg(&seed) % m->num_vertices];
+				struct r_view v = seeded_view(m, &seed);
 
-				/* a point between two vertices: inside or outside */
-				v.x = a->x / 2 + b->x / 2 + (fx_t)(lcg(&seed) % 64) * FX_ONE;
-				v.y = a->y / 2 + b->y / 2 + (fx_t)(lcg(&seed) % 64) * FX_ONE;
-				v.z = m->sectors[map_point_sector(m, v.x, v.y)].floor_h +
-				      (fx_t)(8 + lcg(&seed) % 80) * FX_ONE;
-				v.angle = lcg(&seed) * 2654435761u;
-				v.shear = (int32_t)(lcg(&seed) % 201) - 100;
 				ways_render(w, m, t, &v, NULL, 0, "built-in", n);
 			}
 			map_free(m);
