@@ -830,33 +830,49 @@ phase_gpio() {
 	sleep 0.5
 	# The meter line polled every millisecond while the coin drops: a
 	# switch that bounces (five level changes back to back), closes for
-	# 50 ms, and bounces again as it opens. One coin.
+	# 50 ms, and bounces again as it opens. One coin. The switch and the
+	# meter stand in for hardware, whose timing no scheduler bends: they
+	# run as real-time tasks, or a busy daemon (nice -10 on both vCPUs)
+	# spaces the "back to back" writes a scheduler slice apart, and
+	# edges 5 ms apart are presses, not bounce (input/deb.h).
 	rm -f "$R/meter.txt" "$R/meter.txt.ready"
-	"$G" meter "$gd/sim_gpio2/value" 3 "$R/meter.txt" &
+	chrt -f 20 "$G" meter "$gd/sim_gpio2/value" 3 "$R/meter.txt" &
 	mpid=$!
 	ready() { [ -e "$R/meter.txt.ready" ]; }
 	wait_until 5 ready
-	"$G" pulls "$gd/sim_gpio0" d u d u d u d:50 u d u d u > "$R/gpio-coin.txt" 2>&1
+	chrt -f 20 "$G" pulls "$gd/sim_gpio0" d u d u d u d:50 u d u d u > "$R/gpio-coin.txt" 2>&1
 	wait "$mpid"
-	coins=$((coins + 1))
 	# Start: a clean 100 ms press.
-	"$G" pulls "$gd/sim_gpio1" d:100 u > "$R/gpio-start.txt" 2>&1
+	chrt -f 20 "$G" pulls "$gd/sim_gpio1" d:100 u > "$R/gpio-start.txt" 2>&1
 	sleep 0.5
 	journal=$(log_since "$t_gpio")
 	echo "$journal" > "$R/gpio-journal.txt"
 	ncoin=$(echo "$journal" | grep -c -F 'arcaded: input: gpio - KEY_5 down -> coin')
 	nstart=$(echo "$journal" | grep -c -F 'arcaded: input: gpio - KEY_1 down -> start')
-	bounce=$(tail -n 1 "$R/gpio-coin.txt")
+	bounce=$(sed -n 's/^steps //p' "$R/gpio-coin.txt")
 	held=$(sed -n 's/^hold 6 //p' "$R/gpio-coin.txt")
-	figure "gpio coin with bounce: 12 sysfs writes, $bounce, held $held"
-	check gpio-coin-debounced "a coin switch bouncing 5 times each way around a $held closure ($bounce): the daemon logged $ncoin coin press(es)" \
-		[ "$ncoin" = 1 ]
+	apart=$(sed -n 's/^apart \([0-9.]*\) ms$/\1/p' "$R/gpio-coin.txt")
+	figure "gpio coin with bounce: 12 sysfs writes, $bounce, held $held, bounce edges at most ${apart:-?} ms apart"
 	rises=$(sed -n 's/^rises \([0-9]*\) .*/\1/p' "$R/meter.txt")
 	polls=$(sed -n 's/^rises [0-9]* polls \(.*\)$/\1/p' "$R/meter.txt")
 	pulses=$(sed -n 's/^pulse //p' "$R/meter.txt" | tr '\n' ' ')
 	figure "gpio meter: ${rises:-?} pulse(s) of ${pulses:-none}(polls $polls)"
-	check gpio-meter "the meter line $chip:2 rose ${rises:-?} time(s) in 3 s around the coin (pulses: ${pulses:-none}; polls $polls)" \
-		[ "${rises:-0}" = 1 ]
+	# Judged only when the bounce was one: its edges closer than the
+	# 5 ms hold-off. Otherwise the writes were separate presses and no
+	# count is wrong; both checks are skipped (counted as skipped), and
+	# the books must hold what the meter counted.
+	if awk -v a="${apart:-99}" 'BEGIN { exit !(a < 5) }'; then
+		coins=$((coins + 1))
+		check gpio-coin-debounced "a coin switch bouncing 5 times each way around a $held closure ($bounce, bounce edges at most $apart ms apart): the daemon logged $ncoin coin press(es)" \
+			[ "$ncoin" = 1 ]
+		check gpio-meter "the meter line $chip:2 rose ${rises:-?} time(s) in 3 s around the coin (pulses: ${pulses:-none}; polls $polls)" \
+			[ "${rises:-0}" = 1 ]
+	else
+		coins=$((coins + ${rises:-0}))
+		for n in gpio-coin-debounced gpio-meter; do
+			echo "SKIP $n: the bounce's writes were ${apart:-?} ms apart, not closer than the 5 ms hold-off: separate presses, not bounce ($ncoin press(es), ${rises:-?} meter pulse(s))" >> "$R/results.txt"
+		done
+	fi
 	check gpio-start "a clean 100 ms press on the start line: the daemon logged $nstart start press(es)" \
 		[ "$nstart" = 1 ]
 	# The fire line changes the picture (the game is in play, still: two

@@ -76,8 +76,11 @@
  *                           ":MS" to stay so for MS milliseconds (busy
  *                           waiting on the clock after a sleep, so the
  *                           time is close). Prints the time the steps
- *                           took: "steps N total MS ms" and, for each step
- *                           with a hold, "hold K MS ms" (measured)
+ *                           took: "steps N total MS ms", for each step
+ *                           with a hold, "hold K MS ms" (measured), and
+ *                           last "apart MS ms": the longest time between
+ *                           two writes with no hold between them (how far
+ *                           apart a bounce's edges really were)
  *   vm_guest meter FILE SECONDS OUT
  *                           poll FILE (a gpio-sim line's value, "0"/"1")
  *                           every millisecond for SECONDS and write to OUT
@@ -701,8 +704,8 @@ static int cmd_replug(char **a)
 static int cmd_pulls(const char *dir, char **steps, int n)
 {
 	char path[PATH_MAX];
-	double t0 = mono();
-	int fd;
+	double t0 = mono(), tw = 0, gap = 0;
+	int fd, held = 1;
 
 	for (int i = 0; i < n; i++)
 		if ((steps[i][0] != 'd' && steps[i][0] != 'u') ||
@@ -727,6 +730,11 @@ static int cmd_pulls(const char *dir, char **steps, int n)
 			close(fd);
 			return 1;
 		}
+		/* the spacing of writes meant back to back (a bounce) */
+		if (!held && mono() - tw > gap)
+			gap = mono() - tw;
+		tw = mono();
+		held = ms > 0;
 		if (ms > 0) {
 			double t = mono();
 
@@ -739,6 +747,7 @@ static int cmd_pulls(const char *dir, char **steps, int n)
 	}
 	close(fd);
 	printf("steps %d total %.2f ms\n", n, (mono() - t0) * 1000);
+	printf("apart %.2f ms\n", gap * 1000);
 	return 0;
 }
 
