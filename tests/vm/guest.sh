@@ -849,7 +849,7 @@ phase_gpio() {
 	echo "$journal" > "$R/gpio-journal.txt"
 	ncoin=$(echo "$journal" | grep -c -F 'arcaded: input: gpio - KEY_5 down -> coin')
 	nstart=$(echo "$journal" | grep -c -F 'arcaded: input: gpio - KEY_1 down -> start')
-	bounce=$(sed -n 's/^steps //p' "$R/gpio-coin.txt")
+	bounce=$(sed -n 's/^steps \([0-9]*\) total \(.*\)$/\1 writes in \2/p' "$R/gpio-coin.txt")
 	held=$(sed -n 's/^hold 6 //p' "$R/gpio-coin.txt")
 	apart=$(sed -n 's/^apart \([0-9.]*\) ms$/\1/p' "$R/gpio-coin.txt")
 	figure "gpio coin with bounce: 12 sysfs writes, $bounce, held $held, bounce edges at most ${apart:-?} ms apart"
