@@ -28,7 +28,11 @@ fail=0
 check() { if [ "$2" -eq 0 ]; then echo "PASS $1"; else echo "FAIL $1"; fail=1; fi; }
 
 # the whole arcade flow first (initials included), then random input
-"$BIN" $common --script tests/script/game/flow.scr --record "$tmp/tmpl.rec" >/dev/null 2>&1
+# (run in $tmp: the script's screenshot is written to the working
+# directory, which must not be the source tree)
+top=$(pwd)
+(cd "$tmp" && "$BIN" $common --script "$top/tests/script/game/flow.scr" --record "$tmp/tmpl.rec") \
+	>/dev/null 2>&1
 python3 tests/soak/gen.py "$tmp/tmpl.rec" "$tmp/soak.rec" "$TICKS" 20261121 ||
 	{ echo "FAIL could not write the soak recording"; exit 1; }
 

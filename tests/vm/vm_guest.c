@@ -720,6 +720,7 @@ static int cmd_pulls(const char *dir, char **steps, int n)
 	for (int i = 0; i < n; i++) {
 		const char *v, *st = steps[i];
 		long ms = 0;
+		double tnow;
 
 		v = st[0] == 'd' ? "pull-down" : "pull-up";
 		if (st[1] == ':')
@@ -731,9 +732,10 @@ static int cmd_pulls(const char *dir, char **steps, int n)
 			return 1;
 		}
 		/* the spacing of writes meant back to back (a bounce) */
-		if (!held && mono() - tw > gap)
-			gap = mono() - tw;
-		tw = mono();
+		tnow = mono();
+		if (!held && tnow - tw > gap)
+			gap = tnow - tw;
+		tw = tnow;
 		held = ms > 0;
 		if (ms > 0) {
 			double t = mono();
