@@ -341,6 +341,7 @@ phase_watchdog() {
 	else
 		fail watchdog-restart "the daemon did not log 'fault injection: SIGUSR2 hangs the main loop' (ARCADED_FAULT=sigusr2 is set by the VM's drop-in)"
 	fi
+	phase_crashloop
 	pid=$(prop MainPID)
 	# back in attract, with the keyboard taken again
 	"$G" waitfd "$pid" "$ev" 15 || fail keyboard-after-restart "the restarted daemon did not open $ev"
@@ -349,6 +350,47 @@ phase_watchdog() {
 	shot wd-attract-2
 	coin_start
 	shot_match wd-play 30
+}
+
+# A daemon that dies at once, again and again (a state file it trips on, a
+# driver that crashes it), is started again every time: under systemd's
+# default start limit (5 starts in 10 s) the fifth quick death would leave
+# the unit failed and the cabinet dark until someone came. Each new main
+# process is killed (SIGKILL) as soon as it exists, 7 times; the 7 deaths
+# must fall within 10 s, or the check could not see the limit. systemd's
+# limit counts starts in a window that opens at the first start after the
+# last window closed: the watchdog's restart just before opened one, so the
+# loop waits for it to close (11 s), and its first restart opens the next,
+# in which the sixth start would be refused.
+phase_crashloop() {
+	sleep 11
+	killed=$(prop MainPID)
+	nr0=$(prop NRestarts)
+	t_c=$(now)
+	kill -KILL "$killed"
+	k=1
+	newer() { p=$(prop MainPID); [ "$p" != 0 ] && [ "$p" != "$killed" ]; }
+	while [ $k -lt 7 ] && wait_until 10 newer; do
+		killed=$p
+		kill -KILL "$killed"
+		k=$((k + 1))
+	done
+	span=$(sub "$t_c" "$(now)")
+	running() { [ "$(prop SubState)" = running ] && newer; }
+	wait_until 30 running
+	log_since "$t_c" > "$R/crashloop-journal.txt"
+	st=$(systemctl show -p ActiveState -p SubState -p Result --value "$U" | paste -sd' ' -)
+	nr=$(prop NRestarts)
+	sub_state=$(prop SubState)
+	figure "crash loop: $k main processes killed in $span s; restarts $nr0 -> $nr; then $st"
+	# Fewer than 7 deaths: a start did not come within 10 s, which is the
+	# limit at work, whatever the span.
+	if [ "$k" -lt 7 ] || awk -v s="$span" 'BEGIN { exit !(s < 10) }'; then
+		check crashloop-restarted "$k deaths in $span s (the default limit: 5 starts in 10 s), restarts $nr0 -> $nr, the unit then: $st" \
+			[ "$k" = 7 -a $((nr - nr0)) -ge 7 -a "$sub_state" = running ]
+	else
+		echo "SKIP crashloop-restarted: the 7 deaths took $span s, not under the 10 s a start limit counts over" >> "$R/results.txt"
+	fi
 }
 
 # --- SIGTERM: clean exit, console back in text mode --------------------------
