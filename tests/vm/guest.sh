@@ -341,7 +341,7 @@ phase_watchdog() {
 	else
 		fail watchdog-restart "the daemon did not log 'fault injection: SIGUSR2 hangs the main loop' (ARCADED_FAULT=sigusr2 is set by the VM's drop-in)"
 	fi
-	phase_crashloop
+	crash_loop
 	pid=$(prop MainPID)
 	# back in attract, with the keyboard taken again
 	"$G" waitfd "$pid" "$ev" 15 || fail keyboard-after-restart "the restarted daemon did not open $ev"
@@ -362,7 +362,7 @@ phase_watchdog() {
 # last window closed: the watchdog's restart just before opened one, so the
 # loop waits for it to close (11 s), and its first restart opens the next,
 # in which the sixth start would be refused.
-phase_crashloop() {
+crash_loop() {
 	sleep 11
 	killed=$(prop MainPID)
 	nr0=$(prop NRestarts)
