@@ -100,6 +100,7 @@ int scene_resize(struct scene *s, int w, int h)
 	s->r = r;
 	s->frame.px = px;
 	s->frame.w = s->frame.pitch = w;
+	s->frame.rec = NULL;
 	s->frame.h = h;
 	view_set_renderer(&s->view, r);
 	return 0;

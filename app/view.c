@@ -32,42 +32,70 @@ void view_set_renderer(struct view *v, struct r_ctx *r)
 	v->lit = NULL;
 }
 
+/* r_set_strip_done: the recorded HUD over the strip's columns. */
+static void view_strip_done(void *arg, int x0, int x1)
+{
+	struct view *v = arg;
+
+	v_replay(v->hud_f, &v->hud, x0, x1);
+}
+
 void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	       struct r_frame *f)
 {
 	struct tex_set *tex = v->ct->tex;
 	struct hud_env env = { &tex->pal, tex, v->rotate, v->par, v->diag, v->notice };
+	/* the sim whose world shows: the demo's under a banner */
+	const struct sim *w = under ? under : s;
+	struct r_frame rf = *f;
 	struct r_view rv;
+	int replay;
 
-	if (under) {
-		/* the demo's own frame, then this sim's banner over it */
-		view_draw(v, under, NULL, f);
-		hud_draw(s, &env, f);
-		return;
-	}
-	if (s->map != v->lit) {
+	if (w->map != v->lit) {
 		/* a new stage: its own light maps and Doom's sky for its name */
-		r_set_lmap(v->r, ct_lmap_for(v->ct, s->map));
-		tex_pick_sky(tex, s->map->name);
-		v->lit = s->map;
+		r_set_lmap(v->r, ct_lmap_for(v->ct, w->map));
+		tex_pick_sky(tex, w->map->name);
+		v->lit = w->map;
 	}
 	/* Animated textures follow the game tick, so replays see the same. */
-	tex_animate(tex, s->tick);
-	if (hud_world(s)) {
-		int n = r_game_sprites(s, tex, v->meshes, v->spr, v->spr_max);
-		const struct map *m = r_game_live(&v->live, s, tex);
-		r_game_view(s, f->w, &rv);
-		if (v->world)
-			v->world(v->world_ctx, m, tex, &rv, v->spr, n, f);
-		else
-			r_render(v->r, m, tex, &rv, v->spr, n, f);
+	tex_animate(tex, w->tick);
+	if (!hud_world(w)) {
+		hud_draw(w, &env, f);
+		if (under)
+			hud_draw(s, &env, f);
+		return;
 	}
-	hud_draw(s, &env, f);
+	/* the HUD (the demo's, then the banner) as a list for the strips */
+	v_list_reset(&v->hud);
+	rf.rec = &v->hud;
+	hud_draw(w, &env, &rf);
+	if (under)
+		hud_draw(s, &env, &rf);
+	replay = !v->world && !v->hud.failed;
+	{
+		int n = r_game_sprites(w, tex, v->meshes, v->spr, v->spr_max);
+		const struct map *m = r_game_live(&v->live, w, tex);
+		r_game_view(w, f->w, &rv);
+		if (v->world) {
+			v->world(v->world_ctx, m, tex, &rv, v->spr, n, f);
+		} else {
+			v->hud_f = f;
+			r_set_strip_done(v->r, replay ? view_strip_done : NULL, v);
+			r_render(v->r, m, tex, &rv, v->spr, n, f);
+			r_set_strip_done(v->r, NULL, NULL);
+		}
+	}
+	if (!replay) {
+		hud_draw(w, &env, f);
+		if (under)
+			hud_draw(s, &env, f);
+	}
 }
 
 void view_free(struct view *v)
 {
 	free(v->spr);
 	v->spr = NULL;
+	v_list_free(&v->hud);
 	r_live_free(&v->live);
 }

@@ -23,6 +23,7 @@ struct hud_diag;
 struct r_view;
 
 #include "engine/render/r_game.h"
+#include "engine/ui/v_video.h"
 
 /* Draws the world (r_render's shape): the software renderer by default;
  * the daemon may put the OSMesa renderer here (--renderer gl). */
@@ -47,6 +48,9 @@ struct view {
 	const char *notice;        /* optional, borrowed: hud_env.notice (app/op.h) */
 	const struct mesh_set *meshes; /* optional, borrowed: meshes loaded at run time
 					* (game.meshes, app/mdir.h), NULL none */
+	struct v_list hud;         /* owned: the frame's HUD, recorded and then
+				    * replayed by the strips (view_draw) */
+	struct r_frame *hud_f;     /* the frame being drawn, for the replays */
 };
 
 /* Prepares v for the content's stages. 0 or -ENOMEM. */
@@ -57,7 +61,14 @@ void view_set_renderer(struct view *v, struct r_ctx *r);
 
 /* Draws s into f (f's size must be r's). Animated textures are advanced to
  * the sim's tick first. under (may be NULL): a sim whose world and HUD are
- * drawn first, under s's page (the attract demo, app/demo.h). */
+ * drawn first, under s's page (the attract demo, app/demo.h).
+ *
+ * Over the software renderer's world, the HUD is recorded first (v_list)
+ * and replayed by each strip's thread over that strip's columns as soon
+ * as they are final (r_set_strip_done): with a pool, no thread then draws
+ * it alone after the others. The bytes are those of drawing it after the
+ * world (v_replay's contract); if the recording fails (out of memory) it
+ * is drawn that way. */
 void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	       struct r_frame *f);
 

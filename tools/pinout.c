@@ -236,7 +236,7 @@ int main(int argc, char **argv)
 	static struct po_use use[64];
 	static uint8_t px[PO_W * PO_H];
 	uint8_t rgb[256][3] = { { 0 } };
-	struct r_frame f = { px, PO_W, PO_H, PO_W };
+	struct r_frame f = { px, PO_W, PO_H, PO_W, NULL };
 	char why[160];
 	int rc;
 

@@ -234,6 +234,9 @@ struct r_ctx {
 	struct r_strip *strips;
 	int nstrips, strip_shift, band_shift, nbands;
 	struct r_par par;               /* run == NULL: strips drawn in turn */
+	/* r_set_strip_done's */
+	void (*strip_done)(void *arg, int x0, int x1);
+	void *strip_done_arg;
 	/* 3 * nstrips: the strips costliest first for the first phase, then
 	 * for the second, then each strip's place in the first (r_strip.c) */
 	int32_t *strip_order;

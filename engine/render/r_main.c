@@ -450,6 +450,12 @@ void r_set_lmap(struct r_ctx *r, const struct lmap *lm)
 	r->lm = lm;
 }
 
+void r_set_strip_done(struct r_ctx *r, void (*fn)(void *arg, int x0, int x1), void *arg)
+{
+	r->strip_done = fn;
+	r->strip_done_arg = arg;
+}
+
 
 void r_set_idbuf(struct r_ctx *r, uint32_t *ids)
 {

@@ -33,6 +33,7 @@ struct lmap;
 struct map;
 struct mesh;
 struct tex_set;
+struct v_list;
 
 struct r_view {
 	fx_t x, y, z;                  /* eye position; z is eye height */
@@ -73,6 +74,10 @@ struct r_sprite {
 struct r_frame {
 	uint8_t *px;                   /* w*h indices, row stride `pitch` bytes */
 	int w, h, pitch;
+	/* NULL to draw; else the 2D calls of engine/ui/v_video.h append
+	 * themselves to this list instead of drawing (the renderer never
+	 * looks at it) */
+	struct v_list *rec;
 };
 
 /* Counters of the last frame, for tests and benchmarks. */
@@ -161,6 +166,18 @@ int r_set_par(struct r_ctx *r, const struct r_par *par);
  * its use. A texel's boost subtracts from the colormap level of walls,
  * floors and ceilings (not the sky, masked middles or sprites). */
 void r_set_lmap(struct r_ctx *r, const struct lmap *lm);
+
+/* Work to do on each strip's columns once they are final, for the next
+ * frames (NULL: none, the default): r_render calls fn(arg, x0, x1) once
+ * per strip, on the thread that drew the strip, as soon as frame columns
+ * x0 <= x < x1 hold their final pixels (nothing of r_render writes there
+ * afterwards); the calls' ranges cut the frame's columns, and calls for
+ * different strips may run at once. Why: what goes over the view (the
+ * HUD, engine/ui/v_video.h v_replay) is then drawn by the threads that
+ * drew the view, on columns still in their caches, instead of by one
+ * thread after them all. Its time counts in the strip's measured cost, so
+ * the balance of the strips allows for it. */
+void r_set_strip_done(struct r_ctx *r, void (*fn)(void *arg, int x0, int x1), void *arg);
 
 /* Surface-id buffer (engine/render/r_id.h) for the next frames, NULL for none
  * (the default): borrowed, w*h entries, row stride w. r_render then writes,

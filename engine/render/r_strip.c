@@ -288,13 +288,16 @@ static void r_strip_cols(const struct r_ctx *r, struct r_strip *s)
 	}
 }
 
-/* What strip s draws after its column runs. */
+/* What strip s draws after its column runs; its columns are then final
+ * (r_set_strip_done). */
 static void r_strip_rest(struct r_ctx *r, struct r_strip *s)
 {
 	for (int k = 0; k < s->nspans; k++)
 		r_draw_span(r, s, &r->spans[s->spans[k]]);
 	r_draw_finish(r, s);
 	r_things_draw(r, s);
+	if (r->strip_done)
+		r->strip_done(r->strip_done_arg, s->x0, s->x1 + 1);
 }
 
 /* The walk's second half: the flats' spans, then the sprites. */

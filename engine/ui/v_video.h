@@ -15,6 +15,7 @@
 #ifndef ARCADED_ENGINE_V_VIDEO_H
 #define ARCADED_ENGINE_V_VIDEO_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 struct r_frame;
@@ -81,5 +82,61 @@ int v_num(char *buf, int len, uint64_t v, int width, char pad);
  * its top left at (x, y), each pixel scale x scale (1..64); a picture
  * without pixels (not decoded: tex_load_wad_names) draws nothing. */
 void v_pic(struct r_frame *f, const struct tex_pic *p, int x, int y, int scale);
+
+/* Recording, and replay by columns: how the HUD is drawn by the threads
+ * that drew the 3D view, each over the columns of its own strips, right
+ * after them (app/view.c; engine/render/r_main.h r_set_strip_done), instead
+ * of by one thread after all of them.
+ *
+ * While a frame's rec is set (struct r_frame.rec), every call above draws
+ * nothing and is appended to that list instead (text and remap tables
+ * copied; a picture borrowed: it must outlive the replays). v_remap_par records a
+ * v_remap. A call that cannot be kept (out of memory) marks the list
+ * failed: its replays would miss it, and the caller draws directly
+ * instead. A call that writes nothing in the frame is not kept.
+ *
+ * v_replay(f, l, x0, x1) then draws the list's calls in order, writing only
+ * frame columns x0 <= x < x1 (clamped to the frame). Every call is computed
+ * over the whole frame as drawn directly and keeps the pixels in those
+ * columns (a line is never clipped at the window, which would move its
+ * ends), so replays over any columns that cut the frame write together
+ * exactly the bytes the direct calls write; replays over disjoint columns
+ * may run at once (the list is only read). */
+enum {
+	V_CMD_FILL = 1,
+	V_CMD_REMAP,
+	V_CMD_LINE,
+	V_CMD_TRI,
+	V_CMD_TEXT,
+	V_CMD_PIC,
+};
+
+struct v_cmd {
+	uint8_t op, c;                 /* V_CMD_*, colour */
+	uint8_t clipped;               /* triangle: clip holds its clip */
+	int x0, x1;                    /* it writes no column outside x0 <= x < x1
+					* (a replay elsewhere skips it) */
+	int scale;                     /* text, picture */
+	int a[6];                      /* x, y, w, h; or the points: a line's clipped
+					* to the frame and its clip */
+	struct v_rect clip;
+	const void *p;                 /* picture: the struct tex_pic */
+	uint32_t text;                 /* text, remap: offset of its string or of its
+					* 256-byte map in the list's text */
+};
+
+/* Zero-initialised is empty. Owned by the caller: v_list_free. */
+struct v_list {
+	struct v_cmd *cmd;
+	int n, cap;
+	char *text;                    /* the calls' strings and maps */
+	size_t ntext, captext;
+	int failed;                    /* a call was lost: do not replay */
+};
+
+/* Empties the list (memory kept for the next frame). */
+void v_list_reset(struct v_list *l);
+void v_list_free(struct v_list *l);
+void v_replay(struct r_frame *f, const struct v_list *l, int x0, int x1);
 
 #endif

@@ -64,7 +64,7 @@ static int find_size(const char *key)
 int main(int argc, char **argv)
 {
 	static uint8_t px[W * H], rgb[256][3];
-	struct r_frame f = { px, W, H, W };
+	struct r_frame f = { px, W, H, W, NULL };
 	char line[512];
 	FILE *in;
 	double lo = 1e30, hi = 0;

@@ -326,6 +326,7 @@ int main(int argc, char **argv)
 	sim = malloc(sizeof(*sim));
 	panel = malloc(sizeof(*panel));
 	f.w = f.pitch = w;
+	f.rec = NULL;
 	f.h = h;
 	/* 64-byte aligned frame and panel: strips never share a cache line */
 	f.px = aligned_alloc(64, ((size_t)w * (size_t)h + 63) / 64 * 64);

@@ -793,6 +793,7 @@ int main(int argc, char **argv)
 	x.mesh_worst = 100;
 	npx = (size_t)o.w * (size_t)o.h;
 	x.fs.w = x.fg.w = x.fs.pitch = x.fg.pitch = o.w;
+	x.fs.rec = x.fg.rec = NULL;
 	x.fs.h = x.fg.h = o.h;
 	x.fs.px = malloc(npx);
 	x.fg.px = malloc(npx);

@@ -142,6 +142,7 @@ loaded:
 	v.shear = shear;
 	rc = r_new(w, h, &r);
 	f.w = f.pitch = w;
+	f.rec = NULL;
 	f.h = h;
 	f.px = malloc((size_t)w * (size_t)h);
 	if (rc < 0 || !f.px)

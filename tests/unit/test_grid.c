@@ -386,6 +386,7 @@ static void builtin_grid_level_renders_without_holes(void **state)
 	f.w = 160;
 	f.h = 100;
 	f.pitch = 160;
+	f.rec = NULL;
 	f.px = malloc(160 * 100);
 	assert_non_null(f.px);
 	/* the level's rows (13 rows of 26 tiles) follow its "map" line;

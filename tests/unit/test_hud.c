@@ -26,7 +26,7 @@ static struct pal pal;
 static struct hud_colours col;
 static struct map *room;
 static uint8_t pix[W * H];
-static struct r_frame frame = { pix, W, H, W };
+static struct r_frame frame = { pix, W, H, W, NULL };
 static const struct sim_settings play = { 1, 0, 1, 1, 3, 100, 1, 0, 0, 0 };
 
 static int setup(void **state)

@@ -394,7 +394,7 @@ static void renderer_applies_light_maps(void **state)
 	struct r_stats st;
 	enum { W = 160, H = 100 };
 	uint8_t *plain = malloc(W * H), *lit = malloc(W * H);
-	struct r_frame f = { plain, W, H, W };
+	struct r_frame f = { plain, W, H, W, NULL };
 	/* room 2's west doorway (row 3, column 7 of 13 rows) facing east */
 	struct r_view v = { fx_from_int(7 * 64 + 32), fx_from_int(64 * 10 - 32), fx_from_int(41), 0, 0 };
 	uint64_t sum_plain = 0, sum_lit = 0;

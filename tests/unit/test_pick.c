@@ -202,7 +202,7 @@ static void test_the_cursor_row_is_drawn_in_yellow(void **state)
 {
 	static struct wads w;
 	static uint8_t px[320 * 240];
-	struct r_frame f = { px, 320, 240, 320 };
+	struct r_frame f = { px, 320, 240, 320, NULL };
 	struct hud_colours c;
 	struct pal pal;
 	struct pick p;

@@ -114,7 +114,7 @@ static void render_stats(const struct map *m, int x, int y, ang_t a, struct r_st
 	struct r_ctx *r;
 	struct r_view v = { U(x), U(y), U(64), a, 0 };
 	uint8_t *px = malloc(160 * 120);
-	struct r_frame f = { px, 160, 120, 160 };
+	struct r_frame f = { px, 160, 120, 160, NULL };
 
 	assert_non_null(px);
 	assert_int_equal(r_new(160, 120, &r), 0);

@@ -55,7 +55,7 @@ static void render(struct frame *fr, const struct map *m, const struct r_view *v
 {
 	if (!fr->r)
 		assert_int_equal(r_new(W, H, &fr->r), 0);
-	fr->f = (struct r_frame){ fr->px, W, H, W };
+	fr->f = (struct r_frame){ fr->px, W, H, W, NULL };
 	memset(fr->px, 0xee, sizeof(fr->px));
 	memset(fr->ids, 0xff, sizeof(fr->ids));
 	r_set_idbuf(fr->r, ids ? fr->ids : NULL);

@@ -100,6 +100,7 @@ static void shot_open(struct shot *s, int w, int h)
 	s->f.w = w;
 	s->f.h = h;
 	s->f.pitch = w;
+	s->f.rec = NULL;
 	s->f.px = malloc((size_t)w * (size_t)h);
 	assert_non_null(s->f.px);
 }
@@ -429,7 +430,7 @@ static void pitch_padding_is_left_alone(void **state)
 	struct r_ctx *r;
 	struct r_view v = { 0, 0, U(41), ANG45, 0 };
 	uint8_t buf[24 * 20];
-	struct r_frame f = { buf, 16, 20, 24 };
+	struct r_frame f = { buf, 16, 20, 24, NULL };
 	(void)state;
 	t_room(&t, 255, 0);
 	memset(buf, 0x77, sizeof(buf));

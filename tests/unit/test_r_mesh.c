@@ -55,7 +55,7 @@ static void render(struct frame *fr, const struct map *m, int z, const struct r_
 
 	if (!fr->r)
 		assert_int_equal(r_new(W, H, &fr->r), 0);
-	fr->f = (struct r_frame){ fr->px, W, H, W };
+	fr->f = (struct r_frame){ fr->px, W, H, W, NULL };
 	r_render(fr->r, m, &tt->t, &v, spr, n, &fr->f);
 	r_get_stats(fr->r, &fr->st);
 }

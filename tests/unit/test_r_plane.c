@@ -56,7 +56,7 @@ static void render_v(struct frame *fr, const struct map *m, const struct r_view 
 {
 	if (!fr->r)
 		assert_int_equal(r_new(W, H, &fr->r), 0);
-	fr->f = (struct r_frame){ fr->px, W, H, W };
+	fr->f = (struct r_frame){ fr->px, W, H, W, NULL };
 	memset(fr->px, 0xee, sizeof(fr->px));
 	r_render(fr->r, m, &tt->t, v, NULL, 0, &fr->f);
 	r_get_stats(fr->r, &fr->st);
@@ -323,7 +323,7 @@ static void thousands_of_visible_planes_render_whole(void **state)
 	char err[200] = "";
 	struct r_ctx *r;
 	uint8_t *px = malloc(640 * 480);
-	struct r_frame f = { px, 640, 480, 640 };
+	struct r_frame f = { px, 640, 480, 640, NULL };
 	struct r_view v = { U(-100), U(3), U(40), 0, 0 };
 	struct r_stats st;
 	uint32_t nl = 3 * N + 1, side = 0;

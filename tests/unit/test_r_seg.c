@@ -59,7 +59,7 @@ static void render(struct frame *fr, const struct map *m, double x, double y, do
 
 	if (!fr->r)
 		assert_int_equal(r_new(W, H, &fr->r), 0);
-	fr->f = (struct r_frame){ fr->px, W, H, W };
+	fr->f = (struct r_frame){ fr->px, W, H, W, NULL };
 	memset(fr->px, 0xee, sizeof(fr->px));
 	r_render(fr->r, m, &tt->t, &v, NULL, 0, &fr->f);
 	r_get_stats(fr->r, &fr->st);

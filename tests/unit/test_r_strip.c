@@ -66,7 +66,21 @@ struct way {
 	struct r_frame f;
 	struct r_stats st;
 	const char *name;
+	uint8_t *snap;                  /* each strip's columns when r_set_strip_done's call came */
+	int *done;                      /* calls that covered each column */
 };
+
+/* r_set_strip_done: copies the strip's columns as they are now. */
+static void way_strip_done(void *arg, int x0, int x1)
+{
+	struct way *w = arg;
+
+	for (int y = 0; y < w->f.h; y++)
+		memcpy(w->snap + (size_t)y * (size_t)w->f.w + (size_t)x0,
+		       w->px + (size_t)y * (size_t)w->f.pitch + (size_t)x0, (size_t)(x1 - x0));
+	for (int x = x0; x < x1; x++)
+		w->done[x]++;
+}
 
 enum { WAYS = 6 };
 
@@ -89,7 +103,12 @@ static void ways_open(struct way *w, int width, int height)
 		assert_int_equal(r_new(width, height, &w[i].r), 0);
 		w[i].px = malloc((size_t)width * (size_t)height);
 		assert_non_null(w[i].px);
-		w[i].f = (struct r_frame){ w[i].px, width, height, width };
+		w[i].f = (struct r_frame){ w[i].px, width, height, width, NULL };
+		w[i].snap = malloc((size_t)width * (size_t)height);
+		w[i].done = calloc((size_t)width, sizeof(*w[i].done));
+		assert_non_null(w[i].snap);
+		assert_non_null(w[i].done);
+		r_set_strip_done(w[i].r, way_strip_done, &w[i]);
 		if (i >= 2) {
 			assert_int_equal(pool_new(i == 3 ? 3 : 2, &w[i].pool), 0);
 			pool_r_par(w[i].pool, &par);
@@ -116,6 +135,8 @@ static void ways_close(struct way *w)
 		r_free(w[i].r);
 		pool_free(w[i].pool);
 		free(w[i].px);
+		free(w[i].snap);
+		free(w[i].done);
 	}
 }
 
@@ -129,8 +150,18 @@ static struct r_stats ways_render(struct way *w, const struct map *m, const stru
 
 	for (int i = 0; i < WAYS; i++) {
 		memset(w[i].px, 0x5a + i, bytes);
+		memset(w[i].done, 0, (size_t)w[i].f.w * sizeof(*w[i].done));
 		r_render(w[i].r, m, t, v, spr, nspr, &w[i].f);
 		r_get_stats(w[i].r, &w[i].st);
+		/* r_set_strip_done: once per column, and the columns were final
+		 * when it came (the HUD is drawn there then, app/view.c) */
+		for (int x = 0; x < w[i].f.w; x++)
+			if (w[i].done[x] != 1)
+				fail_msg("%s, %s %d, way %s: column %d in %d strip-done calls", what,
+					 "view", n, w[i].name, x, w[i].done[x]);
+		if (memcmp(w[i].snap, w[i].px, bytes) != 0)
+			fail_msg("%s, view %d, way %s: a strip's columns changed after its "
+				 "strip-done call", what, n, w[i].name);
 	}
 	for (int i = 1; i < WAYS; i++) {
 		if (memcmp(w[0].px, w[i].px, bytes) != 0) {
@@ -243,7 +274,7 @@ static void each_batch_orders_strips_by_its_own_cost(void **state)
 	struct tex_set *t;
 	struct r_ctx *r;
 	uint8_t *px = malloc(2048 * 200);
-	struct r_frame f = { px, 2048, 200, 2048 };
+	struct r_frame f = { px, 2048, 200, 2048, NULL };
 	uint32_t seed = 4242;
 	int differ = 0;
 	(void)state;
@@ -302,7 +333,7 @@ static void strips_are_one_batch_when_the_pool_can_wait(void **state)
 	struct r_par par;
 	struct r_ctx *r;
 	uint8_t *px = malloc(1024 * 200);
-	struct r_frame f = { px, 1024, 200, 1024 };
+	struct r_frame f = { px, 1024, 200, 1024, NULL };
 	struct r_view v;
 	uint32_t seed = 99;
 	(void)state;

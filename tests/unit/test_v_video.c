@@ -30,6 +30,7 @@ static void fb_init(struct fb *b)
 	b->f.w = W;
 	b->f.h = H;
 	b->f.pitch = P;
+	b->f.rec = NULL;
 }
 
 static uint8_t px(const struct fb *b, int x, int y)
@@ -116,7 +117,7 @@ static void a_glyph_is_its_art(void **state)
 static void text_past_the_edges_is_clipped(void **state)
 {
 	static uint8_t big[200 * 150];
-	struct r_frame bf = { big, 200, 150, 200 };
+	struct r_frame bf = { big, 200, 150, 200, NULL };
 	struct fb b;
 	int drawn;
 	(void)state;
@@ -147,7 +148,7 @@ static void text_inside_sets_exactly_its_font_pixels(void **state)
 {
 	enum { TW = 70, TH = 40, TP = 77 };
 	static uint8_t buf[TP * TH];
-	struct r_frame f = { buf, TW, TH, TP };
+	struct r_frame f = { buf, TW, TH, TP, NULL };
 	(void)state;
 
 	for (int ch = 32; ch < 127; ch++)
@@ -287,7 +288,7 @@ static void remap_in_row_ranges_is_the_same(void **state)
 {
 	enum { BW = 301, BH = 260, BP = 320 };
 	static uint8_t a[BP * BH], b[BP * BH];
-	struct r_frame fa = { a, BW, BH, BP }, fb = { b, BW, BH, BP };
+	struct r_frame fa = { a, BW, BH, BP, NULL }, fb = { b, BW, BH, BP, NULL };
 	struct r_par par = { fake_run, NULL, 3, NULL, NULL, NULL, 0 };
 	uint8_t map[256];
 	(void)state;
@@ -319,6 +320,117 @@ static void remap_in_row_ranges_is_the_same(void **state)
 	assert_memory_equal(a, b, sizeof(a));
 }
 
+
+/* A small deterministic generator for the calls below. */
+static uint32_t rnd_state;
+
+static int rnd(int lo, int hi)
+{
+	rnd_state = rnd_state * 1664525u + 1013904223u;
+	return lo + (int)((rnd_state >> 8) % (uint32_t)(hi - lo + 1));
+}
+
+/* One pseudo-random call of every kind, coordinates often past the edges,
+ * on f (drawn or recorded). */
+static void random_calls(struct r_frame *f, const struct tex_pic *pic, const uint8_t *map,
+			 int n)
+{
+	for (int i = 0; i < n; i++) {
+		int x = rnd(-60, f->w + 60), y = rnd(-40, f->h + 40);
+		uint8_t c = (uint8_t)rnd(1, 255);
+		struct v_rect clip = { rnd(-10, f->w / 2), rnd(-10, f->h / 2), rnd(0, f->w),
+				       rnd(0, f->h) };
+		char txt[8] = "A?Z09_";
+
+		switch (rnd(0, 7)) {
+		case 0:
+			v_fill(f, x, y, rnd(-5, 90), rnd(-5, 50), c);
+			break;
+		case 1:
+			v_box(f, x, y, rnd(1, 90), rnd(1, 50), c);
+			break;
+		case 2:
+			v_remap_par(f, x, y, rnd(0, 120), rnd(0, 60), map, NULL);
+			break;
+		case 3:
+			v_line(f, x, y, rnd(-3000, 3000), rnd(-2000, 2000), c,
+			       rnd(0, 1) ? &clip : NULL);
+			break;
+		case 4:
+			v_line(f, x, y, x + rnd(-70, 70), y + rnd(-70, 70), c, NULL);
+			break;
+		case 5:
+			v_tri(f, x, y, x + rnd(-80, 80), y + rnd(-80, 80), x + rnd(-80, 80),
+			      y + rnd(-80, 80), c, rnd(0, 1) ? &clip : NULL);
+			break;
+		case 6:
+			txt[rnd(0, 5)] = (char)rnd(32, 126);
+			v_text(f, x, y, rnd(1, 4), c, txt);
+			break;
+		default:
+			v_pic(f, pic, x, y, rnd(1, 5));
+			break;
+		}
+	}
+}
+
+/* The HUD's path (app/view.c): calls recorded, then replayed over columns
+ * that cut the frame, in any order, write exactly the bytes of the calls
+ * drawn directly; and recording draws nothing, nor needs the remap tables
+ * afterwards. Strip widths of 1, 7, 16
+ * and 64 columns, and uneven ones, so every kind of call is cut by a
+ * window edge in many places (a line clipped at the window, or a glyph
+ * drawn whole, would show). */
+static void replay_by_columns_is_drawing_directly(void **state)
+{
+	enum { BW = 203, BH = 150, BP = 208 };
+	static uint8_t a[BP * BH], b[BP * BH], picpx[5 * 6], picop[5 * 6];
+	struct r_frame fa = { a, BW, BH, BP, NULL }, fb = { b, BW, BH, BP, NULL };
+	struct tex_pic pic = { "P", 5, 6, 0, 0, picpx, picop };
+	struct v_list l = { 0 };
+	const int widths[] = { 1, 7, 16, 64, 0 };
+	uint8_t map[256];
+	(void)state;
+
+	for (int i = 0; i < 30; i++) {
+		picpx[i] = (uint8_t)(100 + i);
+		picop[i] = (uint8_t)(i % 4 != 1);
+	}
+	for (size_t wi = 0; wi < sizeof(widths) / sizeof(widths[0]); wi++) {
+		for (int i = 0; i < 256; i++)
+			map[i] = (uint8_t)(i * 13 + 5);
+		for (int i = 0; i < BP * BH; i++)
+			a[i] = b[i] = (uint8_t)(i * 29 + i / BP);
+		rnd_state = 12345u + (uint32_t)wi;
+		random_calls(&fa, &pic, map, 400);
+		v_list_reset(&l);
+		fb.rec = &l;
+		rnd_state = 12345u + (uint32_t)wi;
+		random_calls(&fb, &pic, map, 400);
+		fb.rec = NULL;
+		/* the HUD builds its maps on its stack: gone by the replays */
+		memset(map, 0, sizeof(map));
+		assert_false(l.failed);
+		/* most land in the frame; the others are dropped */
+		assert_true(l.n >= 300 && l.n < 400 + 3 * 60);
+		/* nothing drawn yet */
+		for (int i = 0; i < BP * BH; i++)
+			assert_int_equal(b[i], (uint8_t)(i * 29 + i / BP));
+		if (widths[wi]) {
+			/* right to left, as another thread might */
+			for (int x = (BW - 1) / widths[wi] * widths[wi]; x >= 0; x -= widths[wi])
+				v_replay(&fb, &l, x, x + widths[wi]);
+		} else {
+			/* uneven cuts, and windows past the edges */
+			int cut[] = { -30, 3, 4, 50, 101, 102, 170, 300 };
+			for (int k = 0; k + 1 < 8; k++)
+				v_replay(&fb, &l, cut[k], cut[k + 1]);
+		}
+		assert_memory_equal(a, b, sizeof(a));
+	}
+	v_list_free(&l);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
@@ -332,6 +444,7 @@ int main(void)
 		cmocka_unit_test(a_picture_draws_its_opaque_pixels_only),
 		cmocka_unit_test(remap_changes_every_pixel_of_the_rectangle),
 		cmocka_unit_test(remap_in_row_ranges_is_the_same),
+		cmocka_unit_test(replay_by_columns_is_drawing_directly),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

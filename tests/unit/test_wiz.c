@@ -601,7 +601,7 @@ static void the_page_draws_the_prompt_and_notes_at_any_size(void **state)
 		    c.yellow != c.dark && c.yellow != c.black);
 	bind_defaults(&b);
 	for (size_t i = 0; i < sizeof(cases) / sizeof(cases[0]); i++) {
-		struct r_frame f = { NULL, cases[i].w, cases[i].h, cases[i].w };
+		struct r_frame f = { NULL, cases[i].w, cases[i].h, cases[i].w, NULL };
 		uint64_t t = T0;
 
 		f.px = malloc((size_t)f.w * (size_t)f.h);
@@ -646,7 +646,7 @@ static void the_page_draws_the_prompt_and_notes_at_any_size(void **state)
 static void the_summary_lists_controls_with_section_letters(void **state)
 {
 	struct in_ident hid = ident("1-1", 0, 0, "pad");
-	struct r_frame f = { NULL, 320, 240, 320 };
+	struct r_frame f = { NULL, 320, 240, 320, NULL };
 	struct hud_colours c;
 	struct bind_table b;
 	struct pal pal;
@@ -684,7 +684,7 @@ static void the_summary_fits_every_step_above_the_bottom_lines(void **state)
 		"FORWARD", "BACK", "TURN LEFT", "TURN RIGHT", "FIRE", "USE", "STRAFE LEFT",
 		"STRAFE RIGHT", "START", "COIN", "SERVICE", "WEAPON", "LOOK UP", "LOOK DOWN",
 	};
-	struct r_frame f = { NULL, 320, 240, 320 };
+	struct r_frame f = { NULL, 320, 240, 320, NULL };
 	struct hud_colours c;
 	struct bind_table b;
 	struct pal pal;
@@ -730,7 +730,7 @@ static void tiny_frames_are_safe(void **state)
 	pal_builtin(&pal);
 	bind_defaults(&b);
 	for (size_t i = 0; i < sizeof(sizes) / sizeof(sizes[0]); i++) {
-		struct r_frame f = { NULL, sizes[i][0], sizes[i][1], sizes[i][0] };
+		struct r_frame f = { NULL, sizes[i][0], sizes[i][1], sizes[i][0], NULL };
 		uint64_t t = T0;
 
 		f.px = malloc((size_t)f.w * (size_t)f.h);
