@@ -40,16 +40,27 @@ static void view_strip_done(void *arg, int x0, int x1)
 	v_replay(v->hud_f, &v->hud, x0, x1);
 }
 
+/* w's HUD or page, then banner's (the attract banner over the demo; may
+ * be NULL), into f: drawn, or recorded when f->rec is set. */
+static void view_hud(const struct sim *w, const struct sim *banner, const struct hud_env *env,
+		     struct r_frame *f)
+{
+	hud_draw(w, env, f);
+	if (banner)
+		hud_draw(banner, env, f);
+}
+
 void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	       struct r_frame *f)
 {
 	struct tex_set *tex = v->ct->tex;
 	struct hud_env env = { &tex->pal, tex, v->rotate, v->par, v->diag, v->notice };
 	/* the sim whose world shows: the demo's under a banner */
-	const struct sim *w = under ? under : s;
+	const struct sim *w = under ? under : s, *banner = under ? s : NULL;
 	struct r_frame rf = *f;
 	struct r_view rv;
-	int replay;
+	const struct map *m;
+	int n, replay;
 
 	if (w->map != v->lit) {
 		/* a new stage: its own light maps and Doom's sky for its name */
@@ -60,36 +71,29 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	/* Animated textures follow the game tick, so replays see the same. */
 	tex_animate(tex, w->tick);
 	if (!hud_world(w)) {
-		hud_draw(w, &env, f);
-		if (under)
-			hud_draw(s, &env, f);
+		view_hud(w, banner, &env, f);
 		return;
 	}
-	/* the HUD (the demo's, then the banner) as a list for the strips */
-	v_list_reset(&v->hud);
-	rf.rec = &v->hud;
-	hud_draw(w, &env, &rf);
-	if (under)
-		hud_draw(s, &env, &rf);
-	replay = !v->world && !v->hud.failed;
-	{
-		int n = r_game_sprites(w, tex, v->meshes, v->spr, v->spr_max);
-		const struct map *m = r_game_live(&v->live, w, tex);
-		r_game_view(w, f->w, &rv);
-		if (v->world) {
-			v->world(v->world_ctx, m, tex, &rv, v->spr, n, f);
-		} else {
-			v->hud_f = f;
-			r_set_strip_done(v->r, replay ? view_strip_done : NULL, v);
-			r_render(v->r, m, tex, &rv, v->spr, n, f);
-			r_set_strip_done(v->r, NULL, NULL);
-		}
+	n = r_game_sprites(w, tex, v->meshes, v->spr, v->spr_max);
+	m = r_game_live(&v->live, w, tex);
+	r_game_view(w, f->w, &rv);
+	if (v->world) {
+		/* another renderer: the HUD after it */
+		v->world(v->world_ctx, m, tex, &rv, v->spr, n, f);
+		replay = 0;
+	} else {
+		/* the HUD (the demo's, then the banner) as a list for the strips */
+		v_list_reset(&v->hud);
+		rf.rec = &v->hud;
+		view_hud(w, banner, &env, &rf);
+		replay = !v->hud.failed;
+		v->hud_f = f;
+		r_set_strip_done(v->r, replay ? view_strip_done : NULL, v);
+		r_render(v->r, m, tex, &rv, v->spr, n, f);
+		r_set_strip_done(v->r, NULL, NULL);
 	}
-	if (!replay) {
-		hud_draw(w, &env, f);
-		if (under)
-			hud_draw(s, &env, f);
-	}
+	if (!replay)
+		view_hud(w, banner, &env, f);
 }
 
 void view_free(struct view *v)

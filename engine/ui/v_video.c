@@ -68,46 +68,17 @@ static uint8_t *v_at(struct r_frame *f, int64_t x, int64_t y)
 
 /* ---- recording (v_list) ---------------------------------------------- */
 
-/* The frame columns a call spanning x <= column < x + w may write: from
- * v_col0 to v_col1 (empty when v_col0 >= v_col1). */
-static int64_t v_col0(const struct r_frame *f, int64_t x)
+/* A new command of f's list for a call that writes no column outside
+ * x0 <= x < x1 (clamped to the frame here), or NULL: nothing to write in
+ * the frame (the call is dropped), or out of memory (the list is marked
+ * failed and the call is lost). */
+static struct v_cmd *v_rec(const struct r_frame *f, int op, int64_t x0, int64_t x1)
 {
-	return x < 0 ? 0 : x > f->w ? f->w : x;
-}
-
-static int64_t v_col1(const struct r_frame *f, int64_t x, int64_t w)
-{
-	return v_col0(f, x + (w > 0 ? w : 0));
-}
-
-/* The same for a triangle with those x's, clipped. */
-static int64_t v_tri_col0(const struct r_frame *f, int x0, int x1, int x2,
-			  const struct v_rect *clip)
-{
-	int64_t lo = x0 < x1 ? (x0 < x2 ? x0 : x2) : (x1 < x2 ? x1 : x2);
-
-	if (clip && clip->x > lo)
-		lo = clip->x;
-	return v_col0(f, lo);
-}
-
-static int64_t v_tri_col1(const struct r_frame *f, int x0, int x1, int x2,
-			  const struct v_rect *clip)
-{
-	int64_t hi = (int64_t)(x0 > x1 ? (x0 > x2 ? x0 : x2) : (x1 > x2 ? x1 : x2)) + 1;
-
-	if (clip && (int64_t)clip->x + clip->w < hi)
-		hi = (int64_t)clip->x + clip->w;
-	return v_col0(f, hi);
-}
-
-/* A new command of the list that writes no column outside x0 <= x < x1,
- * or NULL: nothing to write there (the call is dropped), or out of memory
- * (the list is marked failed and the call is lost). */
-static struct v_cmd *v_rec(struct v_list *l, int op, int64_t x0, int64_t x1)
-{
+	struct v_list *l = f->rec;
 	struct v_cmd *c;
 
+	x0 = x0 < 0 ? 0 : x0;
+	x1 = x1 > f->w ? f->w : x1;
 	if (l->failed || x0 >= x1)
 		return NULL;
 	if (l->n == l->cap) {
@@ -204,7 +175,7 @@ static void v_fill_in(struct r_frame *f, int64_t x, int64_t y, int64_t w, int64_
 void v_fill(struct r_frame *f, int x, int y, int w, int h, uint8_t c)
 {
 	if (f->rec) {
-		struct v_cmd *k = v_rec(f->rec, V_CMD_FILL, v_col0(f, x), v_col1(f, x, w));
+		struct v_cmd *k = v_rec(f, V_CMD_FILL, x, (int64_t)x + w);
 
 		if (k)
 			v_rec_set(k, c, x, y, w, h, 0, 0);
@@ -241,7 +212,7 @@ void v_remap(struct r_frame *f, int x, int y, int w, int h, const uint8_t map[25
 {
 	if (f->rec) {
 		/* the map is copied: callers build it on their stack */
-		struct v_cmd *k = v_rec(f->rec, V_CMD_REMAP, v_col0(f, x), v_col1(f, x, w));
+		struct v_cmd *k = v_rec(f, V_CMD_REMAP, x, (int64_t)x + w);
 		int64_t at = k ? v_rec_bytes(f->rec, map, 256) : -1;
 
 		if (k && at < 0) {
@@ -434,8 +405,7 @@ void v_line(struct r_frame *f, int x0, int y0, int x1, int y1, uint8_t c,
 		return;
 	if (f->rec) {
 		/* recorded clipped: the replays only walk it */
-		struct v_cmd *k = v_rec(f->rec, V_CMD_LINE, ax < bx ? ax : bx,
-					(ax < bx ? bx : ax) + 1);
+		struct v_cmd *k = v_rec(f, V_CMD_LINE, ax < bx ? ax : bx, (ax < bx ? bx : ax) + 1);
 
 		if (k)
 			v_rec_set(k, c, (int)ax, (int)ay, (int)bx, (int)by, 0, 0);
@@ -495,9 +465,16 @@ void v_tri(struct r_frame *f, int x0, int y0, int x1, int y1, int x2, int y2, ui
 	   const struct v_rect *clip)
 {
 	if (f->rec) {
-		struct v_cmd *k = v_rec(f->rec, V_CMD_TRI, v_tri_col0(f, x0, x1, x2, clip),
-					v_tri_col1(f, x0, x1, x2, clip));
+		/* the columns of its box, within clip */
+		int64_t lo = x0 < x1 ? (x0 < x2 ? x0 : x2) : (x1 < x2 ? x1 : x2);
+		int64_t hi = (int64_t)(x0 > x1 ? (x0 > x2 ? x0 : x2) : (x1 > x2 ? x1 : x2)) + 1;
+		struct v_cmd *k;
 
+		if (clip && clip->x > lo)
+			lo = clip->x;
+		if (clip && (int64_t)clip->x + clip->w < hi)
+			hi = (int64_t)clip->x + clip->w;
+		k = v_rec(f, V_CMD_TRI, lo, hi);
 		if (k) {
 			v_rec_set(k, c, x0, y0, x1, y1, x2, y2);
 			v_rec_clip(k, clip);
@@ -590,11 +567,12 @@ static void v_text_in(struct r_frame *f, int64_t x, int y, int scale, uint8_t c,
 
 int v_text(struct r_frame *f, int x, int y, int scale, uint8_t c, const char *s)
 {
+	size_t n = strlen(s);
+
 	scale = v_scale(scale);
 	if (f->rec) {
-		struct v_cmd *k = v_rec(f->rec, V_CMD_TEXT, v_col0(f, x),
-					v_col1(f, x, (int64_t)strlen(s) * V_CHAR * scale));
-		int64_t at = k ? v_rec_bytes(f->rec, s, strlen(s) + 1) : -1;
+		struct v_cmd *k = v_rec(f, V_CMD_TEXT, x, x + (int64_t)n * V_CHAR * scale);
+		int64_t at = k ? v_rec_bytes(f->rec, s, n + 1) : -1;
 
 		if (k && at < 0) {
 			f->rec->failed = 1;
@@ -606,7 +584,7 @@ int v_text(struct r_frame *f, int x, int y, int scale, uint8_t c, const char *s)
 	} else {
 		v_text_in(f, x, y, scale, c, s, v_whole(f));
 	}
-	return (int)((int64_t)strlen(s) * V_CHAR * scale);
+	return (int)((int64_t)n * V_CHAR * scale);
 }
 
 int v_num(char *buf, int len, uint64_t v, int width, char pad)
@@ -649,9 +627,7 @@ static void v_pic_in(struct r_frame *f, const struct tex_pic *p, int x, int y, i
 void v_pic(struct r_frame *f, const struct tex_pic *p, int x, int y, int scale)
 {
 	if (f->rec) {
-		int sc = v_scale(scale);
-		struct v_cmd *k = p->px ? v_rec(f->rec, V_CMD_PIC, v_col0(f, x),
-						 v_col1(f, x, (int64_t)p->w * sc))
+		struct v_cmd *k = p->px ? v_rec(f, V_CMD_PIC, x, x + (int64_t)p->w * v_scale(scale))
 					: NULL;
 
 		if (k) {

@@ -330,10 +330,10 @@ static int rnd(int lo, int hi)
 	return lo + (int)((rnd_state >> 8) % (uint32_t)(hi - lo + 1));
 }
 
-/* One pseudo-random call of every kind, coordinates often past the edges,
- * on f (drawn or recorded). */
+/* n pseudo-random calls of kind `kind` (0..7, or -1: any), coordinates
+ * often past the edges, on f (drawn or recorded). */
 static void random_calls(struct r_frame *f, const struct tex_pic *pic, const uint8_t *map,
-			 int n)
+			 int n, int kind)
 {
 	for (int i = 0; i < n; i++) {
 		int x = rnd(-60, f->w + 60), y = rnd(-40, f->h + 40);
@@ -342,7 +342,9 @@ static void random_calls(struct r_frame *f, const struct tex_pic *pic, const uin
 				       rnd(0, f->h) };
 		char txt[8] = "A?Z09_";
 
-		switch (rnd(0, 7)) {
+		int k = rnd(0, 7);
+
+		switch (kind >= 0 ? kind : k) {
 		case 0:
 			v_fill(f, x, y, rnd(-5, 90), rnd(-5, 50), c);
 			break;
@@ -396,36 +398,66 @@ static void replay_by_columns_is_drawing_directly(void **state)
 		picpx[i] = (uint8_t)(100 + i);
 		picop[i] = (uint8_t)(i % 4 != 1);
 	}
-	for (size_t wi = 0; wi < sizeof(widths) / sizeof(widths[0]); wi++) {
-		for (int i = 0; i < 256; i++)
-			map[i] = (uint8_t)(i * 13 + 5);
-		for (int i = 0; i < BP * BH; i++)
-			a[i] = b[i] = (uint8_t)(i * 29 + i / BP);
-		rnd_state = 12345u + (uint32_t)wi;
-		random_calls(&fa, &pic, map, 400);
+	/* all kinds mixed, then each kind alone, a few calls at a time over
+	 * many seeds (in a frame drawn over many times, a pixel a replay
+	 * missed may be covered by a later call) */
+	for (int run = -1; run < 8 * 12; run++) {
+		int kind = run < 0 ? -1 : run % 8;
+
+		for (size_t wi = 0; wi < sizeof(widths) / sizeof(widths[0]); wi++) {
+			int n = kind < 0 ? 400 : 4;
+
+			for (int i = 0; i < 256; i++)
+				map[i] = (uint8_t)(i * 13 + 5);
+			for (int i = 0; i < BP * BH; i++)
+				a[i] = b[i] = (uint8_t)(i * 29 + i / BP);
+			rnd_state = 12345u + (uint32_t)wi + 100u * (uint32_t)(run + 1);
+			random_calls(&fa, &pic, map, n, kind);
+			v_list_reset(&l);
+			fb.rec = &l;
+			rnd_state = 12345u + (uint32_t)wi + 100u * (uint32_t)(run + 1);
+			random_calls(&fb, &pic, map, n, kind);
+			fb.rec = NULL;
+			/* the HUD builds its maps on its stack: gone by the replays */
+			memset(map, 0, sizeof(map));
+			assert_false(l.failed);
+			/* at most four each (a box is four fills); those that write
+			 * nothing in the frame are dropped */
+			assert_true(l.n <= 4 * n);
+			if (kind < 0)
+				assert_true(l.n >= 300 && l.n < 400 + 3 * 60);
+			/* nothing drawn yet */
+			for (int i = 0; i < BP * BH; i++)
+				assert_int_equal(b[i], (uint8_t)(i * 29 + i / BP));
+			if (widths[wi]) {
+				/* right to left, as another thread might */
+				for (int x = (BW - 1) / widths[wi] * widths[wi]; x >= 0;
+				     x -= widths[wi])
+					v_replay(&fb, &l, x, x + widths[wi]);
+			} else {
+				/* uneven cuts, and windows past the edges */
+				int cut[] = { -30, 3, 4, 50, 101, 102, 170, 300 };
+				for (int k = 0; k + 1 < 8; k++)
+					v_replay(&fb, &l, cut[k], cut[k + 1]);
+			}
+			assert_memory_equal(a, b, sizeof(a));
+		}
+	}
+	/* a triangle cut by its clip rectangle's left edge, that column lit,
+	 * replayed one column at a time */
+	{
+		struct v_rect clip = { 30, 0, 50, BH };
+
+		memset(a, 1, sizeof(a));
+		memset(b, 1, sizeof(b));
+		v_tri(&fa, 10, 10, 90, 20, 50, 90, 7, &clip);
+		assert_int_equal(a[50 * BP + 30], 7);
 		v_list_reset(&l);
 		fb.rec = &l;
-		rnd_state = 12345u + (uint32_t)wi;
-		random_calls(&fb, &pic, map, 400);
+		v_tri(&fb, 10, 10, 90, 20, 50, 90, 7, &clip);
 		fb.rec = NULL;
-		/* the HUD builds its maps on its stack: gone by the replays */
-		memset(map, 0, sizeof(map));
-		assert_false(l.failed);
-		/* most land in the frame; the others are dropped */
-		assert_true(l.n >= 300 && l.n < 400 + 3 * 60);
-		/* nothing drawn yet */
-		for (int i = 0; i < BP * BH; i++)
-			assert_int_equal(b[i], (uint8_t)(i * 29 + i / BP));
-		if (widths[wi]) {
-			/* right to left, as another thread might */
-			for (int x = (BW - 1) / widths[wi] * widths[wi]; x >= 0; x -= widths[wi])
-				v_replay(&fb, &l, x, x + widths[wi]);
-		} else {
-			/* uneven cuts, and windows past the edges */
-			int cut[] = { -30, 3, 4, 50, 101, 102, 170, 300 };
-			for (int k = 0; k + 1 < 8; k++)
-				v_replay(&fb, &l, cut[k], cut[k + 1]);
-		}
+		for (int x = 0; x < BW; x++)
+			v_replay(&fb, &l, x, x + 1);
 		assert_memory_equal(a, b, sizeof(a));
 	}
 	v_list_free(&l);
