@@ -32,12 +32,15 @@ void view_set_renderer(struct view *v, struct r_ctx *r)
 	v->lit = NULL;
 }
 
-/* r_set_strip_done: the recorded HUD over the strip's columns. */
+/* r_set_strip_done: the recorded HUD over the strip's columns, unless the
+ * recording ran out of memory (then it is drawn whole after the world;
+ * the recording has returned before the first call: r_set_beside_walk). */
 static void view_strip_done(void *arg, int x0, int x1)
 {
 	struct view *v = arg;
 
-	v_replay(v->hud_f, &v->hud, x0, x1);
+	if (!v->hud.failed)
+		v_replay(v->hud_f, &v->hud, x0, x1);
 }
 
 /* w's HUD or page, then banner's (the attract banner over the demo; may
@@ -50,6 +53,24 @@ static void view_hud(const struct sim *w, const struct sim *banner, const struct
 		hud_draw(banner, env, f);
 }
 
+/* What view_record_hud records. */
+struct view_rec {
+	const struct sim *w, *banner;
+	const struct hud_env *env;
+	struct r_frame *f;             /* f->rec the list */
+};
+
+/* r_set_beside_walk: the HUD recorded while the renderer walks, on any
+ * of the pool's threads. It only reads the sims and writes v->hud (a
+ * recording draws nothing and never runs the pool: v_remap_par records
+ * too), so it may run inside the pool's batch beside the walk. */
+static void view_record_hud(void *arg)
+{
+	struct view_rec *vr = arg;
+
+	view_hud(vr->w, vr->banner, vr->env, vr->f);
+}
+
 void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	       struct r_frame *f)
 {
@@ -59,6 +80,7 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	const struct sim *w = under ? under : s, *banner = under ? s : NULL;
 	struct r_frame rf = *f;
 	struct r_view rv;
+	struct view_rec vr = { w, banner, &env, &rf };
 	const struct map *m;
 	int n, replay;
 
@@ -82,15 +104,18 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 		v->world(v->world_ctx, m, tex, &rv, v->spr, n, f);
 		replay = 0;
 	} else {
-		/* the HUD (the demo's, then the banner) as a list for the strips */
+		/* the HUD (the demo's, then the banner) recorded beside the
+		 * walk, as a list the strips draw (view_strip_done) */
 		v_list_reset(&v->hud);
 		rf.rec = &v->hud;
-		view_hud(w, banner, &env, &rf);
-		replay = !v->hud.failed;
 		v->hud_f = f;
-		r_set_strip_done(v->r, replay ? view_strip_done : NULL, v);
+		r_set_beside_walk(v->r, view_record_hud, &vr);
+		r_set_strip_done(v->r, view_strip_done, v);
 		r_render(v->r, m, tex, &rv, v->spr, n, f);
+		r_set_beside_walk(v->r, NULL, NULL);
 		r_set_strip_done(v->r, NULL, NULL);
+		/* out of memory: the list is not whole, so after the world */
+		replay = !v->hud.failed;
 	}
 	if (!replay)
 		view_hud(w, banner, &env, f);

@@ -237,6 +237,9 @@ struct r_ctx {
 	/* r_set_strip_done's */
 	void (*strip_done)(void *arg, int x0, int x1);
 	void *strip_done_arg;
+	/* r_set_beside_walk's */
+	void (*beside)(void *arg);
+	void *beside_arg;
 	/* 3 * nstrips: the strips costliest first for the first phase, then
 	 * for the second, then each strip's place in the first (r_strip.c) */
 	int32_t *strip_order;

@@ -456,6 +456,33 @@ void r_set_strip_done(struct r_ctx *r, void (*fn)(void *arg, int x0, int x1), vo
 	r->strip_done_arg = arg;
 }
 
+void r_set_beside_walk(struct r_ctx *r, void (*fn)(void *arg), void *arg)
+{
+	r->beside = fn;
+	r->beside_arg = arg;
+}
+
+/* The walk: every wall, sky and flat part recorded into the strips. */
+static void r_walk(struct r_ctx *r)
+{
+	if (r->map->num_subsectors > 0) {
+		r_bsp_render(r);
+		r_plane_draw_sky(r);
+	}
+}
+
+/* r_render's first batch: job 0 the walk, job 1 the work beside it. The
+ * walk is job 0 so that the caller, which asks first, takes it when the
+ * other threads are slow to come. */
+static void r_walk_job(void *arg, int i)
+{
+	struct r_ctx *r = arg;
+
+	if (i == 0)
+		r_walk(r);
+	else
+		r->beside(r->beside_arg);
+}
 
 void r_set_idbuf(struct r_ctx *r, uint32_t *ids)
 {
@@ -486,9 +513,12 @@ void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	r_sectors_reset(r, m);
 	r_strip_reset(r);
 	/* the walk records, then the strips draw (r_strip.c) */
-	if (m->num_subsectors > 0) {
-		r_bsp_render(r);
-		r_plane_draw_sky(r);
+	if (r->beside && r->par.run && r->nstrips > 1) {
+		r->par.run(r->par.pool, 2, r_walk_job, r);
+	} else {
+		if (r->beside)
+			r->beside(r->beside_arg);
+		r_walk(r);
 	}
 	r_strip_draw_all(r, spr, nspr, m->num_subsectors > 0);
 	r->st.planes = (uint32_t)r->nplanes;

@@ -179,6 +179,17 @@ void r_set_lmap(struct r_ctx *r, const struct lmap *lm);
  * the balance of the strips allows for it. */
 void r_set_strip_done(struct r_ctx *r, void (*fn)(void *arg, int x0, int x1), void *arg);
 
+/* Work that needs nothing of the walk, for the next frames (NULL: none, the
+ * default): r_render calls fn(arg) once, and it has returned before the
+ * first strip_done call. With a pool (r_set_par) it runs on one thread
+ * while another walks the BSP, else before the walk; so fn may run on any
+ * of the pool's threads at the same time as the walk, and must not touch
+ * the context, the map, the textures or the frame but to read them. Why:
+ * the walk is serial, the pool's other threads wait through it, and what
+ * goes over the view (the HUD recorded as v_ calls, engine/ui/v_video.h)
+ * can be made in that time instead of before it. */
+void r_set_beside_walk(struct r_ctx *r, void (*fn)(void *arg), void *arg);
+
 /* Surface-id buffer (engine/render/r_id.h) for the next frames, NULL for none
  * (the default): borrowed, w*h entries, row stride w. r_render then writes,
  * with every pixel it writes to the frame, the id of the surface drawn

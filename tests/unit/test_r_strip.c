@@ -68,13 +68,25 @@ struct way {
 	const char *name;
 	uint8_t *snap;                  /* each strip's columns when r_set_strip_done's call came */
 	int *done;                      /* calls that covered each column */
+	_Atomic int beside;             /* r_set_beside_walk calls returned this frame */
+	_Atomic int early;              /* strip-done calls that came before one had */
 };
+
+/* r_set_beside_walk: counts its returns. */
+static void way_beside(void *arg)
+{
+	struct way *w = arg;
+
+	w->beside++;
+}
 
 /* r_set_strip_done: copies the strip's columns as they are now. */
 static void way_strip_done(void *arg, int x0, int x1)
 {
 	struct way *w = arg;
 
+	if (w->beside != 1)
+		w->early++;
 	for (int y = 0; y < w->f.h; y++)
 		memcpy(w->snap + (size_t)y * (size_t)w->f.w + (size_t)x0,
 		       w->px + (size_t)y * (size_t)w->f.pitch + (size_t)x0, (size_t)(x1 - x0));
@@ -109,6 +121,7 @@ static void ways_open(struct way *w, int width, int height)
 		assert_non_null(w[i].snap);
 		assert_non_null(w[i].done);
 		r_set_strip_done(w[i].r, way_strip_done, &w[i]);
+		r_set_beside_walk(w[i].r, way_beside, &w[i]);
 		if (i >= 2) {
 			assert_int_equal(pool_new(i == 3 ? 3 : 2, &w[i].pool), 0);
 			pool_r_par(w[i].pool, &par);
@@ -151,8 +164,16 @@ static struct r_stats ways_render(struct way *w, const struct map *m, const stru
 	for (int i = 0; i < WAYS; i++) {
 		memset(w[i].px, 0x5a + i, bytes);
 		memset(w[i].done, 0, (size_t)w[i].f.w * sizeof(*w[i].done));
+		w[i].beside = 0;
+		w[i].early = 0;
 		r_render(w[i].r, m, t, v, spr, nspr, &w[i].f);
 		r_get_stats(w[i].r, &w[i].st);
+		/* r_set_beside_walk: once a frame, returned before the first
+		 * strip-done call */
+		if (w[i].beside != 1 || w[i].early != 0)
+			fail_msg("%s, view %d, way %s: %d beside-the-walk calls, %d strip-done "
+				 "calls before it returned", what, n, w[i].name, (int)w[i].beside,
+				 (int)w[i].early);
 		/* r_set_strip_done: once per column, and the columns were final
 		 * when it came (the HUD is drawn there then, app/view.c) */
 		for (int x = 0; x < w[i].f.w; x++)
@@ -322,9 +343,16 @@ static void counting_run(void *pool, int n, void (*job)(void *arg, int i), void 
 	pool_run(pool, n, job, arg);
 }
 
+/* r_set_beside_walk for the batch test: counts its calls. */
+static void count_beside(void *arg)
+{
+	(*(int *)arg)++;
+}
+
 /* A frame's strips are one batch on a pool that can wait for a job, two
  * on one that cannot; the frames are the same (the ways below compare
- * them on many views). */
+ * them on many views). Work beside the walk adds one batch, the walk and
+ * it, and is called once. */
 static void strips_are_one_batch_when_the_pool_can_wait(void **state)
 {
 	struct tex_set *t;
@@ -344,16 +372,20 @@ static void strips_are_one_batch_when_the_pool_can_wait(void **state)
 	v = seeded_view(m, &seed);
 	assert_int_equal(pool_new(2, &p), 0);
 	assert_int_equal(r_new(1024, 200, &r), 0);
-	for (int can = 1; can >= 0; can--) {
+	for (int k = 0; k < 4; k++) {
+		int can = k & 1, beside = k >> 1, calls = 0;
+
 		pool_r_par(p, &par);
 		par.run = counting_run;
 		if (!can)
 			par.wait = NULL;
 		assert_int_equal(r_set_par(r, &par), 0);
 		assert_true(r->nstrips > 1);
+		r_set_beside_walk(r, beside ? count_beside : NULL, &calls);
 		batches = 0;
 		r_render(r, m, t, &v, NULL, 0, &f);
-		assert_int_equal(batches, can ? 1 : 2);
+		assert_int_equal(batches, (can ? 1 : 2) + beside);
+		assert_int_equal(calls, beside);
 	}
 	r_free(r);
 	pool_free(p);
