@@ -88,6 +88,7 @@ void map_free(struct map *m)
 	free(m->things);
 	free(m->sec_first);
 	free(m->sec_lines);
+	free(m->thing_sec);
 	free(m->spec_lines);
 	free(m->tex_h);
 	free(m);
@@ -434,6 +435,21 @@ static int map_sector_index(struct map *m)
 	return 0;
 }
 
+/* thing_sec: each thing's sector, by the BSP (checked by then). 0 or
+ * -ENOMEM. */
+static int map_thing_sectors(struct map *m)
+{
+	free(m->thing_sec);
+	m->num_thing_sec = 0;
+	m->thing_sec = malloc(((size_t)m->num_things + 1) * sizeof(*m->thing_sec));
+	if (!m->thing_sec)
+		return -ENOMEM;
+	for (uint32_t i = 0; i < m->num_things; i++)
+		m->thing_sec[i] = map_point_sector(m, m->things[i].x, m->things[i].y);
+	m->num_thing_sec = m->num_things;
+	return 0;
+}
+
 int map_finish(struct map *m, char *err, size_t errlen)
 {
 	return map_finish_lim(m, NULL, err, errlen);
@@ -455,7 +471,7 @@ int map_finish_lim(struct map *m, const struct lim_stop *stop, char *err, size_t
 			return r;
 	}
 	r = map_check_bsp(m, err, errlen);
-	if (r == 0 && map_sector_index(m) < 0) {
+	if (r == 0 && (map_sector_index(m) < 0 || map_thing_sectors(m) < 0)) {
 		msg_cat(err, errlen, "out of memory");
 		r = -ENOMEM;
 	}

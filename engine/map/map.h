@@ -137,6 +137,12 @@ struct map {
 	uint32_t *sec_lines;
 	uint32_t *spec_lines;          /* the lines with a special, in order */
 	uint32_t num_spec_lines;
+	/* Also by map_finish: the sector each thing stands in
+	 * (map_point_sector of its position), so that what draws the
+	 * decorations every frame need not descend the BSP for each. */
+	uint32_t *thing_sec;           /* num_thing_sec entries: num_things when
+					* map_finish ran */
+	uint32_t num_thing_sec;
 	/* Height in map units of every wall texture of the set the map was
 	 * drawn with (tex_map_heights, tex.h), for the floors that rise by
 	 * their lower texture's height; NULL when not given (64 is used). */
@@ -167,8 +173,8 @@ int map_alloc(struct map **out, uint32_t vertices, uint32_t sectors, uint32_t si
  * -ENOMEM. stop (may be NULL) is polled by the node builder; map_finish
  * is map_finish_lim without one.
  *
- * Then fills the sector line lists (sec_first, sec_lines) and the list of
- * lines with a special (spec_lines).
+ * Then fills the sector line lists (sec_first, sec_lines), the list of
+ * lines with a special (spec_lines) and each thing's sector (thing_sec).
  *
  * content_hash: FNV-1a (hash.h) of the counts, then every field of every
  * vertex, sector, side, line and thing in that order, taken before the node

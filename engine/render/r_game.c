@@ -185,6 +185,14 @@ static void r_put_enemy(struct r_out *o, const struct g_enemy *e)
 	r_put(o, e->x, e->y, e->z, e->angle, spr, frame, bright, need);
 }
 
+/* The sector thing i of m stands in: map_finish's, or found now for a
+ * thing it did not see. */
+static uint32_t r_thing_sector(const struct map *m, uint32_t i)
+{
+	return i < m->num_thing_sec ? m->thing_sec[i]
+				    : map_point_sector(m, m->things[i].x, m->things[i].y);
+}
+
 int r_game_sprites(const struct sim *s, const struct tex_set *t, const struct mesh_set *meshes,
 		   struct r_sprite *out, int max)
 {
@@ -220,9 +228,9 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, const struct me
 		g_thing_info(th->type, &ti);
 		if ((ti.cls != G_C_LIGHT && ti.cls != G_C_DECOR) || !ti.sprite[0])
 			continue;
-		/* one BSP descent per thing a frame: this runs before the
-		 * renderer's threads start */
-		floor_h = s->w.sec[map_point_sector(m, th->x, th->y)].floor_h;
+		/* this runs before the renderer's threads start: the sector
+		 * map_finish found, not a BSP descent per thing a frame */
+		floor_h = s->w.sec[r_thing_sector(m, i)].floor_h;
 		if (r_put_mesh(&o, s, th->type, th->x, th->y, floor_h))
 			continue;
 		r_put(&o, th->x, th->y, floor_h,
@@ -262,7 +270,7 @@ static int r_map_list(const struct map *m, const struct tex_set *t, int with_mes
 
 		if (!in || (in->flags & (TH_PLAYER | TH_INVISIBLE)) || !in->sprite[0])
 			continue;
-		sec = &m->sectors[map_point_sector(m, th->x, th->y)];
+		sec = &m->sectors[r_thing_sector(m, i)];
 		/* on its floor, as the game puts pickups and decorations */
 		if (with_meshes && r_game_mesh(t, NULL, th->type, tick, th->x, th->y, sec->floor_h, &out[n])) {
 			n++;

@@ -263,6 +263,16 @@ static void builtin_points_land_in_their_sectors(void **state)
 			fail_msg("(%d, %d): sector %u, want %u", pts[i].x, pts[i].y, s, pts[i].sector);
 	}
 	map_free(m);
+	/* map_finish's sector of each thing, on every built-in level: where
+	 * point location puts it */
+	for (int lv = 0; lv < lvl_builtin_count(); lv++) {
+		assert_int_equal(lvl_builtin(lv, &m), 0);
+		assert_non_null(m->thing_sec);
+		for (i = 0; i < m->num_things; i++)
+			assert_int_equal(m->thing_sec[i],
+					 map_point_sector(m, m->things[i].x, m->things[i].y));
+		map_free(m);
+	}
 }
 
 static uint32_t side_sector(const struct map *m, const struct map_line *l, int side)

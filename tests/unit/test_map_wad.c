@@ -585,6 +585,14 @@ static void check_freedoom(const char *path, const char *first, const char *last
 		for (uint32_t k = 0; k < m->num_things; k++)
 			starts += m->things[k].type == 1;
 		assert_true(starts >= 1);
+		/* each thing's sector, found once by map_finish for the
+		 * renderer's decorations, is where point location puts it */
+		assert_non_null(m->thing_sec);
+		for (uint32_t k = 0; k < m->num_things; k++)
+			if (m->thing_sec[k] != map_point_sector(m, m->things[k].x, m->things[k].y))
+				fail_msg("%s %s: thing %u: sector %u, point location %u", path,
+					 names[i], k, m->thing_sec[k],
+					 map_point_sector(m, m->things[k].x, m->things[k].y));
 		if (unreachable_sectors(m))
 			fail_msg("%s %s: %u sectors not found by point location", path, names[i],
 				 unreachable_sectors(m));

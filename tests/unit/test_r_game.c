@@ -218,12 +218,53 @@ static void heights_at_the_bound_play_and_draw_without_overflow(void **state)
 	tex_free(ts);
 }
 
+/* A decoration stands on the floor of the room it is in: two rooms with
+ * floors 0 and 64 (a portal at x = 128), a candle in each. (The renderer
+ * takes its sector from map_finish's thing_sec.) */
+static void decorations_stand_on_their_own_floor(void **state)
+{
+	static const int v[][2] = {
+		{ 0, 0 }, { 0, 128 }, { 128, 128 }, { 128, 0 }, { 256, 128 }, { 256, 0 },
+	};
+	static const struct fix_line l[] = {
+		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
+		{ 2, 4, 1, -1 }, { 4, 5, 1, -1 }, { 5, 3, 1, -1 },
+	};
+	static const struct fix_sector sec[] = { { 0, 128, 160 }, { 64, 192, 200 } };
+	static const struct fix_thing th[] = {
+		{ 64, 96, 0, 34, 7 }, { 200, 96, 0, 34, 7 },   /* candles */
+	};
+	struct fix_map fm = { v, 6, sec, 2, l, 7, 32, 32, 0 };
+	struct map *m = fix_alloc_things(&fm, th, 2);
+	struct tex_set *ts;
+	struct r_sprite out[8];
+	struct sim s;
+	int n, seen = 0;
+	(void)state;
+
+	assert_non_null(m);
+	assert_int_equal(map_finish(m, NULL, 0), 0);
+	assert_int_equal(tex_builtin(&ts), 0);
+	sim_init(&s, m, &play);
+	n = r_game_sprites(&s, ts, NULL, out, 8);
+	for (int i = 0; i < n; i++) {
+		if (out[i].y != fx_from_int(96))
+			continue;
+		assert_int_equal(out[i].z, out[i].x < fx_from_int(128) ? 0 : fx_from_int(64));
+		seen++;
+	}
+	assert_int_equal(seen, 2);
+	map_free(m);
+	tex_free(ts);
+}
+
 int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(sprites_follow_the_state),
 		cmocka_unit_test(builtin_monsters_have_every_frame_the_game_shows),
 		cmocka_unit_test(heights_at_the_bound_play_and_draw_without_overflow),
+		cmocka_unit_test(decorations_stand_on_their_own_floor),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
