@@ -471,9 +471,10 @@ static void r_walk(struct r_ctx *r)
 	}
 }
 
-/* r_render's first batch: job 0 the walk, job 1 the work beside it. The
- * walk is job 0 so that the caller, which asks first, takes it when the
- * other threads are slow to come. */
+/* r_render's first batch: job 0 the walk, job 1 the work beside it. Jobs
+ * are handed out in order, so the first thread to ask (the caller, when
+ * the workers are slow to wake) takes the walk, usually the longer, and a
+ * thread that comes later the shorter job; the walk may run on a worker. */
 static void r_walk_job(void *arg, int i)
 {
 	struct r_ctx *r = arg;

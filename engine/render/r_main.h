@@ -15,9 +15,10 @@
  * fixed limit a map can overflow. Several contexts may coexist.
  * The frame is row-major 8-bit palette indices.
  *
- * Threads: a frame is drawn in two phases, the BSP walk on the calling
- * thread, then strips of columns that a worker pool may draw at once
- * (r_set_par). The engine starts no thread itself: the pool is the
+ * Threads: a frame is drawn in two phases, the BSP walk on one thread
+ * (the calling one, or any of the pool's when there is work to do beside
+ * it: r_set_beside_walk), then strips of columns that a worker pool may
+ * draw at once (r_set_par). The engine starts no thread itself: the pool is the
  * caller's. The frame's bytes do not depend on the pool or its size.
  */
 #ifndef ARCADED_ENGINE_R_MAIN_H
