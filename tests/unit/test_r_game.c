@@ -156,6 +156,16 @@ static void builtin_monsters_have_every_frame_the_game_shows(void **state)
 	tex_free(ts);
 }
 
+/* Two rooms side by side, 0..128 and 128..256 by 0..128, sectors 0 and 1,
+ * the line at x = 128 the portal between them. */
+static const int two_v[][2] = {
+	{ 0, 0 }, { 0, 128 }, { 128, 128 }, { 128, 0 }, { 256, 128 }, { 256, 0 },
+};
+static const struct fix_line two_l[] = {
+	{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
+	{ 2, 4, 1, -1 }, { 4, 5, 1, -1 }, { 5, 3, 1, -1 },
+};
+
 /* Issue 13 item 9: heights at the bound map_finish allows (+/-16383
  * units) play and draw with no overflow: the eye height, the renderer's
  * height differences, sight and shots between a floor at the bottom and a
@@ -165,13 +175,6 @@ static void builtin_monsters_have_every_frame_the_game_shows(void **state)
  * high; 120 ticks walking forward and firing, each drawn. */
 static void heights_at_the_bound_play_and_draw_without_overflow(void **state)
 {
-	static const int v[][2] = {
-		{ 0, 0 }, { 0, 128 }, { 128, 128 }, { 128, 0 }, { 256, 128 }, { 256, 0 },
-	};
-	static const struct fix_line l[] = {
-		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
-		{ 2, 4, 1, -1 }, { 4, 5, 1, -1 }, { 5, 3, 1, -1 },
-	};
 	static const struct fix_sector low[] = { { -16383, 16383, 160 }, { 16300, 16383, 200 } };
 	static const struct fix_sector high[] = { { 16300, 16383, 160 }, { -16383, 16383, 200 } };
 	const struct fix_sector *sets[2] = { low, high };
@@ -187,7 +190,7 @@ static void heights_at_the_bound_play_and_draw_without_overflow(void **state)
 	f.px = malloc(160 * 120);
 	assert_non_null(f.px);
 	for (int k = 0; k < 2; k++) {
-		struct fix_map fm = { v, 6, sets[k], 2, l, 7, 32, 64, 0 };
+		struct fix_map fm = { two_v, 6, sets[k], 2, two_l, 7, 32, 64, 0 };
 		char err[160];
 		struct map *m = fix_alloc(&fm);
 		struct sim s;
@@ -223,18 +226,11 @@ static void heights_at_the_bound_play_and_draw_without_overflow(void **state)
  * takes its sector from map_finish's thing_sec.) */
 static void decorations_stand_on_their_own_floor(void **state)
 {
-	static const int v[][2] = {
-		{ 0, 0 }, { 0, 128 }, { 128, 128 }, { 128, 0 }, { 256, 128 }, { 256, 0 },
-	};
-	static const struct fix_line l[] = {
-		{ 0, 1, 0, -1 }, { 1, 2, 0, -1 }, { 2, 3, 0, 1 }, { 3, 0, 0, -1 },
-		{ 2, 4, 1, -1 }, { 4, 5, 1, -1 }, { 5, 3, 1, -1 },
-	};
 	static const struct fix_sector sec[] = { { 0, 128, 160 }, { 64, 192, 200 } };
 	static const struct fix_thing th[] = {
 		{ 64, 96, 0, 34, 7 }, { 200, 96, 0, 34, 7 },   /* candles */
 	};
-	struct fix_map fm = { v, 6, sec, 2, l, 7, 32, 32, 0 };
+	struct fix_map fm = { two_v, 6, sec, 2, two_l, 7, 32, 32, 0 };
 	struct map *m = fix_alloc_things(&fm, th, 2);
 	struct tex_set *ts;
 	struct r_sprite out[8];
