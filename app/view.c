@@ -53,21 +53,27 @@ static void view_hud(const struct sim *w, const struct sim *banner, const struct
 		hud_draw(banner, env, f);
 }
 
-/* What view_record_hud records. */
+/* What view_beside makes. */
 struct view_rec {
+	struct view *v;
 	const struct sim *w, *banner;
 	const struct hud_env *env;
 	struct r_frame *f;             /* f->rec the list */
 };
 
-/* r_set_beside_walk: the HUD recorded while the renderer walks, on any
- * of the pool's threads. It only reads the sims and writes v->hud (a
- * recording draws nothing and never runs the pool: v_remap_par records
- * too), so it may run inside the pool's batch beside the walk. */
-static void view_record_hud(void *arg)
+/* r_set_beside_walk: while the renderer walks, on any of the pool's
+ * threads, the world's sprites listed (r_beside_sprites) and the HUD
+ * recorded. It only reads the sims, the textures and the meshes, and
+ * writes v->spr and v->hud (a recording draws nothing and never runs the
+ * pool: v_remap_par records too), none of which the walk touches, so it
+ * may run inside the pool's batch beside the walk. */
+static void view_beside(void *arg)
 {
 	struct view_rec *vr = arg;
+	struct view *v = vr->v;
+	int n = r_game_sprites(vr->w, v->ct->tex, v->meshes, v->spr, v->spr_max);
 
+	r_beside_sprites(v->r, v->spr, n);
 	view_hud(vr->w, vr->banner, vr->env, vr->f);
 }
 
@@ -80,9 +86,9 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	const struct sim *w = under ? under : s, *banner = under ? s : NULL;
 	struct r_frame rf = *f;
 	struct r_view rv;
-	struct view_rec vr = { w, banner, &env, &rf };
+	struct view_rec vr = { v, w, banner, &env, &rf };
 	const struct map *m;
-	int n, replay;
+	int replay;
 
 	if (w->map != v->lit) {
 		/* a new stage: its own light maps and Doom's sky for its name */
@@ -96,22 +102,24 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 		view_hud(w, banner, &env, f);
 		return;
 	}
-	n = r_game_sprites(w, tex, v->meshes, v->spr, v->spr_max);
 	m = r_game_live(&v->live, w, tex);
 	r_game_view(w, f->w, &rv);
 	if (v->world) {
 		/* another renderer: the HUD after it */
+		int n = r_game_sprites(w, tex, v->meshes, v->spr, v->spr_max);
+
 		v->world(v->world_ctx, m, tex, &rv, v->spr, n, f);
 		replay = 0;
 	} else {
-		/* the HUD (the demo's, then the banner) recorded beside the
-		 * walk, as a list the strips draw (view_strip_done) */
+		/* the sprites listed and the HUD (the demo's, then the banner)
+		 * recorded beside the walk, the HUD as a list the strips draw
+		 * (view_strip_done) */
 		v_list_reset(&v->hud);
 		rf.rec = &v->hud;
 		v->hud_f = f;
-		r_set_beside_walk(v->r, view_record_hud, &vr);
+		r_set_beside_walk(v->r, view_beside, &vr);
 		r_set_strip_done(v->r, view_strip_done, v);
-		r_render(v->r, m, tex, &rv, v->spr, n, f);
+		r_render(v->r, m, tex, &rv, NULL, 0, f);
 		r_set_beside_walk(v->r, NULL, NULL);
 		r_set_strip_done(v->r, NULL, NULL);
 		/* out of memory: the list is not whole, so after the world */

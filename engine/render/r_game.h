@@ -55,7 +55,9 @@ void r_game_view(const struct sim *s, int w, struct r_view *v);
  * that as a number past t's sprites (the renderer's fallback checker); a
  * corpse frame t lacks is not drawn. Pickups and props with a mesh are
  * that mesh (r_game_mesh; meshes: those loaded at run time, borrowed, may
- * be NULL). Returns how many were written (0 when t is NULL). */
+ * be NULL). Returns how many were written (0 when t is NULL). Reads only
+ * s, t and meshes and writes only out, so it may run on another thread
+ * while the renderer walks the map (app/view.c does, r_set_beside_walk). */
 int r_game_sprites(const struct sim *s, const struct tex_set *t, const struct mesh_set *meshes,
 		   struct r_sprite *out, int max);
 

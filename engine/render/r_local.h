@@ -243,7 +243,9 @@ struct r_ctx {
 	/* 3 * nstrips: the strips costliest first for the first phase, then
 	 * for the second, then each strip's place in the first (r_strip.c) */
 	int32_t *strip_order;
-	const struct r_sprite *wspr;    /* the walk's rest (r_strip_draw_all) */
+	/* the frame's sprites, for the walk's rest (r_strip_draw_all):
+	 * r_render's, or what the work beside the walk gave (r_beside_sprites) */
+	const struct r_sprite *wspr;
 	int wnspr, world;
 
 	/* per column: rows [ceilclip + 1, floorclip - 1] are still unwritten;
@@ -439,11 +441,11 @@ void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour);
  * and y, wrapping at 64) xf, yf at x1's centre, plus xs, ys per pixel. */
 void r_rec_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat, const uint8_t *cm,
 		uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys);
-/* Records the flats' spans and projects the nspr sprites of spr (when
- * world: the walk's rest), draws every strip (through r->par when set, the
- * walk's rest beside the column runs) and adds their counters to the
- * frame's stats. */
-void r_strip_draw_all(struct r_ctx *r, const struct r_sprite *spr, int nspr, int world);
+/* Records the flats' spans and projects the frame's sprites (wspr, wnspr:
+ * r_render's or r_beside_sprites') when world (the walk's rest), draws
+ * every strip (through r->par when set, the walk's rest beside the column
+ * runs) and adds their counters to the frame's stats. */
+void r_strip_draw_all(struct r_ctx *r, int world);
 
 /* r_draw.c: the only writers of frame pixels; s is the strip drawn, every
  * write stays inside its columns. With an id buffer each also writes the

@@ -462,6 +462,15 @@ void r_set_beside_walk(struct r_ctx *r, void (*fn)(void *arg), void *arg)
 	r->beside_arg = arg;
 }
 
+void r_beside_sprites(struct r_ctx *r, const struct r_sprite *spr, int n)
+{
+	assert(r && n >= 0 && (spr || n == 0));
+	/* read only by the walk's rest, which starts after the batch that
+	 * ran the caller returned */
+	r->wspr = spr;
+	r->wnspr = n;
+}
+
 /* The walk: every wall, sky and flat part recorded into the strips. */
 static void r_walk(struct r_ctx *r)
 {
@@ -513,6 +522,9 @@ void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 	r->nvis = 0;
 	r_sectors_reset(r, m);
 	r_strip_reset(r);
+	/* the work beside the walk may replace them (r_beside_sprites) */
+	r->wspr = spr;
+	r->wnspr = nspr;
 	/* the walk records, then the strips draw (r_strip.c) */
 	if (r->beside && r->par.run && r->nstrips > 1) {
 		r->par.run(r->par.pool, 2, r_walk_job, r);
@@ -521,7 +533,7 @@ void r_render(struct r_ctx *r, const struct map *m, const struct tex_set *t,
 			r->beside(r->beside_arg);
 		r_walk(r);
 	}
-	r_strip_draw_all(r, spr, nspr, m->num_subsectors > 0);
+	r_strip_draw_all(r, m->num_subsectors > 0);
 	r->st.planes = (uint32_t)r->nplanes;
 	r->st.drawsegs = (uint32_t)r->ndsegs;
 	r->st.sprites = (uint32_t)r->nvis;

@@ -119,7 +119,8 @@ int r_grow(void **p, int *cap, size_t elem, int need);
 
 /* Draws map m with texture set t from view v into f (f->w, f->h must
  * equal the context's), then the nspr sprites of spr (NULL when nspr is
- * 0). m, t and spr are only read during the call. Map texture numbers
+ * 0), or those the work beside the walk gives (r_beside_sprites). m, t and
+ * spr are only read during the call. Map texture numbers
  * index t->textures and t->flats through t->tex_xlat / t->flat_xlat (when
  * not NULL); the palette and colormaps are t->pal. Every pixel of f is
  * written. Never fails on a finished map: data it cannot use draws as the
@@ -190,6 +191,14 @@ void r_set_strip_done(struct r_ctx *r, void (*fn)(void *arg, int x0, int x1), vo
  * goes over the view (the HUD recorded as v_ calls, engine/ui/v_video.h)
  * can be made in that time instead of before it. */
 void r_set_beside_walk(struct r_ctx *r, void (*fn)(void *arg), void *arg);
+
+/* From inside the beside-the-walk function only (the one exception to its
+ * read-only rule): the frame's sprites are the n of spr instead of the
+ * ones r_render was given, read as those are (after fn has returned, until
+ * r_render returns). Why: the sprite list (r_game_sprites) needs nothing
+ * of the walk either, and making it before r_render kept the pool's other
+ * threads waiting as long. */
+void r_beside_sprites(struct r_ctx *r, const struct r_sprite *spr, int n);
 
 /* Surface-id buffer (engine/render/r_id.h) for the next frames, NULL for none
  * (the default): borrowed, w*h entries, row stride w. r_render then writes,

@@ -409,10 +409,8 @@ static void r_strip_sort(struct r_ctx *r, int rest)
 			r->strip_order[2 * r->nstrips + o[k]] = k;
 }
 
-void r_strip_draw_all(struct r_ctx *r, const struct r_sprite *spr, int nspr, int world)
+void r_strip_draw_all(struct r_ctx *r, int world)
 {
-	r->wspr = spr;
-	r->wnspr = nspr;
 	r->world = world;
 	if (r->par.run && r->nstrips > 1 && r->par.wait && 2 * r->nstrips + 1 <= r->par.wait_jobs) {
 		r->par.run(r->par.pool, 2 * r->nstrips + 1, r_strip_job_one, r);

@@ -9,7 +9,8 @@
  * default, narrow strips with short bands, strips that leave a narrower
  * last one) and pools of 2 and 3 threads must give the same bytes and the
  * same counters, over many seeded views of the built-in levels and of
- * Freedoom maps, with sprites.
+ * Freedoom maps, with sprites (given to r_render, or from beside the walk
+ * with r_beside_sprites).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -70,13 +71,21 @@ struct way {
 	int *done;                      /* calls that covered each column */
 	_Atomic int beside;             /* r_set_beside_walk calls returned this frame */
 	_Atomic int early;              /* strip-done calls that came before one had */
+	/* the odd ways give the frame's sprites from beside the walk
+	 * (r_beside_sprites) and r_render none */
+	int via_beside;
+	const struct r_sprite *spr;
+	int nspr;
 };
 
-/* r_set_beside_walk: counts its returns. */
+/* r_set_beside_walk: gives the sprites when the way does, counts its
+ * returns. */
 static void way_beside(void *arg)
 {
 	struct way *w = arg;
 
+	if (w->via_beside)
+		r_beside_sprites(w->r, w->spr, w->nspr);
 	w->beside++;
 }
 
@@ -112,6 +121,7 @@ static void ways_open(struct way *w, int width, int height)
 
 		memset(&w[i], 0, sizeof(w[i]));
 		w[i].name = names[i];
+		w[i].via_beside = i & 1;
 		assert_int_equal(r_new(width, height, &w[i].r), 0);
 		w[i].px = malloc((size_t)width * (size_t)height);
 		assert_non_null(w[i].px);
@@ -166,7 +176,12 @@ static struct r_stats ways_render(struct way *w, const struct map *m, const stru
 		memset(w[i].done, 0, (size_t)w[i].f.w * sizeof(*w[i].done));
 		w[i].beside = 0;
 		w[i].early = 0;
-		r_render(w[i].r, m, t, v, spr, nspr, &w[i].f);
+		w[i].spr = spr;
+		w[i].nspr = nspr;
+		if (w[i].via_beside)
+			r_render(w[i].r, m, t, v, NULL, 0, &w[i].f);
+		else
+			r_render(w[i].r, m, t, v, spr, nspr, &w[i].f);
 		r_get_stats(w[i].r, &w[i].st);
 		/* r_set_beside_walk: once a frame, returned before the first
 		 * strip-done call */
