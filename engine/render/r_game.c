@@ -229,8 +229,8 @@ int r_game_sprites(const struct sim *s, const struct tex_set *t, const struct me
 		if ((ti.cls != G_C_LIGHT && ti.cls != G_C_DECOR) || !ti.sprite[0])
 			continue;
 		/* the sector map_finish found, not a BSP descent per thing
-		 * a frame (the daemon lists sprites beside the walk, but the
-		 * walk still waits for it when it is the shorter job) */
+		 * a frame: the daemon makes this list beside the renderer's
+		 * walk, and a list slower than the walk holds up the frame */
 		floor_h = s->w.sec[r_thing_sector(m, i)].floor_h;
 		if (r_put_mesh(&o, s, th->type, th->x, th->y, floor_h))
 			continue;
