@@ -761,8 +761,9 @@ nothing_held() { # check name
 # Five screendumps $1-1 .. $1-5, a second apart, for the host's
 # no-stuck-input check (tests/vm/run.sh still_pair): a held turn or move
 # changes every pair; what the game does by itself (the player killed by
-# woken enemies, respawned, the game over) may change some, so five give
-# it four pairs.
+# woken enemies, respawned) may change some, so five give it four pairs. A
+# game over would move every pair (the attract demo plays): zz-vm.ini's
+# nine lives keep the game going through the phases that check this.
 still_shots() { # prefix
 	for k in 1 2 3 4 5; do
 		sleep 1

@@ -179,7 +179,7 @@ ref_still() {
 		  printf '%s\n' "$@" | awk -v n="$n" 'NF && $1 + 0 <= n + 0'; printf '%d end\n' "$n"; } \
 			> "$B/ref-$tn-$n.scr"
 		"$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --state-dir "$B/refstate-$tn" \
-			--set game.stage_time=0 --set game.idle_out="$idle" \
+			--set game.stage_time=0 --set game.idle_out="$idle" --set game.lives=9 \
 			--script "$B/ref-$tn-$n.scr" --screenshot "$B/ref-$tn-$n.png" > "$B/ref.log" 2>&1 ||
 			{ cat "$B/ref.log"; die "reference frame $tn"; }
 	done
