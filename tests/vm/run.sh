@@ -165,6 +165,10 @@ done
 # ref_still NAME IDLE_OUT START TICK_A TICK_B [LINES...]: the script is START
 # (the script lines that begin the game) plus those of LINES (expects) up to
 # each tick; writes $B/ref-NAME.png, the frame at TICK_A.
+# The VM's [game] settings (tests/vm/arcaded-vm.ini, its zz-vm.ini) as
+# --set options, so the references are drawn as the VM plays.
+vm_game_sets=$(awk '/^\[/ { g = ($0 == "[game]") } g && /^[a-z_]+ *=/ {
+	k = $1; v = $0; sub(/^[^=]*= */, "", v); printf "--set game.%s=%s ", k, v }' tests/vm/arcaded-vm.ini)
 ref_still() {
 	tn=$1
 	idle=$2
@@ -179,7 +183,7 @@ ref_still() {
 		  printf '%s\n' "$@" | awk -v n="$n" 'NF && $1 + 0 <= n + 0'; printf '%d end\n' "$n"; } \
 			> "$B/ref-$tn-$n.scr"
 		"$BUILD/arcaded" --config-dir "$ST/destdir/etc/arcaded" --state-dir "$B/refstate-$tn" \
-			--set game.stage_time=0 --set game.idle_out="$idle" --set game.lives=9 \
+			$vm_game_sets --set game.idle_out="$idle" \
 			--script "$B/ref-$tn-$n.scr" --screenshot "$B/ref-$tn-$n.png" > "$B/ref.log" 2>&1 ||
 			{ cat "$B/ref.log"; die "reference frame $tn"; }
 	done
