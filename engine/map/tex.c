@@ -202,6 +202,7 @@ void tex_free(struct tex_set *t)
 	free(t->anims);
 	free(t->tex_by_name);
 	free(t->flat_by_name);
+	free(t->spr_by_name);
 	free(t);
 }
 
@@ -242,32 +243,56 @@ static int tex_find_in(const void *base, size_t stride, int first, int n, size_t
 	return -1;
 }
 
-/* The name of picture or flat i of t (flat 1: flats, else textures). */
-static const char *tex_name_of(const struct tex_set *t, int flat, int i)
+/* What a name index indexes: wall textures, flats or sprites. */
+enum { TEX_BY_WALL, TEX_BY_FLAT, TEX_BY_SPRITE };
+
+/* The name of entry i of t's kind `by` (TEX_BY_*). */
+static const char *tex_name_of(const struct tex_set *t, int by, int i)
 {
-	return flat ? t->flats[i].name : t->textures[i].name;
+	return by == TEX_BY_FLAT ? t->flats[i].name
+	       : by == TEX_BY_SPRITE ? t->sprites[i].name : t->textures[i].name;
 }
 
-/* The first index in by[0..n) (sorted by name, then index) whose name is
- * name, or -1 (also for an empty name or one of more than 8 characters). */
-static int tex_bsearch(const struct tex_set *t, int flat, const uint16_t *by, int n,
+/* The longest name of kind by: 4 characters for sprites, else 8; names
+ * are compared with their terminator, one byte more. */
+static size_t tex_name_max(int by)
+{
+	return by == TEX_BY_SPRITE ? 4 : 8;
+}
+
+/* memcmp of two names of len bytes, a loop the compiler keeps inline: a
+ * lookup compares a few names of at most 9 bytes, where a call into the
+ * C library's memcmp for each cost more than the whole scan it replaced. */
+static inline int tex_name_cmp(const char *a, const char *b, size_t len)
+{
+	for (size_t i = 0; i < len; i++)
+		if (a[i] != b[i])
+			return (unsigned char)a[i] < (unsigned char)b[i] ? -1 : 1;
+	return 0;
+}
+
+/* The first index in idx[0..n) (entries of kind by, sorted by name, then
+ * index) whose name is name, or -1 (also for an empty name or one longer
+ * than the kind's names). */
+static int tex_bsearch(const struct tex_set *t, int by, const uint16_t *idx, int n,
 		       const char *name)
 {
 	char key[9];
+	size_t len = tex_name_max(by) + 1;
 	int lo = 0, hi = n;
 
-	if (!name[0] || strlen(name) > 8)
+	if (!name[0] || strlen(name) > tex_name_max(by))
 		return -1;
 	tex_name(key, name);
 	while (lo < hi) {
 		int mid = lo + (hi - lo) / 2;
 
-		if (memcmp(tex_name_of(t, flat, by[mid]), key, 9) < 0)
+		if (tex_name_cmp(tex_name_of(t, by, idx[mid]), key, len) < 0)
 			lo = mid + 1;
 		else
 			hi = mid;
 	}
-	return lo < n && memcmp(tex_name_of(t, flat, by[lo]), key, 9) == 0 ? by[lo] : -1;
+	return lo < n && tex_name_cmp(tex_name_of(t, by, idx[lo]), key, len) == 0 ? idx[lo] : -1;
 }
 
 int tex_find(const struct tex_set *t, const char *name)
@@ -275,7 +300,7 @@ int tex_find(const struct tex_set *t, const char *name)
 	if (strcmp(name, "-") == 0)
 		return 0;
 	if (t->tex_by_name)
-		return t->num_textures > 1 ? tex_bsearch(t, 0, t->tex_by_name, t->num_textures - 1, name)
+		return t->num_textures > 1 ? tex_bsearch(t, TEX_BY_WALL, t->tex_by_name, t->num_textures - 1, name)
 					   : -1;
 	return tex_find_in(t->textures, sizeof(*t->textures), 1, t->num_textures, 8, name);
 }
@@ -359,15 +384,17 @@ int tex_map_heights(const struct tex_set *t, struct map *m)
 int tex_find_flat(const struct tex_set *t, const char *name)
 {
 	if (t->flat_by_name)
-		return tex_bsearch(t, 1, t->flat_by_name, t->num_flats, name);
+		return tex_bsearch(t, TEX_BY_FLAT, t->flat_by_name, t->num_flats, name);
 	return tex_find_in(t->flats, sizeof(*t->flats), 0, t->num_flats, 8, name);
 }
 
-/* Sorts by[0..n) (indices of textures, or flats) by name, then index: a
+/* Sorts idx[0..n) (indices of entries of kind by) by name, then index: a
  * bottom-up merge sort through a scratch array, stable (equal names keep
  * index order) and n log n whatever the names. */
-static void tex_sort_names(const struct tex_set *t, int flat, uint16_t *by, uint16_t *tmp, int n)
+static void tex_sort_names(const struct tex_set *t, int by, uint16_t *idx, uint16_t *tmp, int n)
 {
+	size_t len = tex_name_max(by) + 1;
+
 	for (int width = 1; width < n; width *= 2) {
 		for (int lo = 0; lo < n; lo += 2 * width) {
 			int mid = lo + width < n ? lo + width : n;
@@ -375,28 +402,33 @@ static void tex_sort_names(const struct tex_set *t, int flat, uint16_t *by, uint
 			int i = lo, j = mid, k = lo;
 
 			while (i < mid && j < hi)
-				tmp[k++] = memcmp(tex_name_of(t, flat, by[j]),
-						  tex_name_of(t, flat, by[i]), 9) < 0 ? by[j++] : by[i++];
+				tmp[k++] = tex_name_cmp(tex_name_of(t, by, idx[j]),
+							tex_name_of(t, by, idx[i]), len) < 0 ? idx[j++] : idx[i++];
 			while (i < mid)
-				tmp[k++] = by[i++];
+				tmp[k++] = idx[i++];
 			while (j < hi)
-				tmp[k++] = by[j++];
+				tmp[k++] = idx[j++];
 		}
-		memcpy(by, tmp, (size_t)n * sizeof *by);
+		memcpy(idx, tmp, (size_t)n * sizeof *idx);
 	}
 }
 
-/* tex_by_name and flat_by_name. */
+/* tex_by_name, flat_by_name and spr_by_name. */
 static int tex_index(struct tex_set *t)
 {
 	int nt = t->num_textures > 1 ? t->num_textures - 1 : 0;
 	int n = nt > t->num_flats ? nt : t->num_flats;
-	uint16_t *tmp = malloc((size_t)(n ? n : 1) * sizeof *tmp);
+	uint16_t *tmp;
 
+	if (t->num_sprites > n)
+		n = t->num_sprites;
+	tmp = malloc((size_t)(n ? n : 1) * sizeof *tmp);
 	t->tex_by_name = malloc((size_t)(nt ? nt : 1) * sizeof *t->tex_by_name);
 	t->flat_by_name = malloc((size_t)(t->num_flats ? t->num_flats : 1) *
 				 sizeof *t->flat_by_name);
-	if (!tmp || !t->tex_by_name || !t->flat_by_name) {
+	t->spr_by_name = malloc((size_t)(t->num_sprites ? t->num_sprites : 1) *
+				sizeof *t->spr_by_name);
+	if (!tmp || !t->tex_by_name || !t->flat_by_name || !t->spr_by_name) {
 		free(tmp);
 		return -ENOMEM;
 	}
@@ -404,14 +436,19 @@ static int tex_index(struct tex_set *t)
 		t->tex_by_name[i] = (uint16_t)(i + 1);
 	for (int i = 0; i < t->num_flats; i++)
 		t->flat_by_name[i] = (uint16_t)i;
-	tex_sort_names(t, 0, t->tex_by_name, tmp, nt);
-	tex_sort_names(t, 1, t->flat_by_name, tmp, t->num_flats);
+	for (int i = 0; i < t->num_sprites; i++)
+		t->spr_by_name[i] = (uint16_t)i;
+	tex_sort_names(t, TEX_BY_WALL, t->tex_by_name, tmp, nt);
+	tex_sort_names(t, TEX_BY_FLAT, t->flat_by_name, tmp, t->num_flats);
+	tex_sort_names(t, TEX_BY_SPRITE, t->spr_by_name, tmp, t->num_sprites);
 	free(tmp);
 	return 0;
 }
 
 int tex_find_sprite(const struct tex_set *t, const char *name)
 {
+	if (t->spr_by_name)
+		return tex_bsearch(t, TEX_BY_SPRITE, t->spr_by_name, t->num_sprites, name);
 	return tex_find_in(t->sprites, sizeof(*t->sprites), 0, t->num_sprites, 4, name);
 }
 

@@ -100,11 +100,13 @@ struct tex_set {
 	int fallback_flat;             /* the checker flat an unknown flat name becomes */
 	struct tex_anim *anims;
 	int num_anims;
-	/* Name indexes (tex_set_finish): textures 1..num_textures-1 and
-	 * flats 0..num_flats-1 sorted by name, then number; NULL until then
-	 * (tex_find then scans). */
+	/* Name indexes (tex_set_finish): textures 1..num_textures-1,
+	 * flats 0..num_flats-1 and sprites 0..num_sprites-1 sorted by name,
+	 * then number; NULL until then (tex_find, tex_find_flat and
+	 * tex_find_sprite then scan). */
 	uint16_t *tex_by_name;
 	uint16_t *flat_by_name;
+	uint16_t *spr_by_name;
 };
 
 /* Steps of one tex_load_wad (issue 13 item 8): a step is a column, post or

@@ -617,9 +617,41 @@ static void a_texture_past_the_step_limit_is_refused(void **state)
 	assert_true(steps >= 2 * (4096 + 4096 * 10 * 2) && steps < 2 * (4096 + 4096 * 10 * 2) + 5000);
 }
 
-/* tex_find and tex_find_flat go through a sorted index once the set is
- * finished: every name finds the first entry of that name, as a scan
- * would. */
+/* Every sprite of t is found by its name, in either case, at its own
+ * index (sprite names are unique); names that are no sprite's are not. */
+static void sprites_found_by_name(const struct tex_set *t, int at_least)
+{
+	assert_non_null(t->spr_by_name);
+	assert_true(t->num_sprites >= at_least);
+	for (int i = 0; i < t->num_sprites; i++) {
+		char lower[5];
+
+		for (int k = 0; k < 5; k++)
+			lower[k] = (char)(t->sprites[i].name[k] >= 'A' && t->sprites[i].name[k] <= 'Z'
+						  ? t->sprites[i].name[k] - 'A' + 'a'
+						  : t->sprites[i].name[k]);
+		assert_int_equal(tex_find_sprite(t, t->sprites[i].name), i);
+		assert_int_equal(tex_find_sprite(t, lower), i);
+	}
+	assert_int_equal(tex_find_sprite(t, ""), -1);
+	assert_int_equal(tex_find_sprite(t, "ZZZZ"), -1);
+	assert_int_equal(tex_find_sprite(t, "AAAA"), -1);
+	/* a sprite's name and one more character is no sprite's */
+	{
+		char longer[6];
+
+		memcpy(longer, t->sprites[0].name, 4);
+		longer[4] = 'A';
+		longer[5] = '\0';
+		assert_int_equal(tex_find_sprite(t, longer), -1);
+		longer[3] = '\0';
+		assert_true(tex_find_sprite(t, longer) != 0);
+	}
+}
+
+/* tex_find, tex_find_flat and tex_find_sprite go through a sorted index
+ * once the set is finished: every name finds the first entry of that
+ * name, as a scan would. */
 static void lookup_by_index_agrees_with_a_scan(void **state)
 {
 	struct fx f = load_fixture(1);
@@ -643,7 +675,12 @@ static void lookup_by_index_agrees_with_a_scan(void **state)
 	assert_int_equal(tex_find(t, "nosuch"), -1);
 	assert_int_equal(tex_find(t, "solid"), tex_find(t, "SOLID"));
 	assert_int_equal(tex_find_flat(t, "ZZZZ"), -1);
+	sprites_found_by_name(t, 1);
 	unload(&f);
+	/* the built-in set's sprites are added in no order of their names */
+	assert_int_equal(tex_builtin(&t), 0);
+	sprites_found_by_name(t, 8);
+	tex_free(t);
 }
 
 static void builtin_set_is_complete_and_deterministic(void **state)
