@@ -106,19 +106,7 @@ void r_draw_span(const struct r_ctx *r, struct r_strip *s, const struct r_span *
 	int x1 = sp->x1, x2 = sp->x2, n;
 	uint8_t *p;
 
-	if (x1 < s->x0) {
-		/* the position at the strip's first column, exactly as the
-		 * loop would have stepped it there (uint32 wraps alike) */
-		uint32_t k = (uint32_t)(s->x0 - x1);
-
-		xf += k * xs;
-		yf += k * ys;
-		x1 = s->x0;
-	}
-	if (x2 > s->x1)
-		x2 = s->x1;
-	if (x2 < x1)
-		return;
+	assert(x1 >= s->x0 && x2 <= s->x1 && x1 <= x2);
 	assert(sp->y >= 0 && sp->y < r->h && x1 >= 0 && x2 < r->w);
 	p = r->px + (size_t)sp->y * (size_t)r->pitch + (size_t)x1;
 	n = x2 - x1 + 1;

@@ -7,20 +7,22 @@
  * light lookup, list growth); r_bsp.c walks the BSP front to back and keeps
  * the solid-column list; r_seg.c turns one seg into wall columns, plane
  * marks and a drawseg; r_plane.c keeps the visplanes and draws them as
- * spans (and the sky as columns); r_things.c projects sprites and draws
+ * spans, strip by strip (and records the sky as columns); r_things.c
+ * projects sprites and draws
  * them and the masked middle textures back to front; r_strip.c records what
  * those stages draw and runs the drawing by column strips; r_draw.c is the
  * only code that writes frame pixels.
  *
  * A frame has two phases. The walk (one thread): BSP traversal, walls,
- * plane marks, spans, sky, sprite projection; every pixel run it decides is
- * recorded (struct r_col, struct r_span), none drawn. Then the strips:
- * disjoint ranges of columns, each drawn by one job, in any order and on
- * any thread (struct r_par): its recorded column runs, the parts of the
- * spans inside it, the black fill, then sprites and masked middles clipped
- * to it. A pixel's value depends only on what was recorded for it, never on
- * which strip or thread drew it, so frames are the same bytes whatever the
- * number of threads.
+ * plane marks, sky, sprite projection; every column run it decides is
+ * recorded (struct r_col), none drawn. Then the strips: disjoint ranges of
+ * columns, each drawn by one job, in any order and on any thread (struct
+ * r_par): its recorded column runs, the spans its columns of each visplane
+ * make, the black fill, then sprites and masked middles clipped to it. A
+ * pixel's value depends only on what was recorded for it and on its own
+ * row and column (a flat's position is a function of the column, not of
+ * where a span starts), never on which strip or thread drew it, so frames
+ * are the same bytes whatever the number of threads.
  *
  * Number formats (all integer):
  *  - map and view-space coordinates: 16.16 map units, view space in int64;
@@ -61,7 +63,8 @@
  * cache line (64 bytes) or more, so that two threads never write one line.
  * With a pool, about R_STRIPS_PER_THREAD strips per thread: enough for the
  * jobs to balance, few enough that cutting spans at strip edges costs
- * little (each cut is one more span set-up); without, one strip. */
+ * little (each cut is one more span set-up, and a row's set-up is made
+ * once per strip); without, one strip. */
 #define R_STRIP_MIN 64
 #define R_STRIPS_PER_THREAD 4
 /* A strip draws its column runs in bands of this many rows: one band of a
@@ -128,6 +131,13 @@ struct r_plane {
 	int minx, maxx;
 	int next;                       /* hash chain (most recent first), -1 ends */
 	uint16_t *top, *bot;            /* R_EMPTY: no rows in that column */
+	/* what its spans share (r_plane_prepare, before the strips draw
+	 * them): the flat's pixels, the height from the eye (16.16, > 0), the
+	 * light before fade, the fade factor and the surface id */
+	const uint8_t *flat;
+	int64_t hgt, q;
+	int base;
+	uint32_t id;
 };
 
 /* A wall range kept for the masked pass (Doom's drawseg_t). Scales over
@@ -186,8 +196,8 @@ struct r_col {
 	uint32_t id;                    /* surface id (r_set_idbuf) */
 };
 
-/* A span of a flat recorded by the walk: row y, columns x1..x2, the flat's
- * 64x64 pixels, colormap, and 6.26 positions at x1's centre plus steps. */
+/* A span of a flat: row y, columns x1..x2, the flat's 64x64 pixels,
+ * colormap, and 6.26 positions at x1's centre plus steps. */
 struct r_span {
 	const uint8_t *flat, *cm;
 	uint32_t xf, yf, xs, ys;
@@ -195,8 +205,17 @@ struct r_span {
 	uint32_t id;                    /* surface id (r_set_idbuf) */
 };
 
-/* One strip: columns x0..x1, its recorded runs and spans, scratch, and the
- * pixel counters of its drawing (summed into the frame's stats). Only the
+/* A row's span set-up, kept while a strip draws its spans (Doom's
+ * cachedheight): the plane height and the strip's frame (rowgen) it is
+ * for, and the world position at column 0's centre and the step per
+ * pixel, 32.32 (positions in world coordinates). */
+struct r_rowc {
+	int64_t h, px0, py0, sx, sy;
+	uint32_t gen;
+};
+
+/* One strip: columns x0..x1, its recorded runs, scratch, and the pixel
+ * counters of its drawing (summed into the frame's stats). Only the
  * job drawing the strip touches it during the strip phase. Each strip
  * starts a cache line of its own (the array is 64-byte aligned): two
  * threads updating the counters of neighbouring strips would otherwise
@@ -209,6 +228,12 @@ struct r_strip {
 	int32_t *order, *act, *next;    /* band scratch, maxcols entries each */
 	int32_t *band;                  /* nbands + 1 counts */
 	uint32_t written, spanned, empty, masked, degraded;
+	uint32_t nspans;                /* spans begun in it (stats.spans) */
+	/* its span scratch, h rows each: where each row's open span began,
+	 * and the rows' set-ups */
+	uint16_t *spanstart;
+	struct r_rowc *rowc;
+	uint32_t rowgen;                /* this frame's, never 0 (rowc[].gen 0: none) */
 	/* a mesh's box (r_mesh.c): colours and covered flags, inverse depths */
 	uint8_t *mbuf;
 	uint32_t *mdep;
@@ -216,14 +241,6 @@ struct r_strip {
 	/* of the last frame, ns (r_par.now) or pixels: the column runs (first
 	 * phase) and the rest (second phase), each phase ordered by its own */
 	uint64_t cost_cols, cost_rest;
-	/* Indices into ctx.spans crossing it. On a cache line of their own:
-	 * the walk's rest appends to them while another thread draws this
-	 * strip's column runs (r_strip.c), and on the line of the written
-	 * counter that thread bumps per run, every append took the line from
-	 * it (perf: r_rec_span 5.2% of a two-thread frame's samples, 3.0%
-	 * apart). */
-	_Alignas(64) int32_t *spans;
-	int nspans, maxspans;
 };
 
 struct r_ctx {
@@ -276,11 +293,6 @@ struct r_ctx {
 	int nplanes, maxplanes;
 	int plane_hash[R_PLANE_HASH];
 	int ceilplane, floorplane;      /* of the subsector being drawn, -1 none */
-	uint16_t *spanstart;            /* per row */
-	/* per row, the set-up of the last span drawn at that row (Doom's
-	 * cachedheight): plane height, and the world position at the view
-	 * axis and step per pixel, 32.32 relative to the eye */
-	int64_t *span_h, *span_fx, *span_fy, *span_sx, *span_sy;
 
 	struct r_dseg *dsegs;
 	int ndsegs, maxdsegs;
@@ -319,14 +331,12 @@ struct r_ctx {
 	uint32_t *ids;                  /* surface ids (r_set_idbuf), or NULL */
 	uint32_t id;                    /* the walk's: what r_rec_* record */
 
-	/* What the walk's rest (the flats' spans, the sprites) writes while
+	/* What the walk's rest (the planes' set-up, the sprites) writes while
 	 * other threads draw column runs (r_strip.c): on cache lines of their
 	 * own, the last of the context, so those threads' reads of the fields
 	 * above (frame, pitch, strips, bands) never miss for its writes. The
 	 * context is allocated 64-byte aligned (r_new). */
-	_Alignas(64) struct r_span *spans; /* this frame's spans */
-	int nspans, maxspans;
-	struct r_vis *vis;
+	_Alignas(64) struct r_vis *vis;
 	int nvis, maxvis;
 	struct r_stats st;
 };
@@ -395,9 +405,16 @@ int r_plane_find(struct r_ctx *r, fx_t height, uint16_t pic, int light,
 int r_plane_check(struct r_ctx *r, int p, int x1, int x2);
 /* Records the sky planes, by columns (before the strips draw columns). */
 void r_plane_draw_sky(struct r_ctx *r);
-/* Records the other planes, by spans (may run beside the column runs
- * being drawn: r_strip.c). */
-void r_plane_draw_flats(struct r_ctx *r);
+/* The other planes' span set-up (struct r_plane's flat .. id); may run
+ * beside the column runs being drawn (r_strip.c), before any strip draws
+ * spans. */
+void r_plane_prepare(struct r_ctx *r);
+/* Draws the spans of every plane but the sky in strip s's columns: each
+ * row's run of a plane's columns there is one span (Doom's R_MakeSpans
+ * and R_MapPlane). A texel's position depends only on the pixel's row and
+ * column, so a span cut at a strip edge draws what the whole span would.
+ * Writes only s's pixels and s. */
+void r_plane_strip(const struct r_ctx *r, struct r_strip *s);
 
 /* r_things.c: sprites and masked middle textures */
 /* Projects the sprites and sorts them farthest first. */
@@ -437,14 +454,10 @@ void r_rec_col(struct r_ctx *r, int x, int y1, int y2, const uint8_t *col, int h
 /* Rows y1..y2 of column x in one colour. Every r_rec_* records ctx.id as
  * the run's surface id. */
 void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour);
-/* A span of a flat: row y, columns x1..x2; flat position (6.26 texels in x
- * and y, wrapping at 64) xf, yf at x1's centre, plus xs, ys per pixel. */
-void r_rec_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat, const uint8_t *cm,
-		uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys);
-/* Records the flats' spans and projects the frame's sprites (wspr, wnspr:
- * r_render's or r_beside_sprites') when world (the walk's rest), draws
- * every strip (through r->par when set, the walk's rest beside the column
- * runs) and adds their counters to the frame's stats. */
+/* Sets up the planes' spans and projects the frame's sprites (wspr,
+ * wnspr: r_render's or r_beside_sprites') when world (the walk's rest),
+ * draws every strip (through r->par when set, the walk's rest beside the
+ * column runs) and adds their counters to the frame's stats. */
 void r_strip_draw_all(struct r_ctx *r, int world);
 
 /* r_draw.c: the only writers of frame pixels; s is the strip drawn, every
@@ -454,7 +467,7 @@ void r_strip_draw_all(struct r_ctx *r, int world);
 /* Rows c->y1..y2 of run c (y2 <= c->y2); then c->y1 is y2 + 1 and c->frac
  * the position there. Counted in written. */
 void r_draw_run(const struct r_ctx *r, struct r_strip *s, struct r_col *c, int y2);
-/* The part of span sp inside the strip. Counted in spanned. */
+/* Span sp, inside the strip's columns. Counted in spanned. */
 void r_draw_span(const struct r_ctx *r, struct r_strip *s, const struct r_span *sp);
 /* A masked column (sprites, masked middles): rows y1..y2 of column x (in
  * the strip) from picture column col, no wrapping, only texels whose op

@@ -294,15 +294,8 @@ int r_new(int w, int h, struct r_ctx **out)
 	r->solid = malloc((size_t)r->maxsolid * sizeof(*r->solid));
 	r->rowv = malloc((size_t)h * sizeof(*r->rowv));
 	r->yslope = malloc((size_t)h * sizeof(*r->yslope));
-	r->spanstart = malloc((size_t)h * sizeof(*r->spanstart));
-	r->span_h = malloc((size_t)h * sizeof(*r->span_h));
-	r->span_fx = malloc((size_t)h * sizeof(*r->span_fx));
-	r->span_fy = malloc((size_t)h * sizeof(*r->span_fy));
-	r->span_sx = malloc((size_t)h * sizeof(*r->span_sx));
-	r->span_sy = malloc((size_t)h * sizeof(*r->span_sy));
 	if (!r->ceilclip || !r->floorclip || !r->cliptop || !r->clipbot || !r->xtoang ||
-	    !r->solid || !r->rowv || !r->yslope || !r->spanstart || !r->span_h || !r->span_fx ||
-	    !r->span_fy || !r->span_sx || !r->span_sy || r_set_par(r, NULL) < 0)
+	    !r->solid || !r->rowv || !r->yslope || r_set_par(r, NULL) < 0)
 		goto fail;
 	r->rowv_cy2 = INT32_MIN;
 	/* fade = R_FADE_DIST * scale / focal with focal = w / 2 and scale16 =
@@ -329,7 +322,6 @@ void r_free(struct r_ctx *r)
 	if (!r)
 		return;
 	r_strip_free(r);
-	free(r->spans);
 	for (int i = 0; i < r->maxplanes; i++) {
 		free(r->planes[i].top);
 		free(r->planes[i].bot);
@@ -347,12 +339,6 @@ void r_free(struct r_ctx *r)
 	free(r->solid);
 	free(r->rowv);
 	free(r->yslope);
-	free(r->spanstart);
-	free(r->span_h);
-	free(r->span_fx);
-	free(r->span_fy);
-	free(r->span_sx);
-	free(r->span_sy);
 	free(r);
 }
 
@@ -396,8 +382,6 @@ static void r_setup_view(struct r_ctx *r, const struct r_view *v)
 		r->ceilclip[x] = -1;
 		r->floorclip[x] = (int16_t)r->h;
 	}
-	for (int y = 0; y < r->h; y++)
-		r->span_h[y] = -1;
 	r_solid_reset(r);
 }
 

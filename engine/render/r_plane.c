@@ -162,91 +162,117 @@ static int64_t r_plane_q(const struct r_ctx *r, int64_t dist)
 	return q > cap ? cap : q;
 }
 
-/* What a plane's spans share. */
-struct r_spanset {
-	int64_t hgt;                    /* plane height from the eye, > 0, 16.16 */
-	const uint8_t *flat;
-	const struct lmap_grid *lg;     /* light map, or NULL */
-	int base;
-	int64_t q;
-};
-
-/* Row y, columns x1..x2 of a plane (Doom's R_MapPlane). */
-static void r_map_span(struct r_ctx *r, const struct r_spanset *ps, int y, int x1, int x2)
+/* The set-up of row y for a plane hgt (16.16, > 0) from the eye: the
+ * world position at column 0's centre and the step per pixel to the
+ * right, 32.32 (Doom's R_MapPlane, with the row's distance from
+ * r->yslope). Kept per strip while the plane height stays. */
+static const struct r_rowc *r_row_setup(const struct r_ctx *r, struct r_strip *s, int64_t hgt,
+					int y)
 {
-	int64_t px, py, fade;
-	int lvl;
+	struct r_rowc *c = &s->rowc[y];
 
-	if (r->span_h[y] != ps->hgt) {
+	if (c->h != hgt || c->gen != s->rowgen) {
 		/* hgt < 2^33, yslope <= w * 2^17 <= 2^29: product < 2^62 */
-		int64_t d = (ps->hgt * r->yslope[y]) >> 16;
+		int64_t d = (hgt * r->yslope[y]) >> 16;
 
 		if (d > R_PLANE_DMAX)
 			d = R_PLANE_DMAX;
-		/* 32.32 relative to the eye: the point on the view axis at
-		 * depth d, and one pixel's step to the right, 2d/w along
-		 * (sin, -cos); |d * sin| <= 2^48 */
-		r->span_h[y] = ps->hgt;
-		r->span_fx[y] = d * r->vcos;
-		r->span_fy[y] = d * r->vsin;
-		r->span_sx[y] = d * r->vsin * 2 / r->w;
-		r->span_sy[y] = -(d * r->vcos * 2 / r->w);
+		/* the point on the view axis at depth d, and one pixel's step
+		 * to the right, 2d/w along (sin, -cos); |d * sin| <= 2^48 */
+		c->h = hgt;
+		c->gen = s->rowgen;
+		c->sx = d * r->vsin * 2 / r->w;
+		c->sy = -(d * r->vcos * 2 / r->w);
+		/* column 0's centre is (1 - w) / 2 pixels right of the axis;
+		 * the product is at most 2d in magnitude (see above) */
+		c->px0 = (int64_t)r->ex * FX_ONE + d * r->vcos + (((int64_t)(1 - r->w) * c->sx) >> 1);
+		c->py0 = (int64_t)r->ey * FX_ONE + d * r->vsin + (((int64_t)(1 - r->w) * c->sy) >> 1);
 	}
-	/* x1's centre is (2 * x1 + 1 - w) / 2 pixels right of the axis; the
-	 * product is at most 2d in magnitude (see above) */
-	px = (int64_t)r->ex * FX_ONE + r->span_fx[y] +
-	     (((int64_t)(2 * x1 + 1 - r->w) * r->span_sx[y]) >> 1);
-	py = (int64_t)r->ey * FX_ONE + r->span_fy[y] +
-	     (((int64_t)(2 * x1 + 1 - r->w) * r->span_sy[y]) >> 1);
+	return c;
+}
+
+/* Row y, columns x1..x2 of plane p in strip s. Positions are 6.26 texels
+ * (the 32.32 value's bits 6..37, i.e. modulo 64 units; flat rows run along
+ * -y, as Doom's) and linear in the column modulo 2^32: column 0's value
+ * plus x steps, so every span through a pixel gives it the same texel
+ * wherever the span began. With a light map the span is lit in runs of
+ * the R_LMAP_RUN-column blocks of the frame, each by the texel under its
+ * block's middle column, again whatever the span's ends. */
+static void r_map_span(const struct r_ctx *r, struct r_strip *s, const struct r_plane *p,
+		       int y, int x1, int x2)
+{
+	const struct r_rowc *c = r_row_setup(r, s, p->hgt, y);
+	uint32_t xs = (uint32_t)(c->sx >> 6), ys = (uint32_t)(-c->sy >> 6);
+	uint32_t x0f = (uint32_t)(c->px0 >> 6), y0f = (uint32_t)(-c->py0 >> 6);
 	/* rowv < 2^14, q <= 2^37 */
-	fade = ((int64_t)r->rowv[y] * ps->q) >> 32;
-	lvl = ps->base - (fade > R_FADE_MAX ? R_FADE_MAX : (int)fade);
+	int64_t fade = ((int64_t)r->rowv[y] * p->q) >> 32;
+	int lvl = p->base - (fade > R_FADE_MAX ? R_FADE_MAX : (int)fade);
+	struct r_span sp;
+
 	if (lvl < 0)
 		lvl = 0;
-	/* 6.26 positions: the 32.32 value's bits 6..37, i.e. modulo 64 units;
-	 * flat rows run along -y (Doom) */
-	if (!ps->lg) {
-		r_rec_span(r, y, x1, x2, ps->flat, r->cmap[lvl], (uint32_t)(px >> 6),
-			    (uint32_t)(-py >> 6), (uint32_t)(r->span_sx[y] >> 6),
-			    (uint32_t)(-r->span_sy[y] >> 6));
-		r->st.spans++;
+	sp.flat = p->flat;
+	sp.xs = xs;
+	sp.ys = ys;
+	sp.y = (int16_t)y;
+	sp.id = p->id;
+	if (!p->lg) {
+		sp.cm = r->cmap[lvl];
+		sp.x1 = (int16_t)x1;
+		sp.x2 = (int16_t)x2;
+		sp.xf = x0f + (uint32_t)x1 * xs;
+		sp.yf = y0f + (uint32_t)x1 * ys;
+		r_draw_span(r, s, &sp);
 		return;
 	}
-	/* with a light map: runs of R_LMAP_RUN pixels, each lit by the texel
-	 * under its middle pixel; positions step exactly as within one span
-	 * (uint32 6.26 arithmetic wraps the same way) */
-	for (int a = x1; a <= x2; a += R_LMAP_RUN) {
-		int b = a + R_LMAP_RUN - 1 < x2 ? a + R_LMAP_RUN - 1 : x2;
-		int64_t k = (a + b) / 2 - x1;
-		/* k < 2^12, |span step| <= 2^49: the products fit */
-		int64_t mx = (px + k * r->span_sx[y]) >> 16, my = (py + k * r->span_sy[y]) >> 16;
-		uint32_t o = (uint32_t)(a - x1);
-		uint32_t xs = (uint32_t)(r->span_sx[y] >> 6), ys = (uint32_t)(-r->span_sy[y] >> 6);
+	for (int a = x1; a <= x2;) {
+		int blk = a & ~(R_LMAP_RUN - 1), b = blk + R_LMAP_RUN - 1 < x2 ? blk + R_LMAP_RUN - 1 : x2;
+		/* the block's middle column; m < 2^12, |step| <= 2^49 */
+		int64_t m = blk + (R_LMAP_RUN - 1) / 2;
+		int64_t mx = (c->px0 + m * c->sx) >> 16, my = (c->py0 + m * c->sy) >> 16;
 		int l;
 
 		mx = mx < -MAP_COORD_MAX ? -MAP_COORD_MAX : mx > MAP_COORD_MAX ? MAP_COORD_MAX : mx;
 		my = my < -MAP_COORD_MAX ? -MAP_COORD_MAX : my > MAP_COORD_MAX ? MAP_COORD_MAX : my;
-		l = lvl - lmap_grid_flat_at(ps->lg, (fx_t)mx, (fx_t)my);
-		r_rec_span(r, y, a, b, ps->flat, r->cmap[l < 0 ? 0 : l],
-			    (uint32_t)(px >> 6) + o * xs, (uint32_t)(-py >> 6) + o * ys, xs, ys);
-		r->st.spans++;
+		l = lvl - lmap_grid_flat_at(p->lg, (fx_t)mx, (fx_t)my);
+		sp.cm = r->cmap[l < 0 ? 0 : l];
+		sp.x1 = (int16_t)a;
+		sp.x2 = (int16_t)b;
+		sp.xf = x0f + (uint32_t)a * xs;
+		sp.yf = y0f + (uint32_t)a * ys;
+		r_draw_span(r, s, &sp);
+		a = b + 1;
 	}
+}
+
+/* Closes row y's span of p at column x - 1; counted in s->nspans unless it
+ * is the rest of a span that began left of the strip (it began at the
+ * strip's first column, and the column before has the row too). */
+static void r_close_span(const struct r_ctx *r, struct r_strip *s, const struct r_plane *p,
+			 int y, int x)
+{
+	int x1 = s->spanstart[y];
+
+	if (!(x1 == s->x0 && x1 > p->minx && p->top[x1 - 1] != R_EMPTY && p->top[x1 - 1] <= y &&
+	      y <= p->bot[x1 - 1]))
+		s->nspans++;
+	r_map_span(r, s, p, y, x1, x - 1);
 }
 
 /* Doom's R_MakeSpans for the step from column x - 1 (rows t1..b1) to
  * column x (rows t2..b2): rows that end close their span at x - 1, rows
  * that begin open one at x. */
-static void r_make_spans(struct r_ctx *r, const struct r_spanset *ps, int x, int t1, int b1,
-			 int t2, int b2)
+static void r_make_spans(const struct r_ctx *r, struct r_strip *s, const struct r_plane *p, int x,
+			 int t1, int b1, int t2, int b2)
 {
-	uint16_t *start = r->spanstart;
+	uint16_t *start = s->spanstart;
 
 	while (t1 < t2 && t1 <= b1) {
-		r_map_span(r, ps, t1, start[t1], x - 1);
+		r_close_span(r, s, p, t1, x);
 		t1++;
 	}
 	while (b1 > b2 && b1 >= t1) {
-		r_map_span(r, ps, b1, start[b1], x - 1);
+		r_close_span(r, s, p, b1, x);
 		b1--;
 	}
 	while (t2 < t1 && t2 <= b2) {
@@ -259,28 +285,50 @@ static void r_make_spans(struct r_ctx *r, const struct r_spanset *ps, int x, int
 	}
 }
 
-static void r_plane_spans(struct r_ctx *r, struct r_plane *p)
+void r_plane_strip(const struct r_ctx *r, struct r_strip *s)
 {
-	struct r_spanset ps;
-	int tp = R_EMPTY, bp = 0;
+	/* the rows' set-ups of earlier frames no longer count (a new view) */
+	if (++s->rowgen == 0) {
+		for (int y = 0; y < r->h; y++)
+			s->rowc[y].gen = 0;
+		s->rowgen = 1;
+	}
+	for (int i = 0; i < r->nplanes; i++) {
+		const struct r_plane *p = &r->planes[i];
+		int lo = p->minx > s->x0 ? p->minx : s->x0, hi = p->maxx < s->x1 ? p->maxx : s->x1;
+		int tp = R_EMPTY, bp = 0;
 
-	ps.hgt = (int64_t)p->height - r->ez;
-	if (ps.hgt < 0)
-		ps.hgt = -ps.hgt;
-	ps.flat = r_flat_px(r, p->pic);
-	ps.lg = p->lg;
-	ps.base = r_light_base(p->light);
-	ps.q = r_plane_q(r, ps.hgt);
-	/* only floors are below the eye, only ceilings above (r_bsp.c) */
-	r->id = r_id(p->height < r->ez ? R_IDK_FLOOR : R_IDK_CEIL, p->sector);
-	/* column minx - 1 is empty; one step past maxx (empty) closes all */
-	for (int x = p->minx; x <= p->maxx + 1; x++) {
-		int t = x <= p->maxx ? p->top[x] : R_EMPTY;
-		int b = t == R_EMPTY ? 0 : p->bot[x];
+		if (p->sky || lo > hi)
+			continue;
+		/* column lo - 1 counts as empty: a span open there is cut at
+		 * the strip's edge and goes on at lo; one step past hi (empty)
+		 * closes all */
+		for (int x = lo; x <= hi + 1; x++) {
+			int t = x <= hi ? p->top[x] : R_EMPTY;
+			int b = t == R_EMPTY ? 0 : p->bot[x];
 
-		r_make_spans(r, &ps, x, tp, bp, t, b);
-		tp = t;
-		bp = b;
+			r_make_spans(r, s, p, x, tp, bp, t, b);
+			tp = t;
+			bp = b;
+		}
+	}
+}
+
+void r_plane_prepare(struct r_ctx *r)
+{
+	for (int i = 0; i < r->nplanes; i++) {
+		struct r_plane *p = &r->planes[i];
+
+		if (p->sky || p->minx > p->maxx)
+			continue;
+		p->hgt = (int64_t)p->height - r->ez;
+		if (p->hgt < 0)
+			p->hgt = -p->hgt;
+		p->flat = r_flat_px(r, p->pic);
+		p->base = r_light_base(p->light);
+		p->q = r_plane_q(r, p->hgt);
+		/* only floors are below the eye, only ceilings above (r_bsp.c) */
+		p->id = r_id(p->height < r->ez ? R_IDK_FLOOR : R_IDK_CEIL, p->sector);
 	}
 }
 
@@ -335,15 +383,5 @@ void r_plane_draw_sky(struct r_ctx *r)
 
 		if (p->minx <= p->maxx && p->sky)
 			r_plane_sky(r, p);
-	}
-}
-
-void r_plane_draw_flats(struct r_ctx *r)
-{
-	for (int i = 0; i < r->nplanes; i++) {
-		struct r_plane *p = &r->planes[i];
-
-		if (p->minx <= p->maxx && !p->sky)
-			r_plane_spans(r, p);
 	}
 }

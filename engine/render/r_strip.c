@@ -4,36 +4,38 @@
  * The frame's columns are cut into strips (R_STRIP_MIN columns or a
  * power-of-two multiple: one strip without a pool, about
  * R_STRIPS_PER_THREAD per thread with one). The walk records each
- * column run (wall part, sky, fill) into the strip of its column, and each
- * span once, with its index in every strip it crosses. Then each strip is
- * one job: its column runs in bands of rows (every run that reaches a band
- * is drawn there before the next band starts, so the few KiB of frame a
- * band covers stay in the cache while the strip's columns are drawn one
- * after the other), the parts of its spans, the black fill of what is left,
- * then sprites and masked middles clipped to its columns. A span cut by a
- * strip edge starts at the position the whole span's loop reaches there,
- * and a run cut by a band edge resumes at the position it stopped at, so a
- * strip draws the bytes a single pass over the frame would.
+ * column run (wall part, sky, fill) into the strip of its column. Then
+ * each strip is one job: its column runs in bands of rows (every run that
+ * reaches a band is drawn there before the next band starts, so the few
+ * KiB of frame a band covers stay in the cache while the strip's columns
+ * are drawn one after the other), the spans of the visplanes' rows in its
+ * columns (r_plane_strip), the black fill of what is left, then sprites
+ * and masked middles clipped to its columns. A flat's texel depends only
+ * on the pixel's row and column, so a span cut by a strip edge draws what
+ * the whole span would, and a run cut by a band edge resumes at the
+ * position it stopped at: a strip draws the bytes a single pass over the
+ * frame would.
  *
  * The jobs run through the caller's pool (struct r_par) or one after the
  * other. A list that cannot grow makes the walk draw that run at once: the
  * frame stays whole and the same (counted in stats.degraded).
  *
  * With a pool the strips are drawn in two phases, so that the rest of the
- * walk runs beside them rather than before: job 0 of the first records
- * the flats' spans (r_plane_draw_flats) and projects the sprites, while
- * the other jobs draw the strips' column runs (walls and sky, all recorded
- * by then); the second draws each strip's spans, black fill and sprites.
+ * walk runs beside them rather than before: job 0 of the first sets up the
+ * planes' spans (r_plane_prepare) and projects the sprites, while the
+ * other jobs draw the strips' column runs (walls and sky, all recorded by
+ * then); the second draws each strip's spans, black fill and sprites.
  * When the pool can wait for a job (r_par.wait) both phases are one batch
  * of 2n + 1 jobs, a strip's second-phase job waiting for job 0 and for its
  * own column job (both handed out before it), so a thread done with the
  * column runs goes on with the strips that are ready instead of waiting at
  * the end of a batch for the other thread's last strip; else they are two
  * batches. Runs, spans and the fill write disjoint pixels, so the order
- * changes no byte. While job 0 records spans only its own fields
- * change (ctx.spans, each strip's span list, ctx.st), and a span it must
- * draw at once (out of memory) writes pixels no run has and counts them in
- * the strip's spanned, not in written, which a column job counts in.
+ * changes no byte. While job 0 runs only its own fields change (the
+ * planes' set-up, ctx.vis, ctx.st). (The spans were once recorded by job
+ * 0 into lists the strips read: every span then crossed from one core's
+ * cache to the other's, and recording them took 2.5 times as long on two
+ * threads as on one for the same frames.)
  * Each phase hands its strips out costliest first by what each cost in
  * that phase the previous frame (the time the caller's clock measured,
  * r_par.now, else the pixels drawn there), so the last job to start is a
@@ -61,7 +63,8 @@ static void r_strips_free(struct r_strip *st, int n)
 		free(s->act);
 		free(s->next);
 		free(s->band);
-		free(s->spans);
+		free(s->spanstart);
+		free(s->rowc);
 		free(s->mbuf);
 		free(s->mdep);
 	}
@@ -92,7 +95,9 @@ int r_strip_layout(struct r_ctx *r, int strip_shift, int band_shift)
 		x1 = s->x0 + (1 << strip_shift) - 1;
 		s->x1 = x1 < r->w - 1 ? x1 : r->w - 1;
 		s->band = malloc((size_t)(nbands + 1) * sizeof(*s->band));
-		if (!s->band) {
+		s->spanstart = malloc((size_t)r->h * sizeof(*s->spanstart));
+		s->rowc = calloc((size_t)r->h, sizeof(*s->rowc));
+		if (!s->band || !s->spanstart || !s->rowc) {
 			r_strips_free(st, n);
 			free(order);
 			return -ENOMEM;
@@ -119,11 +124,11 @@ void r_strip_free(struct r_ctx *r)
 
 void r_strip_reset(struct r_ctx *r)
 {
-	r->nspans = 0;
 	for (int i = 0; i < r->nstrips; i++) {
 		struct r_strip *s = &r->strips[i];
 
-		s->ncols = s->nspans = 0;
+		s->ncols = 0;
+		s->nspans = 0;
 		s->written = s->spanned = s->empty = s->masked = s->degraded = 0;
 	}
 }
@@ -214,35 +219,6 @@ void r_rec_fill(struct r_ctx *r, int x, int y1, int y2, uint8_t colour)
 		r_rec_now(r, c);
 }
 
-void r_rec_span(struct r_ctx *r, int y, int x1, int x2, const uint8_t *flat, const uint8_t *cm,
-		uint32_t xf, uint32_t yf, uint32_t xs, uint32_t ys)
-{
-	struct r_span sp = { flat, cm, xf, yf, xs, ys, (int16_t)y, (int16_t)x1, (int16_t)x2, r->id };
-	int32_t at = r->nspans;
-
-	if (x2 < x1)
-		return;
-	if (r->nspans == r->maxspans &&
-	    r_grow((void **)&r->spans, &r->maxspans, sizeof(*r->spans), r->nspans + 1) < 0) {
-		r->st.degraded++;
-		for (int i = x1 >> r->strip_shift; i <= x2 >> r->strip_shift; i++)
-			r_draw_span(r, &r->strips[i], &sp);
-		return;
-	}
-	r->spans[r->nspans++] = sp;
-	for (int i = x1 >> r->strip_shift; i <= x2 >> r->strip_shift; i++) {
-		struct r_strip *s = &r->strips[i];
-
-		if (s->nspans == s->maxspans &&
-		    r_grow((void **)&s->spans, &s->maxspans, sizeof(*s->spans), s->nspans + 1) < 0) {
-			r->st.degraded++;
-			r_draw_span(r, s, &sp);
-			continue;
-		}
-		s->spans[s->nspans++] = at;
-	}
-}
-
 /* The strip's column runs, band by band: runs are bucketed by the band
  * they start in (counting sort into order), and a run that goes on past a
  * band's last row is carried into the next band's active list. */
@@ -292,19 +268,19 @@ static void r_strip_cols(const struct r_ctx *r, struct r_strip *s)
  * (r_set_strip_done). */
 static void r_strip_rest(struct r_ctx *r, struct r_strip *s)
 {
-	for (int k = 0; k < s->nspans; k++)
-		r_draw_span(r, s, &r->spans[s->spans[k]]);
+	if (r->world)
+		r_plane_strip(r, s);
 	r_draw_finish(r, s);
 	r_things_draw(r, s);
 	if (r->strip_done)
 		r->strip_done(r->strip_done_arg, s->x0, s->x1 + 1);
 }
 
-/* The walk's second half: the flats' spans, then the sprites. */
+/* The walk's second half: the planes' span set-up, then the sprites. */
 static void r_walk_rest(struct r_ctx *r)
 {
 	if (r->world) {
-		r_plane_draw_flats(r);
+		r_plane_prepare(r);
 		r_things_project(r, r->wspr, r->wnspr);
 	}
 }
@@ -429,6 +405,7 @@ void r_strip_draw_all(struct r_ctx *r, int world)
 		r->st.pixels_empty += s->empty;
 		r->st.pixels_masked += s->masked;
 		r->st.degraded += s->degraded;
+		r->st.spans += s->nspans;
 	}
 	/* the next frame's orders, from this frame's costs */
 	if (r->par.run && r->nstrips > 1) {

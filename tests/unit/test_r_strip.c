@@ -10,7 +10,9 @@
  * last one) and pools of 2 and 3 threads must give the same bytes and the
  * same counters, over many seeded views of the built-in levels and of
  * Freedoom maps, with sprites (given to r_render, or from beside the walk
- * with r_beside_sprites).
+ * with r_beside_sprites) and with the maps' light maps (which light the
+ * flats' spans in blocks of columns, so a span cut at a strip edge must
+ * still be lit as the whole one is).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -26,6 +28,7 @@
 
 #include "app/ct.h"
 #include "app/pool.h"
+#include "engine/map/lmap.h"
 #include "engine/map/lvl_builtin.h"
 #include "engine/map/map.h"
 #include "engine/map/map_wad.h"
@@ -150,6 +153,46 @@ static void ways_open(struct way *w, int width, int height)
 	}
 	assert_int_equal(w[0].r->nstrips, 1);
 	assert_int_equal(w[0].r->nbands, 1);
+}
+
+/* The light map of m's light things and lit decorations (as the daemon
+ * makes it, app/ct.c), set on every way; NULL (none set) when m has no
+ * lights. */
+static struct lmap *ways_lmap(struct way *w, const struct map *m)
+{
+	int n = lmap_lights_from_map(m, LMAP_DECOR, NULL, 0);
+	struct lmap_light *lights;
+	struct lmap *lm = NULL;
+
+	if (n == 0)
+		return NULL;
+	lights = calloc((size_t)n, sizeof(*lights));
+	assert_non_null(lights);
+	lmap_lights_from_map(m, LMAP_DECOR, lights, n);
+	assert_int_equal(lmap_new(m, lights, n, &lm), 0);
+	free(lights);
+	for (int i = 0; i < WAYS; i++)
+		r_set_lmap(w[i].r, lm);
+	return lm;
+}
+
+/* Whether the light map changes the reference's frame of v (drawn again
+ * without it): the views do show lit flats. */
+static int ways_lit(struct way *w, const struct map *m, const struct tex_set *t,
+		    const struct r_view *v, const struct lmap *lm)
+{
+	size_t bytes = (size_t)w[0].f.w * (size_t)w[0].f.h;
+	uint8_t *lit = malloc(bytes);
+	int differs;
+
+	assert_non_null(lit);
+	memcpy(lit, w[0].px, bytes);
+	r_set_lmap(w[0].r, NULL);
+	r_render(w[0].r, m, t, v, w[0].spr, w[0].nspr, &w[0].f);
+	r_set_lmap(w[0].r, lm);
+	differs = memcmp(lit, w[0].px, bytes) != 0;
+	free(lit);
+	return differs;
 }
 
 static void ways_close(struct way *w)
@@ -416,6 +459,7 @@ static void builtin_levels_same_frame_every_way(void **state)
 	static const int sizes[][2] = { { 320, 240 }, { 333, 199 } };
 	struct tex_set *t;
 	uint32_t seed = 777;
+	int lit = 0;
 	(void)state;
 
 	assert_int_equal(r_pal_set_new(&t), 0);
@@ -425,17 +469,24 @@ static void builtin_levels_same_frame_every_way(void **state)
 		ways_open(w, sizes[z][0], sizes[z][1]);
 		for (int lv = 0; lv < lvl_builtin_count(); lv++) {
 			struct map *m;
+			struct lmap *lm;
 
 			assert_int_equal(lvl_builtin(lv, &m), 0);
+			lm = ways_lmap(w, m);
 			for (int n = 0; n < 60; n++) {
 				struct r_view v = seeded_view(m, &seed);
 
 				ways_render(w, m, t, &v, NULL, 0, "built-in", n);
+				if (lm && n < 8)
+					lit += ways_lit(w, m, t, &v, lm);
 			}
+			lmap_free(lm);
 			map_free(m);
 		}
 		ways_close(w);
 	}
+	/* some views showed flats the light maps lit */
+	assert_true(lit > 0);
 	r_pal_set_free(t);
 }
 
@@ -467,6 +518,7 @@ static void freedoom_maps_same_frame_every_way(void **state)
 	uint8_t *data;
 	size_t len = 0;
 	uint32_t masked = 0;
+	int lit = 0;
 	(void)state;
 
 	data = slurp(path, &len);
@@ -482,9 +534,11 @@ static void freedoom_maps_same_frame_every_way(void **state)
 		for (size_t i = 0; i < sizeof(maps) / sizeof(maps[0]); i++) {
 			struct map *m;
 			struct r_sprite *spr;
+			struct lmap *lm;
 			int nspr;
 
 			assert_int_equal(map_load_wad(wd, t, maps[i], &m, err, sizeof(err)), 0);
+			lm = ways_lmap(w, m);
 			spr = calloc(m->num_things + 1, sizeof(*spr));
 			assert_non_null(spr);
 			nspr = r_map_sprites(m, t, spr);
@@ -500,14 +554,18 @@ static void freedoom_maps_same_frame_every_way(void **state)
 				v.shear = (int32_t)(lcg(&seed) % 81) - 40;
 				st = ways_render(w, m, t, &v, spr, nspr, maps[i], n);
 				masked += st.pixels_masked;
+				if (lm && n < 8)
+					lit += ways_lit(w, m, t, &v, lm);
 			}
 			free(spr);
+			lmap_free(lm);
 			map_free(m);
 		}
 		ways_close(w);
 	}
-	/* the views did show sprites or masked middles */
+	/* the views did show sprites or masked middles, and lit flats */
 	assert_true(masked > 0);
+	assert_true(lit > 0);
 	tex_free(t);
 	wad_free(wd);
 	free(data);
