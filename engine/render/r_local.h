@@ -8,10 +8,9 @@
  * the solid-column list; r_seg.c turns one seg into wall columns, plane
  * marks and a drawseg; r_plane.c keeps the visplanes and draws them as
  * spans, strip by strip (and records the sky as columns); r_things.c
- * projects sprites and draws
- * them and the masked middle textures back to front; r_strip.c records what
- * those stages draw and runs the drawing by column strips; r_draw.c is the
- * only code that writes frame pixels.
+ * projects sprites and draws them and the masked middle textures back to
+ * front; r_strip.c records what those stages draw and runs the drawing by
+ * column strips; r_draw.c is the only code that writes frame pixels.
  *
  * A frame has two phases. The walk (one thread): BSP traversal, walls,
  * plane marks, sky, sprite projection; every column run it decides is

@@ -34,8 +34,8 @@
  * changes no byte. While job 0 runs only its own fields change (the
  * planes' set-up, ctx.vis, ctx.st). (The spans were once recorded by job
  * 0 into lists the strips read: every span then crossed from one core's
- * cache to the other's, and recording them took 2.5 times as long on two
- * threads as on one for the same frames.)
+ * cache to the other's, and recording them took 2.5 to 3.2 times as long
+ * on two threads as on one for the same frames.)
  * Each phase hands its strips out costliest first by what each cost in
  * that phase the previous frame (the time the caller's clock measured,
  * r_par.now, else the pixels drawn there), so the last job to start is a
