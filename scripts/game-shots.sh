@@ -15,15 +15,27 @@ out=$(pwd)/docs/images
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$out"
-# The flow script plus screenshot steps at moments it reaches (ticks read
-# off its own expect lines).
+# The flow script plus screenshot steps at moments it reaches, found from
+# its own expect lines (test_g_flow writes the script again when the game
+# changes, and the ticks move): the service menu and play at fixed early
+# ticks, the first game over with its countdown running, the initials page
+# before any letter is entered, the scores page in attract.
+flow=tests/script/game/flow.scr
+at() { # the first tick of "expect KEY == VALUE" in the flow script
+	awk -v k="$1" -v v="$2" '$2 == "expect" && $3 == k && $5 == v { print $1; exit }' "$flow"
+}
+over=$(at mode gameover)
+initials=$(at mode initials)
+scores=$(at page scores)
+[ -n "$over" ] && [ -n "$initials" ] && [ -n "$scores" ] ||
+	{ echo "game-shots: $flow has no game over, initials or scores expect line" >&2; exit 1; }
 {
-	cat tests/script/game/flow.scr
+	cat "$flow"
 	echo "10 screenshot $out/game-service-menu.png"
 	echo "200 screenshot $out/game-play-hud.png"
-	echo "2000 screenshot $out/game-over-continue.png"
-	echo "3930 screenshot $out/game-initials.png"
-	echo "3990 screenshot $out/game-attract-scores.png"
+	echo "$((over + 96)) screenshot $out/game-over-continue.png"
+	echo "$((initials + 11)) screenshot $out/game-initials.png"
+	echo "$((scores + 7)) screenshot $out/game-attract-scores.png"
 } >"$tmp/shots.scr"
 (cd "$tmp" && "$BIN" --script "$tmp/shots.scr" --config-dir "$tmp/etc" --state-dir "$tmp/state" \
 	--set game.render_width=640 --set game.render_height=480 >/dev/null)
