@@ -10,22 +10,22 @@
  * starts (r_plane_check). Each frame pixel is marked into at most one plane,
  * since marking also shrinks the clip arrays.
  *
- * After the walls, every plane is turned into horizontal spans (Doom's
- * R_MakeSpans: a row's span starts where the plane's column runs first
- * include it and ends where they stop) and each span is textured with the
- * flat (Doom's R_MapPlane): the row's depth is plane height * w / rowv
- * (rowv = twice the row centre's distance from the horizon, see r_local.h),
- * the world position of the span's first pixel centre and the step per
- * pixel follow from the view direction, and the texel is the flat's, wrapped
- * at 64 units, with Doom's orientation (row = -y, column = x). Light is per
- * row by depth. The sky is drawn by columns instead: texture column from the
- * column's view angle, texel rows at a fixed scale around the horizon, full
- * bright.
+ * After the walls, each strip turns every plane's columns inside it into
+ * horizontal spans (Doom's R_MakeSpans: a row's span starts where the
+ * plane's column runs first include it and ends where they stop, or at the
+ * strip's edges) and draws each span textured with the flat (Doom's
+ * R_MapPlane): the row's depth is plane height * w / rowv (rowv = twice the
+ * row centre's distance from the horizon, see r_local.h), the world
+ * position at column 0's centre and the step per pixel follow from the view
+ * direction, and the texel is the flat's, wrapped at 64 units, with Doom's
+ * orientation (row = -y, column = x). Light is per row by depth. The sky is
+ * drawn by columns instead: texture column from the column's view angle,
+ * texel rows at a fixed scale around the horizon, full bright.
  *
- * Nothing is drawn here: spans and sky columns are recorded for the strips
- * (r_strip.c). Lists grow as needed and are kept between frames; when memory runs out a
- * seg marks nothing and its rows are filled black instead (counted in
- * stats.degraded).
+ * Sky columns are recorded for the strips (r_strip.c); spans are drawn by
+ * the strip's job as they are found (r_plane_strip). Lists grow as needed
+ * and are kept between frames; when memory runs out a seg marks nothing
+ * and its rows are filled black instead (counted in stats.degraded).
  */
 #include <stdint.h>
 #include <stdlib.h>
