@@ -90,7 +90,9 @@ struct r_stats {
 					* (PAL_BLACK): 0 inside a closed map */
 	uint32_t pixels_masked;        /* drawn over that by masked middle
 					* textures and sprites */
-	uint32_t planes, spans;        /* visplanes used, spans drawn */
+	uint32_t planes, spans;        /* visplanes used; spans: their row runs drawn
+					* (a light map's blocks and strip edges cut
+					* none into more) */
 	uint32_t drawsegs, openings;   /* wall ranges kept for the masked pass,
 					* clip entries they saved */
 	uint32_t sprites;              /* sprites projected (on screen) */
