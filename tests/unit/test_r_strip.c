@@ -156,21 +156,21 @@ static void ways_open(struct way *w, int width, int height)
 }
 
 /* The light map of m's light things and lit decorations (as the daemon
- * makes it, app/ct.c), set on every way; NULL (none set) when m has no
- * lights. */
+ * makes it, app/ct.c), set on every way in place of the last map's; NULL
+ * (and none set) when m has no lights. */
 static struct lmap *ways_lmap(struct way *w, const struct map *m)
 {
 	int n = lmap_lights_from_map(m, LMAP_DECOR, NULL, 0);
-	struct lmap_light *lights;
 	struct lmap *lm = NULL;
 
-	if (n == 0)
-		return NULL;
-	lights = calloc((size_t)n, sizeof(*lights));
-	assert_non_null(lights);
-	lmap_lights_from_map(m, LMAP_DECOR, lights, n);
-	assert_int_equal(lmap_new(m, lights, n, &lm), 0);
-	free(lights);
+	if (n > 0) {
+		struct lmap_light *lights = calloc((size_t)n, sizeof(*lights));
+
+		assert_non_null(lights);
+		lmap_lights_from_map(m, LMAP_DECOR, lights, n);
+		assert_int_equal(lmap_new(m, lights, n, &lm), 0);
+		free(lights);
+	}
 	for (int i = 0; i < WAYS; i++)
 		r_set_lmap(w[i].r, lm);
 	return lm;
