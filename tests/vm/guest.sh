@@ -56,10 +56,18 @@ log_since() {
 first() { echo "$2" | grep -m 1 -e "$1" | cut -d' ' -f1; }
 prop() { systemctl show -p "$1" --value "$U"; }
 
+# Puts request $1 with the text $2 where the host looks (tests/vm/run.sh
+# polls $R/req/*): written under a dot name, which the host's glob skips,
+# then renamed, so the host never reads it half written. (Written in place,
+# the host once read "key 5 150" as an empty file, took it for a plain
+# screendump and acked it: the coin key was never sent.)
+request() {
+	printf '%s\n' "$2" > "$R/req/.$1" && mv "$R/req/.$1" "$R/req/$1"
+}
 # Asks the host for a screendump named $1 and waits until it is taken.
 acked() { [ -e "$R/ack/$1" ]; }
 shot() {
-	: > "$R/req/$1"
+	request "$1" ""
 	wait_until 60 acked "$1" || fail "screendump-$1" "the host did not answer"
 }
 # Screendumps $1-1, $1-2, ... until the host finds the reference frame on
@@ -73,7 +81,7 @@ shot_match() {
 	mend=$((${u%.*}${u#*.} + $2 * 100))
 	while :; do
 		k=$((k + 1))
-		echo "match${3:+ $3}" > "$R/req/$1-$k"
+		request "$1-$k" "match${3:+ $3}"
 		wait_until 60 acked "$1-$k" || { fail "screendump-$1" "the host did not answer"; return 1; }
 		if grep -q '^match' "$R/ack/$1-$k"; then
 			figure "$1: the screen showed the reference frame at screendump $k"
@@ -118,7 +126,7 @@ phase_boot() {
 nkey=0
 hostkey() {
 	nkey=$((nkey + 1))
-	echo "key $1 $2" > "$R/req/key-$nkey"
+	request "key-$nkey" "key $1 $2"
 	wait_until 30 acked "key-$nkey" || fail "hostkey-$1" "the host did not send it"
 	sleep "$(awk -v m="$2" 'BEGIN { print m / 1000 + 0.3 }')"
 }
