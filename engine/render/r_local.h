@@ -53,10 +53,12 @@
 /* Near plane: nothing closer than this depth (map units, 16.16) is drawn.
  * The sim keeps the eye 16 units from solid walls, so it only shows when the
  * eye is within a quarter unit of a portal or outside the map. */
-/* Pixels of a floor or ceiling span lit by one light-map texel. */
-#define R_LMAP_RUN 16
-
 #define R_NEAR (FX_ONE / 4)
+
+/* The frame's columns in blocks of this many (a power of two: r_plane.c
+ * masks with it); a row of a lit floor or ceiling is lit by one light-map
+ * texel per block. */
+#define R_LMAP_RUN 16
 
 /* Strips are R_STRIP_MIN columns wide or a power-of-two multiple of it: a
  * cache line (64 bytes) or more, so that two threads never write one line.
