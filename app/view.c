@@ -19,6 +19,8 @@ int view_init(struct view *v, const struct ct *ct, struct r_ctx *r, int rotate)
 	v->ct = ct;
 	v->r = r;
 	v->rotate = rotate;
+	/* the palette is the content's for the daemon's life */
+	hud_colours(&ct->tex->pal, &v->colours);
 	for (int i = 0; i < ct->nmaps; i++)
 		if (R_GAME_SPRITES_MAX(ct->maps[i]) > v->spr_max)
 			v->spr_max = R_GAME_SPRITES_MAX(ct->maps[i]);
@@ -81,7 +83,8 @@ void view_draw(struct view *v, const struct sim *s, const struct sim *under,
 	       struct r_frame *f)
 {
 	struct tex_set *tex = v->ct->tex;
-	struct hud_env env = { &tex->pal, tex, v->rotate, v->par, v->diag, v->notice };
+	struct hud_env env = { &tex->pal, tex, v->rotate, v->par, v->diag, v->notice,
+			       &v->colours };
 	/* the sim whose world shows: the demo's under a banner */
 	const struct sim *w = under ? under : s, *banner = under ? s : NULL;
 	struct r_frame rf = *f;

@@ -23,6 +23,7 @@ struct hud_diag;
 struct r_view;
 
 #include "engine/render/r_game.h"
+#include "engine/ui/hud.h"
 #include "engine/ui/v_video.h"
 
 /* Draws the world (r_render's shape): the software renderer by default;
@@ -51,6 +52,8 @@ struct view {
 	struct v_list hud;         /* owned: the frame's HUD, recorded and then
 				    * replayed by the strips (view_draw) */
 	struct r_frame *hud_f;     /* the frame being drawn, for the replays */
+	struct hud_colours colours;    /* the HUD's colours in the content's palette,
+					* made once (hud_env.colours) */
 };
 
 /* Prepares v for the content's stages. 0 or -ENOMEM. */

@@ -63,12 +63,31 @@ struct hud_mm {
 	int cx, cy;                    /* the player's pixel */
 	int64_t num, den;              /* pixels per 16.16 unit: num / den */
 	fx_t px, py;
+	/* Offsets (16.16, either way, along x or y) from which a point is off
+	 * the square: at least (size / 2 + 2) pixels, whose truncated
+	 * projection is past both edges (the square reaches size / 2 pixels
+	 * left of and up from the player, size - size / 2 - 1 right and down) */
+	int64_t far;
 };
 
 static void hud_mm_point(const struct hud_mm *m, fx_t x, fx_t y, int *sx, int *sy)
 {
 	*sx = m->cx + (int)(((int64_t)x - m->px) * m->num / m->den);
 	*sy = m->cy - (int)(((int64_t)y - m->py) * m->num / m->den);
+}
+
+/* 1 when every point of the segment a-b (map units, 16.16) lies at least
+ * m->far from the player along x or y, on one side: it then projects
+ * outside the minimap's square, so neither a line nor a dot of it can
+ * show. A test without the projection's two divisions per point, for the
+ * map's lines and things, of which the square shows a few. */
+static int hud_mm_far(const struct hud_mm *m, fx_t ax, fx_t ay, fx_t bx, fx_t by)
+{
+	int64_t x0 = (int64_t)ax - m->px, y0 = (int64_t)ay - m->py;
+	int64_t x1 = (int64_t)bx - m->px, y1 = (int64_t)by - m->py;
+
+	return (x0 <= -m->far && x1 <= -m->far) || (x0 >= m->far && x1 >= m->far) ||
+	       (y0 <= -m->far && y1 <= -m->far) || (y0 >= m->far && y1 >= m->far);
 }
 
 static void hud_mm_dot(struct r_frame *f, const struct hud_mm *m, fx_t x, fx_t y, int size,
@@ -98,6 +117,7 @@ static void hud_minimap(const struct sim *s, const struct hud_colours *c, struct
 	m.den = (int64_t)HUD_MAP_SPAN * FX_ONE;
 	m.px = s->pl.x;
 	m.py = s->pl.y;
+	m.far = ((int64_t)(size / 2 + 2) * m.den + m.num - 1) / m.num;
 	{
 		/* darkened twice: one pass through the composed map */
 		uint8_t dim2[256];
@@ -111,6 +131,8 @@ static void hud_minimap(const struct sim *s, const struct hud_colours *c, struct
 		const struct map_vertex *a = &map->vertices[l->v1], *b = &map->vertices[l->v2];
 		uint8_t col = c->grey;
 		int x0, y0, x1, y1;
+		if (hud_mm_far(&m, a->x, a->y, b->x, b->y))
+			continue;
 		if (l->side[1] != MAP_NONE && !(l->flags & ML_BLOCKING)) {
 			/* heights as they are now: an open door is a passage */
 			const struct g_sector *fs = &s->w.sec[map->sides[l->side[0]].sector];
@@ -126,6 +148,9 @@ static void hud_minimap(const struct sim *s, const struct hud_colours *c, struct
 	dot = sc + 1;
 	for (uint32_t i = 0; i < map->num_things; i++) {
 		struct g_thing_info ti;
+		if (hud_mm_far(&m, map->things[i].x, map->things[i].y, map->things[i].x,
+			       map->things[i].y))
+			continue;
 		g_thing_info(map->things[i].type, &ti);
 		if (ti.cls == G_C_LIGHT)
 			hud_mm_dot(f, &m, map->things[i].x, map->things[i].y, dot, c->yellow);
@@ -453,7 +478,10 @@ void hud_draw(const struct sim *s, const struct hud_env *env, struct r_frame *f)
 {
 	struct hud_colours c;
 
-	hud_colours(env->pal, &c);
+	if (env->colours)
+		c = *env->colours;
+	else
+		hud_colours(env->pal, &c);
 	c.par = env->par;
 	if (!hud_world(s))
 		v_fill(f, 0, 0, f->w, f->h, c.black);

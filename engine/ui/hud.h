@@ -53,6 +53,10 @@ struct hud_env {
 					* sim state): the attract pages show "CONFIG ERROR:
 					* SEE SERVICE MENU", the service menu's MAIN page
 					* the text itself; NULL: none */
+	const struct hud_colours *colours; /* optional: hud_colours(pal) made once by
+					* the caller (13 nearest-colour searches of
+					* the palette, a fifth of the HUD's cost when
+					* made at every frame); NULL: made here */
 };
 
 /* The colours the HUD uses, nearest to fixed RGB values in a palette. */

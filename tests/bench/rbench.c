@@ -66,7 +66,7 @@
 static void draw_gl(struct rgl_ctx *g, struct view *v, const struct sim *s, struct r_frame *f)
 {
 	struct tex_set *tex = v->ct->tex;
-	struct hud_env env = { &tex->pal, tex, v->rotate, v->par, v->diag, NULL };
+	struct hud_env env = { &tex->pal, tex, v->rotate, v->par, v->diag, NULL, &v->colours };
 	struct r_view rv;
 
 	tex_animate(tex, s->tick);

@@ -48,10 +48,11 @@ static int teardown(void **state)
 
 static const struct hud_diag *diag;   /* the diagnostics text draw() passes */
 static const char *notice;            /* and the configuration error's notice */
+static const struct hud_colours *colours; /* and the colours made once, or NULL */
 
 static void draw(const struct sim *s)
 {
-	struct hud_env env = { &pal, NULL, 0, NULL, diag, notice };
+	struct hud_env env = { &pal, NULL, 0, NULL, diag, notice, colours };
 	memset(pix, BG, sizeof(pix));
 	hud_draw(s, &env, &frame);
 }
@@ -126,6 +127,63 @@ static void the_minimap_shows_enemies_in_red_at_their_place(void **state)
 	assert_true(at(cx + 20, cy - 10) != col.red);
 }
 
+/* The minimap skips a map line before projecting it when both ends lie
+ * off its square on one side (hud_mm_far): a wall 500 units away, the
+ * square's last column or row (it shows 512 either side), must still be
+ * drawn. */
+static void the_minimap_draws_walls_inside_its_square(void **state)
+{
+	int mx, my, size, cx, cy;
+	struct sim s;
+	(void)state;
+	hud_minimap_rect(&frame, &mx, &my, &size);
+	cx = mx + size / 2;
+	cy = my + size / 2;
+	sim_init(&s, room, &play);
+	/* the room's walls are 1024 units from its middle: off the square */
+	draw(&s);
+	assert_true(at(cx + 39, cy) != col.grey);
+	assert_true(at(cx, cy - 39) != col.grey);
+	/* 500 units from the east wall (x 2048) and the north wall (y 2048):
+	 * 500 of 1024 units across 80 pixels is 39.06, so 39 pixels: the
+	 * square's last column and its second row (under the border) */
+	s.pl.x = fx_from_int(2048 - 500);
+	s.pl.y = fx_from_int(2048 - 500);
+	draw(&s);
+	assert_int_equal(cx + 39, mx + size - 1);
+	assert_int_equal(at(cx + 39, cy), col.grey);
+	assert_int_equal(at(cx, cy - 39), col.grey);
+	/* and the west and south walls, 1548 units away, are not */
+	assert_true(at(mx, cy) != col.grey);
+	assert_true(at(cx, my + size - 1) != col.grey);
+}
+
+/* hud_env.colours: the caller's colours made once draw what the palette
+ * gives when they are hud_colours' own, and are the ones used. */
+static void colours_made_once_are_the_ones_drawn(void **state)
+{
+	static uint8_t a[W * H];
+	struct hud_colours mine;
+	int mx, my, size;
+	struct sim s;
+	(void)state;
+	hud_minimap_rect(&frame, &mx, &my, &size);
+	sim_init(&s, room, &play);
+	s.pl.x = fx_from_int(2048 - 400);
+	s.g.score = 4242;
+	draw(&s);
+	memcpy(a, pix, sizeof(a));
+	hud_colours(&pal, &mine);
+	colours = &mine;
+	draw(&s);
+	assert_memory_equal(a, pix, sizeof(a));
+	mine.grey = BG;
+	draw(&s);
+	colours = NULL;
+	assert_int_equal(at(mx + size / 2 + 31, my + size / 2), BG);
+	assert_int_equal(a[(my + size / 2) * W + mx + size / 2 + 31], col.grey);
+}
+
 static void the_crosshair_marks_the_centre(void **state)
 {
 	struct sim s;
@@ -191,7 +249,7 @@ static void the_score_is_drawn(void **state)
 
 static void hud_is_a_pure_function_of_the_state(void **state)
 {
-	struct hud_env env = { &pal, NULL, 0, NULL, NULL, NULL };
+	struct hud_env env = { &pal, NULL, 0, NULL, NULL, NULL, NULL };
 	static uint8_t a[W * H];
 	struct sim s;
 	(void)state;
@@ -426,6 +484,8 @@ int main(void)
 		cmocka_unit_test(colours_are_distinct_and_from_the_palette),
 		cmocka_unit_test(the_minimap_arrow_points_along_the_view),
 		cmocka_unit_test(the_minimap_shows_enemies_in_red_at_their_place),
+		cmocka_unit_test(the_minimap_draws_walls_inside_its_square),
+		cmocka_unit_test(colours_made_once_are_the_ones_drawn),
 		cmocka_unit_test(the_crosshair_marks_the_centre),
 		cmocka_unit_test(low_health_and_damage_show_in_red),
 		cmocka_unit_test(a_shot_flashes_at_the_muzzle),
