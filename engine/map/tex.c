@@ -203,6 +203,9 @@ void tex_free(struct tex_set *t)
 	free(t->tex_by_name);
 	free(t->flat_by_name);
 	free(t->spr_by_name);
+	free(t->tex_keys);
+	free(t->flat_keys);
+	free(t->spr_keys);
 	free(t);
 }
 
@@ -253,46 +256,51 @@ static const char *tex_name_of(const struct tex_set *t, int by, int i)
 	       : by == TEX_BY_SPRITE ? t->sprites[i].name : t->textures[i].name;
 }
 
-/* The longest name of kind by: 4 characters for sprites, else 8; names
- * are compared with their terminator, one byte more. */
-static size_t tex_name_max(int by)
+/* A name as one number whose order is the names' byte order: its first
+ * eight bytes, the first the most significant, and zeros from its end on.
+ * upper: a name asked for, upper-cased as tex_name does (stored names are
+ * taken as they are, so the index's order is their bytes'). -1 for an
+ * empty name or one longer than max characters, else 0. A lookup is then
+ * a binary search of integers: comparing the names byte by byte cost more
+ * than the list of sprites a frame shows looked up by name. */
+static int tex_key(const char *name, size_t max, int upper, uint64_t *key)
 {
-	return by == TEX_BY_SPRITE ? 4 : 8;
-}
+	uint64_t k = 0;
+	size_t i = 0;
 
-/* memcmp of two names of len bytes, a loop the compiler keeps inline: a
- * lookup compares a few names of at most 9 bytes, where a call into the
- * C library's memcmp for each cost more than the whole scan it replaced. */
-static inline int tex_name_cmp(const char *a, const char *b, size_t len)
-{
-	for (size_t i = 0; i < len; i++)
-		if (a[i] != b[i])
-			return (unsigned char)a[i] < (unsigned char)b[i] ? -1 : 1;
+	for (; i < 8 && name[i]; i++) {
+		unsigned char c = (unsigned char)name[i];
+
+		if (upper && c >= 'a' && c <= 'z')
+			c = (unsigned char)(c - 'a' + 'A');
+		k = k << 8 | c;
+	}
+	if (i == 0 || i > max || (i == 8 && name[8]))
+		return -1;
+	*key = k << (8 * (8 - i));
 	return 0;
 }
 
-/* The first index in idx[0..n) (entries of kind by, sorted by name, then
- * index) whose name is name, or -1 (also for an empty name or one longer
- * than the kind's names). */
-static int tex_bsearch(const struct tex_set *t, int by, const uint16_t *idx, int n,
+/* The entry whose key is that of name in idx[0..n) (entries sorted by key,
+ * then index, keys[k] idx[k]'s key; names of at most max characters), the
+ * first of equals, or -1. */
+static int tex_bsearch(const uint16_t *idx, const uint64_t *keys, int n, size_t max,
 		       const char *name)
 {
-	char key[9];
-	size_t len = tex_name_max(by) + 1;
+	uint64_t key;
 	int lo = 0, hi = n;
 
-	if (!name[0] || strlen(name) > tex_name_max(by))
+	if (tex_key(name, max, 1, &key) < 0)
 		return -1;
-	tex_name(key, name);
 	while (lo < hi) {
 		int mid = lo + (hi - lo) / 2;
 
-		if (tex_name_cmp(tex_name_of(t, by, idx[mid]), key, len) < 0)
+		if (keys[mid] < key)
 			lo = mid + 1;
 		else
 			hi = mid;
 	}
-	return lo < n && tex_name_cmp(tex_name_of(t, by, idx[lo]), key, len) == 0 ? idx[lo] : -1;
+	return lo < n && keys[lo] == key ? idx[lo] : -1;
 }
 
 int tex_find(const struct tex_set *t, const char *name)
@@ -300,8 +308,9 @@ int tex_find(const struct tex_set *t, const char *name)
 	if (strcmp(name, "-") == 0)
 		return 0;
 	if (t->tex_by_name)
-		return t->num_textures > 1 ? tex_bsearch(t, TEX_BY_WALL, t->tex_by_name, t->num_textures - 1, name)
-					   : -1;
+		return t->num_textures > 1
+			       ? tex_bsearch(t->tex_by_name, t->tex_keys, t->num_textures - 1, 8, name)
+			       : -1;
 	return tex_find_in(t->textures, sizeof(*t->textures), 1, t->num_textures, 8, name);
 }
 
@@ -384,71 +393,96 @@ int tex_map_heights(const struct tex_set *t, struct map *m)
 int tex_find_flat(const struct tex_set *t, const char *name)
 {
 	if (t->flat_by_name)
-		return tex_bsearch(t, TEX_BY_FLAT, t->flat_by_name, t->num_flats, name);
+		return tex_bsearch(t->flat_by_name, t->flat_keys, t->num_flats, 8, name);
 	return tex_find_in(t->flats, sizeof(*t->flats), 0, t->num_flats, 8, name);
 }
 
-/* Sorts idx[0..n) (indices of entries of kind by) by name, then index: a
- * bottom-up merge sort through a scratch array, stable (equal names keep
- * index order) and n log n whatever the names. */
-static void tex_sort_names(const struct tex_set *t, int by, uint16_t *idx, uint16_t *tmp, int n)
+/* Sorts idx[0..n) and keys[0..n) (keys[k] the key of entry idx[k]) by key,
+ * then index: a bottom-up merge sort through scratch arrays, stable
+ * (equal keys keep index order) and n log n whatever the names. */
+static void tex_sort_keys(uint16_t *idx, uint64_t *keys, uint16_t *ti, uint64_t *tk, int n)
 {
-	size_t len = tex_name_max(by) + 1;
-
 	for (int width = 1; width < n; width *= 2) {
 		for (int lo = 0; lo < n; lo += 2 * width) {
 			int mid = lo + width < n ? lo + width : n;
 			int hi = lo + 2 * width < n ? lo + 2 * width : n;
 			int i = lo, j = mid, k = lo;
 
-			while (i < mid && j < hi)
-				tmp[k++] = tex_name_cmp(tex_name_of(t, by, idx[j]),
-							tex_name_of(t, by, idx[i]), len) < 0 ? idx[j++] : idx[i++];
-			while (i < mid)
-				tmp[k++] = idx[i++];
-			while (j < hi)
-				tmp[k++] = idx[j++];
+			while (i < mid && j < hi) {
+				int b = keys[j] < keys[i];
+				int from = b ? j++ : i++;
+
+				ti[k] = idx[from];
+				tk[k++] = keys[from];
+			}
+			for (; i < mid; i++, k++) {
+				ti[k] = idx[i];
+				tk[k] = keys[i];
+			}
+			for (; j < hi; j++, k++) {
+				ti[k] = idx[j];
+				tk[k] = keys[j];
+			}
 		}
-		memcpy(idx, tmp, (size_t)n * sizeof *idx);
+		memcpy(idx, ti, (size_t)n * sizeof *idx);
+		memcpy(keys, tk, (size_t)n * sizeof *keys);
 	}
 }
 
-/* tex_by_name, flat_by_name and spr_by_name. */
+/* One name index: idx the n entries first..first + n - 1 of kind by
+ * sorted by key, keys their keys. A stored name too long for its key (a
+ * name has at most 8 bytes) gets key 0, which no lookup asks for. */
+static void tex_index_kind(const struct tex_set *t, int by, int first, int n, uint16_t *idx,
+			   uint64_t *keys, uint16_t *ti, uint64_t *tk)
+{
+	for (int i = 0; i < n; i++) {
+		idx[i] = (uint16_t)(first + i);
+		if (tex_key(tex_name_of(t, by, first + i), 8, 0, &keys[i]) < 0)
+			keys[i] = 0;
+	}
+	tex_sort_keys(idx, keys, ti, tk, n);
+}
+
+/* tex_by_name, flat_by_name and spr_by_name, with their keys. */
 static int tex_index(struct tex_set *t)
 {
 	int nt = t->num_textures > 1 ? t->num_textures - 1 : 0;
 	int n = nt > t->num_flats ? nt : t->num_flats;
-	uint16_t *tmp;
+	uint16_t *ti;
+	uint64_t *tk;
 
 	if (t->num_sprites > n)
 		n = t->num_sprites;
-	tmp = malloc((size_t)(n ? n : 1) * sizeof *tmp);
+	if (n < 1)
+		n = 1;
+	ti = malloc((size_t)n * sizeof *ti);
+	tk = malloc((size_t)n * sizeof *tk);
 	t->tex_by_name = malloc((size_t)(nt ? nt : 1) * sizeof *t->tex_by_name);
 	t->flat_by_name = malloc((size_t)(t->num_flats ? t->num_flats : 1) *
 				 sizeof *t->flat_by_name);
 	t->spr_by_name = malloc((size_t)(t->num_sprites ? t->num_sprites : 1) *
 				sizeof *t->spr_by_name);
-	if (!tmp || !t->tex_by_name || !t->flat_by_name || !t->spr_by_name) {
-		free(tmp);
+	t->tex_keys = malloc((size_t)(nt ? nt : 1) * sizeof *t->tex_keys);
+	t->flat_keys = malloc((size_t)(t->num_flats ? t->num_flats : 1) * sizeof *t->flat_keys);
+	t->spr_keys = malloc((size_t)(t->num_sprites ? t->num_sprites : 1) * sizeof *t->spr_keys);
+	if (!ti || !tk || !t->tex_by_name || !t->flat_by_name || !t->spr_by_name ||
+	    !t->tex_keys || !t->flat_keys || !t->spr_keys) {
+		free(ti);
+		free(tk);
 		return -ENOMEM;
 	}
-	for (int i = 0; i < nt; i++)
-		t->tex_by_name[i] = (uint16_t)(i + 1);
-	for (int i = 0; i < t->num_flats; i++)
-		t->flat_by_name[i] = (uint16_t)i;
-	for (int i = 0; i < t->num_sprites; i++)
-		t->spr_by_name[i] = (uint16_t)i;
-	tex_sort_names(t, TEX_BY_WALL, t->tex_by_name, tmp, nt);
-	tex_sort_names(t, TEX_BY_FLAT, t->flat_by_name, tmp, t->num_flats);
-	tex_sort_names(t, TEX_BY_SPRITE, t->spr_by_name, tmp, t->num_sprites);
-	free(tmp);
+	tex_index_kind(t, TEX_BY_WALL, 1, nt, t->tex_by_name, t->tex_keys, ti, tk);
+	tex_index_kind(t, TEX_BY_FLAT, 0, t->num_flats, t->flat_by_name, t->flat_keys, ti, tk);
+	tex_index_kind(t, TEX_BY_SPRITE, 0, t->num_sprites, t->spr_by_name, t->spr_keys, ti, tk);
+	free(ti);
+	free(tk);
 	return 0;
 }
 
 int tex_find_sprite(const struct tex_set *t, const char *name)
 {
 	if (t->spr_by_name)
-		return tex_bsearch(t, TEX_BY_SPRITE, t->spr_by_name, t->num_sprites, name);
+		return tex_bsearch(t->spr_by_name, t->spr_keys, t->num_sprites, 4, name);
 	return tex_find_in(t->sprites, sizeof(*t->sprites), 0, t->num_sprites, 4, name);
 }
 

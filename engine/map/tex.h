@@ -107,6 +107,11 @@ struct tex_set {
 	uint16_t *tex_by_name;
 	uint16_t *flat_by_name;
 	uint16_t *spr_by_name;
+	/* each index's names as numbers in the same order (tex.c tex_key):
+	 * what a lookup compares */
+	uint64_t *tex_keys;
+	uint64_t *flat_keys;
+	uint64_t *spr_keys;
 };
 
 /* Steps of one tex_load_wad (issue 13 item 8): a step is a column, post or
