@@ -271,6 +271,38 @@ static void remap_changes_every_pixel_of_the_rectangle(void **state)
 	assert_int_equal(count(&b, 12), 1);
 }
 
+/* Every pixel of the rectangle goes through the map on its own, whatever
+ * its value, where the row starts and how long it is: each result is
+ * checked against the map applied to the pixel alone, and the pixels
+ * beside the rectangle must not change. (A row remapped eight pixels at a
+ * time as one word, tried in 2026-11 and dropped as it took more
+ * instructions, failed this with its bytes reversed or its last pixel
+ * left; the test above, one value everywhere, passed the first.) */
+static void remap_maps_each_pixel_by_its_own_value(void **state)
+{
+	uint8_t map[256], before[sizeof(((struct fb *)0)->buf)];
+	struct fb b;
+	(void)state;
+	for (int i = 0; i < 256; i++)
+		map[i] = (uint8_t)(i * 37 + 11);
+	for (int x0 = 0; x0 < 9; x0++) {
+		for (int w = 1; w <= W - x0; w++) {
+			fb_init(&b);
+			for (int y = 0; y < H; y++)
+				for (int x = 0; x < W; x++)
+					b.f.px[y * P + x] = (uint8_t)(x * 13 + y * 7 + 1);
+			memcpy(before, b.buf, sizeof(before));
+			v_remap(&b.f, x0, 3, w, 2, map);
+			for (size_t k = 0; k < sizeof(before); k++) {
+				int x = (int)(k % P), y = (int)(k / P) - 1;
+				int in = y >= 3 && y < 5 && x >= x0 && x < x0 + w;
+
+				assert_int_equal(b.buf[k], in ? map[before[k]] : before[k]);
+			}
+		}
+	}
+}
+
 /* A stand-in pool running the jobs last first, counting them. */
 static int fake_jobs;
 
@@ -475,6 +507,7 @@ int main(void)
 		cmocka_unit_test(numbers_are_padded_decimal),
 		cmocka_unit_test(a_picture_draws_its_opaque_pixels_only),
 		cmocka_unit_test(remap_changes_every_pixel_of_the_rectangle),
+		cmocka_unit_test(remap_maps_each_pixel_by_its_own_value),
 		cmocka_unit_test(remap_in_row_ranges_is_the_same),
 		cmocka_unit_test(replay_by_columns_is_drawing_directly),
 	};
