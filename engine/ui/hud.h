@@ -55,8 +55,8 @@ struct hud_env {
 					* the text itself; NULL: none */
 	const struct hud_colours *colours; /* optional: hud_colours(pal) made once by
 					* the caller (13 nearest-colour searches of
-					* the palette, a fifth of the HUD's cost when
-					* made at every frame); NULL: made here */
+					* the palette, 49,000 instructions, at every
+					* frame otherwise); NULL: made here */
 };
 
 /* The colours the HUD uses, nearest to fixed RGB values in a palette. */
