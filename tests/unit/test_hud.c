@@ -80,6 +80,21 @@ static void colours_are_distinct_and_from_the_palette(void **state)
 	assert_true(col.white != BG && col.red != BG && col.black != BG);
 }
 
+/* The minimap's square in the test frame and the player's pixel in it. */
+struct mm {
+	int x, y, size, cx, cy;
+};
+
+static struct mm mm_square(void)
+{
+	struct mm m;
+
+	hud_minimap_rect(&frame, &m.x, &m.y, &m.size);
+	m.cx = m.x + m.size / 2;
+	m.cy = m.y + m.size / 2;
+	return m;
+}
+
 /* The arrow points along the view, north up: its tip 6 pixels (a twelfth
  * of the 80-pixel map) from the centre, its tail corners 4.5 pixels back
  * at 145 degrees, so about 3.7 behind. Its axis runs along pixel edges, so
@@ -89,13 +104,11 @@ static void the_minimap_arrow_points_along_the_view(void **state)
 	static const struct { ang_t a; int dx, dy; } dir[4] = {
 		{ 0, 1, 0 }, { ANG90, 0, -1 }, { ANG180, -1, 0 }, { ANG270, 0, 1 },
 	};
-	int mx, my, size, cx, cy;
+	struct mm m = mm_square();
+	int cx = m.cx, cy = m.cy;
 	struct sim s;
 	(void)state;
-	hud_minimap_rect(&frame, &mx, &my, &size);
-	assert_int_equal(size, H / 3);
-	cx = mx + size / 2;
-	cy = my + size / 2;
+	assert_int_equal(m.size, H / 3);
 	for (int i = 0; i < 4; i++) {
 		sim_init(&s, room, &play);
 		s.pl.angle = dir[i].a;
@@ -109,12 +122,10 @@ static void the_minimap_arrow_points_along_the_view(void **state)
 
 static void the_minimap_shows_enemies_in_red_at_their_place(void **state)
 {
-	int mx, my, size, cx, cy;
+	struct mm m = mm_square();
+	int cx = m.cx, cy = m.cy;
 	struct sim s;
 	(void)state;
-	hud_minimap_rect(&frame, &mx, &my, &size);
-	cx = mx + size / 2;
-	cy = my + size / 2;
 	sim_init(&s, room, &play);
 	s.g.num_enemies = 1;
 	s.g.en[0] = (struct g_enemy){ .x = fx_from_int(1024 + 256), .y = fx_from_int(1024 + 128),
@@ -133,12 +144,10 @@ static void the_minimap_shows_enemies_in_red_at_their_place(void **state)
  * drawn. */
 static void the_minimap_draws_walls_inside_its_square(void **state)
 {
-	int mx, my, size, cx, cy;
+	struct mm m = mm_square();
+	int cx = m.cx, cy = m.cy;
 	struct sim s;
 	(void)state;
-	hud_minimap_rect(&frame, &mx, &my, &size);
-	cx = mx + size / 2;
-	cy = my + size / 2;
 	sim_init(&s, room, &play);
 	/* the room's walls are 1024 units from its middle: off the square */
 	draw(&s);
@@ -150,12 +159,12 @@ static void the_minimap_draws_walls_inside_its_square(void **state)
 	s.pl.x = fx_from_int(2048 - 500);
 	s.pl.y = fx_from_int(2048 - 500);
 	draw(&s);
-	assert_int_equal(cx + 39, mx + size - 1);
+	assert_int_equal(cx + 39, m.x + m.size - 1);
 	assert_int_equal(at(cx + 39, cy), col.grey);
 	assert_int_equal(at(cx, cy - 39), col.grey);
 	/* and the west and south walls, 1548 units away, are not */
-	assert_true(at(mx, cy) != col.grey);
-	assert_true(at(cx, my + size - 1) != col.grey);
+	assert_true(at(m.x, cy) != col.grey);
+	assert_true(at(cx, m.y + m.size - 1) != col.grey);
 }
 
 /* hud_env.colours: the caller's colours made once draw what the palette
@@ -164,10 +173,9 @@ static void colours_made_once_are_the_ones_drawn(void **state)
 {
 	static uint8_t a[W * H];
 	struct hud_colours mine;
-	int mx, my, size;
+	struct mm m = mm_square();
 	struct sim s;
 	(void)state;
-	hud_minimap_rect(&frame, &mx, &my, &size);
 	sim_init(&s, room, &play);
 	s.pl.x = fx_from_int(2048 - 400);
 	s.g.score = 4242;
@@ -180,8 +188,8 @@ static void colours_made_once_are_the_ones_drawn(void **state)
 	mine.grey = BG;
 	draw(&s);
 	colours = NULL;
-	assert_int_equal(at(mx + size / 2 + 31, my + size / 2), BG);
-	assert_int_equal(a[(my + size / 2) * W + mx + size / 2 + 31], col.grey);
+	assert_int_equal(at(m.cx + 31, m.cy), BG);
+	assert_int_equal(a[m.cy * W + m.cx + 31], col.grey);
 }
 
 static void the_crosshair_marks_the_centre(void **state)
