@@ -296,6 +296,10 @@ static void step_notify(void *ctx, struct loop_tick *k)
 		 * Nothing can press a button or hear a sound before the
 		 * picture is up; the first tick reads no input and is silent. */
 		a->devices_open = 1;
+		/* the sounds' hash, which only a recording needs: made now,
+		 * not while the first frame waited, and before any game can
+		 * begin (it reads input from the next tick on) */
+		snd_set_hash(a->ct.sounds);
 		if (!a->headless) {
 			slot_open(&a->slots, a->kinds, a->nkinds, a->scene.dpb);
 			out_audio_start(&a->audio);
@@ -450,7 +454,7 @@ static int setup_game(struct app *a, int *rw, int *rh, uint32_t *rate)
 			.level = (uint8_t)(spec.nwads || spec.grid ? 0 : spec.level),
 			.map_name = first,
 			.audio_rate = *rate,
-			.sound_hash = a->ct.sounds->hash,
+			.sound_hash = snd_set_hash(a->ct.sounds),
 		};
 		rc = tape_replay_check(&a->tape, &run, o->verify, &a->set);
 		if (rc < 0)
@@ -494,7 +498,7 @@ static int setup(struct app *a)
 			return rc;
 	}
 	keep_flight_open(&a->keep, c->recorder.keep, c->recorder.max_mb, a->map_hash, &a->content,
-			 a->hear.rate, a->ct.sounds->hash);
+			 a->hear.rate, a->ct.sounds);
 	rc = demo_init(&a->demo, &a->ct, err, sizeof(err));
 	if (rc < 0) {
 		say_err("%s", err);
@@ -531,7 +535,7 @@ static int setup(struct app *a)
 		 * frame and audio hashes, so `--verify` can prove a replay. */
 		struct rec_header h;
 		tape_header(&h, a->map_hash, &a->set, a->scene.frame.w, a->scene.frame.h,
-			    &a->content, a->hear.rate, a->ct.sounds->hash);
+			    &a->content, a->hear.rate, snd_set_hash(a->ct.sounds));
 		h.hash_flags = REC_HAS_STATE | REC_HAS_FRAME | REC_HAS_AUDIO;
 		rc = tape_record_open(&a->tape, o->record, &h);
 		if (rc < 0)

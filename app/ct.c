@@ -165,9 +165,10 @@ static void ct_lights_run(void *p)
 }
 
 /* The WADs' sounds, on a thread of their own from the moment the WADs are
- * mapped: they need nothing else, and hashing them (FNV-1a over every
- * sample's bytes, serial by nature) and synthesizing those the WADs lack
- * took 4 of the 13 ms the loader's own thread spent on Freedoom 1 E1M1. */
+ * mapped: they need nothing else. Their hash is not made here
+ * (snd_set_hash: on its first use, after the first frame unless a
+ * recording needs it before), which on Freedoom 1 is about 2 ms of serial
+ * work off the way to the first frame. */
 struct ct_sounds_job {
 	struct ct *c;
 	const struct wad *w;

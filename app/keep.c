@@ -16,6 +16,7 @@
 #include "config/fr.h"
 #include "config/st.h"
 #include "engine/game/g_game.h"
+#include "engine/sound/snd.h"
 #include "input/rec.h"
 
 /* The payload checks st_load_usable and st_save_usable take: a scores or
@@ -154,7 +155,7 @@ void keep_tick(struct keep *k, const struct sim *s, int w, int h)
 /* ---- flight recorder ---------------------------------------------------- */
 
 void keep_flight_open(struct keep *k, int keep, int max_mb, uint64_t map_hash,
-		      const struct ct_spec *content, uint32_t audio_rate, uint64_t sound_hash)
+		      const struct ct_spec *content, uint32_t audio_rate, struct snd_set *sounds)
 {
 	char dir[CFG_PATH_MAX + 16], msg[512] = "";
 	int rc;
@@ -162,7 +163,7 @@ void keep_flight_open(struct keep *k, int keep, int max_mb, uint64_t map_hash,
 	k->map_hash = map_hash;
 	k->content = content;
 	k->audio_rate = audio_rate;
-	k->sound_hash = sound_hash;
+	k->sounds = sounds;
 	if (!k->on || keep <= 0)
 		return;
 	snprintf(dir, sizeof(dir), "%s/recordings", k->dir);
@@ -218,7 +219,7 @@ void keep_flight_after(struct keep *k, const struct sim *s, const struct sim_cmd
 		/* the settings as the service menu left them; state and
 		 * audio hashes are cheap, frame hashes are not */
 		tape_header(&hd, k->map_hash, &s->set, w, h, k->content, k->audio_rate,
-			    k->sound_hash);
+			    snd_set_hash(k->sounds));
 		hd.hash_flags = REC_HAS_STATE | REC_HAS_AUDIO;
 		hd.snapshot = k->snap;
 		hd.snapshot_len = (uint32_t)sim_snapshot_size();

@@ -36,7 +36,7 @@ struct keep {
 	uint64_t map_hash;         /* of every stage: what recordings are tied to */
 	const struct ct_spec *content;
 	uint32_t audio_rate;       /* the games' audio hashes: mixed at this rate */
-	uint64_t sound_hash;       /* from these sounds */
+	struct snd_set *sounds;    /* mixed from these (borrowed; their hash made at a game's start) */
 };
 
 /* Starts sim s on the stages of ct with settings set and, when k is on,
@@ -47,10 +47,11 @@ void keep_start(struct keep *k, const char *dir, int on, struct sim *s, const st
 
 /* Opens the flight recorder when k is on and keep > 0: at most keep
  * games in at most max_mb MiB (0: no cap), recorded against content and
- * map_hash (borrowed), with audio hashes of sound_hash's sounds mixed at
- * audio_rate. Failures are logged; games are then not recorded. */
+ * map_hash (borrowed), with audio hashes of sounds (borrowed) mixed at
+ * audio_rate. The sounds' hash is asked for (snd_set_hash) only when a
+ * game begins. Failures are logged; games are then not recorded. */
 void keep_flight_open(struct keep *k, int keep, int max_mb, uint64_t map_hash,
-		      const struct ct_spec *content, uint32_t audio_rate, uint64_t sound_hash);
+		      const struct ct_spec *content, uint32_t audio_rate, struct snd_set *sounds);
 
 /* Before the tick of cmd: a START in attract may begin a game, so the
  * state it begins from is kept (its recording replays from there). */

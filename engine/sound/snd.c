@@ -112,41 +112,48 @@ static struct snd_set *snd_alloc(size_t total)
 	return set;
 }
 
-/* Synthesizes sound id at pcm (room for syn_len(id)) into set. 0 or
- * -ENOMEM. */
-static int snd_synth(struct snd_set *set, int id, int16_t *pcm)
+/* Synthesizes sound id at pcm (room for syn_len(id)) into set, summing
+ * its parts in acc (room for as many). */
+static void snd_synth(struct snd_set *set, int id, int16_t *pcm, int32_t *acc)
 {
-	uint32_t n = syn_len(id);
-	int32_t *acc = malloc((n ? n : 1) * sizeof(*acc));
-
-	if (!acc)
-		return -ENOMEM;
 	set->s[id].pcm = pcm;
 	set->s[id].len = syn_make(id, pcm, acc);
 	set->s[id].rate = SYN_RATE;
 	set->from_lump[id] = 0;
-	free(acc);
-	return 0;
+}
+
+/* One sum buffer for every sound synthesized (the longest's room): one
+ * allocation, not one per sound, and its pages touched once. NULL without
+ * memory. */
+static int32_t *snd_acc(uint32_t longest)
+{
+	return malloc((longest ? longest : 1) * sizeof(int32_t));
 }
 
 int snd_builtin(struct snd_set **out)
 {
 	size_t total = 0, at = 0;
+	uint32_t longest = 0;
 	struct snd_set *set;
+	int32_t *acc;
 
-	for (int id = 1; id < SFX_COUNT; id++)
-		total += syn_len(id);
-	set = snd_alloc(total);
-	if (!set)
-		return -ENOMEM;
 	for (int id = 1; id < SFX_COUNT; id++) {
-		if (snd_synth(set, id, set->store + at) < 0) {
-			snd_free(set);
-			return -ENOMEM;
-		}
+		uint32_t n = syn_len(id);
+		total += n;
+		longest = n > longest ? n : longest;
+	}
+	set = snd_alloc(total);
+	acc = snd_acc(longest);
+	if (!set || !acc) {
+		snd_free(set);
+		free(acc);
+		return -ENOMEM;
+	}
+	for (int id = 1; id < SFX_COUNT; id++) {
+		snd_synth(set, id, set->store + at, acc);
 		at += set->s[id].len;
 	}
-	set->hash = snd_hash(set->s, SFX_COUNT);
+	free(acc);
 	*out = set;
 	return 0;
 }
@@ -183,7 +190,9 @@ int snd_load_wad(const struct wad *w, struct snd_set **out, char *report, size_t
 	struct snd_ds ds[SFX_COUNT];
 	int lump[SFX_COUNT];
 	size_t total = 0, at = 0;
+	uint32_t longest = 0;
 	struct snd_set *set;
+	int32_t *acc;
 
 	for (int id = 1; id < SFX_COUNT; id++) {
 		/* a lump named by two sounds is reported once */
@@ -191,11 +200,21 @@ int snd_load_wad(const struct wad *w, struct snd_set **out, char *report, size_t
 		for (int k = 1; k < id; k++)
 			dup |= strcmp(sfx_info(k)->lump, sfx_info(id)->lump) == 0;
 		lump[id] = snd_lump(w, id, &ds[id], dup ? NULL : report, dup ? 0 : reportlen);
-		total += lump[id] >= 0 ? ds[id].count : syn_len(id);
+		if (lump[id] >= 0) {
+			total += ds[id].count;
+		} else {
+			uint32_t n = syn_len(id);
+			total += n;
+			longest = n > longest ? n : longest;
+		}
 	}
 	set = snd_alloc(total);
-	if (!set)
+	acc = snd_acc(longest);
+	if (!set || !acc) {
+		snd_free(set);
+		free(acc);
 		return -ENOMEM;
+	}
 	for (int id = 1; id < SFX_COUNT; id++) {
 		int16_t *pcm = set->store + at;
 		if (lump[id] >= 0) {
@@ -204,15 +223,23 @@ int snd_load_wad(const struct wad *w, struct snd_set **out, char *report, size_t
 			set->s[id].len = ds[id].count;
 			set->s[id].rate = ds[id].rate;
 			set->from_lump[id] = 1;
-		} else if (snd_synth(set, id, pcm) < 0) {
-			snd_free(set);
-			return -ENOMEM;
+		} else {
+			snd_synth(set, id, pcm, acc);
 		}
 		at += set->s[id].len;
 	}
-	set->hash = snd_hash(set->s, SFX_COUNT);
+	free(acc);
 	*out = set;
 	return 0;
+}
+
+uint64_t snd_set_hash(struct snd_set *set)
+{
+	if (!set->hashed) {
+		set->lazy_hash = snd_hash(set->s, SFX_COUNT);
+		set->hashed = 1;
+	}
+	return set->lazy_hash;
 }
 
 void snd_free(struct snd_set *set)

@@ -39,8 +39,11 @@ struct snd {
 struct snd_set {
 	struct snd s[SFX_COUNT];       /* s[SFX_NONE] is empty */
 	uint8_t from_lump[SFX_COUNT];  /* 1: the WAD's lump, 0: built-in */
-	uint64_t hash;                 /* of every sound (snd_hash) */
 	int16_t *store;                /* every sound's samples, owned */
+	/* snd_set_hash's: made on its first call, not at load (2 ms for
+	 * Freedoom 1's sounds, serial by nature, and only a recording needs it) */
+	uint64_t lazy_hash;
+	int hashed;
 };
 
 /* ---- Doom sound lumps ("DMX", format 3) ------------------------------ */
@@ -83,6 +86,12 @@ int snd_load_wad(const struct wad *w, struct snd_set **out, char *report, size_t
 /* The hash of sounds s[0..n): FNV-1a of each one's rate, length and
  * samples as little-endian integers. */
 uint64_t snd_hash(const struct snd *s, int n);
+
+/* The hash of every sound of set (snd_hash over s[0..SFX_COUNT)), which
+ * recordings store so a replay knows it mixes the same sounds. Made on
+ * the first call and kept: call it from one thread at a time (the
+ * samples are only read, so a mixer may play them meanwhile). */
+uint64_t snd_set_hash(struct snd_set *set);
 
 /* Length of sound s in game ticks (60 Hz), rounded up, counting one
  * sample more than it has (the resampler reads one past a sample to

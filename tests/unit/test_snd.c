@@ -196,8 +196,8 @@ static void a_wad_set_takes_good_lumps_and_reports_bad_ones(void **state)
 	/* sounds without a lump name are always built in */
 	assert_int_equal(set->from_lump[SFX_COIN], 0);
 	/* the hash covers the sounds: another set, another hash */
-	assert_true(set->hash != bi->hash);
-	assert_true(set->hash == snd_hash(set->s, SFX_COUNT));
+	assert_true(snd_set_hash(set) != snd_set_hash(bi));
+	assert_true(snd_set_hash(set) == snd_hash(set->s, SFX_COUNT));
 	snd_free(set);
 	snd_free(bi);
 	snd_free(NULL);
@@ -239,6 +239,25 @@ static struct wad *freedoom(const char *path, uint8_t **img)
 	assert_int_equal(wad_new(&w), 0);
 	assert_int_equal(wad_add(w, *img, len, path, err, sizeof(err)), 0);
 	return w;
+}
+
+/* The set's hash is made on the first ask and kept: a sample changed
+ * after it (a set is never changed; this shows what is kept) leaves it. */
+static void the_hash_is_made_once(void **state)
+{
+	struct snd_set *set;
+	uint64_t first;
+
+	(void)state;
+	assert_int_equal(snd_builtin(&set), 0);
+	assert_int_equal(set->hashed, 0);
+	first = snd_set_hash(set);
+	assert_int_equal(set->hashed, 1);
+	assert_true(first == snd_hash(set->s, SFX_COUNT));
+	set->store[set->s[SFX_COIN].pcm - set->store] ^= 1;
+	assert_true(snd_set_hash(set) == first);
+	assert_true(snd_hash(set->s, SFX_COUNT) != first);
+	snd_free(set);
 }
 
 static void freedoom1_sounds(void **state)
@@ -307,6 +326,7 @@ int main(void)
 		cmocka_unit_test(a_lump_longer_than_the_limit_is_refused),
 		cmocka_unit_test(ticks_round_up_and_count_one_more_sample),
 		cmocka_unit_test(a_wad_set_takes_good_lumps_and_reports_bad_ones),
+		cmocka_unit_test(the_hash_is_made_once),
 		cmocka_unit_test(freedoom1_sounds),
 		cmocka_unit_test(freedoom2_short_lumps_are_refused),
 	};

@@ -443,7 +443,7 @@ int main(int argc, char **argv)
 		run.render_w = run.render_h = 0;
 	if (!run.audio_rate)
 		run.audio_rate = RP_DEFAULT_RATE;
-	run.sound_hash = ct.sounds->hash;
+	run.sound_hash = snd_set_hash(ct.sounds);
 	rc = o.verify ? rec_check_run(h, &run, err, sizeof(err))
 		      : rec_check(h, run.map_hash, err, sizeof(err));
 	if (rc < 0) {
@@ -492,7 +492,7 @@ int main(int argc, char **argv)
 		nh.level = run.level;
 		nh.audio_rate = hear.rate;
 		nh.audio_version = REC_AUDIO_VERSION;
-		nh.sound_hash = ct.sounds->hash;
+		nh.sound_hash = snd_set_hash(ct.sounds);
 		rc = rec_writer_open(o.rehash, &nh, &wr);
 		if (rc < 0) {
 			fprintf(stderr, "replay: %s: %s\n", o.rehash, strerror(-rc));
