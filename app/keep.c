@@ -173,20 +173,31 @@ void keep_flight_open(struct keep *k, int keep, int max_mb, uint64_t map_hash,
 	if (rc < 0) {
 		say_warn("%s: %s; games are not recorded", dir, strerror(-rc));
 		k->fr = NULL;
-		return;
 	}
-	k->snap = malloc(sim_snapshot_size());
+}
+
+/* The snapshot buffer, made at the first START rather than at the open:
+ * sim_snapshot_size walks a whole zeroed sim (0.5 ms here), which the
+ * first frame need not wait for. 0, or -ENOMEM logged (that game is then
+ * not recorded; the next START tries again). */
+static int keep_snap_room(struct keep *k)
+{
+	if (k->snap)
+		return 0;
+	k->snap_len = sim_snapshot_size();
+	k->snap = malloc(k->snap_len);
 	if (!k->snap) {
-		fr_close(k->fr);
-		k->fr = NULL;
+		say_err("flight recorder: %s; this game is not recorded", strerror(ENOMEM));
+		return -ENOMEM;
 	}
+	return 0;
 }
 
 void keep_flight_before(struct keep *k, const struct sim *s, const struct sim_cmd *cmd)
 {
 	k->snap_taken = 0;
 	if (k->fr && !k->game && s->mode == SIM_ATTRACT &&
-	    (cmd->buttons & (SIM_BT_START | SIM_BT_START2))) {
+	    (cmd->buttons & (SIM_BT_START | SIM_BT_START2)) && keep_snap_room(k) == 0) {
 		sim_snapshot(s, k->snap);
 		k->snap_taken = 1;
 		k->snap_plays = s->plays;
@@ -222,7 +233,7 @@ void keep_flight_after(struct keep *k, const struct sim *s, const struct sim_cmd
 			    snd_set_hash(k->sounds));
 		hd.hash_flags = REC_HAS_STATE | REC_HAS_AUDIO;
 		hd.snapshot = k->snap;
-		hd.snapshot_len = (uint32_t)sim_snapshot_size();
+		hd.snapshot_len = (uint32_t)k->snap_len;
 		rc = fr_begin_game(k->fr, time(NULL), path, sizeof(path));
 		if (rc < 0) {
 			say_err("flight recorder: %s", strerror(-rc));

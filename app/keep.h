@@ -30,7 +30,9 @@ struct keep {
 	/* the flight recorder, fr NULL when off */
 	struct fr *fr;
 	struct rec_writer *game;   /* the game being recorded */
-	uint8_t *snap;             /* sim_snapshot before a tick that may start a game */
+	uint8_t *snap;             /* sim_snapshot before a tick that may start a game
+				    * (snap_len bytes; made at the first START) */
+	size_t snap_len;
 	int snap_taken;
 	uint32_t snap_plays;       /* plays when the snapshot was taken */
 	uint64_t map_hash;         /* of every stage: what recordings are tied to */
