@@ -142,26 +142,68 @@ static int ct_compose(struct ct *c, const struct wad *w, const struct lim_stop *
 	return rc;
 }
 
-/* The light maps of every stage, on a thread of their own while the
- * loader composes textures: they need only the maps (Freedoom 1 E1M1:
- * 4.7 ms of thread CPU time, 10 ms before lmap_texel compared squares). */
+/* Light maps of stages first, first + step, ...: a WAD's, every stage on a
+ * thread of their own while the loader composes textures (they need only
+ * the maps; Freedoom 1 E1M1: 4.7 ms of thread CPU time, 10 ms before
+ * lmap_texel compared squares); the built-in ones split (ct_lights_split). */
 struct ct_lights_job {
 	struct ct *c;
 	const struct lim_stop *stop;
+	int first, step;               /* the stages first, first + step, ... */
 	int rc;
 	char err[256];
+	char note[sizeof(((struct ct *)0)->note)];  /* c->note's, merged after the join */
 };
 
-static int load_lights(struct ct *c, int i, const struct lim_stop *stop, char *err,
-		       size_t errlen);
+static int load_lights(struct ct *c, int i, const struct lim_stop *stop, char *note,
+		       size_t notelen, char *err, size_t errlen);
 
 static void ct_lights_run(void *p)
 {
 	struct ct_lights_job *j = p;
 
 	j->rc = 0;
-	for (int i = 0; j->rc == 0 && i < j->c->nmaps; i++)
-		j->rc = load_lights(j->c, i, j->stop, j->err, sizeof j->err);
+	for (int i = j->first; j->rc == 0 && i < j->c->nmaps; i += j->step)
+		j->rc = load_lights(j->c, i, j->stop, j->note, sizeof j->note, j->err,
+				    sizeof j->err);
+}
+
+/* After a lights job: its error into err (0 or negative) and its note into
+ * c->note unless one is there. */
+static int ct_lights_done(struct ct *c, const struct ct_lights_job *j, char *err, size_t errlen)
+{
+	if (j->note[0] && !c->note[0])
+		snprintf(c->note, sizeof c->note, "%s", j->note);
+	if (j->rc < 0)
+		snprintf(err, errlen, "%s", j->err);
+	return j->rc < 0 ? j->rc : 0;
+}
+
+/* The stages' light maps where no WAD loader made them (built-in levels,
+ * a grid): every other stage on a thread, when there is one and more than
+ * one stage, the rest here (the built-in eight: 9 ms of the way to the
+ * first frame, all here before). */
+static int ct_lights_split(struct ct *c, const struct ct_spec *s, const struct lim_stop *stop,
+			   char *err, size_t errlen)
+{
+	struct ct_lights_job here = { c, stop, 0, 2, 0, "", "" };
+	struct ct_lights_job away = { c, stop, 1, 2, 0, "", "" };
+	struct pool_task *task = NULL;
+	int rc;
+
+	if (c->nmaps < 2 || !s->task_start || !s->task_join ||
+	    s->task_start(ct_lights_run, &away, &task) < 0) {
+		task = NULL;
+		here.step = 1;
+	}
+	ct_lights_run(&here);
+	if (task)
+		s->task_join(task);
+	/* the lower stage's error first: here has stage 0 */
+	rc = ct_lights_done(c, &here, err, errlen);
+	if (rc == 0 && task)
+		rc = ct_lights_done(c, &away, err, errlen);
+	return rc;
 }
 
 /* The WADs' sounds, on a thread of their own from the moment the WADs are
@@ -192,7 +234,7 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 	size_t lens[CT_MAX_WADS] = { 0 };
 	uint8_t read[CT_MAX_WADS] = { 0 };  /* bufs[i] was read, not mapped */
 	char names[64][9], picked[CT_MAX_STAGES][9];
-	struct ct_lights_job job = { c, stop, 0, "" };
+	struct ct_lights_job job = { c, stop, 0, 1, 0, "", "" };
 	struct ct_sounds_job snd = { c, NULL, 0 };
 	struct pool_task *task = NULL, *snd_task = NULL;
 	int snd_done = 0;
@@ -283,10 +325,8 @@ static int load_wads(struct ct *c, const struct ct_spec *s, const struct lim_sto
 		s->task_join(task);
 	else if (*lit)
 		ct_lights_run(&job);
-	if (rc == 0 && job.rc < 0) {
-		rc = job.rc;
-		snprintf(err, errlen, "%s", job.err);
-	}
+	if (rc == 0 && *lit)
+		rc = ct_lights_done(c, &job, err, errlen);
 	if (rc == 0) {
 		snprintf(c->what, sizeof(c->what), "%s%s %s", s->wads[s->nwads - 1],
 			 s->nwads > 1 ? " (layered)" : "", s->grid ? "textures" : name);
@@ -346,8 +386,8 @@ static int load_grid(struct ct *c, const struct ct_spec *s, const struct lim_sto
 
 /* A map over a light-map limit is drawn without light maps (lights are
  * cosmetic; the cabinet keeps running), and c->note says so. */
-static int load_lights(struct ct *c, int i, const struct lim_stop *stop, char *err,
-		       size_t errlen)
+static int load_lights(struct ct *c, int i, const struct lim_stop *stop, char *note,
+		       size_t notelen, char *err, size_t errlen)
 {
 	struct lmap_light *lights;
 	char why[160] = "";
@@ -371,8 +411,8 @@ static int load_lights(struct ct *c, int i, const struct lim_stop *stop, char *e
 		free(lights);
 	}
 	if (rc == -E2BIG) {
-		snprintf(c->note, sizeof c->note, "%s: %s: THINGS: %s: drawn without light maps",
-			 c->src, c->maps[i]->name, why);
+		snprintf(note, notelen, "%s: %s: THINGS: %s: drawn without light maps", c->src,
+			 c->maps[i]->name, why);
 		return 0;
 	}
 	if (rc == -ECANCELED)
@@ -385,14 +425,22 @@ static int load_lights(struct ct *c, int i, const struct lim_stop *stop, char *e
 /* The built-in stages: level `first` and every one after it. */
 static int load_builtin(struct ct *c, int first, char *err, size_t errlen)
 {
-	int n = lvl_builtin_count(), rc = 0;
+	int n = lvl_builtin_count(), rc;
 
 	if (first < 1 || first > n) {
 		snprintf(err, errlen, "built-in level %d: no such level (there are %d)", first, n);
 		return -EINVAL;
 	}
+	/* The built-in levels' texture numbers index tex_builtin's set
+	 * (map.h: lvl_builtin): made once, and every level's names resolved
+	 * against it. */
+	rc = tex_builtin(&c->tex);
+	if (rc < 0) {
+		snprintf(err, errlen, "built-in textures: %s", strerror(-rc));
+		return rc;
+	}
 	for (int i = first - 1; i < n && c->nmaps < CT_MAX_STAGES && rc == 0; i++) {
-		rc = lvl_builtin(i, &c->maps[c->nmaps]);
+		rc = lvl_builtin_for(i, c->tex, &c->maps[c->nmaps]);
 		if (rc < 0)
 			snprintf(err, errlen, "built-in level %d: %s", i + 1, strerror(-rc));
 		else
@@ -401,39 +449,56 @@ static int load_builtin(struct ct *c, int first, char *err, size_t errlen)
 	if (rc < 0)
 		return rc;
 	snprintf(c->src, sizeof c->src, "built-in levels");
-	/* The built-in levels' texture numbers index tex_builtin's set
-	 * (map.h: lvl_builtin). */
-	rc = tex_builtin(&c->tex);
-	if (rc < 0) {
-		snprintf(err, errlen, "built-in textures: %s", strerror(-rc));
-		return rc;
-	}
 	snprintf(c->what, sizeof(c->what), "built-in levels %d..%d (%s first)", first,
 		 first + c->nmaps - 1, c->maps[0]->name);
 	return 0;
+}
+
+/* The built-in sounds (no WAD named): synthesized on a thread of their own
+ * while the levels, their textures and light maps are made here (8 ms of
+ * the 40 a built-in start took before its first frame). */
+static void ct_builtin_sounds_run(void *p)
+{
+	struct ct_sounds_job *j = p;
+
+	j->rc = snd_builtin(&j->c->sounds);
 }
 
 int ct_load(struct ct *c, const struct ct_spec *s, char *err, size_t errlen)
 {
 	struct lim_stop stop = { ct_stop_fn, (void *)(uintptr_t)s->stop, NULL };
 	const struct lim_stop *hook = s->stop ? &stop : NULL;
+	struct ct_sounds_job snd = { c, NULL, 0 };
+	struct pool_task *snd_task = NULL;
 	int rc, lit = 0;
 
 	memset(c, 0, sizeof(*c));
 	rc = ct_stopped(s, err, errlen);
+	if (rc == 0 && s->nwads == 0 && s->task_start && s->task_join &&
+	    s->task_start(ct_builtin_sounds_run, &snd, &snd_task) < 0)
+		snd_task = NULL;
 	if (rc == 0 && s->nwads > 0)
 		rc = load_wads(c, s, hook, &lit, err, errlen);
 	if (rc == 0 && s->grid)
 		rc = load_grid(c, s, hook, err, errlen);
 	else if (rc == 0 && s->nwads == 0)
 		rc = load_builtin(c, s->level, err, errlen);
+	if (rc == 0 && s->lights && !lit)
+		rc = ct_lights_split(c, s, hook, err, errlen);
+	/* joined before anything is freed: the thread writes c->sounds */
+	if (snd_task) {
+		s->task_join(snd_task);
+		if (rc == 0 && snd.rc < 0) {
+			rc = snd.rc;
+			snprintf(err, errlen, "built-in sounds: %s", strerror(-rc));
+		}
+	}
 	if (rc == 0 && !c->sounds) {
+		/* no thread: made here */
 		rc = snd_builtin(&c->sounds);
 		if (rc < 0)
 			snprintf(err, errlen, "built-in sounds: %s", strerror(-rc));
 	}
-	for (int i = 0; rc == 0 && s->lights && !lit && i < c->nmaps; i++)
-		rc = load_lights(c, i, hook, err, errlen);
 	c->map = c->maps[0];
 	if (rc < 0)
 		ct_free(c);

@@ -53,10 +53,9 @@ int lvl_builtin_count(void)
 	return n < 0 ? 0 : n;
 }
 
-int lvl_builtin(int i, struct map **out)
+int lvl_builtin_for(int i, const struct tex_set *t, struct map **out)
 {
 	char names[LVL_MAX][9];
-	struct tex_set *t = NULL;
 	struct wad *w;
 	int n, r;
 
@@ -64,7 +63,7 @@ int lvl_builtin(int i, struct map **out)
 	n = lvl_open(&w, names);
 	if (n < 0)
 		return n;
-	r = i < 0 || i >= n ? -EINVAL : tex_builtin(&t);
+	r = i < 0 || i >= n ? -EINVAL : 0;
 	/* the levels are the project's own: an error or a name the built-in
 	 * set lacks is a bug the unit tests catch, reported as a bad map */
 	if (!r)
@@ -76,7 +75,21 @@ int lvl_builtin(int i, struct map **out)
 	}
 	if (r < 0 && r != -ENOMEM)
 		r = -EINVAL;
-	tex_free(t);
 	wad_free(w);
+	return r;
+}
+
+int lvl_builtin(int i, struct map **out)
+{
+	struct tex_set *t = NULL;
+	int r;
+
+	*out = NULL;
+	if (i < 0 || i >= lvl_builtin_count())
+		return -EINVAL;
+	r = tex_builtin(&t);
+	if (!r)
+		r = lvl_builtin_for(i, t, out);
+	tex_free(t);
 	return r;
 }

@@ -3,6 +3,7 @@
  * engine/map/lvl_wad.c) with tex_builtin's texture names; and as game stages
  * every one has one start, enemies and pickups that stand clear of the
  * walls, and the stages grow harder in order. */
+#include <errno.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -147,6 +148,35 @@ static void levels_are_the_compiled_in_wad(void **state)
 		map_free(b);
 	}
 	wad_free(w);
+	tex_free(t);
+}
+
+/* One set made by the caller serves every level (what the app does): each
+ * level is the one lvl_builtin makes against a set of its own, texture
+ * numbers included (content_hash covers sides and sectors); an index out
+ * of range is -EINVAL with no map. */
+static void one_set_serves_every_level(void **state)
+{
+	struct tex_set *t;
+	struct map *m = (struct map *)&m;
+	(void)state;
+	assert_int_equal(tex_builtin(&t), 0);
+	for (int i = 0; i < lvl_builtin_count(); i++) {
+		struct map *a, *b;
+		assert_int_equal(lvl_builtin_for(i, t, &a), 0);
+		assert_int_equal(lvl_builtin(i, &b), 0);
+		assert_string_equal(a->name, b->name);
+		assert_true(a->content_hash == b->content_hash);
+		assert_int_equal(a->num_nodes, b->num_nodes);
+		assert_int_equal(a->missing_textures, 0);
+		map_free(a);
+		map_free(b);
+	}
+	assert_int_equal(lvl_builtin_for(-1, t, &m), -EINVAL);
+	assert_null(m);
+	m = (struct map *)&m;
+	assert_int_equal(lvl_builtin_for(lvl_builtin_count(), t, &m), -EINVAL);
+	assert_null(m);
 	tex_free(t);
 }
 
@@ -346,6 +376,7 @@ int main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(levels_are_the_compiled_in_wad),
+		cmocka_unit_test(one_set_serves_every_level),
 		cmocka_unit_test(levels_are_textured_by_name),
 		cmocka_unit_test(every_stage_is_playable),
 		cmocka_unit_test(stages_grow_harder),
