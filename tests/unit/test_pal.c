@@ -81,29 +81,59 @@ static void darkest_map_is_near_black_and_black_stays_black(void **state)
 /* Second method: check the nearest-colour property directly instead of
  * re-running the search: no entry is strictly closer, and an equally close
  * entry never has a lower index. */
-static void colormaps_pick_the_nearest_lowest_index(void **state)
+static void check_nearest_lowest_index(const struct pal *q)
 {
-	(void)state;
 	for (int l = 0; l < PAL_LIGHTS; l++) {
 		int f = PAL_LIGHTS - l;
 		for (int i = 0; i < 256; i++) {
 			int want[3];
-			int chosen = p.cmap[l][i];
+			int chosen = q->cmap[l][i];
 			long dc = 0;
 
 			for (int k = 0; k < 3; k++) {
-				want[k] = (p.rgb[i][k] * f + PAL_LIGHTS / 2) / PAL_LIGHTS;
-				dc += (long)(p.rgb[chosen][k] - want[k]) * (p.rgb[chosen][k] - want[k]);
+				want[k] = (q->rgb[i][k] * f + PAL_LIGHTS / 2) / PAL_LIGHTS;
+				dc += (long)(q->rgb[chosen][k] - want[k]) * (q->rgb[chosen][k] - want[k]);
 			}
 			for (int j = 0; j < 256; j++) {
 				long d = 0;
 				for (int k = 0; k < 3; k++)
-					d += (long)(p.rgb[j][k] - want[k]) * (p.rgb[j][k] - want[k]);
+					d += (long)(q->rgb[j][k] - want[k]) * (q->rgb[j][k] - want[k]);
 				assert_false(d < dc);
 				if (d == dc)
 					assert_true(j >= chosen);
 			}
 		}
+	}
+}
+
+static void colormaps_pick_the_nearest_lowest_index(void **state)
+{
+	(void)state;
+	check_nearest_lowest_index(&p);
+}
+
+/* A WAD's palette without a COLORMAP gets its colormaps made too, and
+ * Doom's palettes repeat colours: one with few distinct values per
+ * channel (many exact ties and equal reds) still gets the nearest entry,
+ * the lowest index of equals, the same as pal_nearest's answer. */
+static void colormaps_of_a_palette_with_ties(void **state)
+{
+	static struct pal q;
+	(void)state;
+	for (int i = 0; i < 256; i++) {
+		q.rgb[i][0] = (uint8_t)((i * 37) % 7 * 40);
+		q.rgb[i][1] = (uint8_t)((i * 11) % 5 * 60);
+		q.rgb[i][2] = (uint8_t)(i % 3 * 120);
+	}
+	pal_make_colormaps(&q);
+	check_nearest_lowest_index(&q);
+	for (int l = 0; l < PAL_LIGHTS; l++) {
+		int f = PAL_LIGHTS - l;
+		for (int i = 0; i < 256; i++)
+			assert_int_equal(q.cmap[l][i],
+					 pal_nearest(&q, (q.rgb[i][0] * f + PAL_LIGHTS / 2) / PAL_LIGHTS,
+						     (q.rgb[i][1] * f + PAL_LIGHTS / 2) / PAL_LIGHTS,
+						     (q.rgb[i][2] * f + PAL_LIGHTS / 2) / PAL_LIGHTS));
 	}
 }
 
@@ -135,6 +165,7 @@ int main(void)
 		cmocka_unit_test(half_light_maps_white_to_mid_grey),
 		cmocka_unit_test(darkest_map_is_near_black_and_black_stays_black),
 		cmocka_unit_test(colormaps_pick_the_nearest_lowest_index),
+		cmocka_unit_test(colormaps_of_a_palette_with_ties),
 		cmocka_unit_test(colormaps_never_brighten),
 		cmocka_unit_test(builtin_is_deterministic),
 	};
