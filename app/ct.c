@@ -151,7 +151,8 @@ struct ct_lights_job {
 	const struct lim_stop *stop;
 	int first, step;               /* the stages first, first + step, ... */
 	int rc;
-	char err[256];
+	/* load_lights's "SRC: MAP: THINGS: WHY" fits (160 + 8 + 160 + 12) */
+	char err[384];
 	char note[sizeof(((struct ct *)0)->note)];  /* c->note's, merged after the join */
 };
 

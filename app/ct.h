@@ -42,9 +42,11 @@ struct ct_spec {
 	/* Starts fn(arg) on a thread of its own and waits for it (the
 	 * daemon's app/pool.h pool_task_start and pool_task_join), for the
 	 * WADs' sounds (from when the WADs are mapped) and the stages' light
-	 * maps (from when the maps are loaded) while the textures load;
-	 * NULL: the loader makes them itself, after the rest (the
-	 * engine-only replayer of tests/xbuild links no threads). */
+	 * maps (from when the maps are loaded) while the textures load; with
+	 * no WAD, for the built-in sounds (from the start) and every other
+	 * stage's light maps (the loader makes the rest); NULL: the loader
+	 * makes them all itself (the engine-only replayer of tests/xbuild
+	 * links no threads). */
 	int (*task_start)(void (*fn)(void *arg), void *arg, struct pool_task **out);
 	void (*task_join)(struct pool_task *t);
 };
