@@ -296,11 +296,12 @@ static void step_notify(void *ctx, struct loop_tick *k)
 		 * Nothing can press a button or hear a sound before the
 		 * picture is up; the first tick reads no input and is silent. */
 		a->devices_open = 1;
-		/* the sounds' hash, which only a recording needs: made now,
-		 * not while the first frame waited, and before any game can
-		 * begin (it reads input from the next tick on) */
-		snd_set_hash(a->ct.sounds);
 		if (!a->headless) {
+			/* the sounds' hash, which only the flight recorder needs
+			 * here: made now, not while the first frame waited, and
+			 * before any game can begin (input is read from the next
+			 * tick on); --record and --replay made it at setup */
+			snd_set_hash(a->ct.sounds);
 			slot_open(&a->slots, a->kinds, a->nkinds, a->scene.dpb);
 			out_audio_start(&a->audio);
 		}

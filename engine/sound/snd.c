@@ -122,28 +122,28 @@ static void snd_synth(struct snd_set *set, int id, int16_t *pcm, int32_t *acc)
 	set->from_lump[id] = 0;
 }
 
-/* One sum buffer for every sound synthesized (the longest's room): one
- * allocation, not one per sound, and its pages touched once. NULL without
- * memory. */
-static int32_t *snd_acc(uint32_t longest)
+/* One sum buffer for every sound synthesized, with the longest built-in
+ * sound's room: one allocation, not one per sound (pages a set that
+ * synthesizes nothing never touches). NULL without memory. */
+static int32_t *snd_acc(void)
 {
-	return malloc((longest ? longest : 1) * sizeof(int32_t));
+	uint32_t longest = 1;
+
+	for (int id = 1; id < SFX_COUNT; id++)
+		longest = syn_len(id) > longest ? syn_len(id) : longest;
+	return malloc(longest * sizeof(int32_t));
 }
 
 int snd_builtin(struct snd_set **out)
 {
 	size_t total = 0, at = 0;
-	uint32_t longest = 0;
 	struct snd_set *set;
 	int32_t *acc;
 
-	for (int id = 1; id < SFX_COUNT; id++) {
-		uint32_t n = syn_len(id);
-		total += n;
-		longest = n > longest ? n : longest;
-	}
+	for (int id = 1; id < SFX_COUNT; id++)
+		total += syn_len(id);
 	set = snd_alloc(total);
-	acc = snd_acc(longest);
+	acc = snd_acc();
 	if (!set || !acc) {
 		snd_free(set);
 		free(acc);
@@ -190,7 +190,6 @@ int snd_load_wad(const struct wad *w, struct snd_set **out, char *report, size_t
 	struct snd_ds ds[SFX_COUNT];
 	int lump[SFX_COUNT];
 	size_t total = 0, at = 0;
-	uint32_t longest = 0;
 	struct snd_set *set;
 	int32_t *acc;
 
@@ -200,16 +199,10 @@ int snd_load_wad(const struct wad *w, struct snd_set **out, char *report, size_t
 		for (int k = 1; k < id; k++)
 			dup |= strcmp(sfx_info(k)->lump, sfx_info(id)->lump) == 0;
 		lump[id] = snd_lump(w, id, &ds[id], dup ? NULL : report, dup ? 0 : reportlen);
-		if (lump[id] >= 0) {
-			total += ds[id].count;
-		} else {
-			uint32_t n = syn_len(id);
-			total += n;
-			longest = n > longest ? n : longest;
-		}
+		total += lump[id] >= 0 ? ds[id].count : syn_len(id);
 	}
 	set = snd_alloc(total);
-	acc = snd_acc(longest);
+	acc = snd_acc();
 	if (!set || !acc) {
 		snd_free(set);
 		free(acc);
