@@ -242,8 +242,10 @@ void g_fire(struct sim *s)
 		int r = g_ray(s, a, slope, w->damage, &x, &y, &z);
 		if ((r == G_SHOT_ENEMY && !hit) || (k == half && !hit)) {
 			g->shot = (uint8_t)r;
-			g->shot_x = x;
-			g->shot_y = y;
+			/* a miss ends at the full range, which near the
+			 * edge of a map may lie past the coordinate range */
+			g->shot_x = g_coord_clamp(x);
+			g->shot_y = g_coord_clamp(y);
 			g->shot_z = z;
 			hit = r == G_SHOT_ENEMY;
 		}

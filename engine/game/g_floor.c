@@ -59,7 +59,8 @@ static fx_t g_floor_dest(struct sim *s, uint32_t sec, int type, uint16_t *tex, u
 					best = h;
 			}
 		}
-		return best == UINT32_MAX ? g->floor_h : g->floor_h + (fx_t)(best * FX_ONE);
+		return best == UINT32_MAX ? g->floor_h
+					  : g_height_clamp((int64_t)g->floor_h + (int64_t)best * FX_ONE);
 	}
 	case G_FLOOR_LOWER_CHANGE:
 	default: {
@@ -144,7 +145,7 @@ int g_stairs(struct sim *s, const struct map_line *l, int turbo)
 
 		if (g_mover_of(s, (uint32_t)sec))
 			continue;
-		h = s->w.sec[sec].floor_h + step;
+		h = g_height_clamp((int64_t)s->w.sec[sec].floor_h + step);
 		f = g_floor_to(s, (uint32_t)sec, G_FLOOR_STAIR, G_DIR_UP, speed, h);
 		if (!f)
 			continue;
@@ -167,7 +168,7 @@ int g_stairs(struct sim *s, const struct map_line *l, int turbo)
 				t = m->sides[ln->side[1]].sector;
 				if (s->w.sec[t].floor_tex != tex)
 					continue;
-				h += step;
+				h = g_height_clamp((int64_t)h + step);
 				if (g_mover_of(s, t))
 					continue;
 				f = g_floor_to(s, t, G_FLOOR_STAIR, G_DIR_UP, speed, h);

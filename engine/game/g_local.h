@@ -9,10 +9,7 @@
 
 #include "engine/game/g_sound.h"
 #include "engine/game/sim.h"
-
-struct map;
-struct map_line;
-struct map_vertex;
+#include "engine/map/map.h"
 
 /* ---- g_move.c: bodies moving with the player's collision ------------- */
 
@@ -220,9 +217,39 @@ enum g_res { G_RES_OK, G_RES_CRUSHED, G_RES_PASTDEST };
  * would no longer fit stops the move (the plane goes back; G_RES_CRUSHED)
  * unless crush (then it is crushed: 10 damage every 4 tics, and the move
  * goes on; also G_RES_CRUSHED); reaching dest is G_RES_PASTDEST. Bodies
- * standing in sec ride its floor. */
+ * standing in sec ride its floor. A dest beyond +/-MAP_HEIGHT_MAX counts as
+ * the limit: no plane leaves the range the loader holds maps to, which the
+ * eye height and the renderer's height differences are sized for (map.h;
+ * Doom lets a raise by 512 go past its own int16 heights). */
 int g_plane_move(struct sim *s, uint32_t sec, fx_t speed, fx_t dest, int crush, int ceiling,
 		 int dir);
+
+/* h held to +/-MAP_HEIGHT_MAX: for destinations summed from a height
+ * (stairs add a step per sector, a texture raise a texture's height) in
+ * 64 bits, so that the sum itself cannot overflow fx_t. */
+static inline fx_t g_height_clamp(int64_t h)
+{
+	return h > MAP_HEIGHT_MAX ? MAP_HEIGHT_MAX : h < -MAP_HEIGHT_MAX ? -MAP_HEIGHT_MAX : (fx_t)h;
+}
+
+/* v held to +/-MAP_COORD_MAX: for points computed from a position and a
+ * reach (a shot's end at its full range). */
+static inline fx_t g_coord_clamp(int64_t v)
+{
+	return v > MAP_COORD_MAX ? MAP_COORD_MAX : v < -MAP_COORD_MAX ? -MAP_COORD_MAX : (fx_t)v;
+}
+
+/* Whether (x, y) with a body of radius r around it lies within the
+ * coordinate range (+/-MAP_COORD_MAX) that every map's vertices and things
+ * keep to. A body goes past a map's lines into open space only on a broken
+ * map (a teleport destination outside it); the edge of the range then
+ * stops it as a wall would, since the sim's positions, their snapshot
+ * checks and their arithmetic end there. */
+static inline int g_in_range(int64_t x, int64_t y, int64_t r)
+{
+	return x >= -MAP_COORD_MAX + r && x <= MAP_COORD_MAX - r && y >= -MAP_COORD_MAX + r &&
+	       y <= MAP_COORD_MAX - r;
+}
 
 /* ---- the movers: g_door.c, g_floor.c, g_ceil.c (with platforms) ------- */
 

@@ -10,9 +10,10 @@
  * flying missile moves by its momentum and explodes where it was when the
  * new place would touch the player (damage, fixed at the throw), touch a
  * wall that stops it (g_wall_touch, the walls of g_move.c with the
- * missile's radius and height and no step), or lie outside its sector's
- * floor and ceiling. Its step (5.83 units) is less than its radius, so it
- * cannot pass through a wall between two ticks. Missiles pass through
+ * missile's radius and height and no step), lie outside its sector's
+ * floor and ceiling, or reach the edge of the coordinate range (g_in_range:
+ * only past a broken map's lines). Its step (5.83 units) is less than its
+ * radius, so it cannot pass through a wall between two ticks. Missiles pass through
  * enemies (no infighting). The throw and the explosion are sound events.
  */
 #include "engine/core/tab.h"
@@ -87,7 +88,8 @@ static void g_missile_fly(struct sim *s, struct g_missile *m)
 		g_hurt_player(s, m->damage);
 		return;
 	}
-	if (g_wall_touch(s, x, y, G_MISSILE_RADIUS, z, G_MISSILE_HEIGHT)) {
+	if (!g_in_range(x, y, G_MISSILE_RADIUS) ||
+	    g_wall_touch(s, x, y, G_MISSILE_RADIUS, z, G_MISSILE_HEIGHT)) {
 		g_explode(s, m, G_MEND_WALL);
 		return;
 	}

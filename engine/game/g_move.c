@@ -198,7 +198,9 @@ static int g_try(struct sim *s, struct g_body *b, fx_t dx, fx_t dy)
 {
 	fx_t x = b->x + dx, y = b->y + dy;
 
-	if (!g_fit(s, b->radius, b->z, b->x, b->y, &x, &y))
+	if (!g_in_range(x, y, b->radius))
+		return 0;
+	if (!g_fit(s, b->radius, b->z, b->x, b->y, &x, &y) || !g_in_range(x, y, b->radius))
 		return 0;
 	if (g_body_blocked(s, b->self, b->x, b->y, x, y, b->radius))
 		return 0;

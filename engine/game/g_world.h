@@ -61,8 +61,9 @@ enum g_lfx {
 
 /* A sector as the game has it now. Its fields: engine/game/sim_table.h. */
 #define G_SECTOR_FIELDS(X) \
-	X(VAL, fx_t, floor_h, SIM_ANY) \
-	X(VAL, fx_t, ceil_h, SIM_ANY) \
+	/* heights stay in the loader's range (g_plane_move holds them there) */ \
+	X(VAL, fx_t, floor_h, SIM_RANGE(-MAP_HEIGHT_MAX, MAP_HEIGHT_MAX)) \
+	X(VAL, fx_t, ceil_h, SIM_RANGE(-MAP_HEIGHT_MAX, MAP_HEIGHT_MAX)) \
 	X(VAL, uint16_t, floor_tex, SIM_ANY)        /* flat (changed by some floors) */ \
 	X(VAL, uint16_t, special, SIM_ANY)          /* Doom's sector special now */ \
 	X(VAL, uint8_t, light, SIM_ANY) \

@@ -115,7 +115,8 @@ struct sim_settings {
 	X(VAL, fx_t, y, SIM_COORD) \
 	/* feet height (follows the floor, steps up) */ \
 	X(VAL, fx_t, z, SIM_COORD) \
-	X(VAL, fx_t, viewz, SIM_COORD)              /* eye height */ \
+	/* eye height: up to SIM_VIEW_HEIGHT above the highest floor */ \
+	X(VAL, fx_t, viewz, SIM_RANGE(-MAP_COORD_MAX, MAP_HEIGHT_MAX + SIM_VIEW_HEIGHT)) \
 	X(VAL, fx_t, momx, SIM_ANY)                 /* momentum per tick */ \
 	X(VAL, fx_t, momy, SIM_ANY) \
 	X(VAL, ang_t, angle, SIM_ANY)               /* view direction */ \
@@ -292,8 +293,9 @@ uint64_t sim_hash(const struct sim *s);
  * map index, mode, page, stage, phase, shot, enemy kinds and states, pickup
  * kinds, counts beyond G_MAX_ENEMIES / G_MAX_PICKUPS or alive beyond the
  * enemies, a sector index beyond the current map's, a position beyond
- * MAP_COORD_MAX, health outside 0..G_HEALTH_MAX, initials letters and
- * ranks, menu page, cursor and choices. */
+ * MAP_COORD_MAX, a sector's floor or ceiling beyond MAP_HEIGHT_MAX, health
+ * outside 0..G_HEALTH_MAX, initials letters and ranks, menu page, cursor
+ * and choices. */
 size_t sim_snapshot_size(void);
 void sim_snapshot(const struct sim *s, uint8_t *out);
 int sim_restore(struct sim *s, const uint8_t *buf, size_t len);

@@ -146,6 +146,24 @@ static void raise_by_512(void **state)
 	map_free(m);
 }
 
+/* 140 (S1) on a floor 100 units below the height limit (MAP_HEIGHT_MAX,
+ * which the loader holds every map to and the renderer's and the eye's
+ * fixed point need): the floor stops at the limit, not 412 units past it. */
+static void raise_by_512_stops_at_the_height_limit(void **state)
+{
+	static const struct fix_sector s[] = { { 0, 128, 160 },
+					       { 16283, 16383, 160 },
+					       { 0, 128, 160 } };
+	struct map *m = floor_map(140, s, 0);
+	struct sim sim;
+	(void)state;
+	finish(m, &sim);
+	sim_tick(&sim, &spec_use_cmd);
+	spec_run(&sim, &spec_none, 1000);
+	assert_int_equal(sim.w.sec[1].floor_h, MAP_HEIGHT_MAX);
+	map_free(m);
+}
+
 /* 59 (W1): raise by 24 and change: T takes the flat and the special of the
  * line's front sector (A) when it starts (Doom's raiseFloor24AndChange). */
 static void raise_by_24_takes_the_front_flat_at_once(void **state)
@@ -318,6 +336,7 @@ int main(void)
 		cmocka_unit_test(raise_to_lowest_neighbour_ceiling),
 		cmocka_unit_test(raise_by_24_once),
 		cmocka_unit_test(raise_by_512),
+		cmocka_unit_test(raise_by_512_stops_at_the_height_limit),
 		cmocka_unit_test(raise_by_24_takes_the_front_flat_at_once),
 		cmocka_unit_test(lower_and_change_takes_the_lowest_flat_at_the_end),
 		cmocka_unit_test(crushing_raise_crushes_and_goes_on),

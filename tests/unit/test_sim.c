@@ -3,6 +3,7 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 #include <math.h>
 #include <cmocka.h>
@@ -308,6 +309,37 @@ static double line_distance(const struct map *m, double x, double y, int walls_o
 		best = fmin(best, hypot(ax + t * dx - x, ay + t * dy - y));
 	}
 	return best;
+}
+
+/* A broken map: the player start lies outside its lines, 84 units from the
+ * edge of the coordinate range (MAP_COORD_MAX, which every map keeps to).
+ * Walking on east stops at the edge, a radius short of it, as at a wall;
+ * a shot into the open misses at its full range, which would end past the
+ * edge and so ends at it; and the state passes its own restore's checks
+ * (what the flight recorder's recording of such a game needs). */
+static void the_edge_of_the_coordinate_range_stops_a_body(void **state)
+{
+	struct map *m = room(16300, 128, 0);
+	struct sim *s = malloc(sizeof(*s)), *t = malloc(sizeof(*t));
+	uint8_t *buf = malloc(sim_snapshot_size());
+	(void)state;
+	assert_non_null(s);
+	assert_non_null(t);
+	assert_non_null(buf);
+	sim_init(s, m, &play);
+	run(s, &(struct sim_cmd){ .forward = 100 }, 100);
+	assert_true(s->pl.x <= MAP_COORD_MAX - R);
+	assert_true(s->pl.x > MAP_COORD_MAX - R - 8 * FX_ONE);
+	run(s, &(struct sim_cmd){ .buttons = SIM_BT_FIRE }, 1);
+	assert_int_equal(s->g.shot, G_SHOT_MISS);
+	assert_int_equal(s->g.shot_x, MAP_COORD_MAX);
+	sim_snapshot(s, buf);
+	sim_init(t, m, &play);
+	assert_int_equal(sim_restore(t, buf, sim_snapshot_size()), 0);
+	free(buf);
+	free(s);
+	free(t);
+	map_free(m);
 }
 
 /* Random commands for a long time: the player stays inside the level, out
@@ -984,6 +1016,7 @@ int main(void)
 		cmocka_unit_test(builtin_window_blocks_and_door_passes),
 		cmocka_unit_test(builtin_ledge_is_a_one_way_drop),
 		cmocka_unit_test(random_walk_stays_inside_the_level),
+		cmocka_unit_test(the_edge_of_the_coordinate_range_stops_a_body),
 		cmocka_unit_test(coins_make_credits_and_start_consumes_one),
 		cmocka_unit_test(start_needs_a_credit_and_a_fresh_press),
 		cmocka_unit_test(freeplay_starts_without_credits),

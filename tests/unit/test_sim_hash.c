@@ -17,6 +17,7 @@
 #include "engine/map/lvl_builtin.h"
 #include "engine/map/map.h"
 #include "g_fixture.h"
+#include "map_fixture.h"
 
 /* Brutal, one life, no free play: games end soon. */
 static const struct sim_settings set = { 1, 0, 0, 3, 1, 100, 1, 0, 0, 0 };
@@ -703,9 +704,11 @@ static void out_of_range_values_are_refused(void **state)
 		case 35: a->up = 2; break;
 		case 36: a->wait.stage = (uint8_t)st.n; break;
 		case 37: a->wait.out = 2; break;
+		case 38: a->w.sec[0].floor_h = MAP_HEIGHT_MAX + 1; break;
+		case 39: a->w.sec[0].ceil_h = -MAP_HEIGHT_MAX - 1; break;
 		default: break;
 		}
-		if (i > 37)
+		if (i > 39)
 			break;
 		sim_snapshot(a, buf);
 		fresh(b, &st);
@@ -719,7 +722,7 @@ static void out_of_range_values_are_refused(void **state)
 		assert_memory_equal(b, keep, sizeof(*b));
 		cases++;
 	}
-	assert_int_equal(cases, 37);
+	assert_int_equal(cases, 39);
 	/* in a spare slot (past the count) the same value is no state: accepted */
 	reach(a, &st, ST_PLAY);
 	a->g.en[a->g.num_enemies].kind = 200;
@@ -733,6 +736,37 @@ static void out_of_range_values_are_refused(void **state)
 	free(b);
 	free(keep);
 	stages_free(&st);
+}
+
+/* A map may have a floor at the height limit (MAP_HEIGHT_MAX: the loader
+ * takes it), and the player standing there has the eye SIM_VIEW_HEIGHT
+ * above it, past MAP_COORD_MAX: a state of the game, so its snapshot (what
+ * the flight recorder keeps of every game) restores. */
+static void the_eye_above_the_highest_floor_restores(void **state)
+{
+	static const struct fix_sector sec[] = { { 16383, 16383, 160 } };
+	static const int w[] = { 256 };
+	static const struct sim_settings play = { 1, 0, 1, 3, 1, 100, 1, 0, 0, 0 };
+	struct map *m = fix_row(w, sec, 1, 128, 64, 64, 0, NULL, 0);
+	struct sim *a = malloc(sizeof(*a)), *b = malloc(sizeof(*b));
+	uint8_t *buf = malloc(sim_snapshot_size());
+	(void)state;
+	assert_non_null(m);
+	assert_non_null(a);
+	assert_non_null(b);
+	assert_non_null(buf);
+	assert_int_equal(map_finish(m, NULL, 0), 0);
+	sim_init(a, m, &play);
+	run(a, &(struct sim_cmd){ .forward = 50 }, 10);
+	assert_int_equal(a->pl.viewz, MAP_HEIGHT_MAX + SIM_VIEW_HEIGHT);
+	sim_snapshot(a, buf);
+	sim_init(b, m, &set);
+	assert_int_equal(sim_restore(b, buf, sim_snapshot_size()), 0);
+	assert_int_equal(sim_hash(b), sim_hash(a));
+	free(buf);
+	free(a);
+	free(b);
+	map_free(m);
 }
 
 /* Damaged bytes, a wrong length, other maps. */
@@ -832,6 +866,7 @@ int main(void)
 		cmocka_unit_test(a_restored_sim_follows_the_original_for_5000_ticks),
 		cmocka_unit_test(every_state_of_a_long_session_restores),
 		cmocka_unit_test(out_of_range_values_are_refused),
+		cmocka_unit_test(the_eye_above_the_highest_floor_restores),
 		cmocka_unit_test(damaged_snapshots_and_other_maps_are_refused),
 		cmocka_unit_test(spare_slots_are_saved_but_not_hashed),
 	};
