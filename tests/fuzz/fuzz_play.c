@@ -8,17 +8,17 @@
  * that loads, so the input edits a real one: a built-in level's lumps in
  * the compiled-in PWAD (engine/map/lvl_wad.c).
  *
- * Input: a byte choosing the level; a count byte, then that many 5-byte
- * edits (lump: LINEDEFS, SECTORS or THINGS; 2-byte entry; field; and a
- * 16-bit value follows in the next two bytes of the same record, 6 in all)
- * to the level's line flags, specials and tags, sector heights, light,
- * specials and tags, and thing types and positions; the map must then load
+ * Input: a byte choosing the level; a count byte (mod 32), then that many
+ * 6-byte edits (lump: THINGS, LINEDEFS or SECTORS; 2-byte entry; field;
+ * 16-bit value) to the level's line flags, specials and tags, sector
+ * heights, light, specials and tags, and thing positions, angles, types
+ * and flags; the map must then load
  * (else the input is the loader's, which fuzz_wad covers). The rest are
  * 4-byte actions, at most FZ_ACTIONS: a tick with a command (moves, USE,
  * FIRE), a line crossed by the player or an enemy (walk triggers,
  * teleports), a line shot, the player standing in front of a line and
  * pressing USE (placed as a teleport places it: a hostile map's teleport
- * destination can be anywhere), or FZ_WAIT ticks with no input so the
+ * destination can be anywhere in the coordinate range), or FZ_WAIT ticks with no input so the
  * movers run their course.
  *
  * Oracles, under ASan and UBSan: every FZ_DRAW_EVERY ticks and at the end
