@@ -243,8 +243,8 @@ static inline fx_t g_coord_clamp(int64_t v)
  * coordinate range (+/-MAP_COORD_MAX) that every map's vertices and things
  * keep to. A body goes past a map's lines into open space only on a broken
  * map (a teleport destination outside it); the edge of the range then
- * stops it as a wall would, since the sim's positions, their snapshot
- * checks and their arithmetic end there. */
+ * stops it as a wall would (g_move.c; a missile explodes there), since the
+ * sim's positions, their snapshot checks and their arithmetic end there. */
 static inline int g_in_range(int64_t x, int64_t y, int64_t r)
 {
 	return x >= -MAP_COORD_MAX + r && x <= MAP_COORD_MAX - r && y >= -MAP_COORD_MAX + r &&

@@ -193,14 +193,27 @@ int g_body_blocked(const struct sim *s, int self, fx_t ox, fx_t oy, fx_t x, fx_t
 	return 0;
 }
 
+/* The edge of the coordinate range as a wall (g_in_range): whether the
+ * move from (ox, oy) to (x, y) takes a body of radius r past the edge, or
+ * further past it. A body placed within r of the edge (a teleport
+ * destination there) may still move inwards. */
+static int g_past_edge(fx_t ox, fx_t oy, fx_t x, fx_t y, fx_t r)
+{
+	int64_t lim = (int64_t)MAP_COORD_MAX - r;
+
+	return (x > lim && x > ox) || (x < -lim && x < ox) || (y > lim && y > oy) ||
+	       (y < -lim && y < oy);
+}
+
 /* Tries to move the body by (dx, dy); updates its position on success. */
 static int g_try(struct sim *s, struct g_body *b, fx_t dx, fx_t dy)
 {
 	fx_t x = b->x + dx, y = b->y + dy;
 
-	if (!g_in_range(x, y, b->radius))
+	if (g_past_edge(b->x, b->y, x, y, b->radius))
 		return 0;
-	if (!g_fit(s, b->radius, b->z, b->x, b->y, &x, &y) || !g_in_range(x, y, b->radius))
+	if (!g_fit(s, b->radius, b->z, b->x, b->y, &x, &y) ||
+	    g_past_edge(b->x, b->y, x, y, b->radius))
 		return 0;
 	if (g_body_blocked(s, b->self, b->x, b->y, x, y, b->radius))
 		return 0;

@@ -316,7 +316,8 @@ static double line_distance(const struct map *m, double x, double y, int walls_o
  * Walking on east stops at the edge, a radius short of it, as at a wall;
  * a shot into the open misses at its full range, which would end past the
  * edge and so ends at it; and the state passes its own restore's checks
- * (what the flight recorder's recording of such a game needs). */
+ * (what the flight recorder's recording of such a game needs). A start
+ * 4 units from the edge, closer than a radius, still walks away from it. */
 static void the_edge_of_the_coordinate_range_stops_a_body(void **state)
 {
 	struct map *m = room(16300, 128, 0);
@@ -336,6 +337,12 @@ static void the_edge_of_the_coordinate_range_stops_a_body(void **state)
 	sim_snapshot(s, buf);
 	sim_init(t, m, &play);
 	assert_int_equal(sim_restore(t, buf, sim_snapshot_size()), 0);
+	map_free(m);
+	/* placed within a radius of the edge, a body still moves inwards */
+	m = room(16380, 128, ANG180);
+	sim_init(s, m, &play);
+	run(s, &(struct sim_cmd){ .forward = 100 }, 10);
+	assert_true(s->pl.x < 16380 * FX_ONE - R);
 	free(buf);
 	free(s);
 	free(t);
