@@ -244,8 +244,8 @@ void g_fire(struct sim *s)
 			g->shot = (uint8_t)r;
 			/* a miss ends at the full range, which near the
 			 * edge of a map may lie past the coordinate range */
-			g->shot_x = g_coord_clamp(x);
-			g->shot_y = g_coord_clamp(y);
+			g->shot_x = g_clamp(x, MAP_COORD_MAX);
+			g->shot_y = g_clamp(y, MAP_COORD_MAX);
 			g->shot_z = z;
 			hit = r == G_SHOT_ENEMY;
 		}

@@ -60,7 +60,8 @@ static fx_t g_floor_dest(struct sim *s, uint32_t sec, int type, uint16_t *tex, u
 			}
 		}
 		return best == UINT32_MAX ? g->floor_h
-					  : g_height_clamp((int64_t)g->floor_h + (int64_t)best * FX_ONE);
+					  : g_clamp((int64_t)g->floor_h + (int64_t)best * FX_ONE,
+						    MAP_HEIGHT_MAX);
 	}
 	case G_FLOOR_LOWER_CHANGE:
 	default: {
@@ -145,7 +146,7 @@ int g_stairs(struct sim *s, const struct map_line *l, int turbo)
 
 		if (g_mover_of(s, (uint32_t)sec))
 			continue;
-		h = g_height_clamp((int64_t)s->w.sec[sec].floor_h + step);
+		h = g_clamp((int64_t)s->w.sec[sec].floor_h + step, MAP_HEIGHT_MAX);
 		f = g_floor_to(s, (uint32_t)sec, G_FLOOR_STAIR, G_DIR_UP, speed, h);
 		if (!f)
 			continue;
@@ -168,7 +169,7 @@ int g_stairs(struct sim *s, const struct map_line *l, int turbo)
 				t = m->sides[ln->side[1]].sector;
 				if (s->w.sec[t].floor_tex != tex)
 					continue;
-				h = g_height_clamp((int64_t)h + step);
+				h = g_clamp((int64_t)h + step, MAP_HEIGHT_MAX);
 				if (g_mover_of(s, t))
 					continue;
 				f = g_floor_to(s, t, G_FLOOR_STAIR, G_DIR_UP, speed, h);

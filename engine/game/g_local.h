@@ -224,19 +224,13 @@ enum g_res { G_RES_OK, G_RES_CRUSHED, G_RES_PASTDEST };
 int g_plane_move(struct sim *s, uint32_t sec, fx_t speed, fx_t dest, int crush, int ceiling,
 		 int dir);
 
-/* h held to +/-MAP_HEIGHT_MAX: for destinations summed from a height
- * (stairs add a step per sector, a texture raise a texture's height) in
- * 64 bits, so that the sum itself cannot overflow fx_t. */
-static inline fx_t g_height_clamp(int64_t h)
+/* v held to +/-lim, for values summed in 64 bits so that the sum itself
+ * cannot overflow fx_t: heights against MAP_HEIGHT_MAX (stairs add a step
+ * per sector, a texture raise a texture's height), points against
+ * MAP_COORD_MAX (a shot's end at its full range). */
+static inline fx_t g_clamp(int64_t v, fx_t lim)
 {
-	return h > MAP_HEIGHT_MAX ? MAP_HEIGHT_MAX : h < -MAP_HEIGHT_MAX ? -MAP_HEIGHT_MAX : (fx_t)h;
-}
-
-/* v held to +/-MAP_COORD_MAX: for points computed from a position and a
- * reach (a shot's end at its full range). */
-static inline fx_t g_coord_clamp(int64_t v)
-{
-	return v > MAP_COORD_MAX ? MAP_COORD_MAX : v < -MAP_COORD_MAX ? -MAP_COORD_MAX : (fx_t)v;
+	return v > lim ? lim : v < -(int64_t)lim ? -lim : (fx_t)v;
 }
 
 /* Whether (x, y) with a body of radius r around it lies within the

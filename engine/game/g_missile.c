@@ -13,8 +13,9 @@
  * missile's radius and height and no step), lie outside its sector's
  * floor and ceiling, or reach the edge of the coordinate range (g_in_range:
  * only past a broken map's lines). Its step (5.83 units) is less than its
- * radius, so it cannot pass through a wall between two ticks. Missiles pass through
- * enemies (no infighting). The throw and the explosion are sound events.
+ * radius, so it cannot pass through a wall between two ticks. Missiles
+ * pass through enemies (no infighting). The throw and the explosion are
+ * sound events.
  */
 #include "engine/core/tab.h"
 #include "engine/game/g_local.h"

@@ -125,7 +125,7 @@ int g_plane_move(struct sim *s, uint32_t sec, fx_t speed, fx_t dest, int crush, 
 	fx_t last = *h;
 	int64_t next = (int64_t)*h + (dir < 0 ? -(int64_t)speed : speed);
 
-	dest = g_height_clamp(dest);
+	dest = g_clamp(dest, MAP_HEIGHT_MAX);
 
 	/* Doom's rule: the last step goes exactly to dest; a body in the way
 	 * there puts the plane back, but the move still counts as done */

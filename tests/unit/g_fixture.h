@@ -1,14 +1,19 @@
 /*
  * Test fixture for the game rules: a rectangular room (floor 0, ceiling
  * 128) with optional solid pillars and any things, finished with
- * map_finish. Shared by test_g_*.c, test_menu.c and test_hud.c.
+ * map_finish. Shared by test_g_*.c, test_menu.c and test_hud.c. And
+ * gf_restores: whether a state passes its own snapshot (test_sim.c,
+ * test_sim_hash.c).
  */
 #ifndef ARCADED_TESTS_G_FIXTURE_H
 #define ARCADED_TESTS_G_FIXTURE_H
 
+#include <errno.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "engine/game/sim.h"
 #include "engine/map/map.h"
 
 struct gf_thing {
@@ -85,6 +90,30 @@ static inline struct map *gf_arena(const struct gf_thing *th, int n, const struc
 	if (n > 0)
 		memcpy(all + 1, th, (size_t)n * sizeof(*th));
 	return gf_room(2048, 512, all, n + 1, box, nbox);
+}
+
+/* Snapshots a and restores the bytes into a new sim started on the one
+ * stage map m with settings set (the snapshot brings its own): returns
+ * sim_restore's result, 0 when the state passes its own range checks (what
+ * a recording of the game needs), and the restored sim's hash in *hash
+ * when hash is not NULL; -ENOMEM when the memory cannot be had. */
+static inline int gf_restores(const struct sim *a, const struct map *m,
+			      const struct sim_settings *set, uint64_t *hash)
+{
+	struct sim *b = malloc(sizeof(*b));
+	uint8_t *buf = malloc(sim_snapshot_size());
+	int rc = -ENOMEM;
+
+	if (b && buf) {
+		sim_snapshot(a, buf);
+		sim_init(b, m, set);
+		rc = sim_restore(b, buf, sim_snapshot_size());
+		if (hash)
+			*hash = sim_hash(b);
+	}
+	free(buf);
+	free(b);
+	return rc;
 }
 
 #endif
