@@ -362,14 +362,18 @@ phase_watchdog() {
 
 # A daemon that dies at once, again and again (a state file it trips on, a
 # driver that crashes it), is started again every time: under systemd's
-# default start limit (5 starts in 10 s) the fifth quick death would leave
+# default start limit (5 starts in 10 s) the sixth quick death would leave
 # the unit failed and the cabinet dark until someone came. Each new main
-# process is killed (SIGKILL) as soon as it exists, 7 times; the 7 deaths
-# must fall within 10 s, or the check could not see the limit. systemd's
+# process is killed (SIGKILL) as soon as it exists, 7 times. systemd's
 # limit counts starts in a window that opens at the first start after the
 # last window closed: the watchdog's restart just before opened one, so the
-# loop waits for it to close (11 s), and its first restart opens the next,
-# in which the sixth start would be refused.
+# loop waits for it to close (11 s), and the first death's restart opens
+# the next, in which the sixth death's restart would be refused. So the
+# first 6 deaths must fall within 10 s (each restart follows its death by
+# the same RestartSec), or the check could not see the limit; the seventh
+# is one more for good measure. (7 deaths within 10 s, as this asked
+# before, took 10.0 to 10.3 s in two clean-clone runs of a slow hour, and
+# the check was skipped.)
 crash_loop() {
 	sleep 11
 	killed=$(prop MainPID)
@@ -377,11 +381,13 @@ crash_loop() {
 	t_c=$(now)
 	kill -KILL "$killed"
 	k=1
+	span6=""
 	newer() { p=$(prop MainPID); [ "$p" != 0 ] && [ "$p" != "$killed" ]; }
 	while [ $k -lt 7 ] && wait_until 10 newer; do
 		killed=$p
 		kill -KILL "$killed"
 		k=$((k + 1))
+		[ $k = 6 ] && span6=$(sub "$t_c" "$(now)")
 	done
 	span=$(sub "$t_c" "$(now)")
 	running() { [ "$(prop SubState)" = running ] && newer; }
@@ -390,14 +396,14 @@ crash_loop() {
 	st=$(systemctl show -p ActiveState -p SubState -p Result --value "$U" | paste -sd' ' -)
 	nr=$(prop NRestarts)
 	sub_state=$(prop SubState)
-	figure "crash loop: $k main processes killed in $span s; restarts $nr0 -> $nr; then $st"
+	figure "crash loop: $k main processes killed in $span s (the first 6 in ${span6:-?} s); restarts $nr0 -> $nr; then $st"
 	# Fewer than 7 deaths: a start did not come within 10 s, which is the
 	# limit at work, whatever the span.
-	if [ "$k" -lt 7 ] || awk -v s="$span" 'BEGIN { exit !(s < 10) }'; then
-		check crashloop-restarted "$k deaths in $span s (the default limit: 5 starts in 10 s), restarts $nr0 -> $nr, the unit then: $st" \
+	if [ "$k" -lt 7 ] || awk -v s="$span6" 'BEGIN { exit !(s < 10) }'; then
+		check crashloop-restarted "$k deaths in $span s, the first 6 in ${span6:-?} s (the default limit: 5 starts in 10 s), restarts $nr0 -> $nr, the unit then: $st" \
 			[ "$k" = 7 -a $((nr - nr0)) -ge 7 -a "$sub_state" = running ]
 	else
-		echo "SKIP crashloop-restarted: the 7 deaths took $span s, not under the 10 s a start limit counts over" >> "$R/results.txt"
+		echo "SKIP crashloop-restarted: the first 6 deaths took $span6 s, not under the 10 s a start limit counts over" >> "$R/results.txt"
 	fi
 }
 
